@@ -1,0 +1,293 @@
+//! Stage 1: the attribute and the struct, parsed into an IR that keeps spans.
+//!
+//! The attribute is split at its top-level commas and each piece parsed on
+//! its own, so that one malformed entry does not hide the errors of the
+//! others.
+
+use crate::errors::Errors;
+use proc_macro2::{Delimiter, Span, TokenStream, TokenTree};
+use syn::spanned::Spanned;
+use syn::{Expr, Ident};
+
+/// A named point: `B = (x, y)`.
+pub struct PointDef {
+    pub name: Ident,
+    pub x: Expr,
+    pub y: Expr,
+}
+
+/// A field of the struct.
+pub struct Field {
+    pub ident: Ident,
+    pub is_f64: bool,
+    /// The type as written, for messages.
+    pub ty: String,
+}
+
+/// A bracketed list as written, with the span of its brackets.
+pub struct List<T> {
+    pub items: Vec<T>,
+    pub span: Span,
+}
+
+/// The parsed attribute and struct.
+pub struct Input {
+    pub item: syn::ItemStruct,
+    pub fields: Vec<Field>,
+    pub u: List<Ident>,
+    pub v: List<Ident>,
+    pub points: List<PointDef>,
+    pub closure: List<Expr>,
+}
+
+const KEYS: [&str; 4] = ["u", "v", "points", "closure"];
+
+impl Input {
+    /// Parses the attribute and the struct; every problem found is recorded
+    /// in `errors`, and `None` returned only when nothing usable is left.
+    pub fn parse(attr: TokenStream, item: TokenStream, errors: &mut Errors) -> Option<Input> {
+        let item: syn::ItemStruct = match syn::parse2(item) {
+            Ok(item) => item,
+            Err(e) => {
+                errors.push(syn::Error::new(
+                    e.span(),
+                    "#[linkage::linkage(...)] goes on a struct whose `f64` fields are the \
+                     mechanism's parameters, e.g. `struct FourBar { l1: f64, l2: f64 }`",
+                ));
+                return None;
+            }
+        };
+        let fields = parse_fields(&item, errors);
+        let mut u = None;
+        let mut v = None;
+        let mut points = None;
+        let mut closure = None;
+        let mut seen: Vec<(String, Span)> = Vec::new();
+        for chunk in split_commas(attr) {
+            let Some((key, value)) = parse_entry(&chunk, errors) else {
+                continue;
+            };
+            let name = key.to_string();
+            if let Some((_, first)) = seen.iter().find(|(k, _)| *k == name) {
+                let mut e = syn::Error::new(key.span(), format!("`{name}` is given twice"));
+                e.combine(syn::Error::new(*first, format!("first `{name}` is here")));
+                errors.push(e);
+                continue;
+            }
+            seen.push((name.clone(), key.span()));
+            match name.as_str() {
+                "u" => u = parse_list(&key, value, errors, parse_ident),
+                "v" => v = parse_list(&key, value, errors, parse_ident),
+                "points" => points = parse_list(&key, value, errors, parse_point),
+                "closure" => closure = parse_list(&key, value, errors, parse_expr),
+                other => {
+                    let hint = match crate::suggest::closest(other, KEYS.iter().copied()) {
+                        Some(k) => format!("; did you mean `{k}`?"),
+                        None => String::new(),
+                    };
+                    errors.push(syn::Error::new(
+                        key.span(),
+                        format!(
+                            "unknown key `{other}`: the attribute takes `u = [...]`, `v = [...]`, \
+                             `closure = [...]` and optionally `points = [...]`{hint}"
+                        ),
+                    ));
+                }
+            }
+        }
+        let call_site = Span::call_site();
+        let mut require = |missing: bool, what: &str, example: &str| {
+            if missing && !seen.iter().any(|(k, _)| k == what) {
+                errors.push(syn::Error::new(
+                    call_site,
+                    format!(
+                        "missing `{what} = [...]` in #[linkage::linkage(...)], e.g. `{example}`"
+                    ),
+                ));
+            }
+        };
+        require(u.is_none(), "u", "u = [theta3, theta4]");
+        require(v.is_none(), "v", "v = [theta2]");
+        require(closure.is_none(), "closure", "closure = [expr, expr]");
+        let points = points.unwrap_or(List {
+            items: Vec::new(),
+            span: call_site,
+        });
+        Some(Input {
+            item,
+            fields,
+            u: u?,
+            v: v?,
+            points,
+            closure: closure?,
+        })
+    }
+}
+
+fn parse_fields(item: &syn::ItemStruct, errors: &mut Errors) -> Vec<Field> {
+    match &item.fields {
+        syn::Fields::Named(named) => named
+            .named
+            .iter()
+            .filter_map(|f| {
+                let ident = f.ident.clone()?;
+                let ty = &f.ty;
+                let is_f64 =
+                    matches!(ty, syn::Type::Path(p) if p.qself.is_none() && p.path.is_ident("f64"));
+                Some(Field {
+                    ident,
+                    is_f64,
+                    ty: quote::quote!(#ty).to_string(),
+                })
+            })
+            .collect(),
+        syn::Fields::Unit => Vec::new(),
+        syn::Fields::Unnamed(unnamed) => {
+            errors.push(syn::Error::new(
+                unnamed.span(),
+                "the parameters of a #[linkage] struct are named `f64` fields \
+                 (`struct FourBar { l1: f64, ... }`); a tuple struct has no names to use in equations",
+            ));
+            Vec::new()
+        }
+    }
+}
+
+/// Splits a token stream at its top-level commas (groups are atomic, so
+/// commas inside brackets and parentheses stay). Empty pieces are dropped.
+pub fn split_commas(tokens: TokenStream) -> Vec<TokenStream> {
+    let mut out = Vec::new();
+    let mut current = Vec::new();
+    for tt in tokens {
+        match &tt {
+            TokenTree::Punct(p) if p.as_char() == ',' => {
+                if !current.is_empty() {
+                    out.push(current.drain(..).collect());
+                }
+            }
+            _ => current.push(tt),
+        }
+    }
+    if !current.is_empty() {
+        out.push(current.into_iter().collect());
+    }
+    out
+}
+
+/// `key = value`
+fn parse_entry(chunk: &TokenStream, errors: &mut Errors) -> Option<(Ident, Vec<TokenTree>)> {
+    let mut iter = chunk.clone().into_iter();
+    let key = match iter.next() {
+        Some(TokenTree::Ident(i)) => i,
+        _ => {
+            errors.push(syn::Error::new_spanned(
+                chunk,
+                "expected `key = [...]` with a key among `u`, `v`, `points`, `closure`",
+            ));
+            return None;
+        }
+    };
+    match iter.next() {
+        Some(TokenTree::Punct(p)) if p.as_char() == '=' => {}
+        other => {
+            let span = other.map(|t| t.span()).unwrap_or_else(|| key.span());
+            errors.push(syn::Error::new(
+                span,
+                format!("expected `=` after `{key}`, as in `{key} = [...]`"),
+            ));
+            return None;
+        }
+    }
+    Some((key, iter.collect()))
+}
+
+/// `[a, b, c]`, each element parsed by `parse_item`.
+fn parse_list<T>(
+    key: &Ident,
+    value: Vec<TokenTree>,
+    errors: &mut Errors,
+    parse_item: fn(TokenStream, &mut Errors) -> Option<T>,
+) -> Option<List<T>> {
+    let group = match value.as_slice() {
+        [TokenTree::Group(g)] if g.delimiter() == Delimiter::Bracket => g.clone(),
+        _ => {
+            let message = format!("`{key}` takes a bracketed list: `{key} = [...]`");
+            errors.push(if value.is_empty() {
+                syn::Error::new(key.span(), message)
+            } else {
+                syn::Error::new_spanned(value.iter().cloned().collect::<TokenStream>(), message)
+            });
+            return None;
+        }
+    };
+    let items = split_commas(group.stream())
+        .into_iter()
+        .filter_map(|chunk| parse_item(chunk, errors))
+        .collect();
+    Some(List {
+        items,
+        span: group.span(),
+    })
+}
+
+fn parse_ident(chunk: TokenStream, errors: &mut Errors) -> Option<Ident> {
+    match syn::parse2::<Ident>(chunk.clone()) {
+        Ok(i) => Some(i),
+        Err(_) => {
+            errors.push(syn::Error::new_spanned(
+                chunk,
+                "a coordinate is a plain name, e.g. `theta3`",
+            ));
+            None
+        }
+    }
+}
+
+fn parse_expr(chunk: TokenStream, errors: &mut Errors) -> Option<Expr> {
+    match syn::parse2::<Expr>(chunk) {
+        Ok(e) => Some(e),
+        Err(e) => {
+            errors.push(e);
+            None
+        }
+    }
+}
+
+/// `B = (x, y)`
+fn parse_point(chunk: TokenStream, errors: &mut Errors) -> Option<PointDef> {
+    let tokens: Vec<TokenTree> = chunk.clone().into_iter().collect();
+    let shape_error = |errors: &mut Errors| {
+        errors.push(syn::Error::new_spanned(
+            chunk.clone(),
+            "a point is written `Name = (x, y)`, e.g. `B = (l2 * theta2.cos(), l2 * theta2.sin())`",
+        ));
+    };
+    let (name, coords) = match tokens.as_slice() {
+        [
+            TokenTree::Ident(name),
+            TokenTree::Punct(eq),
+            TokenTree::Group(g),
+        ] if eq.as_char() == '=' && g.delimiter() == Delimiter::Parenthesis => {
+            (name.clone(), g.clone())
+        }
+        _ => {
+            shape_error(errors);
+            return None;
+        }
+    };
+    let parts = split_commas(coords.stream());
+    if parts.len() != 2 {
+        errors.push(syn::Error::new(
+            coords.span(),
+            format!(
+                "point `{name}` needs two coordinates `(x, y)`, found {}",
+                parts.len()
+            ),
+        ));
+        return None;
+    }
+    let mut parts = parts.into_iter();
+    let x = parse_expr(parts.next()?, errors);
+    let y = parse_expr(parts.next()?, errors);
+    Some(PointDef { name, x: x?, y: y? })
+}

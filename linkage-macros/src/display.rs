@@ -1,0 +1,316 @@
+//! Formulas as text, for the doc comments of the generated functions and the
+//! symbolic table: `-l3·sin θ3`, `l2·cos θ2 + l3·cos θ3 + l4·cos θ4 - l1`.
+
+use crate::dag::{Dag, Func, Func2, Id, Node, Symbol};
+use crate::lower::Lowered;
+
+/// How symbols are shown.
+pub struct Names {
+    params: Vec<String>,
+    coords: Vec<String>,
+}
+
+impl Names {
+    pub fn new(lowered: &Lowered) -> Names {
+        Names {
+            params: (0..lowered.params.len())
+                .map(|k| lowered.param_name(k))
+                .collect(),
+            coords: (0..lowered.coords.len())
+                .map(|k| lowered.coord_name(k))
+                .collect(),
+        }
+    }
+
+    /// The name of a symbol as shown in a formula: Greek letters spelled out
+    /// in an identifier become Greek (`theta3` → `θ3`), velocities get a dot
+    /// (`θ̇3`) and accelerations two (`θ̈3`).
+    pub fn symbol(&self, s: Symbol) -> String {
+        match s {
+            Symbol::Param(k) => greek(&self.params[k as usize]),
+            Symbol::Coord(k) => greek(&self.coords[k as usize]),
+            Symbol::Vel(k) => dotted(&greek(&self.coords[k as usize]), '\u{307}'),
+            Symbol::Acc(k) => dotted(&greek(&self.coords[k as usize]), '\u{308}'),
+            Symbol::Constant(c) => match c.name() {
+                "PI" => "π".to_owned(),
+                "TAU" => "τ".to_owned(),
+                "E" => "e".to_owned(),
+                other => other.to_owned(),
+            },
+        }
+    }
+
+    /// A coordinate's display name.
+    pub fn coord(&self, k: usize) -> String {
+        greek(&self.coords[k])
+    }
+}
+
+const GREEK: [(&str, &str); 24] = [
+    ("alpha", "α"),
+    ("beta", "β"),
+    ("gamma", "γ"),
+    ("delta", "δ"),
+    ("epsilon", "ε"),
+    ("zeta", "ζ"),
+    ("eta", "η"),
+    ("theta", "θ"),
+    ("iota", "ι"),
+    ("kappa", "κ"),
+    ("lambda", "λ"),
+    ("mu", "μ"),
+    ("nu", "ν"),
+    ("xi", "ξ"),
+    ("omicron", "ο"),
+    ("pi", "π"),
+    ("rho", "ρ"),
+    ("sigma", "σ"),
+    ("tau", "τ"),
+    ("upsilon", "υ"),
+    ("phi", "φ"),
+    ("chi", "χ"),
+    ("psi", "ψ"),
+    ("omega", "ω"),
+];
+
+/// `theta3` → `θ3`, `phi_1` → `φ_1`, `Phi` → `Φ`; other names unchanged.
+pub fn greek(name: &str) -> String {
+    let alpha_len = name
+        .find(|c: char| !c.is_ascii_alphabetic())
+        .unwrap_or(name.len());
+    let (word, rest) = name.split_at(alpha_len);
+    for (latin, letter) in GREEK {
+        if word == latin {
+            return format!("{letter}{rest}");
+        }
+        if word.len() == latin.len()
+            && word[..1].chars().all(|c| c.is_ascii_uppercase())
+            && word.to_ascii_lowercase() == latin
+        {
+            return format!("{}{rest}", letter.to_uppercase());
+        }
+    }
+    name.to_owned()
+}
+
+/// The name with a combining mark on its first character: `θ3` → `θ̇3`.
+fn dotted(name: &str, mark: char) -> String {
+    let mut chars = name.chars();
+    match chars.next() {
+        Some(first) => format!("{first}{mark}{}", chars.as_str()),
+        None => String::new(),
+    }
+}
+
+/// Binding strength, for parentheses.
+#[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+enum Prec {
+    Sum,
+    Product,
+    Atom,
+}
+
+/// Renders formulas of one DAG.
+pub struct Formatter<'a> {
+    pub dag: &'a Dag,
+    pub names: &'a Names,
+}
+
+impl Formatter<'_> {
+    /// The formula of a node.
+    pub fn format(&self, id: Id) -> String {
+        self.render(id).0
+    }
+
+    fn wrap(&self, id: Id, at_least: Prec) -> String {
+        let (s, p) = self.render(id);
+        if p < at_least { format!("({s})") } else { s }
+    }
+
+    fn render(&self, id: Id) -> (String, Prec) {
+        match self.dag.node(id) {
+            Node::Const(c) => {
+                let c = c.get();
+                (number(c), if c < 0.0 { Prec::Sum } else { Prec::Atom })
+            }
+            Node::Sym(s) => (self.names.symbol(*s), Prec::Atom),
+            Node::Sum(terms) => {
+                let ordered =
+                    display_order(self.dag, terms.iter().map(|&(c, t)| (c.get(), t)).collect());
+                let mut out = String::new();
+                for (k, (c, t)) in ordered.into_iter().enumerate() {
+                    let negative = c < 0.0;
+                    let body = if t == Dag::ONE {
+                        number(c.abs())
+                    } else {
+                        self.scaled(c.abs(), t)
+                    };
+                    match (k, negative) {
+                        (0, false) => out.push_str(&body),
+                        (0, true) => {
+                            out.push('-');
+                            out.push_str(&body);
+                        }
+                        (_, false) => {
+                            out.push_str(" + ");
+                            out.push_str(&body);
+                        }
+                        (_, true) => {
+                            out.push_str(" - ");
+                            out.push_str(&body);
+                        }
+                    }
+                }
+                let scaled = terms.len() == 1 && terms[0].0.get() > 0.0;
+                (out, if scaled { Prec::Product } else { Prec::Sum })
+            }
+            Node::Prod(factors) => (self.product(1.0, factors), Prec::Product),
+            Node::Call(f, a) => (self.call(*f, *a), Prec::Atom),
+            Node::Call2(f, a, b) => {
+                let s = match f {
+                    Func2::Atan2 => format!("atan2({}, {})", self.format(*a), self.format(*b)),
+                    Func2::Hypot => format!("hypot({}, {})", self.format(*a), self.format(*b)),
+                    Func2::Powf => format!(
+                        "{}^{}",
+                        self.wrap(*a, Prec::Atom),
+                        self.wrap(*b, Prec::Atom)
+                    ),
+                };
+                (s, Prec::Atom)
+            }
+        }
+    }
+
+    /// `c·t` for `c > 0`, with the coefficient merged into a product.
+    fn scaled(&self, c: f64, t: Id) -> String {
+        match self.dag.node(t) {
+            Node::Prod(factors) => self.product(c, factors),
+            _ if c == 1.0 => self.wrap(t, Prec::Product),
+            _ => format!("{}·{}", number(c), self.wrap(t, Prec::Product)),
+        }
+    }
+
+    /// `c·Π fᵢ^eᵢ` as `c·a·b/(d·e²)`.
+    fn product(&self, c: f64, factors: &[(Id, i32)]) -> String {
+        let mut numerator: Vec<String> = Vec::new();
+        if c != 1.0 {
+            numerator.push(number(c));
+        }
+        let mut denominator: Vec<String> = Vec::new();
+        for (f, e) in factor_order(self.dag, factors) {
+            let text = self.power(f, e.unsigned_abs());
+            if e > 0 {
+                numerator.push(text);
+            } else {
+                denominator.push(text);
+            }
+        }
+        let num = if numerator.is_empty() {
+            "1".to_owned()
+        } else {
+            numerator.join("·")
+        };
+        match denominator.len() {
+            0 => num,
+            1 => format!("{num}/{}", denominator[0]),
+            _ => format!("{num}/({})", denominator.join("·")),
+        }
+    }
+
+    /// `f^e` with a superscript exponent.
+    fn power(&self, f: Id, e: u32) -> String {
+        if e == 1 {
+            return self.wrap(f, Prec::Atom);
+        }
+        let base = match self.dag.node(f) {
+            // sin(θ3)² rather than sin θ3²
+            Node::Call(func, a) if !matches!(func, Func::Abs | Func::Sqrt) => {
+                format!("{}({})", func_name(*func), self.format(*a))
+            }
+            _ => self.wrap(f, Prec::Atom),
+        };
+        format!("{base}{}", superscript(e))
+    }
+
+    fn call(&self, f: Func, a: Id) -> String {
+        let simple = matches!(self.dag.node(a), Node::Sym(_));
+        match f {
+            Func::Abs => format!("|{}|", self.format(a)),
+            Func::Sqrt => format!("√{}", self.wrap(a, Prec::Atom)),
+            _ if simple => format!("{} {}", func_name(f), self.format(a)),
+            _ => format!("{}({})", func_name(f), self.format(a)),
+        }
+    }
+}
+
+fn func_name(f: Func) -> &'static str {
+    match f {
+        Func::Signum => "sgn",
+        other => other.method(),
+    }
+}
+
+/// Factors in reading order: parameters and constants, then coordinates,
+/// then functions and other expressions, then velocities, then
+/// accelerations (`l3·l4·sin θ3·cos θ4`, `l3·cos θ3·θ̇3²`).
+pub fn factor_order(dag: &Dag, factors: &[(Id, i32)]) -> Vec<(Id, i32)> {
+    let rank = |id: Id| match dag.node(id) {
+        Node::Sym(Symbol::Param(_) | Symbol::Constant(_)) => 0,
+        Node::Sym(Symbol::Coord(_)) => 1,
+        Node::Sym(Symbol::Vel(_)) => 3,
+        Node::Sym(Symbol::Acc(_)) => 4,
+        _ => 2,
+    };
+    let mut out = factors.to_vec();
+    out.sort_by_key(|&(id, _)| (rank(id), id));
+    out
+}
+
+/// Terms in reading order: as created (the order of the source), with the
+/// constant term last.
+pub fn display_order(dag: &Dag, mut terms: Vec<(f64, Id)>) -> Vec<(f64, Id)> {
+    terms.sort_by_key(|&(_, t)| (t == Dag::ONE || dag.as_const(t).is_some(), t));
+    terms
+}
+
+/// The shortest text that reads back as the same `f64` (`2`, `0.5`, `1e-9`).
+pub fn number(c: f64) -> String {
+    let s = format!("{c}");
+    if s.len() > 12 {
+        let e = format!("{c:e}");
+        if e.len() < s.len() {
+            return e;
+        }
+    }
+    s
+}
+
+fn superscript(n: u32) -> String {
+    const DIGITS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    n.to_string()
+        .chars()
+        .map(|d| DIGITS[d.to_digit(10).unwrap_or(0) as usize])
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn greek_names() {
+        assert_eq!(greek("theta3"), "θ3");
+        assert_eq!(greek("phi_1"), "φ_1");
+        assert_eq!(greek("Phi"), "Φ");
+        assert_eq!(greek("l3"), "l3");
+        assert_eq!(greek("thetas"), "thetas");
+        assert_eq!(dotted("θ3", '\u{307}'), "θ\u{307}3");
+    }
+
+    #[test]
+    fn numbers() {
+        assert_eq!(number(2.0), "2");
+        assert_eq!(number(0.5), "0.5");
+        assert_eq!(number(1e-9), "1e-9");
+    }
+}

@@ -1,0 +1,977 @@
+//! Stage 5: the items the attribute emits, assembled with `quote!`.
+
+use crate::ast::Input;
+use crate::dag::{Dag, Id};
+use crate::display::{Formatter, Names};
+use crate::emit::{Body, CodeNames, Mode, Reads, emit};
+use crate::errors::Errors;
+use crate::model::{Matrix, Model};
+use proc_macro2::{Literal, TokenStream};
+use quote::{format_ident, quote};
+
+/// The whole expansion: the struct unchanged, and either the generated items
+/// or, if the attribute has mistakes, every error plus a stub implementation
+/// so that the rest of the user's code still type-checks.
+pub fn expand(attr: TokenStream, item: TokenStream) -> TokenStream {
+    let mut errors = Errors::default();
+    let input = Input::parse(attr, item.clone(), &mut errors);
+    let generated = input
+        .as_ref()
+        .and_then(|input| generate(input, &mut errors));
+    match (errors.combined(), generated) {
+        (None, Some(tokens)) => tokens,
+        (Some(error), _) => {
+            let compile_errors = error.to_compile_error();
+            let stub = input.as_ref().map(stub).unwrap_or_default();
+            let item = match &input {
+                Some(input) => {
+                    let item = &input.item;
+                    quote!(#item)
+                }
+                None => item,
+            };
+            quote! {
+                #item
+                #stub
+                #compile_errors
+            }
+        }
+        (None, None) => item,
+    }
+}
+
+fn generate(input: &Input, errors: &mut Errors) -> Option<TokenStream> {
+    let shape_ok = crate::valid::check_shape(input, errors);
+    let mut lowered = crate::lower::lower(input, errors)?;
+    if !shape_ok {
+        return None;
+    }
+    crate::valid::check_structure(input, &mut lowered, errors);
+    if !errors.is_empty() {
+        return None;
+    }
+    let model = Model::build(lowered);
+    Some(Generator::new(input, &model).items())
+}
+
+/// A stub `Linkage` implementation for a struct whose attribute has errors:
+/// the user's other code keeps type-checking and only the real mistakes are
+/// reported.
+fn stub(input: &Input) -> TokenStream {
+    let m = input.u.items.len().max(input.closure.items.len());
+    let f = input.v.items.len();
+    let ty = &input.item.ident;
+    let (impl_generics, ty_generics, where_clause) = input.item.generics.split_for_impl();
+    let (m, f) = (Literal::usize_unsuffixed(m), Literal::usize_unsuffixed(f));
+    quote! {
+        const _: () = {
+            impl #impl_generics #ty #ty_generics #where_clause {
+                #[doc(hidden)]
+                pub const LINKAGE_HAS_ERRORS: () = ();
+            }
+            #[allow(unused)]
+            fn __linkage_stub_dimensions() -> (usize, usize) { (#m, #f) }
+        };
+    }
+}
+
+/// One emitted function: name, doc lines, arguments, result.
+struct Function<'a> {
+    name: &'static str,
+    doc: Vec<String>,
+    args: &'a [Arg],
+    output: Output,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Arg {
+    U,
+    V,
+    Udot,
+    Vdot,
+    Uddot,
+    Vddot,
+}
+
+impl Arg {
+    fn name(self) -> &'static str {
+        match self {
+            Arg::U => "u",
+            Arg::V => "v",
+            Arg::Udot => "udot",
+            Arg::Vdot => "vdot",
+            Arg::Uddot => "uddot",
+            Arg::Vddot => "vddot",
+        }
+    }
+
+    fn read(self, r: &Reads) -> bool {
+        match self {
+            Arg::U => r.u,
+            Arg::V => r.v,
+            Arg::Udot => r.udot,
+            Arg::Vdot => r.vdot,
+            Arg::Uddot => r.uddot,
+            Arg::Vddot => r.vddot,
+        }
+    }
+}
+
+/// What a function returns.
+enum Output {
+    /// One matrix (a vector if it has one column), named for the result.
+    Matrix(&'static str, Matrix),
+    /// A tuple of matrices.
+    Tuple(Vec<(&'static str, Matrix)>),
+    /// An array of 2-vectors, one per point, with names for the coordinates.
+    Points(Vec<([Id; 2], [String; 2])>),
+}
+
+struct Generator<'a> {
+    input: &'a Input,
+    model: &'a Model,
+    code: CodeNames,
+    names: Names,
+    m: usize,
+    f: usize,
+    np: usize,
+}
+
+const U: &[Arg] = &[Arg::U, Arg::V];
+const U_UDOT: &[Arg] = &[Arg::U, Arg::V, Arg::Udot];
+const U_VDOT: &[Arg] = &[Arg::U, Arg::V, Arg::Vdot];
+const U_QDOT: &[Arg] = &[Arg::U, Arg::V, Arg::Udot, Arg::Vdot];
+const U_QDOT_QDDOT: &[Arg] = &[Arg::U, Arg::V, Arg::Udot, Arg::Vdot, Arg::Uddot, Arg::Vddot];
+
+impl<'a> Generator<'a> {
+    fn new(input: &'a Input, model: &'a Model) -> Generator<'a> {
+        Generator {
+            input,
+            model,
+            code: CodeNames::new(&model.lowered),
+            names: Names::new(&model.lowered),
+            m: model.m(),
+            f: model.f(),
+            np: model.points.len(),
+        }
+    }
+
+    fn dag(&self) -> &Dag {
+        self.model.dag()
+    }
+
+    fn formatter(&self) -> Formatter<'_> {
+        Formatter {
+            dag: self.dag(),
+            names: &self.names,
+        }
+    }
+
+    fn u_list(&self) -> String {
+        (0..self.m)
+            .map(|k| self.names.coord(k))
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+
+    fn v_list(&self) -> String {
+        (self.m..self.m + self.f)
+            .map(|k| self.names.coord(k))
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+
+    fn q_list(&self) -> String {
+        (0..self.m + self.f)
+            .map(|k| self.names.coord(k))
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+
+    fn items(&self) -> TokenStream {
+        let item = &self.input.item;
+        let ty = &item.ident;
+        let (impl_generics, ty_generics, where_clause) = item.generics.split_for_impl();
+        let model = self.model;
+        let (m, f, n) = (self.m, self.f, self.m + self.f);
+        let fmt = self.formatter();
+        let u_list = self.u_list();
+        let v_list = self.v_list();
+        let q_list = self.q_list();
+
+        let mut functions: Vec<TokenStream> = Vec::new();
+        let mut add = |function: Function| functions.push(self.function(function));
+
+        add(Function {
+            name: "psi",
+            doc: vec![
+                "Ψ(u, v): the closure equations, zero at every assembled pose.".to_owned(),
+                String::new(),
+                self.formula_block(&model.psi, &fmt),
+            ],
+            args: U,
+            output: Output::Matrix("psi", model.psi.clone()),
+        });
+        add(Function {
+            name: "psi_q",
+            doc: vec![
+                format!(
+                    "Ψ_q = ∂Ψ/∂q, the {m}×{n} Jacobian with columns q = [{q_list}] (u first, then v)."
+                ),
+                String::new(),
+                self.formula_block(&model.psi_q, &fmt),
+            ],
+            args: U,
+            output: Output::Matrix("psi_q", model.psi_q.clone()),
+        });
+        add(Function {
+            name: "psi_u",
+            doc: vec![
+                format!("Ψ_u = ∂Ψ/∂u, the {m}×{m} Jacobian with respect to u = [{u_list}]."),
+                String::new(),
+                self.formula_block(&model.psi_u, &fmt),
+            ],
+            args: U,
+            output: Output::Matrix("psi_u", model.psi_u.clone()),
+        });
+        add(Function {
+            name: "psi_v",
+            doc: vec![
+                format!("Ψ_v = ∂Ψ/∂v, the {m}×{f} Jacobian with respect to v = [{v_list}]."),
+                String::new(),
+                self.formula_block(&model.psi_v, &fmt),
+            ],
+            args: U,
+            output: Output::Matrix("psi_v", model.psi_v.clone()),
+        });
+        add(Function {
+            name: "psi_and_psi_u",
+            doc: vec![
+                "Ψ and Ψ_u together, sharing every sine, cosine and common subexpression: \
+                 one Newton–Raphson step's evaluation (see [`Self::psi`] and [`Self::psi_u`])."
+                    .to_owned(),
+            ],
+            args: U,
+            output: Output::Tuple(vec![
+                ("psi", model.psi.clone()),
+                ("psi_u", model.psi_u.clone()),
+            ]),
+        });
+        let second_order = [
+            (
+                "psi_u_udot_u",
+                U_UDOT,
+                &model.psi_u_udot_u,
+                format!(
+                    "([Ψ_u]u̇)_u, the {m}×{m} Jacobian of Ψ_u u̇ with respect to u: the first block of method B (the seed's `Hu_u`)."
+                ),
+            ),
+            (
+                "psi_u_udot_v",
+                U_UDOT,
+                &model.psi_u_udot_v,
+                format!(
+                    "([Ψ_u]u̇)_v, the {m}×{f} Jacobian of Ψ_u u̇ with respect to v (non-zero when Ψ_u depends on v)."
+                ),
+            ),
+            (
+                "psi_v_vdot_u",
+                U_VDOT,
+                &model.psi_v_vdot_u,
+                format!(
+                    "([Ψ_v]v̇)_u, the {m}×{m} Jacobian of Ψ_v v̇ with respect to u (non-zero when Ψ_v depends on u)."
+                ),
+            ),
+            (
+                "psi_v_vdot_v",
+                U_VDOT,
+                &model.psi_v_vdot_v,
+                format!(
+                    "([Ψ_v]v̇)_v, the {m}×{f} Jacobian of Ψ_v v̇ with respect to v (the seed's `Hv_v`)."
+                ),
+            ),
+            (
+                "psi_u_dot",
+                U_QDOT,
+                &model.psi_u_dot,
+                format!(
+                    "Ψ̇_u = Σₖ ∂Ψ_u/∂qₖ q̇ₖ, the time derivative of Ψ_u ({m}×{m}): method A (the seed's `d_ps_u_pu`)."
+                ),
+            ),
+            (
+                "psi_v_dot",
+                U_QDOT,
+                &model.psi_v_dot,
+                format!(
+                    "Ψ̇_v = Σₖ ∂Ψ_v/∂qₖ q̇ₖ, the time derivative of Ψ_v ({m}×{f}): method A (the seed's `d_ps_v_pu`)."
+                ),
+            ),
+        ];
+        for (name, args, matrix, title) in second_order {
+            add(Function {
+                name,
+                doc: vec![title, String::new(), self.formula_block(matrix, &fmt)],
+                args,
+                output: Output::Matrix(name, matrix.clone()),
+            });
+        }
+        let agreement = match model.methods_agree {
+            Some(true) => {
+                "Expanded symbolically at compile time, γ by method A (Ψ̇_u u̇ + Ψ̇_v v̇), by method B \
+                           (the four blocks) and this fused form are the same polynomial in q̇."
+                    .to_owned()
+            }
+            Some(false) => {
+                "γ by method A and by method B do not expand to the same polynomial here \
+                            (they agree numerically; see the tests)."
+                    .to_owned()
+            }
+            None => "γ was too large to compare the two methods symbolically.".to_owned(),
+        };
+        add(Function {
+            name: "gamma",
+            doc: vec![
+                "γ = (Ψ_q q̇)_q q̇, the convective term of the acceleration equation \
+                 Ψ_u ü = −Ψ_v v̈ − γ, in one fused evaluation."
+                    .to_owned(),
+                String::new(),
+                agreement,
+                String::new(),
+                self.formula_block(&model.gamma, &fmt),
+            ],
+            args: U_QDOT,
+            output: Output::Matrix("gamma", model.gamma.clone()),
+        });
+        let point_names: Vec<String> = model.points.iter().map(|p| p.name.clone()).collect();
+        let lower: Vec<String> = point_names.iter().map(|n| n.to_lowercase()).collect();
+        let point_list = point_names.join(", ");
+        for (name, suffix, doc, args, pick) in [
+            (
+                "point_positions",
+                "",
+                format!("The positions P(q) of the points [{point_list}]."),
+                U,
+                0usize,
+            ),
+            (
+                "point_velocities",
+                "_dot",
+                format!("The velocities Ṗ = P_q q̇ of the points [{point_list}]."),
+                U_QDOT,
+                1,
+            ),
+            (
+                "point_accelerations",
+                "_ddot",
+                format!("The accelerations P̈ = P_q q̈ + (P_q q̇)_q q̇ of the points [{point_list}]."),
+                U_QDOT_QDDOT,
+                2,
+            ),
+        ] {
+            let entries: Vec<([Id; 2], [String; 2])> = model
+                .points
+                .iter()
+                .zip(&lower)
+                .map(|(p, l)| {
+                    let ids = [p.position, p.velocity, p.acceleration][pick];
+                    (ids, [format!("{l}_x{suffix}"), format!("{l}_y{suffix}")])
+                })
+                .collect();
+            let mut lines = vec![doc, String::new(), "```text".to_owned()];
+            for (p, (ids, _)) in model.points.iter().zip(&entries) {
+                lines.push(format!("{}.x = {}", p.name, fmt.format(ids[0])));
+                lines.push(format!("{}.y = {}", p.name, fmt.format(ids[1])));
+            }
+            lines.push("```".to_owned());
+            add(Function {
+                name,
+                doc: lines,
+                args,
+                output: Output::Points(entries),
+            });
+        }
+        drop(add);
+
+        let generic = self.generic_functions();
+        let u_names = self.input.u.items.iter().map(crate::lower::unraw);
+        let v_names = self.input.v.items.iter().map(crate::lower::unraw);
+        let (ml, fl, npl) = (
+            Literal::usize_unsuffixed(m),
+            Literal::usize_unsuffixed(f),
+            Literal::usize_unsuffixed(self.np),
+        );
+        let symbolic = self.symbolic_table();
+        let trait_impl = self.trait_impl();
+        quote! {
+            #item
+            const _: () = {
+                use ::linkage::nalgebra::{SMatrix, SVector, Vector2};
+
+                #[automatically_derived]
+                impl #impl_generics #ty #ty_generics #where_clause {
+                    /// The dependent coordinates u, in order.
+                    pub const U_NAMES: [&'static str; #ml] = [#(#u_names),*];
+                    /// The driving coordinates v, in order.
+                    pub const V_NAMES: [&'static str; #fl] = [#(#v_names),*];
+                    /// The named points, in order.
+                    pub const POINT_NAMES: [&'static str; #npl] = [#(#point_names),*];
+                    /// Every generated quantity as a readable formula, for printing.
+                    pub const SYMBOLIC: ::linkage::SymbolicTable = #symbolic;
+
+                    #(#functions)*
+
+                    #generic
+                }
+
+                #trait_impl
+            };
+        }
+    }
+
+    /// A formula matrix as a doc block.
+    fn formula_block(&self, matrix: &Matrix, fmt: &Formatter) -> String {
+        let text: Vec<String> = matrix.entries.iter().map(|&e| fmt.format(e)).collect();
+        let mut out = vec!["```text".to_owned()];
+        out.extend(layout(matrix.rows, matrix.cols, &text));
+        out.push("```".to_owned());
+        out.join("\n")
+    }
+
+    fn function(&self, function: Function) -> TokenStream {
+        let name = format_ident!("{}", function.name);
+        let (m, f) = (
+            Literal::usize_unsuffixed(self.m),
+            Literal::usize_unsuffixed(self.f),
+        );
+        let mut roots = Vec::new();
+        let mut hints = Vec::new();
+        let mut reserved: Vec<String> = Vec::new();
+        match &function.output {
+            Output::Matrix(result, matrix) => {
+                roots.extend(matrix.entries.iter().copied().filter(|&e| e != Dag::ZERO));
+                reserved.push(result.to_string());
+            }
+            Output::Tuple(parts) => {
+                for (result, matrix) in parts {
+                    roots.extend(matrix.entries.iter().copied().filter(|&e| e != Dag::ZERO));
+                    reserved.push(result.to_string());
+                }
+            }
+            Output::Points(points) => {
+                for (ids, names) in points {
+                    for c in 0..2 {
+                        roots.push(ids[c]);
+                        hints.push((ids[c], names[c].clone()));
+                    }
+                }
+            }
+        }
+        let reserved: Vec<String> = reserved.into_iter().map(|r| self.free_name(&r)).collect();
+        let body: Body = emit(self.dag(), &self.code, &roots, &hints, &reserved, Mode::F64);
+        let mut values = body.values.iter();
+        let mut result_names = reserved.iter();
+        let (result, ret) = match &function.output {
+            Output::Matrix(_, matrix) => {
+                let name = result_names.next().map(String::as_str).unwrap_or("out");
+                let (stmts, value, ty) = assemble(matrix, name, &mut values, quote!(f64));
+                (quote!(#(#stmts)* #value), ty)
+            }
+            Output::Tuple(parts) => {
+                let mut stmts = Vec::new();
+                let mut tuple = Vec::new();
+                let mut types = Vec::new();
+                for (_, matrix) in parts {
+                    let name = result_names.next().map(String::as_str).unwrap_or("out");
+                    let (s, value, ty) = assemble(matrix, name, &mut values, quote!(f64));
+                    stmts.extend(s);
+                    tuple.push(value);
+                    types.push(ty);
+                }
+                (quote!(#(#stmts)* (#(#tuple),*)), quote!((#(#types),*)))
+            }
+            Output::Points(points) => {
+                let mut vectors = Vec::new();
+                for _ in points {
+                    let x = values.next();
+                    let y = values.next();
+                    vectors.push(quote!(Vector2::new(#x, #y)));
+                }
+                let np = Literal::usize_unsuffixed(points.len());
+                (quote!([#(#vectors),*]), quote!([Vector2<f64>; #np]))
+            }
+        };
+        let args = function.args.iter().map(|&a| {
+            let used = a.read(&body.reads);
+            let arg = if used {
+                format_ident!("{}", a.name())
+            } else {
+                format_ident!("_{}", a.name())
+            };
+            let dim = if matches!(a, Arg::U | Arg::Udot | Arg::Uddot) {
+                &m
+            } else {
+                &f
+            };
+            quote!(#arg: &SVector<f64, #dim>)
+        });
+        let doc = function.doc.join("\n");
+        let doc_lines = doc.lines().map(|l| format!(" {l}"));
+        let statements = &body.statements;
+        quote! {
+            #(#[doc = #doc_lines])*
+            #[must_use]
+            pub fn #name(&self, #(#args),*) -> #ret {
+                #(#statements)*
+                #result
+            }
+        }
+    }
+
+    /// `name`, unless a symbol already has it.
+    fn free_name(&self, name: &str) -> String {
+        let taken: Vec<String> = self.code.all().collect();
+        let mut candidate = name.to_owned();
+        while taken.contains(&candidate) {
+            candidate.push('_');
+        }
+        candidate
+    }
+
+    /// `psi_generic` and `point_positions_generic` over dual numbers.
+    fn generic_functions(&self) -> TokenStream {
+        let (m, f) = (
+            Literal::usize_unsuffixed(self.m),
+            Literal::usize_unsuffixed(self.f),
+        );
+        let model = self.model;
+        let psi_result = self.free_name("psi");
+        let roots: Vec<Id> = model
+            .psi
+            .entries
+            .iter()
+            .copied()
+            .filter(|&e| e != Dag::ZERO)
+            .collect();
+        let body = emit(
+            self.dag(),
+            &self.code,
+            &roots,
+            &[],
+            std::slice::from_ref(&psi_result),
+            Mode::Generic,
+        );
+        let mut values = body.values.iter();
+        let (stmts, value, _) = assemble(&model.psi, &psi_result, &mut values, quote!(D));
+        let statements = &body.statements;
+        let (u, v) = arg_names(&body.reads);
+
+        let point_roots: Vec<Id> = model.points.iter().flat_map(|p| p.position).collect();
+        let hints: Vec<(Id, String)> = model
+            .points
+            .iter()
+            .flat_map(|p| {
+                let l = p.name.to_lowercase();
+                [
+                    (p.position[0], format!("{l}_x")),
+                    (p.position[1], format!("{l}_y")),
+                ]
+            })
+            .collect();
+        let pbody = emit(
+            self.dag(),
+            &self.code,
+            &point_roots,
+            &hints,
+            &[],
+            Mode::Generic,
+        );
+        let mut pvalues = pbody.values.iter();
+        let vectors: Vec<TokenStream> = model
+            .points
+            .iter()
+            .map(|_| {
+                let x = pvalues.next();
+                let y = pvalues.next();
+                quote!(Vector2::new(#x, #y))
+            })
+            .collect();
+        let pstatements = &pbody.statements;
+        let (pu, pv) = arg_names(&pbody.reads);
+        let np = Literal::usize_unsuffixed(self.np);
+        quote! {
+            /// Ψ(u, v) on any dual number of `num_dual`: the same closure
+            /// equations as [`Self::psi`], for derivatives by automatic
+            /// differentiation (cross-checks, and the alternative Jacobian
+            /// source of the runtime).
+            #[must_use]
+            pub fn psi_generic<D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy>(
+                &self,
+                #u: &SVector<D, #m>,
+                #v: &SVector<D, #f>,
+            ) -> SVector<D, #m> {
+                #(#statements)*
+                #(#stmts)*
+                #value
+            }
+
+            /// The point positions P(q) on any dual number of `num_dual`
+            /// (see [`Self::point_positions`]).
+            #[must_use]
+            pub fn point_positions_generic<D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy>(
+                &self,
+                #pu: &SVector<D, #m>,
+                #pv: &SVector<D, #f>,
+            ) -> [Vector2<D>; #np] {
+                #(#pstatements)*
+                [#(#vectors),*]
+            }
+        }
+    }
+
+    fn trait_impl(&self) -> TokenStream {
+        let item = &self.input.item;
+        let ty = &item.ident;
+        let (impl_generics, ty_generics, where_clause) = item.generics.split_for_impl();
+        let (m, f, np) = (
+            Literal::usize_unsuffixed(self.m),
+            Literal::usize_unsuffixed(self.f),
+            Literal::usize_unsuffixed(self.np),
+        );
+        quote! {
+            #[automatically_derived]
+            impl #impl_generics ::linkage::Linkage<#m, #f> for #ty #ty_generics #where_clause {
+                type Points = [Vector2<f64>; #np];
+                const U_NAMES: [&'static str; #m] = Self::U_NAMES;
+                const V_NAMES: [&'static str; #f] = Self::V_NAMES;
+                const POINT_NAMES: &'static [&'static str] = &Self::POINT_NAMES;
+                const SYMBOLIC: ::linkage::SymbolicTable = Self::SYMBOLIC;
+
+                fn psi(&self, u: &SVector<f64, #m>, v: &SVector<f64, #f>) -> SVector<f64, #m> {
+                    Self::psi(self, u, v)
+                }
+                fn psi_u(&self, u: &SVector<f64, #m>, v: &SVector<f64, #f>) -> SMatrix<f64, #m, #m> {
+                    Self::psi_u(self, u, v)
+                }
+                fn psi_v(&self, u: &SVector<f64, #m>, v: &SVector<f64, #f>) -> SMatrix<f64, #m, #f> {
+                    Self::psi_v(self, u, v)
+                }
+                fn psi_and_psi_u(
+                    &self,
+                    u: &SVector<f64, #m>,
+                    v: &SVector<f64, #f>,
+                ) -> (SVector<f64, #m>, SMatrix<f64, #m, #m>) {
+                    Self::psi_and_psi_u(self, u, v)
+                }
+                fn psi_u_udot_u(&self, u: &SVector<f64, #m>, v: &SVector<f64, #f>, udot: &SVector<f64, #m>) -> SMatrix<f64, #m, #m> {
+                    Self::psi_u_udot_u(self, u, v, udot)
+                }
+                fn psi_u_udot_v(&self, u: &SVector<f64, #m>, v: &SVector<f64, #f>, udot: &SVector<f64, #m>) -> SMatrix<f64, #m, #f> {
+                    Self::psi_u_udot_v(self, u, v, udot)
+                }
+                fn psi_v_vdot_u(&self, u: &SVector<f64, #m>, v: &SVector<f64, #f>, vdot: &SVector<f64, #f>) -> SMatrix<f64, #m, #m> {
+                    Self::psi_v_vdot_u(self, u, v, vdot)
+                }
+                fn psi_v_vdot_v(&self, u: &SVector<f64, #m>, v: &SVector<f64, #f>, vdot: &SVector<f64, #f>) -> SMatrix<f64, #m, #f> {
+                    Self::psi_v_vdot_v(self, u, v, vdot)
+                }
+                fn psi_u_dot(&self, u: &SVector<f64, #m>, v: &SVector<f64, #f>, udot: &SVector<f64, #m>, vdot: &SVector<f64, #f>) -> SMatrix<f64, #m, #m> {
+                    Self::psi_u_dot(self, u, v, udot, vdot)
+                }
+                fn psi_v_dot(&self, u: &SVector<f64, #m>, v: &SVector<f64, #f>, udot: &SVector<f64, #m>, vdot: &SVector<f64, #f>) -> SMatrix<f64, #m, #f> {
+                    Self::psi_v_dot(self, u, v, udot, vdot)
+                }
+                fn gamma(&self, u: &SVector<f64, #m>, v: &SVector<f64, #f>, udot: &SVector<f64, #m>, vdot: &SVector<f64, #f>) -> SVector<f64, #m> {
+                    Self::gamma(self, u, v, udot, vdot)
+                }
+                fn point_positions(&self, u: &SVector<f64, #m>, v: &SVector<f64, #f>) -> [Vector2<f64>; #np] {
+                    Self::point_positions(self, u, v)
+                }
+                fn point_velocities(&self, u: &SVector<f64, #m>, v: &SVector<f64, #f>, udot: &SVector<f64, #m>, vdot: &SVector<f64, #f>) -> [Vector2<f64>; #np] {
+                    Self::point_velocities(self, u, v, udot, vdot)
+                }
+                fn point_accelerations(
+                    &self,
+                    u: &SVector<f64, #m>,
+                    v: &SVector<f64, #f>,
+                    udot: &SVector<f64, #m>,
+                    vdot: &SVector<f64, #f>,
+                    uddot: &SVector<f64, #m>,
+                    vddot: &SVector<f64, #f>,
+                ) -> [Vector2<f64>; #np] {
+                    Self::point_accelerations(self, u, v, udot, vdot, uddot, vddot)
+                }
+                fn psi_generic<D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy>(
+                    &self,
+                    u: &SVector<D, #m>,
+                    v: &SVector<D, #f>,
+                ) -> SVector<D, #m> {
+                    Self::psi_generic(self, u, v)
+                }
+                fn point_positions_generic<D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy>(
+                    &self,
+                    u: &SVector<D, #m>,
+                    v: &SVector<D, #f>,
+                ) -> impl AsRef<[Vector2<D>]> {
+                    Self::point_positions_generic(self, u, v)
+                }
+            }
+        }
+    }
+
+    /// The `SymbolicTable` constant: every generated quantity as text.
+    fn symbolic_table(&self) -> TokenStream {
+        let model = self.model;
+        let fmt = self.formatter();
+        let (m, f) = (self.m, self.f);
+        let eq_labels: Vec<String> = (1..=m).map(|i| format!("Ψ{}", subscript(i))).collect();
+        let u_labels: Vec<String> = (0..m).map(|k| self.names.coord(k)).collect();
+        let v_labels: Vec<String> = (m..m + f).map(|k| self.names.coord(k)).collect();
+        let q_labels: Vec<String> = (0..m + f).map(|k| self.names.coord(k)).collect();
+        let mut entries: Vec<TokenStream> = Vec::new();
+        let mut add =
+            |key: &str, title: &str, matrix: &Matrix, rows: &[String], cols: &[String]| {
+                let texts = matrix.entries.iter().map(|&e| fmt.format(e));
+                let (r, c) = (matrix.rows, matrix.cols);
+                entries.push(quote! {
+                    ::linkage::SymbolicMatrix {
+                        key: #key,
+                        title: #title,
+                        rows: #r,
+                        cols: #c,
+                        row_labels: &[#(#rows),*],
+                        col_labels: &[#(#cols),*],
+                        entries: &[#(#texts),*],
+                    }
+                });
+            };
+        let one = ["".to_owned()];
+        add("psi", "Ψ", &model.psi, &eq_labels, &one);
+        add("psi_q", "Ψ_q", &model.psi_q, &eq_labels, &q_labels);
+        add("psi_u", "Ψ_u", &model.psi_u, &eq_labels, &u_labels);
+        add("psi_v", "Ψ_v", &model.psi_v, &eq_labels, &v_labels);
+        if let Some(det) = model.det_psi_u {
+            let d = Matrix::column(vec![det]);
+            add("det_psi_u", "det Ψ_u", &d, &one, &one);
+        }
+        add(
+            "psi_u_udot_u",
+            "([Ψ_u]u̇)_u",
+            &model.psi_u_udot_u,
+            &eq_labels,
+            &u_labels,
+        );
+        add(
+            "psi_u_udot_v",
+            "([Ψ_u]u̇)_v",
+            &model.psi_u_udot_v,
+            &eq_labels,
+            &v_labels,
+        );
+        add(
+            "psi_v_vdot_u",
+            "([Ψ_v]v̇)_u",
+            &model.psi_v_vdot_u,
+            &eq_labels,
+            &u_labels,
+        );
+        add(
+            "psi_v_vdot_v",
+            "([Ψ_v]v̇)_v",
+            &model.psi_v_vdot_v,
+            &eq_labels,
+            &v_labels,
+        );
+        add("psi_u_dot", "Ψ̇_u", &model.psi_u_dot, &eq_labels, &u_labels);
+        add("psi_v_dot", "Ψ̇_v", &model.psi_v_dot, &eq_labels, &v_labels);
+        add("gamma", "γ = (Ψ_q q̇)_q q̇", &model.gamma, &eq_labels, &one);
+        let point_labels: Vec<String> = model.points.iter().map(|p| p.name.clone()).collect();
+        let xy = ["x".to_owned(), "y".to_owned()];
+        for (key, title, pick) in [
+            ("points", "P", 0usize),
+            ("point_velocities", "Ṗ", 1),
+            ("point_accelerations", "P̈", 2),
+        ] {
+            let entries: Vec<Id> = model
+                .points
+                .iter()
+                .flat_map(|p| [p.position, p.velocity, p.acceleration][pick])
+                .collect();
+            let matrix = Matrix {
+                rows: model.points.len(),
+                cols: 2,
+                entries,
+            };
+            add(key, title, &matrix, &point_labels, &xy);
+        }
+        drop(add);
+        let name = self.input.item.ident.to_string();
+        let agree = match model.methods_agree {
+            Some(b) => quote!(::core::option::Option::Some(#b)),
+            None => quote!(::core::option::Option::None),
+        };
+        quote! {
+            ::linkage::SymbolicTable {
+                name: #name,
+                u: &[#(#u_labels),*],
+                v: &[#(#v_labels),*],
+                matrices: &[#(#entries),*],
+                methods_agree: #agree,
+            }
+        }
+    }
+}
+
+fn arg_names(reads: &Reads) -> (proc_macro2::Ident, proc_macro2::Ident) {
+    (
+        if reads.u {
+            format_ident!("u")
+        } else {
+            format_ident!("_u")
+        },
+        if reads.v {
+            format_ident!("v")
+        } else {
+            format_ident!("_v")
+        },
+    )
+}
+
+/// The statements filling a result matrix from the emitted values (zero
+/// entries left out), the expression naming it, and its type.
+fn assemble<'v>(
+    matrix: &Matrix,
+    name: &str,
+    values: &mut impl Iterator<Item = &'v TokenStream>,
+    scalar: TokenStream,
+) -> (Vec<TokenStream>, TokenStream, TokenStream) {
+    let (r, c) = (
+        Literal::usize_unsuffixed(matrix.rows),
+        Literal::usize_unsuffixed(matrix.cols),
+    );
+    let is_vector = matrix.cols == 1;
+    let (ty, constructor) = if is_vector {
+        (quote!(SVector<#scalar, #r>), quote!(SVector::<#scalar, #r>))
+    } else {
+        (
+            quote!(SMatrix<#scalar, #r, #c>),
+            quote!(SMatrix::<#scalar, #r, #c>),
+        )
+    };
+    let nonzero: Vec<usize> = (0..matrix.entries.len())
+        .filter(|&k| matrix.entries[k] != Dag::ZERO)
+        .collect();
+    if nonzero.is_empty() {
+        return (Vec::new(), quote!(#constructor::zeros()), ty);
+    }
+    let var = format_ident!("{}", name);
+    let mut stmts = vec![quote!(let mut #var = #constructor::zeros();)];
+    for k in nonzero {
+        let value = values.next();
+        let (i, j) = (k / matrix.cols, k % matrix.cols);
+        let index = if is_vector {
+            let i = Literal::usize_unsuffixed(i);
+            quote!(#i)
+        } else {
+            let (i, j) = (Literal::usize_unsuffixed(i), Literal::usize_unsuffixed(j));
+            quote!((#i, #j))
+        };
+        stmts.push(quote!(#var[#index] = #value;));
+    }
+    (stmts, quote!(#var), ty)
+}
+
+/// A matrix of formulas laid out in aligned columns, or one entry per line
+/// when the rows would be too wide to read.
+pub fn layout(rows: usize, cols: usize, text: &[String]) -> Vec<String> {
+    let width = |s: &str| {
+        s.chars()
+            .filter(|c| !('\u{300}'..='\u{36f}').contains(c))
+            .count()
+    };
+    let col_width: Vec<usize> = (0..cols)
+        .map(|j| {
+            (0..rows)
+                .map(|i| width(&text[i * cols + j]))
+                .max()
+                .unwrap_or(0)
+        })
+        .collect();
+    let total: usize = col_width.iter().sum::<usize>() + 3 * cols + 1;
+    if total <= 100 {
+        (0..rows)
+            .map(|i| {
+                let cells: Vec<String> = (0..cols)
+                    .map(|j| {
+                        let t = &text[i * cols + j];
+                        format!("{t}{}", " ".repeat(col_width[j] - width(t)))
+                    })
+                    .collect();
+                format!("[ {} ]", cells.join("   ")).trim_end().to_owned()
+            })
+            .collect()
+    } else {
+        let mut out = Vec::new();
+        for i in 0..rows {
+            for j in 0..cols {
+                if cols == 1 {
+                    out.push(format!("[{}] = {}", i + 1, text[i * cols + j]));
+                } else {
+                    out.push(format!("[{}, {}] = {}", i + 1, j + 1, text[i * cols + j]));
+                }
+            }
+        }
+        out
+    }
+}
+
+fn subscript(n: usize) -> String {
+    const DIGITS: [char; 10] = ['₀', '₁', '₂', '₃', '₄', '₅', '₆', '₇', '₈', '₉'];
+    n.to_string()
+        .chars()
+        .map(|d| DIGITS[d.to_digit(10).unwrap_or(0) as usize])
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::expand;
+    use quote::quote;
+
+    /// The four-bar of the worksheet, formatted as `cargo expand` shows it.
+    pub fn fourbar_expansion() -> String {
+        let attr = quote! {
+            u = [theta3, theta4],
+            v = [theta2],
+            points = [
+                B = (l2 * theta2.cos(), l2 * theta2.sin()),
+                C = (B.x + l3 * theta3.cos(), B.y + l3 * theta3.sin()),
+                G2 = (0.5 * B.x, 0.5 * B.y),
+                G3 = (0.5 * (B.x + C.x), 0.5 * (B.y + C.y)),
+                G4 = (C.x + 0.5 * l4 * theta4.cos(), C.y + 0.5 * l4 * theta4.sin()),
+            ],
+            closure = [
+                l2 * theta2.cos() + l3 * theta3.cos() + l4 * theta4.cos() - l1,
+                l2 * theta2.sin() + l3 * theta3.sin() + l4 * theta4.sin(),
+            ],
+        };
+        let item = quote! {
+            #[derive(Clone, Debug)]
+            pub struct FourBar { pub l1: f64, pub l2: f64, pub l3: f64, pub l4: f64 }
+        };
+        let tokens = expand(attr, item);
+        let file: syn::File = match syn::parse2(tokens.clone()) {
+            Ok(file) => file,
+            Err(e) => panic!("the expansion does not parse ({e}):\n{tokens}"),
+        };
+        prettyplease::unparse(&file)
+    }
+
+    #[test]
+    fn fourbar_expands_to_valid_rust() {
+        let text = fourbar_expansion();
+        if std::env::var_os("LINKAGE_PRINT_EXPANSION").is_some() {
+            println!("{text}");
+        }
+        assert!(text.contains("let (s_theta3, c_theta3) = theta3.sin_cos();"));
+    }
+}

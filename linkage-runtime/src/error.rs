@@ -1,0 +1,105 @@
+//! The typed errors of the runtime: every failure says what happened, where,
+//! and the figure that explains it.
+
+use core::fmt;
+
+/// The step of the analysis where an error arose.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Stage {
+    /// Newton–Raphson on Ψ(u, v) = 0.
+    Position,
+    /// The velocity solve Ψ_u u̇ = −Ψ_v v̇.
+    Velocity,
+    /// The acceleration solve Ψ_u ü = −Ψ_v v̈ − γ.
+    Acceleration,
+    /// The points' kinematics.
+    Points,
+}
+
+impl fmt::Display for Stage {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Stage::Position => "position",
+            Stage::Velocity => "velocity",
+            Stage::Acceleration => "acceleration",
+            Stage::Points => "points",
+        })
+    }
+}
+
+/// Why an analysis failed.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// An argument holds a NaN or an infinity.
+    #[error("non-finite input: {argument}[{index}] = {value}")]
+    NonFiniteInput {
+        /// The argument (`"u"`, `"v"`, `"vdot"`, ...).
+        argument: &'static str,
+        index: usize,
+        value: f64,
+    },
+    /// Newton–Raphson used its iterations without meeting the tolerances.
+    #[error(
+        "Newton–Raphson did not converge in {iterations} iterations: \
+         ‖Ψ‖∞ = {residual:.3e}, last step ‖Δu‖∞ = {step:.3e}"
+    )]
+    NotConverged {
+        iterations: usize,
+        /// ‖Ψ‖∞ at the last iterate.
+        residual: f64,
+        /// ‖Δu‖∞ of the last step.
+        step: f64,
+    },
+    /// Ψ_u is singular or so ill-conditioned that a solve with it would be
+    /// garbage: the mechanism is at (or next to) a dead-centre, limit or
+    /// change-point pose, or the equations do not determine u.
+    #[error(
+        "Ψ_u is singular in the {stage} solve: reciprocal condition number {rcond:.3e} \
+         is below the threshold {min_rcond:.3e} (the pose is at or near a singular \
+         configuration: dead centre, limit position or branch point)"
+    )]
+    Singular {
+        stage: Stage,
+        /// 1/(‖Ψ_u‖₁‖Ψ_u⁻¹‖₁), 0 for an exactly singular matrix.
+        rcond: f64,
+        /// The threshold in force ([`crate::Options::min_rcond`]).
+        min_rcond: f64,
+    },
+    /// A generated quantity is NaN or infinite although the inputs are
+    /// finite: the pose or the parameters are outside the domain of the
+    /// equations (e.g. `sqrt` of a negative number), or a value overflows.
+    #[error(
+        "{quantity} is not finite in the {stage} stage: the pose or the parameters are outside the equations' domain"
+    )]
+    NonFiniteValue {
+        stage: Stage,
+        /// The quantity, e.g. `"Ψ"` or `"ü"`.
+        quantity: &'static str,
+    },
+}
+
+/// Checks that every entry of `values` is finite.
+pub(crate) fn check_input(argument: &'static str, values: &[f64]) -> Result<(), Error> {
+    match values.iter().position(|x| !x.is_finite()) {
+        None => Ok(()),
+        Some(index) => Err(Error::NonFiniteInput {
+            argument,
+            index,
+            value: values[index],
+        }),
+    }
+}
+
+/// Checks that a computed quantity is finite.
+pub(crate) fn check_value(
+    stage: Stage,
+    quantity: &'static str,
+    values: &[f64],
+) -> Result<(), Error> {
+    if values.iter().all(|x| x.is_finite()) {
+        Ok(())
+    } else {
+        Err(Error::NonFiniteValue { stage, quantity })
+    }
+}

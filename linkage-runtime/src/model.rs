@@ -1,0 +1,475 @@
+//! The [`Linkage`] trait: what `#[linkage::linkage]` generates, and the
+//! analyses the runtime builds on it.
+
+use crate::error::{Error, Stage, check_input, check_value};
+use crate::linalg::{Inverse, invert};
+use crate::symbolic::SymbolicTable;
+use nalgebra::{SMatrix, SVector, Vector2};
+use num_dual::DualNum;
+
+/// Which of the two equivalent forms of γ an acceleration solve uses; all
+/// three give the same ü (the tests show they differ by rounding only).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum AccelerationMethod {
+    /// Method A, the time derivative: γ = Ψ̇_u u̇ + Ψ̇_v v̇
+    /// (the worksheet's H0 = H1 + H2 + H3).
+    A,
+    /// Method B, the Jacobian of [Ψ_u]u̇: γ = (Ψ_u u̇)_u u̇ + (Ψ_u u̇)_v v̇ +
+    /// (Ψ_v v̇)_u u̇ + (Ψ_v v̇)_v v̇ (the worksheet's γ0).
+    B,
+    /// γ = (Ψ_q q̇)_q q̇ in one fused generated expression: the fastest.
+    #[default]
+    Fused,
+}
+
+/// Tolerances and choices of the solvers.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Options {
+    /// Newton–Raphson stops when ‖Ψ‖∞ ≤ `residual_tol` (in the units of the
+    /// equations) and the last step met `step_tol`.
+    pub residual_tol: f64,
+    /// ... and the last step ‖Δu‖∞ ≤ `step_tol`·max(1, ‖u‖∞). Newton
+    /// converges quadratically, so after a step this small the error left is
+    /// of the order of its square: the default leaves u exact to rounding.
+    pub step_tol: f64,
+    /// The most Newton steps taken.
+    pub max_iterations: usize,
+    /// A solve with Ψ_u whose reciprocal condition number
+    /// 1/(‖Ψ_u‖₁‖Ψ_u⁻¹‖₁) is below this fails with [`Error::Singular`]
+    /// rather than return a result that lost more digits than it kept.
+    pub min_rcond: f64,
+    /// The form of γ used by [`Linkage::analyze`].
+    pub method: AccelerationMethod,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            residual_tol: 1e-9,
+            step_tol: 1e-10,
+            max_iterations: 50,
+            min_rcond: 1e-10,
+            method: AccelerationMethod::Fused,
+        }
+    }
+}
+
+/// An assembled pose found by Newton–Raphson.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Position<const M: usize> {
+    pub u: SVector<f64, M>,
+    /// Newton steps taken.
+    pub iterations: usize,
+    /// ‖Ψ(u, v)‖∞ at the solution.
+    pub residual: f64,
+    /// Ψ_u at the solution (reused by the velocity solve).
+    pub psi_u: SMatrix<f64, M, M>,
+}
+
+/// One Newton–Raphson iterate, as reported to an observer.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Iterate<const M: usize> {
+    /// 0 for the initial guess.
+    pub iteration: usize,
+    pub u: SVector<f64, M>,
+    /// ‖Ψ(u, v)‖∞
+    pub residual: f64,
+    /// ‖Δu‖∞ of the step that led here (0 for the initial guess).
+    pub step: f64,
+}
+
+/// The velocity solution.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Velocity<const M: usize, const F: usize> {
+    /// u̇ = −R v̇
+    pub udot: SVector<f64, M>,
+    /// The velocity ratios R = Ψ_u⁻¹Ψ_v (the worksheet's `Rap`); for one
+    /// degree of freedom, −R is the column of first kinematic analogs du/dv.
+    pub ratios: SMatrix<f64, M, F>,
+    /// The reciprocal condition number of Ψ_u.
+    pub rcond: f64,
+}
+
+/// Positions, velocities and accelerations of a pose, of the coordinates
+/// and of the points.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Analysis<const M: usize, const F: usize, P> {
+    pub u: SVector<f64, M>,
+    pub udot: SVector<f64, M>,
+    pub uddot: SVector<f64, M>,
+    /// R = Ψ_u⁻¹Ψ_v
+    pub ratios: SMatrix<f64, M, F>,
+    pub points: P,
+    pub point_velocities: P,
+    pub point_accelerations: P,
+    /// Newton steps taken.
+    pub iterations: usize,
+    /// ‖Ψ‖∞ at the solution.
+    pub residual: f64,
+    /// The reciprocal condition number of Ψ_u at the solution.
+    pub rcond: f64,
+}
+
+/// A planar mechanism described by closure equations Ψ(u, v) = 0 with m
+/// dependent coordinates u and f driving coordinates v.
+///
+/// `#[linkage::linkage(...)]` implements the required methods with code
+/// generated from the equations; the provided methods are the analyses.
+pub trait Linkage<const M: usize, const F: usize> {
+    /// The points' positions, velocities or accelerations: one 2-vector per
+    /// named point, in the order of [`Linkage::POINT_NAMES`].
+    type Points: Copy + core::fmt::Debug + PartialEq + AsRef<[Vector2<f64>]>;
+    const U_NAMES: [&'static str; M];
+    const V_NAMES: [&'static str; F];
+    const POINT_NAMES: &'static [&'static str];
+    const SYMBOLIC: SymbolicTable;
+
+    /// Ψ
+    fn psi(&self, u: &SVector<f64, M>, v: &SVector<f64, F>) -> SVector<f64, M>;
+    /// Ψ_u = ∂Ψ/∂u
+    fn psi_u(&self, u: &SVector<f64, M>, v: &SVector<f64, F>) -> SMatrix<f64, M, M>;
+    /// Ψ_v = ∂Ψ/∂v
+    fn psi_v(&self, u: &SVector<f64, M>, v: &SVector<f64, F>) -> SMatrix<f64, M, F>;
+    /// Ψ and Ψ_u in one evaluation.
+    fn psi_and_psi_u(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+    ) -> (SVector<f64, M>, SMatrix<f64, M, M>);
+    /// ([Ψ_u]u̇)_u
+    fn psi_u_udot_u(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        udot: &SVector<f64, M>,
+    ) -> SMatrix<f64, M, M>;
+    /// ([Ψ_u]u̇)_v
+    fn psi_u_udot_v(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        udot: &SVector<f64, M>,
+    ) -> SMatrix<f64, M, F>;
+    /// ([Ψ_v]v̇)_u
+    fn psi_v_vdot_u(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        vdot: &SVector<f64, F>,
+    ) -> SMatrix<f64, M, M>;
+    /// ([Ψ_v]v̇)_v
+    fn psi_v_vdot_v(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        vdot: &SVector<f64, F>,
+    ) -> SMatrix<f64, M, F>;
+    /// Ψ̇_u
+    fn psi_u_dot(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        udot: &SVector<f64, M>,
+        vdot: &SVector<f64, F>,
+    ) -> SMatrix<f64, M, M>;
+    /// Ψ̇_v
+    fn psi_v_dot(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        udot: &SVector<f64, M>,
+        vdot: &SVector<f64, F>,
+    ) -> SMatrix<f64, M, F>;
+    /// γ = (Ψ_q q̇)_q q̇
+    fn gamma(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        udot: &SVector<f64, M>,
+        vdot: &SVector<f64, F>,
+    ) -> SVector<f64, M>;
+    /// P(q)
+    fn point_positions(&self, u: &SVector<f64, M>, v: &SVector<f64, F>) -> Self::Points;
+    /// Ṗ = P_q q̇
+    fn point_velocities(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        udot: &SVector<f64, M>,
+        vdot: &SVector<f64, F>,
+    ) -> Self::Points;
+    /// P̈ = P_q q̈ + (P_q q̇)_q q̇
+    #[allow(clippy::too_many_arguments)]
+    fn point_accelerations(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        udot: &SVector<f64, M>,
+        vdot: &SVector<f64, F>,
+        uddot: &SVector<f64, M>,
+        vddot: &SVector<f64, F>,
+    ) -> Self::Points;
+    /// Ψ on dual numbers.
+    fn psi_generic<D: DualNum<Primitive = f64> + Copy>(
+        &self,
+        u: &SVector<D, M>,
+        v: &SVector<D, F>,
+    ) -> SVector<D, M>;
+    /// P(q) on dual numbers.
+    fn point_positions_generic<D: DualNum<Primitive = f64> + Copy>(
+        &self,
+        u: &SVector<D, M>,
+        v: &SVector<D, F>,
+    ) -> impl AsRef<[Vector2<D>]>;
+
+    /// The index of a named point.
+    fn point_index(name: &str) -> Option<usize> {
+        Self::POINT_NAMES.iter().position(|n| *n == name)
+    }
+
+    /// Solves Ψ(u, v) = 0 for u by Newton–Raphson from the guess `u0`.
+    fn solve_position(
+        &self,
+        u0: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        options: &Options,
+    ) -> Result<Position<M>, Error> {
+        self.solve_position_observed(u0, v, options, |_| {})
+    }
+
+    /// [`Linkage::solve_position`], reporting every iterate (the initial
+    /// guess first) to `observe`.
+    fn solve_position_observed(
+        &self,
+        u0: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        options: &Options,
+        mut observe: impl FnMut(&Iterate<M>),
+    ) -> Result<Position<M>, Error> {
+        check_input("u0", u0.as_slice())?;
+        check_input("v", v.as_slice())?;
+        let mut u = *u0;
+        let (mut psi, mut psi_u) = self.psi_and_psi_u(&u, v);
+        check_value(Stage::Position, "Ψ", psi.as_slice())?;
+        check_value(Stage::Position, "Ψ_u", psi_u.as_slice())?;
+        let mut residual = psi.amax();
+        observe(&Iterate {
+            iteration: 0,
+            u,
+            residual,
+            step: 0.0,
+        });
+        let mut step = f64::INFINITY;
+        for iteration in 1..=options.max_iterations {
+            let inv = factor(&psi_u, Stage::Position, options.min_rcond)?;
+            let delta = -(inv.inverse * psi);
+            u += delta;
+            step = delta.amax();
+            check_value(Stage::Position, "u", u.as_slice())?;
+            (psi, psi_u) = self.psi_and_psi_u(&u, v);
+            check_value(Stage::Position, "Ψ", psi.as_slice())?;
+            check_value(Stage::Position, "Ψ_u", psi_u.as_slice())?;
+            residual = psi.amax();
+            observe(&Iterate {
+                iteration,
+                u,
+                residual,
+                step,
+            });
+            let small_step = step <= options.step_tol * u.amax().max(1.0);
+            if (small_step || residual == 0.0) && residual <= options.residual_tol {
+                return Ok(Position {
+                    u,
+                    iterations: iteration,
+                    residual,
+                    psi_u,
+                });
+            }
+        }
+        Err(Error::NotConverged {
+            iterations: options.max_iterations,
+            residual,
+            step,
+        })
+    }
+
+    /// The velocity u̇ = −Ψ_u⁻¹Ψ_v v̇ and the ratio matrix R = Ψ_u⁻¹Ψ_v at an
+    /// assembled pose.
+    fn velocity(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        vdot: &SVector<f64, F>,
+        options: &Options,
+    ) -> Result<Velocity<M, F>, Error> {
+        check_input("u", u.as_slice())?;
+        check_input("v", v.as_slice())?;
+        check_input("vdot", vdot.as_slice())?;
+        let psi_u = self.psi_u(u, v);
+        velocity_with(self, &psi_u, u, v, vdot, options)
+    }
+
+    /// γ by the chosen method (no solve).
+    fn gamma_by(
+        &self,
+        method: AccelerationMethod,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        udot: &SVector<f64, M>,
+        vdot: &SVector<f64, F>,
+    ) -> SVector<f64, M> {
+        match method {
+            AccelerationMethod::A => {
+                self.psi_u_dot(u, v, udot, vdot) * udot + self.psi_v_dot(u, v, udot, vdot) * vdot
+            }
+            AccelerationMethod::B => {
+                self.psi_u_udot_u(u, v, udot) * udot
+                    + self.psi_u_udot_v(u, v, udot) * vdot
+                    + self.psi_v_vdot_u(u, v, vdot) * udot
+                    + self.psi_v_vdot_v(u, v, vdot) * vdot
+            }
+            AccelerationMethod::Fused => self.gamma(u, v, udot, vdot),
+        }
+    }
+
+    /// The acceleration ü = −Ψ_u⁻¹(Ψ_v v̈ + γ) at an assembled pose with
+    /// velocities `udot`, `vdot`, with γ by `options.method`.
+    #[allow(clippy::too_many_arguments)]
+    fn acceleration(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        udot: &SVector<f64, M>,
+        vdot: &SVector<f64, F>,
+        vddot: &SVector<f64, F>,
+        options: &Options,
+    ) -> Result<SVector<f64, M>, Error> {
+        for (name, values) in [("u", u.as_slice()), ("udot", udot.as_slice())] {
+            check_input(name, values)?;
+        }
+        for (name, values) in [
+            ("v", v.as_slice()),
+            ("vdot", vdot.as_slice()),
+            ("vddot", vddot.as_slice()),
+        ] {
+            check_input(name, values)?;
+        }
+        let inv = factor(&self.psi_u(u, v), Stage::Acceleration, options.min_rcond)?;
+        acceleration_with(self, &inv, u, v, udot, vdot, vddot, options.method)
+    }
+
+    /// The whole analysis of one pose: Newton–Raphson from `u_guess`, then
+    /// velocities and accelerations of the coordinates and the points.
+    fn analyze(
+        &self,
+        u_guess: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        vdot: &SVector<f64, F>,
+        vddot: &SVector<f64, F>,
+        options: &Options,
+    ) -> Result<Analysis<M, F, Self::Points>, Error> {
+        check_input("vdot", vdot.as_slice())?;
+        check_input("vddot", vddot.as_slice())?;
+        let position = self.solve_position(u_guess, v, options)?;
+        let u = position.u;
+        let velocity = velocity_with(self, &position.psi_u, &u, v, vdot, options)?;
+        let inv = factor(&position.psi_u, Stage::Acceleration, options.min_rcond)?;
+        let uddot = acceleration_with(
+            self,
+            &inv,
+            &u,
+            v,
+            &velocity.udot,
+            vdot,
+            vddot,
+            options.method,
+        )?;
+        let points = self.point_positions(&u, v);
+        let point_velocities = self.point_velocities(&u, v, &velocity.udot, vdot);
+        let point_accelerations =
+            self.point_accelerations(&u, v, &velocity.udot, vdot, &uddot, vddot);
+        for (quantity, p) in [
+            ("P", &points),
+            ("Ṗ", &point_velocities),
+            ("P̈", &point_accelerations),
+        ] {
+            if !p.as_ref().iter().all(|x| x.iter().all(|c| c.is_finite())) {
+                return Err(Error::NonFiniteValue {
+                    stage: Stage::Points,
+                    quantity,
+                });
+            }
+        }
+        Ok(Analysis {
+            u,
+            udot: velocity.udot,
+            uddot,
+            ratios: velocity.ratios,
+            points,
+            point_velocities,
+            point_accelerations,
+            iterations: position.iterations,
+            residual: position.residual,
+            rcond: velocity.rcond,
+        })
+    }
+}
+
+/// Ψ_u inverted, or [`Error::Singular`] if its conditioning is below the
+/// threshold.
+fn factor<const M: usize>(
+    psi_u: &SMatrix<f64, M, M>,
+    stage: Stage,
+    min_rcond: f64,
+) -> Result<Inverse<M>, Error> {
+    let inv = invert(psi_u);
+    if inv.rcond > 0.0 && inv.rcond >= min_rcond {
+        Ok(inv)
+    } else {
+        Err(Error::Singular {
+            stage,
+            rcond: inv.rcond,
+            min_rcond,
+        })
+    }
+}
+
+fn velocity_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
+    model: &L,
+    psi_u: &SMatrix<f64, M, M>,
+    u: &SVector<f64, M>,
+    v: &SVector<f64, F>,
+    vdot: &SVector<f64, F>,
+    options: &Options,
+) -> Result<Velocity<M, F>, Error> {
+    let inv = factor(psi_u, Stage::Velocity, options.min_rcond)?;
+    let psi_v = model.psi_v(u, v);
+    check_value(Stage::Velocity, "Ψ_v", psi_v.as_slice())?;
+    let ratios = inv.inverse * psi_v;
+    let udot = -(ratios * vdot);
+    check_value(Stage::Velocity, "u̇", udot.as_slice())?;
+    Ok(Velocity {
+        udot,
+        ratios,
+        rcond: inv.rcond,
+    })
+}
+
+#[allow(clippy::too_many_arguments)]
+fn acceleration_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
+    model: &L,
+    inv: &Inverse<M>,
+    u: &SVector<f64, M>,
+    v: &SVector<f64, F>,
+    udot: &SVector<f64, M>,
+    vdot: &SVector<f64, F>,
+    vddot: &SVector<f64, F>,
+    method: AccelerationMethod,
+) -> Result<SVector<f64, M>, Error> {
+    let gamma = model.gamma_by(method, u, v, udot, vdot);
+    check_value(Stage::Acceleration, "γ", gamma.as_slice())?;
+    let rhs = -(model.psi_v(u, v) * vddot + gamma);
+    let uddot = inv.inverse * rhs;
+    check_value(Stage::Acceleration, "ü", uddot.as_slice())?;
+    Ok(uddot)
+}
