@@ -26,6 +26,8 @@ mod interp;
 mod lower;
 mod model;
 mod normal;
+#[cfg(test)]
+mod proptests;
 mod suggest;
 mod valid;
 
