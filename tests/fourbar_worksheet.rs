@@ -25,19 +25,49 @@ fn reference() -> HashMap<String, f64> {
 /// Keys of the reference that are not quantities of this analysis, with the
 /// reason.
 const NOT_KINEMATICS: [(&str, &str); 13] = [
-    ("residual_", "Maple's Digits=10 round-off residual; ours is checked to be ~0 instead"),
-    ("check.printed_u2pu_formula_absdiff", "a check of the worksheet's printed formula"),
-    ("check.velocity_residual_norm", "checked directly (Ψ_u u̇ + Ψ_v v̇)"),
-    ("check.acc_methods", "checked directly (method A − method B)"),
-    ("sweep.check.acc_methods_max_absdiff", "checked directly over the sweep"),
-    ("maple_coeff.", "coefficients of Maple's printed simplification"),
-    ("omega4_coeff_l2w2_over_l4", "a coefficient of Maple's printed formula"),
+    (
+        "residual_",
+        "Maple's Digits=10 round-off residual; ours is checked to be ~0 instead",
+    ),
+    (
+        "check.printed_u2pu_formula_absdiff",
+        "a check of the worksheet's printed formula",
+    ),
+    (
+        "check.velocity_residual_norm",
+        "checked directly (Ψ_u u̇ + Ψ_v v̇)",
+    ),
+    (
+        "check.acc_methods",
+        "checked directly (method A − method B)",
+    ),
+    (
+        "sweep.check.acc_methods_max_absdiff",
+        "checked directly over the sweep",
+    ),
+    (
+        "maple_coeff.",
+        "coefficients of Maple's printed simplification",
+    ),
+    (
+        "omega4_coeff_l2w2_over_l4",
+        "a coefficient of Maple's printed formula",
+    ),
     ("grashof.", "Grashof classes: the stability tests"),
-    ("sweep_l2_40.", "the change-point four-bar: the stability tests"),
-    ("extra_nongrashof_l2_45.", "the non-Grashof four-bar: the stability tests"),
+    (
+        "sweep_l2_40.",
+        "the change-point four-bar: the stability tests",
+    ),
+    (
+        "extra_nongrashof_l2_45.",
+        "the non-Grashof four-bar: the stability tests",
+    ),
     ("sweep.alpha3.cont_", "extrema of α need the jerk"),
     ("sweep.alpha4.cont_", "extrema of α need the jerk"),
-    ("dist_", "distances between the worksheet's points (checked as link lengths below)"),
+    (
+        "dist_",
+        "distances between the worksheet's points (checked as link lengths below)",
+    ),
 ];
 
 struct Worksheet {
@@ -57,7 +87,13 @@ impl Worksheet {
             .solve_position_observed(&guess, &v, &Options::default(), |it| iterates.push(it.u))
             .unwrap();
         let a = bar
-            .analyze(&guess, &v, &vector![OMEGA2], &vector![0.0], &Options::default())
+            .analyze(
+                &guess,
+                &v,
+                &vector![OMEGA2],
+                &vector![0.0],
+                &Options::default(),
+            )
             .unwrap();
         assert_eq!(a.u, position.u);
         let mut values = HashMap::new();
@@ -161,19 +197,32 @@ fn every_worksheet_number_to_1e_12() {
             Some(&got) => {
                 // Quantities that are exactly zero (the ground pivot's
                 // velocity) are compared against the size of their peers.
-                let floor = if expected.abs() < 1e-20 { 1e3 } else { f64::MIN_POSITIVE };
+                let floor = if expected.abs() < 1e-20 {
+                    1e3
+                } else {
+                    f64::MIN_POSITIVE
+                };
                 let r = rel(got, expected, floor);
-                assert!(r <= 1e-12, "{key}: ours {got:e}, reference {expected:e}, relative {r:.1e}");
+                assert!(
+                    r <= 1e-12,
+                    "{key}: ours {got:e}, reference {expected:e}, relative {r:.1e}"
+                );
                 checked += 1;
             }
             None => {
-                if !NOT_KINEMATICS.iter().any(|(prefix, _)| key.starts_with(prefix)) {
+                if !NOT_KINEMATICS
+                    .iter()
+                    .any(|(prefix, _)| key.starts_with(prefix))
+                {
                     unexplained.push(key.clone());
                 }
             }
         }
     }
-    assert!(unexplained.is_empty(), "reference keys neither checked nor explained: {unexplained:?}");
+    assert!(
+        unexplained.is_empty(),
+        "reference keys neither checked nor explained: {unexplained:?}"
+    );
     eprintln!("{checked} reference values checked");
     assert!(checked >= 130, "only {checked} reference values checked");
 }
@@ -239,7 +288,13 @@ fn sweep_ours() -> Vec<[f64; 7]> {
         .map(|deg| {
             let theta2 = f64::from(deg).to_radians();
             let a = SEED
-                .analyze(&u, &vector![theta2], &vector![OMEGA2], &vector![0.0], &Options::default())
+                .analyze(
+                    &u,
+                    &vector![theta2],
+                    &vector![OMEGA2],
+                    &vector![0.0],
+                    &Options::default(),
+                )
                 .unwrap();
             u = a.u;
             [
@@ -268,7 +323,14 @@ fn sweep_of_360_poses_to_1e_11() {
         let scale = reference.iter().map(|r| r[c].abs()).fold(0.0, f64::max);
         for (r, o) in reference.iter().zip(&ours) {
             let e = rel(o[c], r[c], 1e-3 * scale);
-            assert!(e <= 1e-11, "{} at θ2 = {}°: ours {}, reference {}, relative {e:.1e}", names[c - 1], r[0], o[c], r[c]);
+            assert!(
+                e <= 1e-11,
+                "{} at θ2 = {}°: ours {}, reference {}, relative {e:.1e}",
+                names[c - 1],
+                r[0],
+                o[c],
+                r[c]
+            );
         }
     }
 }
@@ -279,11 +341,24 @@ fn sweep_of_360_poses_to_1e_11() {
 fn sweep_extrema() -> HashMap<String, f64> {
     let ours = sweep_ours();
     let mut out = HashMap::new();
-    let names = ["theta3_deg", "theta4_deg", "omega3", "omega4", "alpha3", "alpha4"];
+    let names = [
+        "theta3_deg",
+        "theta4_deg",
+        "omega3",
+        "omega4",
+        "alpha3",
+        "alpha4",
+    ];
     for (c, name) in names.iter().enumerate() {
         let col = |r: &[f64; 7]| r[c + 1];
-        let min = ours.iter().min_by(|a, b| col(a).total_cmp(&col(b))).unwrap();
-        let max = ours.iter().max_by(|a, b| col(a).total_cmp(&col(b))).unwrap();
+        let min = ours
+            .iter()
+            .min_by(|a, b| col(a).total_cmp(&col(b)))
+            .unwrap();
+        let max = ours
+            .iter()
+            .max_by(|a, b| col(a).total_cmp(&col(b)))
+            .unwrap();
         out.insert(format!("sweep.{name}.min"), col(min));
         out.insert(format!("sweep.{name}.min_at_theta2_deg"), min[0]);
         out.insert(format!("sweep.{name}.max"), col(max));
@@ -309,11 +384,19 @@ fn sweep_extrema() -> HashMap<String, f64> {
     }
     // Continuous extrema: a derivative vanishes; bracket on the grid, then
     // the secant method.
-    for (quantity, derivative, name) in [(0usize, 2usize, "theta3_deg"), (1, 3, "theta4_deg"), (2, 4, "omega3"), (3, 5, "omega4")] {
+    for (quantity, derivative, name) in [
+        (0usize, 2usize, "theta3_deg"),
+        (1, 3, "theta4_deg"),
+        (2, 4, "omega3"),
+        (3, 5, "omega4"),
+    ] {
         let f = |deg: f64| analysis_at(deg, &ours)[derivative];
         let g = |deg: f64| analysis_at(deg, &ours)[quantity];
         let mut found: Vec<(f64, f64)> = Vec::new();
-        for w in ours.windows(2).chain(std::iter::once(&[ours[359], ours[0]][..])) {
+        for w in ours
+            .windows(2)
+            .chain(std::iter::once(&[ours[359], ours[0]][..]))
+        {
             let (a, b) = (w[0][0], if w[1][0] == 0.0 { 360.0 } else { w[1][0] });
             let (fa, fb) = (w[0][derivative + 1], w[1][derivative + 1]);
             if fa == 0.0 || fa.signum() != fb.signum() {
@@ -321,7 +404,13 @@ fn sweep_extrema() -> HashMap<String, f64> {
                 found.push((root, g(root)));
             }
         }
-        let to_out = |x: f64| if name.ends_with("deg") { x.to_degrees() } else { x };
+        let to_out = |x: f64| {
+            if name.ends_with("deg") {
+                x.to_degrees()
+            } else {
+                x
+            }
+        };
         let min = found.iter().min_by(|a, b| a.1.total_cmp(&b.1)).unwrap();
         let max = found.iter().max_by(|a, b| a.1.total_cmp(&b.1)).unwrap();
         out.insert(format!("sweep.{name}.cont_min"), to_out(min.1));
@@ -346,7 +435,13 @@ fn pose_near(deg: f64, sweep: &[[f64; 7]]) -> SVector<f64, 2> {
 fn analysis_at(deg: f64, sweep: &[[f64; 7]]) -> [f64; 6] {
     let u = pose_near(deg, sweep);
     let a = SEED
-        .analyze(&u, &vector![deg.to_radians()], &vector![OMEGA2], &vector![0.0], &Options::default())
+        .analyze(
+            &u,
+            &vector![deg.to_radians()],
+            &vector![OMEGA2],
+            &vector![0.0],
+            &Options::default(),
+        )
         .unwrap();
     [a.u[0], a.u[1], a.udot[0], a.udot[1], a.uddot[0], a.uddot[1]]
 }

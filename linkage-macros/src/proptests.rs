@@ -54,7 +54,11 @@ fn tree() -> impl Strategy<Value = Tree> {
             (inner.clone(), inner.clone()).prop_map(|(a, b)| Tree::Add(a.into(), b.into())),
             (inner.clone(), inner.clone()).prop_map(|(a, b)| Tree::Sub(a.into(), b.into())),
             (inner.clone(), inner.clone()).prop_map(|(a, b)| Tree::Mul(a.into(), b.into())),
-            (inner.clone(), inner.clone(), c.clone()).prop_map(|(a, b, c)| Tree::Div(a.into(), b.into(), c)),
+            (inner.clone(), inner.clone(), c.clone()).prop_map(|(a, b, c)| Tree::Div(
+                a.into(),
+                b.into(),
+                c
+            )),
             inner.clone().prop_map(|a| Tree::Neg(a.into())),
             (inner.clone(), -3i32..4).prop_map(|(a, n)| Tree::Powi(a.into(), n)),
             (
@@ -71,13 +75,28 @@ fn tree() -> impl Strategy<Value = Tree> {
                 inner.clone()
             )
                 .prop_map(|(f, a)| Tree::Free(f, a.into())),
-            (prop_oneof![Just(Func::Tan), Just(Func::Asin), Just(Func::Acos)], inner.clone())
+            (
+                prop_oneof![Just(Func::Tan), Just(Func::Asin), Just(Func::Acos)],
+                inner.clone()
+            )
                 .prop_map(|(f, a)| Tree::Bounded(f, a.into())),
-            (prop_oneof![Just(Func::Sqrt), Just(Func::Ln)], inner.clone(), c.clone())
+            (
+                prop_oneof![Just(Func::Sqrt), Just(Func::Ln)],
+                inner.clone(),
+                c.clone()
+            )
                 .prop_map(|(f, a, c)| Tree::Positive(f, a.into(), c)),
-            (inner.clone(), inner.clone(), c.clone()).prop_map(|(a, b, c)| Tree::Atan2(a.into(), b.into(), c)),
+            (inner.clone(), inner.clone(), c.clone()).prop_map(|(a, b, c)| Tree::Atan2(
+                a.into(),
+                b.into(),
+                c
+            )),
             (inner.clone(), inner.clone()).prop_map(|(a, b)| Tree::Hypot(a.into(), b.into())),
-            (inner.clone(), c.clone(), -2.5..2.5f64).prop_map(|(a, c, p)| Tree::Powf(a.into(), c, p)),
+            (inner.clone(), c.clone(), -2.5..2.5f64).prop_map(|(a, c, p)| Tree::Powf(
+                a.into(),
+                c,
+                p
+            )),
             (inner.clone(), inner, c).prop_map(|(a, b, c)| Tree::PowfVar(a.into(), b.into(), c)),
         ]
     })
@@ -193,7 +212,11 @@ fn direct<D: DualNum<Primitive = f64> + Copy>(t: &Tree, x: D, y: D) -> D {
         Tree::Neg(a) => -direct(a, x, y),
         Tree::Powi(a, n) => {
             let a = direct(a, x, y);
-            if *n < 0 { pos(a, 1.0).powi(*n) } else { a.powi(*n) }
+            if *n < 0 {
+                pos(a, 1.0).powi(*n)
+            } else {
+                a.powi(*n)
+            }
         }
         Tree::Free(f, a) => {
             let a = direct(a, x, y);

@@ -185,7 +185,10 @@ pub fn rel(a: f64, b: f64, floor: f64) -> f64 {
 /// ‖a − b‖∞ / max(‖b‖∞, floor)
 pub fn rel_norm(a: &[f64], b: &[f64], floor: f64) -> f64 {
     assert_eq!(a.len(), b.len());
-    let diff = a.iter().zip(b).fold(0.0_f64, |m, (x, y)| m.max((x - y).abs()));
+    let diff = a
+        .iter()
+        .zip(b)
+        .fold(0.0_f64, |m, (x, y)| m.max((x - y).abs()));
     let size = b.iter().fold(0.0_f64, |m, y| m.max(y.abs()));
     diff / size.max(floor)
 }
@@ -315,8 +318,11 @@ pub fn check_invariants<L: Linkage<M, F>, const M: usize, const F: usize>(
         acc(AccelerationMethod::B),
         acc(AccelerationMethod::Fused),
     );
-    let methods = rel_norm(acc_a.as_slice(), acc_b.as_slice(), 1e-300)
-        .max(rel_norm(acc_f.as_slice(), acc_b.as_slice(), 1e-300));
+    let methods = rel_norm(acc_a.as_slice(), acc_b.as_slice(), 1e-300).max(rel_norm(
+        acc_f.as_slice(),
+        acc_b.as_slice(),
+        1e-300,
+    ));
 
     // Generated Ψ_q against num-dual, column by column.
     let columns = psi_q_by_dual(model, &u, v);
@@ -334,17 +340,29 @@ pub fn check_invariants<L: Linkage<M, F>, const M: usize, const F: usize>(
     let gd = gamma_by_dual(model, &u, v, &a.udot, vdot);
     let gamma = rel_norm(g.as_slice(), gd.as_slice(), 1e-300);
 
-    // Points against num-dual.
+    // Points against num-dual, relative to the largest point position,
+    // velocity and acceleration of the pose (a point may be at rest).
     let by_dual = points_by_dual(model, &u, v, &a.udot, vdot, &a.uddot, vddot);
+    let largest = |p: &L::Points| {
+        p.as_ref()
+            .iter()
+            .map(|x| x.amax())
+            .fold(f64::MIN_POSITIVE, f64::max)
+    };
+    let floors = [
+        largest(&a.points),
+        largest(&a.point_velocities),
+        largest(&a.point_accelerations),
+    ];
     let mut points = 0.0_f64;
     for (k, d) in by_dual.iter().enumerate() {
         let p = a.points.as_ref()[k];
         let pv = a.point_velocities.as_ref()[k];
         let pa = a.point_accelerations.as_ref()[k];
         points = points
-            .max(rel_norm(p.as_slice(), &d[0..2], 1e-300))
-            .max(rel_norm(pv.as_slice(), &d[2..4], 1e-300))
-            .max(rel_norm(pa.as_slice(), &d[4..6], 1e-300));
+            .max(rel_norm(p.as_slice(), &d[0..2], floors[0]))
+            .max(rel_norm(pv.as_slice(), &d[2..4], floors[1]))
+            .max(rel_norm(pa.as_slice(), &d[4..6], floors[2]));
     }
     (u, [psi_rel, vel, methods, jac, gamma, points])
 }

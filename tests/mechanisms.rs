@@ -1,0 +1,126 @@
+//! The invariants on four more mechanisms: a slider-crank (a prismatic
+//! coordinate), a five-bar with two drivers (f = 2), a boom driven by an
+//! actuator length (non-zero mixed blocks of method B), and a two-loop
+//! six-bar (m = 4). At every pose of a sweep: Ψ = 0 after Newton,
+//! Ψ_u u̇ + Ψ_v v̇ = 0, method A = method B = fused, and the generated
+//! Ψ_q, γ and point kinematics equal num-dual's derivatives of the generic
+//! closure equations.
+
+mod common;
+
+use common::{BOOM, Boom, FIVE_BAR, SIX_BAR, SLIDER_CRANK, SixBar, check_invariants};
+use linkage::prelude::*;
+use std::f64::consts::TAU;
+
+const NAMES: [&str; 6] = [
+    "Ψ",
+    "Ψ_u u̇ + Ψ_v v̇",
+    "A vs B vs fused",
+    "Ψ_q vs num-dual",
+    "γ vs num-dual",
+    "points vs num-dual",
+];
+const TOLERANCES: [f64; 6] = [1e-14, 1e-13, 1e-12, 1e-13, 1e-13, 1e-13];
+
+/// Runs the invariants along a path of driver values by continuation.
+fn sweep<L: Linkage<M, F>, const M: usize, const F: usize>(
+    name: &str,
+    model: &L,
+    mut u: SVector<f64, M>,
+    path: impl Iterator<Item = (SVector<f64, F>, SVector<f64, F>, SVector<f64, F>)>,
+) {
+    let mut worst = [0.0_f64; 6];
+    let mut poses = 0;
+    for (v, vdot, vddot) in path {
+        let (solved, figures) = check_invariants(model, &u, &v, &vdot, &vddot);
+        u = solved;
+        for (k, f) in figures.iter().enumerate() {
+            assert!(
+                *f <= TOLERANCES[k],
+                "{name} at v = {v:?}: {} off by {f:.2e}",
+                NAMES[k]
+            );
+            worst[k] = worst[k].max(*f);
+        }
+        poses += 1;
+    }
+    eprintln!(
+        "{name}: {poses} poses, worst {:?}",
+        NAMES.iter().zip(worst).collect::<Vec<_>>()
+    );
+}
+
+#[test]
+fn slider_crank() {
+    let n = 720;
+    let path = (0..n).map(|k| {
+        let t = TAU * k as f64 / n as f64;
+        (vector![t], vector![150.0], vector![-30.0])
+    });
+    sweep("slider-crank", &SLIDER_CRANK, vector![0.0, 0.25], path);
+}
+
+#[test]
+fn five_bar_with_two_drivers() {
+    let n = 720;
+    // Both cranks turn, at different speeds and with accelerations.
+    let path = (0..n).map(|k| {
+        let t = TAU * k as f64 / n as f64;
+        (
+            vector![t, 2.0 * t + 1.0],
+            vector![10.0, -7.0],
+            vector![3.0, 40.0],
+        )
+    });
+    sweep("five-bar", &FIVE_BAR, vector![1.2, 2.0], path);
+}
+
+#[test]
+fn boom_driven_by_its_actuator_length() {
+    let n = 500;
+    let path = (0..n).map(|k| {
+        let length = 0.9 + 0.5 * k as f64 / n as f64;
+        (vector![length], vector![0.05], vector![-0.02])
+    });
+    sweep("boom", &BOOM, vector![0.3, 1.2], path);
+}
+
+/// The boom's mixed blocks are structurally non-zero, and at a pose they
+/// matter: method B without them would be wrong.
+#[test]
+fn boom_mixed_blocks_are_nonzero_and_needed() {
+    let table = Boom::SYMBOLIC;
+    for key in ["psi_u_udot_v", "psi_v_vdot_u"] {
+        let m = table.get(key).unwrap();
+        assert!(m.entries.iter().any(|e| *e != "0"), "{key} is zero: {m}");
+    }
+    assert_eq!(table.methods_agree, Some(true));
+    let v = vector![1.1];
+    let u = BOOM
+        .solve_position(&vector![0.3, 1.2], &v, &Options::default())
+        .unwrap()
+        .u;
+    let vdot = vector![0.05];
+    let udot = BOOM
+        .velocity(&u, &v, &vdot, &Options::default())
+        .unwrap()
+        .udot;
+    let mixed = BOOM.psi_u_udot_v(&u, &v, &udot) * vdot + BOOM.psi_v_vdot_u(&u, &v, &vdot) * udot;
+    let gamma = BOOM.gamma(&u, &v, &udot, &vdot);
+    assert!(
+        mixed.amax() > 0.1 * gamma.amax(),
+        "mixed {mixed:?}, γ {gamma:?}"
+    );
+}
+
+#[test]
+fn six_bar_with_two_loops() {
+    let n = 720;
+    let path = (0..n).map(|k| {
+        let t = TAU * k as f64 / n as f64;
+        (vector![t], vector![41.9], vector![5.0])
+    });
+    let guess = SVector::<f64, 4>::from([78f64.to_radians(), -44f64.to_radians(), 0.3, -0.5]);
+    sweep("six-bar", &SIX_BAR, guess, path);
+    assert_eq!(SixBar::SYMBOLIC.methods_agree, Some(true));
+}
