@@ -134,7 +134,10 @@ impl Formatter<'_> {
                 (number(c), if c < 0.0 { Prec::Sum } else { Prec::Atom })
             }
             Node::Sym(s) => (self.names.symbol(*s), Prec::Atom),
-            Node::Sum(terms) => {
+            Node::Sum(terms) if terms.len() > 1 => {
+                if let Some(factored) = self.factored(terms) {
+                    return (factored, Prec::Product);
+                }
                 let ordered =
                     display_order(self.dag, terms.iter().map(|&(c, t)| (c.get(), t)).collect());
                 let mut out = String::new();
@@ -161,8 +164,16 @@ impl Formatter<'_> {
                         }
                     }
                 }
-                let scaled = terms.len() == 1 && terms[0].0.get() > 0.0;
-                (out, if scaled { Prec::Product } else { Prec::Sum })
+                (out, Prec::Sum)
+            }
+            Node::Sum(terms) => {
+                let (c, t) = (terms[0].0.get(), terms[0].1);
+                let body = self.scaled(c.abs(), t);
+                if c < 0.0 {
+                    (format!("-{body}"), Prec::Sum)
+                } else {
+                    (body, Prec::Product)
+                }
             }
             Node::Prod(factors) => (self.product(1.0, factors), Prec::Product),
             Node::Call(f, a) => (self.call(*f, *a), Prec::Atom),
@@ -179,6 +190,76 @@ impl Formatter<'_> {
                 (s, Prec::Atom)
             }
         }
+    }
+
+    /// The factors of a term with positive exponents.
+    fn positive_factors(&self, t: Id) -> Vec<(Id, i32)> {
+        match self.dag.node(t) {
+            Node::Prod(factors) => factors.iter().copied().filter(|f| f.1 > 0).collect(),
+            _ => vec![(t, 1)],
+        }
+    }
+
+    /// A sum whose terms share factors, shown with them pulled out:
+    /// `-l3·l4·(sin θ3·cos θ4 - cos θ3·sin θ4)`. Display only: the DAG and the
+    /// emitted code keep the expanded form.
+    fn factored(&self, terms: &[(crate::dag::Num, Id)]) -> Option<String> {
+        if terms.iter().any(|&(_, t)| t == Dag::ONE) {
+            return None;
+        }
+        let mut common = self.positive_factors(terms[0].1);
+        for &(_, t) in &terms[1..] {
+            let factors = self.positive_factors(t);
+            common.retain_mut(|(id, e)| match factors.iter().find(|f| f.0 == *id) {
+                Some(&(_, e2)) => {
+                    *e = (*e).min(e2);
+                    true
+                }
+                None => false,
+            });
+        }
+        if common.is_empty() {
+            return None;
+        }
+        let ordered = display_order(self.dag, terms.iter().map(|&(c, t)| (c.get(), t)).collect());
+        let magnitudes: Vec<f64> = ordered.iter().map(|(c, _)| c.abs()).collect();
+        let shared = if magnitudes.iter().all(|&m| m == magnitudes[0]) {
+            magnitudes[0]
+        } else {
+            1.0
+        };
+        let sign = if ordered[0].0 < 0.0 { -1.0 } else { 1.0 };
+        let mut inner = String::new();
+        for (k, &(c, t)) in ordered.iter().enumerate() {
+            let factors: Vec<(Id, i32)> = match self.dag.node(t) {
+                Node::Prod(f) => f.clone(),
+                _ => vec![(t, 1)],
+            };
+            let rest: Vec<(Id, i32)> = factors
+                .into_iter()
+                .filter_map(|(id, e)| {
+                    let e = e - common.iter().find(|f| f.0 == id).map_or(0, |f| f.1);
+                    (e != 0).then_some((id, e))
+                })
+                .collect();
+            let c = c * sign / shared;
+            let body = if rest.is_empty() {
+                number(c.abs())
+            } else if rest.len() == 1 && rest[0].1 == 1 {
+                self.scaled(c.abs(), rest[0].0)
+            } else {
+                self.product(c.abs(), &rest)
+            };
+            match (k, c < 0.0) {
+                (0, false) => inner.push_str(&body),
+                (0, true) => inner.push_str(&format!("-{body}")),
+                (_, false) => inner.push_str(&format!(" + {body}")),
+                (_, true) => inner.push_str(&format!(" - {body}")),
+            }
+        }
+        let outer = self.product(shared, &common);
+        let sign = if sign < 0.0 { "-" } else { "" };
+        Some(format!("{sign}{outer}·({inner})"))
     }
 
     /// `c·t` for `c > 0`, with the coefficient merged into a product.
@@ -276,7 +357,7 @@ pub fn display_order(dag: &Dag, mut terms: Vec<(f64, Id)>) -> Vec<(f64, Id)> {
 /// The shortest text that reads back as the same `f64` (`2`, `0.5`, `1e-9`).
 pub fn number(c: f64) -> String {
     let s = format!("{c}");
-    if s.len() > 12 {
+    if s.len() > 8 {
         let e = format!("{c:e}");
         if e.len() < s.len() {
             return e;
@@ -296,6 +377,29 @@ fn superscript(n: u32) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn common_factors_are_pulled_out_for_display() {
+        let mut dag = Dag::new();
+        let l3 = dag.sym(Symbol::Param(0));
+        let l4 = dag.sym(Symbol::Param(1));
+        let t3 = dag.sym(Symbol::Coord(0));
+        let t4 = dag.sym(Symbol::Coord(1));
+        let (s3, c3) = (dag.call(Func::Sin, t3), dag.call(Func::Cos, t3));
+        let (s4, c4) = (dag.call(Func::Sin, t4), dag.call(Func::Cos, t4));
+        let a = dag.product([(l3, 1), (l4, 1), (s3, 1), (c4, 1)]);
+        let b = dag.product([(l3, 1), (l4, 1), (c3, 1), (s4, 1)]);
+        let det = dag.sum([(-1.0, a), (1.0, b)]);
+        let names = Names {
+            params: vec!["l3".into(), "l4".into()],
+            coords: vec!["theta3".into(), "theta4".into()],
+        };
+        let f = Formatter {
+            dag: &dag,
+            names: &names,
+        };
+        assert_eq!(f.format(det), "-l3·l4·(sin θ3·cos θ4 - cos θ3·sin θ4)");
+    }
 
     #[test]
     fn greek_names() {

@@ -22,17 +22,10 @@ pub fn expand(attr: TokenStream, item: TokenStream) -> TokenStream {
         (None, Some(tokens)) => tokens,
         (Some(error), _) => {
             let compile_errors = error.to_compile_error();
-            let stub = input.as_ref().map(stub).unwrap_or_default();
-            let item = match &input {
-                Some(input) => {
-                    let item = &input.item;
-                    quote!(#item)
-                }
-                None => item,
-            };
+            // The struct with stub items, or the item as written.
+            let item = input.as_ref().map(stub).unwrap_or(item);
             quote! {
                 #item
-                #stub
                 #compile_errors
             }
         }
@@ -54,25 +47,41 @@ fn generate(input: &Input, errors: &mut Errors) -> Option<TokenStream> {
     Some(Generator::new(input, &model).items())
 }
 
-/// A stub `Linkage` implementation for a struct whose attribute has errors:
-/// the user's other code keeps type-checking and only the real mistakes are
-/// reported.
+/// For a struct whose attribute has errors: every generated item with its
+/// right signature but all-zero bodies (they never run, the build fails), so
+/// that the user's other code still type-checks and only the real mistakes
+/// are reported.
 fn stub(input: &Input) -> TokenStream {
-    let m = input.u.items.len().max(input.closure.items.len());
-    let f = input.v.items.len();
-    let ty = &input.item.ident;
-    let (impl_generics, ty_generics, where_clause) = input.item.generics.split_for_impl();
-    let (m, f) = (Literal::usize_unsuffixed(m), Literal::usize_unsuffixed(f));
-    quote! {
-        const _: () = {
-            impl #impl_generics #ty #ty_generics #where_clause {
-                #[doc(hidden)]
-                pub const LINKAGE_HAS_ERRORS: () = ();
-            }
-            #[allow(unused)]
-            fn __linkage_stub_dimensions() -> (usize, usize) { (#m, #f) }
-        };
-    }
+    let params = input
+        .fields
+        .iter()
+        .filter(|f| f.is_f64)
+        .map(|f| f.ident.clone())
+        .collect();
+    let coords: Vec<syn::Ident> = input
+        .u
+        .items
+        .iter()
+        .chain(&input.v.items)
+        .cloned()
+        .collect();
+    let points = input
+        .points
+        .items
+        .iter()
+        .map(|p| (p.name.clone(), Dag::ZERO, Dag::ZERO))
+        .collect();
+    let lowered = crate::lower::Lowered {
+        dag: Dag::new(),
+        params,
+        coords,
+        m: input.u.items.len(),
+        f: input.v.items.len(),
+        points,
+        closure: vec![Dag::ZERO; input.u.items.len()],
+    };
+    let model = Model::build(lowered);
+    Generator::new(input, &model).items()
 }
 
 /// One emitted function: name, doc lines, arguments, result.
@@ -390,7 +399,6 @@ impl<'a> Generator<'a> {
                 output: Output::Points(entries),
             });
         }
-        drop(add);
 
         let generic = self.generic_functions();
         let u_names = self.input.u.items.iter().map(crate::lower::unraw);
@@ -598,11 +606,19 @@ impl<'a> Generator<'a> {
         let pstatements = &pbody.statements;
         let (pu, pv) = arg_names(&pbody.reads);
         let np = Literal::usize_unsuffixed(self.np);
+        let formula = self.formula_block(&model.psi, &self.formatter());
+        let psi_doc = [
+            "Ψ(u, v) on any dual number of `num_dual`: the same closure equations as",
+            "[`Self::psi`], for derivatives by automatic differentiation (cross-checks,",
+            "and the alternative Jacobian source of the runtime).",
+            "",
+        ]
+        .into_iter()
+        .map(str::to_owned)
+        .chain(formula.lines().map(str::to_owned))
+        .map(|l| format!(" {l}"));
         quote! {
-            /// Ψ(u, v) on any dual number of `num_dual`: the same closure
-            /// equations as [`Self::psi`], for derivatives by automatic
-            /// differentiation (cross-checks, and the alternative Jacobian
-            /// source of the runtime).
+            #(#[doc = #psi_doc])*
             #[must_use]
             pub fn psi_generic<D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy>(
                 &self,
@@ -803,7 +819,6 @@ impl<'a> Generator<'a> {
             };
             add(key, title, &matrix, &point_labels, &xy);
         }
-        drop(add);
         let name = self.input.item.ident.to_string();
         let agree = match model.methods_agree {
             Some(b) => quote!(::core::option::Option::Some(#b)),
@@ -883,6 +898,18 @@ fn assemble<'v>(
 /// A matrix of formulas laid out in aligned columns, or one entry per line
 /// when the rows would be too wide to read.
 pub fn layout(rows: usize, cols: usize, text: &[String]) -> Vec<String> {
+    // A leading space where another entry of the column has a minus sign.
+    let text: Vec<String> = (0..rows * cols)
+        .map(|k| {
+            let j = k % cols;
+            let signed = (0..rows).any(|i| text[i * cols + j].starts_with('-'));
+            if signed && !text[k].starts_with('-') {
+                format!(" {}", text[k])
+            } else {
+                text[k].clone()
+            }
+        })
+        .collect();
     let width = |s: &str| {
         s.chars()
             .filter(|c| !('\u{300}'..='\u{36f}').contains(c))

@@ -448,6 +448,9 @@ impl Lowerer<'_> {
     }
 
     fn binary(&mut self, b: &syn::ExprBinary) -> Option<Id> {
+        // Both sides first, so that their mistakes are reported too.
+        let l = self.lower(&b.left);
+        let r = self.lower(&b.right);
         let op = match b.op {
             BinOp::Add(_) | BinOp::Sub(_) | BinOp::Mul(_) | BinOp::Div(_) => b.op,
             BinOp::BitXor(_) => {
@@ -458,8 +461,6 @@ impl Lowerer<'_> {
             }
             _ => return self.error(&b.op, "unsupported operator; an equation uses `+ - * /`"),
         };
-        let l = self.lower(&b.left);
-        let r = self.lower(&b.right);
         let (l, r) = (l?, r?);
         Some(match op {
             BinOp::Add(_) => self.dag.add(l, r),
@@ -516,6 +517,10 @@ impl Lowerer<'_> {
                 "sq" | "square" => " (write `x.powi(2)`)".to_owned(),
                 _ => String::new(),
             };
+            // The arguments' own mistakes are reported too.
+            for a in args {
+                self.lower(a);
+            }
             return self.error(
                 name,
                 format!("unsupported function `{n}`{hint}; supported functions: {SUPPORTED}"),

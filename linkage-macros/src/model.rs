@@ -79,6 +79,8 @@ pub struct Model {
 }
 
 impl Model {
+    // Index loops over rows and columns read like the formulas they compute.
+    #[allow(clippy::needless_range_loop)]
     pub fn build(mut lowered: Lowered) -> Model {
         let (m, f) = (lowered.m, lowered.f);
         let n = m + f;

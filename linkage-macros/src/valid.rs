@@ -62,6 +62,7 @@ fn plural(n: usize) -> &'static str {
 /// equation, every equation must involve some coordinate of u, and there
 /// must be a perfect matching of equations to coordinates in the incidence
 /// pattern of Ψ_u (else det Ψ_u ≡ 0 whatever the parameters).
+#[allow(clippy::needless_range_loop)] // rows and columns of the incidence matrix
 pub fn check_structure(input: &Input, lowered: &mut Lowered, errors: &mut Errors) {
     let m = lowered.m;
     let incidence: Vec<Vec<bool>> = (0..m)

@@ -47,6 +47,18 @@ impl SymbolicMatrix {
     pub fn entry(&self, i: usize, j: usize) -> &'static str {
         self.entries[i * self.cols + j]
     }
+
+    /// The entry as laid out in its column: a leading space where another
+    /// entry of the column has a minus sign, so that the terms line up.
+    fn cell(&self, i: usize, j: usize) -> String {
+        let signed = (0..self.rows).any(|r| self.entry(r, j).starts_with('-'));
+        let e = self.entry(i, j);
+        if signed && !e.starts_with('-') {
+            format!(" {e}")
+        } else {
+            e.to_owned()
+        }
+    }
 }
 
 /// Display width: combining marks (the dots of θ̇) take no column.
@@ -70,7 +82,7 @@ impl fmt::Display for SymbolicMatrix {
             .map(|j| {
                 let head = self.col_labels.get(j).map_or(0, |l| width(l));
                 (0..self.rows)
-                    .map(|i| width(self.entry(i, j)))
+                    .map(|i| width(&self.cell(i, j)))
                     .max()
                     .unwrap_or(0)
                     .max(head)
@@ -92,7 +104,7 @@ impl fmt::Display for SymbolicMatrix {
             }
             for i in 0..self.rows {
                 let cells: Vec<String> = (0..self.cols)
-                    .map(|j| pad(self.entry(i, j), col_w[j]))
+                    .map(|j| pad(&self.cell(i, j), col_w[j]))
                     .collect();
                 let label = pad(self.row_labels.get(i).copied().unwrap_or(""), label_w);
                 writeln!(f, "  {label} [ {} ]", cells.join("   "))?;
