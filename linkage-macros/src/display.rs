@@ -31,12 +31,31 @@ impl Names {
             Symbol::Coord(k) => greek(&self.coords[k as usize]),
             Symbol::Vel(k) => dotted(&greek(&self.coords[k as usize]), '\u{307}'),
             Symbol::Acc(k) => dotted(&greek(&self.coords[k as usize]), '\u{308}'),
-            Symbol::Constant(c) => match c.name() {
-                "PI" => "π".to_owned(),
-                "TAU" => "τ".to_owned(),
-                "E" => "e".to_owned(),
-                other => other.to_owned(),
-            },
+            Symbol::Constant(c) => {
+                use crate::dag::Constant::*;
+                match c {
+                    Pi => "π",
+                    Tau => "τ",
+                    E => "e",
+                    FracPi2 => "π/2",
+                    FracPi3 => "π/3",
+                    FracPi4 => "π/4",
+                    FracPi6 => "π/6",
+                    FracPi8 => "π/8",
+                    Frac1Pi => "1/π",
+                    Frac2Pi => "2/π",
+                    Frac2SqrtPi => "2/√π",
+                    Sqrt2 => "√2",
+                    Frac1Sqrt2 => "1/√2",
+                    Ln2 => "ln 2",
+                    Ln10 => "ln 10",
+                    Log2E => "log₂e",
+                    Log10E => "log₁₀e",
+                    Log2_10 => "log₂10",
+                    Log10_2 => "log₁₀2",
+                }
+                .to_owned()
+            }
         }
     }
 
@@ -133,7 +152,11 @@ impl Formatter<'_> {
                 let c = c.get();
                 (number(c), if c < 0.0 { Prec::Sum } else { Prec::Atom })
             }
-            Node::Sym(s) => (self.names.symbol(*s), Prec::Atom),
+            Node::Sym(s) => {
+                let text = self.names.symbol(*s);
+                let compound = matches!(s, Symbol::Constant(_)) && text.contains(['/', ' ']);
+                (text, if compound { Prec::Product } else { Prec::Atom })
+            }
             Node::Sum(terms) if terms.len() > 1 => {
                 if let Some(factored) = self.factored(terms) {
                     return (factored, Prec::Product);

@@ -4,13 +4,13 @@
 //!
 //! The pipeline, one module per stage:
 //!
-//! 1. [`ast`]: the attribute and the struct, parsed with their spans;
-//! 2. [`lower`]: names resolved, expressions lowered into the hash-consed
-//!    DAG of [`dag`]; [`valid`]: counts and structural rank checked;
-//! 3. [`model`]: every derivative built with the rules of [`diff`];
-//! 4. [`emit`]: common subexpressions shared, temporaries named;
-//! 5. [`expand`]: the items assembled, documented with formulas from
-//!    [`display`].
+//! 1. `ast`: the attribute and the struct, parsed with their spans;
+//! 2. `lower`: names resolved, expressions lowered into the hash-consed
+//!    DAG of `dag`; `valid`: counts and structural rank checked;
+//! 3. `model`: every derivative built with the rules of `diff`;
+//! 4. `emit`: common subexpressions shared, temporaries named;
+//! 5. `expand`: the items assembled, documented with formulas from
+//!    `display`.
 //!
 //! Use it through the `linkage` crate, which documents the attribute.
 
