@@ -522,8 +522,8 @@ impl<'a> Generator<'a> {
             };
             quote!(#arg: &SVector<f64, #dim>)
         });
-        let doc = function.doc.join("\n");
-        let doc_lines = doc.lines().map(|l| format!(" {l}"));
+        let doc = wrap_doc(&function.doc.join("\n"));
+        let doc_lines = doc.iter().map(|l| format!(" {l}"));
         let statements = &body.statements;
         quote! {
             #(#[doc = #doc_lines])*
@@ -949,6 +949,35 @@ pub fn layout(rows: usize, cols: usize, text: &[String]) -> Vec<String> {
         }
         out
     }
+}
+
+/// Doc text with its prose wrapped at 90 columns; code blocks untouched.
+fn wrap_doc(text: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut in_code = false;
+    for line in text.lines() {
+        if line.starts_with("```") {
+            in_code = !in_code;
+            out.push(line.to_owned());
+            continue;
+        }
+        if in_code || line.chars().count() <= 90 {
+            out.push(line.to_owned());
+            continue;
+        }
+        let mut current = String::new();
+        for word in line.split(' ') {
+            if !current.is_empty() && current.chars().count() + 1 + word.chars().count() > 90 {
+                out.push(std::mem::take(&mut current));
+            }
+            if !current.is_empty() {
+                current.push(' ');
+            }
+            current.push_str(word);
+        }
+        out.push(current);
+    }
+    out
 }
 
 fn subscript(n: usize) -> String {
