@@ -80,8 +80,23 @@ impl CodeNames {
     }
 }
 
+/// An identifier for a generated name: names come from the user's
+/// identifiers and are valid; anything else is sanitised rather than allowed
+/// to panic.
 fn ident(name: &str) -> proc_macro2::Ident {
-    syn::parse_str::<proc_macro2::Ident>(name).unwrap_or_else(|_| format_ident!("r#{}", name))
+    if let Ok(i) = syn::parse_str::<proc_macro2::Ident>(name) {
+        return i;
+    }
+    let mut clean: String = name
+        .chars()
+        .map(|c| if c.is_alphanumeric() || c == '_' { c } else { '_' })
+        .collect();
+    if clean.is_empty() || clean.starts_with(|c: char| c.is_ascii_digit()) {
+        clean.insert_str(0, "t_");
+    }
+    syn::parse_str::<proc_macro2::Ident>(&clean)
+        .or_else(|_| syn::parse_str::<proc_macro2::Ident>(&format!("r#{clean}")))
+        .unwrap_or_else(|_| format_ident!("generated_value"))
 }
 
 /// Binding strength of an emitted expression.
