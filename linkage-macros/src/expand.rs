@@ -423,12 +423,13 @@ impl<'a> Generator<'a> {
                     pub const V_NAMES: [&'static str; #fl] = [#(#v_names),*];
                     /// The named points, in order.
                     pub const POINT_NAMES: [&'static str; #npl] = [#(#point_names),*];
-                    /// Every generated quantity as a readable formula, for printing.
-                    pub const SYMBOLIC: ::linkage::SymbolicTable = #symbolic;
 
                     #(#functions)*
 
                     #generic
+
+                    /// Every generated quantity as a readable formula, for printing.
+                    pub const SYMBOLIC: ::linkage::SymbolicTable = #symbolic;
                 }
 
                 #trait_impl
@@ -747,7 +748,7 @@ impl<'a> Generator<'a> {
         let mut add =
             |key: &str, title: &str, matrix: &Matrix, rows: &[String], cols: &[String]| {
                 let texts = matrix.entries.iter().map(|&e| fmt.format(e));
-                let (r, c) = (matrix.rows, matrix.cols);
+                let (r, c) = (Literal::usize_unsuffixed(matrix.rows), Literal::usize_unsuffixed(matrix.cols));
                 entries.push(quote! {
                     ::linkage::SymbolicMatrix {
                         key: #key,
@@ -1022,11 +1023,33 @@ mod tests {
         prettyplease::unparse(&file)
     }
 
+    /// The expansion of the worksheet's four-bar, formatted with
+    /// prettyplease, against the committed snapshot: any change to the
+    /// generated code shows up here for review. After a deliberate change,
+    /// `LINKAGE_BLESS=1 cargo test -p linkage-macros snapshot` rewrites it.
     #[test]
-    fn fourbar_expands_to_valid_rust() {
+    fn fourbar_expansion_matches_the_snapshot() {
         let text = fourbar_expansion();
-        if std::env::var_os("LINKAGE_PRINT_EXPANSION").is_some() {
-            println!("{text}");
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/snapshots/fourbar.expanded.rs");
+        if std::env::var_os("LINKAGE_BLESS").is_some() {
+            std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+            std::fs::write(&path, &text).unwrap();
+        }
+        let expected = std::fs::read_to_string(&path).unwrap_or_default();
+        if text != expected {
+            let line = text
+                .lines()
+                .zip(expected.lines())
+                .position(|(a, b)| a != b)
+                .unwrap_or_else(|| text.lines().count().min(expected.lines().count()));
+            panic!(
+                "the four-bar's expansion differs from {} from line {}:\n  now:      {:?}\n  snapshot: {:?}\n\
+                 review the change, then rerun with LINKAGE_BLESS=1",
+                path.display(),
+                line + 1,
+                text.lines().nth(line),
+                expected.lines().nth(line)
+            );
         }
         assert!(text.contains("let (s_theta3, c_theta3) = theta3.sin_cos();"));
     }
