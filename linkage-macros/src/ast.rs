@@ -30,6 +30,15 @@ pub struct List<T> {
     pub span: Span,
 }
 
+impl<T> List<T> {
+    fn empty() -> List<T> {
+        List {
+            items: Vec::new(),
+            span: Span::call_site(),
+        }
+    }
+}
+
 /// The parsed attribute and struct.
 pub struct Input {
     pub item: syn::ItemStruct,
@@ -38,6 +47,9 @@ pub struct Input {
     pub v: List<Ident>,
     pub points: List<PointDef>,
     pub closure: List<Expr>,
+    /// Whether `u`, `v` and `closure` were all given and well-formed (if
+    /// not, the errors say why and the lists above are empty).
+    pub complete: bool,
 }
 
 const KEYS: [&str; 4] = ["u", "v", "points", "closure"];
@@ -63,7 +75,19 @@ impl Input {
         let mut points = None;
         let mut closure = None;
         let mut seen: Vec<(String, Span)> = Vec::new();
+        // Keys written, even malformed, or suggested for a misspelt key: no
+        // "missing" error for them, the error on the key itself says it all.
+        let mut attempted: Vec<String> = Vec::new();
         for chunk in split_commas(attr) {
+            if let Some(TokenTree::Ident(first)) = chunk.clone().into_iter().next() {
+                let first = first.to_string();
+                if !KEYS.contains(&first.as_str()) {
+                    attempted.extend(
+                        crate::suggest::closest(&first, KEYS.iter().copied()).map(str::to_owned),
+                    );
+                }
+                attempted.push(first);
+            }
             let Some((key, value)) = parse_entry(&chunk, errors) else {
                 continue;
             };
@@ -97,7 +121,7 @@ impl Input {
         }
         let call_site = Span::call_site();
         let mut require = |missing: bool, what: &str, example: &str| {
-            if missing && !seen.iter().any(|(k, _)| k == what) {
+            if missing && !attempted.iter().any(|k| k == what) {
                 errors.push(syn::Error::new(
                     call_site,
                     format!(
@@ -109,17 +133,16 @@ impl Input {
         require(u.is_none(), "u", "u = [theta3, theta4]");
         require(v.is_none(), "v", "v = [theta2]");
         require(closure.is_none(), "closure", "closure = [expr, expr]");
-        let points = points.unwrap_or(List {
-            items: Vec::new(),
-            span: call_site,
-        });
+        let points = points.unwrap_or_else(List::empty);
+        let complete = u.is_some() && v.is_some() && closure.is_some();
         Some(Input {
             item,
             fields,
-            u: u?,
-            v: v?,
+            u: u.unwrap_or_else(List::empty),
+            v: v.unwrap_or_else(List::empty),
             points,
-            closure: closure?,
+            closure: closure.unwrap_or_else(List::empty),
+            complete,
         })
     }
 }

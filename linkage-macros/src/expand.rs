@@ -34,6 +34,9 @@ pub fn expand(attr: TokenStream, item: TokenStream) -> TokenStream {
 }
 
 fn generate(input: &Input, errors: &mut Errors) -> Option<TokenStream> {
+    if !input.complete {
+        return None;
+    }
     let shape_ok = crate::valid::check_shape(input, errors);
     let mut lowered = crate::lower::lower(input, errors)?;
     if !shape_ok {
@@ -47,41 +50,155 @@ fn generate(input: &Input, errors: &mut Errors) -> Option<TokenStream> {
     Some(Generator::new(input, &model).items())
 }
 
-/// For a struct whose attribute has errors: every generated item with its
-/// right signature but all-zero bodies (they never run, the build fails), so
-/// that the user's other code still type-checks and only the real mistakes
-/// are reported.
+/// For a struct whose attribute has errors: every generated item, with
+/// bodies that never run (the build fails) and generic in the dimensions, so
+/// that whatever sizes the user's other code passes it still type-checks and
+/// only the attribute's real mistakes are reported.
 fn stub(input: &Input) -> TokenStream {
-    let params = input
-        .fields
-        .iter()
-        .filter(|f| f.is_f64)
-        .map(|f| f.ident.clone())
-        .collect();
-    let coords: Vec<syn::Ident> = input
-        .u
-        .items
-        .iter()
-        .chain(&input.v.items)
-        .cloned()
-        .collect();
-    let points = input
-        .points
-        .items
-        .iter()
-        .map(|p| (p.name.clone(), Dag::ZERO, Dag::ZERO))
-        .collect();
-    let lowered = crate::lower::Lowered {
-        dag: Dag::new(),
-        params,
-        coords,
-        m: input.u.items.len(),
-        f: input.v.items.len(),
-        points,
-        closure: vec![Dag::ZERO; input.u.items.len()],
-    };
-    let model = Model::build(lowered);
-    Generator::new(input, &model).items()
+    let item = &input.item;
+    let ty = &item.ident;
+    let (impl_generics, ty_generics, where_clause) = item.generics.split_for_impl();
+    let mut generics = item.generics.clone();
+    generics.params.push(syn::parse_quote!(const __M: usize));
+    generics.params.push(syn::parse_quote!(const __F: usize));
+    let (trait_generics, _, _) = generics.split_for_impl();
+    let np = Literal::usize_unsuffixed(input.points.items.len());
+    let name = ty.to_string();
+    let never = quote!(::core::unimplemented!(
+        "#[linkage::linkage] on this struct has errors"
+    ));
+    let inherent = stub_signatures(&quote!(M), &quote!(F), &np).into_iter().map(|(name, ret, extra)| {
+        quote! {
+            #[allow(clippy::too_many_arguments)]
+            pub fn #name<const M: usize, const F: usize>(&self, _u: &SVector<f64, M>, _v: &SVector<f64, F> #extra) -> #ret {
+                #never
+            }
+        }
+    });
+    let in_trait = stub_signatures(&quote!(__M), &quote!(__F), &np)
+        .into_iter()
+        .map(|(name, ret, extra)| {
+            quote! {
+                fn #name(&self, _u: &SVector<f64, __M>, _v: &SVector<f64, __F> #extra) -> #ret {
+                    #never
+                }
+            }
+        });
+    quote! {
+        #item
+        const _: () = {
+            use ::linkage::nalgebra::{SMatrix, SVector, Vector2};
+            #[allow(dead_code, unused_variables)]
+            impl #impl_generics #ty #ty_generics #where_clause {
+                pub const U_NAMES: &'static [&'static str] = &[];
+                pub const V_NAMES: &'static [&'static str] = &[];
+                pub const POINT_NAMES: &'static [&'static str] = &[];
+                pub const SYMBOLIC: ::linkage::SymbolicTable = ::linkage::SymbolicTable {
+                    name: #name,
+                    u: &[],
+                    v: &[],
+                    matrices: &[],
+                    methods_agree: ::core::option::Option::None,
+                };
+                pub fn psi_q<const M: usize, const F: usize, const N: usize>(
+                    &self,
+                    _u: &SVector<f64, M>,
+                    _v: &SVector<f64, F>,
+                ) -> SMatrix<f64, M, N> {
+                    #never
+                }
+                #(#inherent)*
+                pub fn psi_generic<D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy, const M: usize, const F: usize>(
+                    &self,
+                    _u: &SVector<D, M>,
+                    _v: &SVector<D, F>,
+                ) -> SVector<D, M> {
+                    #never
+                }
+                pub fn point_positions_generic<D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy, const M: usize, const F: usize>(
+                    &self,
+                    _u: &SVector<D, M>,
+                    _v: &SVector<D, F>,
+                ) -> [Vector2<D>; #np] {
+                    #never
+                }
+            }
+            #[allow(unused_variables)]
+            impl #trait_generics ::linkage::Linkage<__M, __F> for #ty #ty_generics #where_clause {
+                type Points = [Vector2<f64>; #np];
+                const U_NAMES: [&'static str; __M] = [""; __M];
+                const V_NAMES: [&'static str; __F] = [""; __F];
+                const POINT_NAMES: &'static [&'static str] = &[];
+                const SYMBOLIC: ::linkage::SymbolicTable = Self::SYMBOLIC;
+                #(#in_trait)*
+                fn psi_generic<D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy>(
+                    &self,
+                    _u: &SVector<D, __M>,
+                    _v: &SVector<D, __F>,
+                ) -> SVector<D, __M> {
+                    #never
+                }
+                #[allow(refining_impl_trait)]
+                fn point_positions_generic<D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy>(
+                    &self,
+                    _u: &SVector<D, __M>,
+                    _v: &SVector<D, __F>,
+                ) -> [Vector2<D>; #np] {
+                    #never
+                }
+            }
+        };
+    }
+}
+
+/// The f64 functions of the stub: name, return type and the arguments after
+/// `u, v`, for the dimensions `m` and `f`.
+fn stub_signatures(
+    m: &TokenStream,
+    f: &TokenStream,
+    np: &Literal,
+) -> Vec<(proc_macro2::Ident, TokenStream, TokenStream)> {
+    let qdot = quote!(, _udot: &SVector<f64, #m>, _vdot: &SVector<f64, #f>);
+    let qddot = quote!(, _udot: &SVector<f64, #m>, _vdot: &SVector<f64, #f>, _uddot: &SVector<f64, #m>, _vddot: &SVector<f64, #f>);
+    [
+        ("psi", quote!(SVector<f64, #m>), quote!()),
+        ("psi_u", quote!(SMatrix<f64, #m, #m>), quote!()),
+        ("psi_v", quote!(SMatrix<f64, #m, #f>), quote!()),
+        (
+            "psi_and_psi_u",
+            quote!((SVector<f64, #m>, SMatrix<f64, #m, #m>)),
+            quote!(),
+        ),
+        (
+            "psi_u_udot_u",
+            quote!(SMatrix<f64, #m, #m>),
+            quote!(, _udot: &SVector<f64, #m>),
+        ),
+        (
+            "psi_u_udot_v",
+            quote!(SMatrix<f64, #m, #f>),
+            quote!(, _udot: &SVector<f64, #m>),
+        ),
+        (
+            "psi_v_vdot_u",
+            quote!(SMatrix<f64, #m, #m>),
+            quote!(, _vdot: &SVector<f64, #f>),
+        ),
+        (
+            "psi_v_vdot_v",
+            quote!(SMatrix<f64, #m, #f>),
+            quote!(, _vdot: &SVector<f64, #f>),
+        ),
+        ("psi_u_dot", quote!(SMatrix<f64, #m, #m>), qdot.clone()),
+        ("psi_v_dot", quote!(SMatrix<f64, #m, #f>), qdot.clone()),
+        ("gamma", quote!(SVector<f64, #m>), qdot.clone()),
+        ("point_positions", quote!([Vector2<f64>; #np]), quote!()),
+        ("point_velocities", quote!([Vector2<f64>; #np]), qdot),
+        ("point_accelerations", quote!([Vector2<f64>; #np]), qddot),
+    ]
+    .into_iter()
+    .map(|(name, ret, extra)| (format_ident!("{}", name), ret, extra))
+    .collect()
 }
 
 /// One emitted function: name, doc lines, arguments, result.
@@ -748,7 +865,10 @@ impl<'a> Generator<'a> {
         let mut add =
             |key: &str, title: &str, matrix: &Matrix, rows: &[String], cols: &[String]| {
                 let texts = matrix.entries.iter().map(|&e| fmt.format(e));
-                let (r, c) = (Literal::usize_unsuffixed(matrix.rows), Literal::usize_unsuffixed(matrix.cols));
+                let (r, c) = (
+                    Literal::usize_unsuffixed(matrix.rows),
+                    Literal::usize_unsuffixed(matrix.cols),
+                );
                 entries.push(quote! {
                     ::linkage::SymbolicMatrix {
                         key: #key,
@@ -1030,7 +1150,8 @@ mod tests {
     #[test]
     fn fourbar_expansion_matches_the_snapshot() {
         let text = fourbar_expansion();
-        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/snapshots/fourbar.expanded.rs");
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("tests/snapshots/fourbar.expanded.rs");
         if std::env::var_os("LINKAGE_BLESS").is_some() {
             std::fs::create_dir_all(path.parent().unwrap()).unwrap();
             std::fs::write(&path, &text).unwrap();

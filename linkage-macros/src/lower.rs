@@ -49,6 +49,8 @@ struct Lowerer<'a> {
     /// The lowered coordinates of the points defined so far.
     points: Vec<(Id, Id)>,
     point_names: Vec<Ident>,
+    /// (point used, point being defined) pairs already reported.
+    early_uses: std::collections::HashSet<(usize, usize)>,
     struct_name: &'a Ident,
     errors: &'a mut Errors,
 }
@@ -89,7 +91,8 @@ pub fn lower(input: &Input, errors: &mut Errors) -> Option<Lowered> {
                 ident.span(),
                 format!(
                     "`{name}` is the name of an argument of the generated functions; \
-                     choose another name for this {kind}"
+                     choose another name for this {}",
+                    kind.split(' ').next().unwrap_or(kind)
                 ),
             ));
             return;
@@ -113,11 +116,12 @@ pub fn lower(input: &Input, errors: &mut Errors) -> Option<Lowered> {
             errors.push(syn::Error::new(
                 ident.span(),
                 format!(
-                    "{kind} `{name}` shadows the field `{name}` of `{struct_name}`; \
+                    "`{name}` is declared as a {kind} but is also a field of `{struct_name}`; \
                      rename one of them so that every name in the equations means one thing"
                 ),
             ));
-            return;
+            // The name is taken to mean the coordinate or point, as declared,
+            // so that no follow-on error is reported.
         }
         names.insert(name, binding);
     };
@@ -148,6 +152,7 @@ pub fn lower(input: &Input, errors: &mut Errors) -> Option<Lowered> {
         names,
         points: Vec::new(),
         point_names: input.points.items.iter().map(|p| p.name.clone()).collect(),
+        early_uses: Default::default(),
         struct_name,
         errors,
     };
@@ -421,6 +426,10 @@ impl Lowerer<'_> {
             }
         };
         if index >= self.points.len() {
+            // One error per point used too early, not one per use.
+            if !self.early_uses.insert((index, self.points.len())) {
+                return None;
+            }
             let current = self
                 .point_names
                 .get(self.points.len())

@@ -110,19 +110,31 @@ pub fn check_structure(input: &Input, lowered: &mut Lowered, errors: &mut Errors
         return;
     }
     if let Some((coords, equations)) = hall_violator(&incidence) {
-        let coord_list: Vec<String> = coords.iter().map(|&k| name(k)).collect();
-        let eq_list: Vec<String> = equations.iter().map(|&i| (i + 1).to_string()).collect();
+        let coord_list = coords
+            .iter()
+            .map(|&k| name(k))
+            .collect::<Vec<_>>()
+            .join(", ");
+        let eq_list = match equations.as_slice() {
+            [one] => format!("equation {}", one + 1),
+            more => format!(
+                "equations {}",
+                more.iter()
+                    .map(|i| (i + 1).to_string())
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+        };
         errors.push(syn::Error::new(
             input.u.items[coords[0]].span(),
             format!(
-                "Ψ_u is structurally singular: the {} coordinates {} appear only in the {} equation{} {} \
-                 (by number in `closure`), so no pairing of one equation per coordinate exists and \
-                 det Ψ_u ≡ 0; add an equation that involves them or move one of them to `v`",
+                "Ψ_u is structurally singular: the coordinates {coord_list} appear only in {eq_list} \
+                 of `closure` ({} coordinates, {} equation{}), so no pairing of one equation per \
+                 coordinate exists and det Ψ_u ≡ 0 whatever the parameters; add an equation that \
+                 involves them, or move one of them to `v`",
                 coords.len(),
-                coord_list.join(", "),
                 equations.len(),
                 plural(equations.len()),
-                eq_list.join(", ")
             ),
         ));
     }
