@@ -28,6 +28,8 @@ mod model;
 mod normal;
 #[cfg(test)]
 mod proptests;
+#[cfg(test)]
+mod run_emitted;
 mod suggest;
 mod valid;
 
