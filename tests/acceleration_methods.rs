@@ -76,8 +76,8 @@ fn methods_a_and_b_differ_by_zero_at_3600_crank_angles() {
 fn methods_agree_symbolically() {
     assert_eq!(FourBar::SYMBOLIC.methods_agree, Some(true));
     assert_eq!(
-        FourBar::SYMBOLIC.get("psi_u_dot").unwrap().entries,
-        FourBar::SYMBOLIC.get("psi_u_udot_u").unwrap().entries,
+        FourBar::SYMBOLIC.get("psi_u_dot").unwrap().entries(),
+        FourBar::SYMBOLIC.get("psi_u_udot_u").unwrap().entries(),
         "for the four-bar Ψ̇_u and ([Ψ_u]u̇)_u are the same matrix, as in the worksheet"
     );
 }

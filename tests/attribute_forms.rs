@@ -76,11 +76,11 @@ fn method_and_function_forms_generate_the_same_numbers() {
     }
     // The formulas read the same, but for the constant's spelling.
     assert_eq!(
-        Methods::SYMBOLIC.get("psi_q").unwrap().entries,
-        Functions::SYMBOLIC.get("psi_q").unwrap().entries
+        Methods::SYMBOLIC.get("psi_q").unwrap().entries(),
+        Functions::SYMBOLIC.get("psi_q").unwrap().entries()
     );
     let psi = Functions::SYMBOLIC.get("psi").unwrap();
-    assert!(psi.entries[0].ends_with("- π/4"), "{}", psi.entries[0]);
+    assert!(psi.entries()[0].ends_with("- π/4"), "{}", psi.entries()[0]);
 }
 
 #[test]

@@ -864,7 +864,14 @@ impl<'a> Generator<'a> {
         let mut entries: Vec<TokenStream> = Vec::new();
         let mut add =
             |key: &str, title: &str, matrix: &Matrix, rows: &[String], cols: &[String]| {
-                let texts = matrix.entries.iter().map(|&e| fmt.format(e));
+                let nonzero = matrix.entries.iter().enumerate().filter(|(_, e)| **e != Dag::ZERO).map(|(k, &e)| {
+                    let (i, j) = (
+                        Literal::usize_unsuffixed(k / matrix.cols),
+                        Literal::usize_unsuffixed(k % matrix.cols),
+                    );
+                    let text = fmt.format(e);
+                    quote!((#i, #j, #text))
+                });
                 let (r, c) = (
                     Literal::usize_unsuffixed(matrix.rows),
                     Literal::usize_unsuffixed(matrix.cols),
@@ -877,7 +884,7 @@ impl<'a> Generator<'a> {
                         cols: #c,
                         row_labels: &[#(#rows),*],
                         col_labels: &[#(#cols),*],
-                        entries: &[#(#texts),*],
+                        nonzero: &[#(#nonzero),*],
                     }
                 });
             };
@@ -1058,15 +1065,23 @@ pub fn layout(rows: usize, cols: usize, text: &[String]) -> Vec<String> {
             })
             .collect()
     } else {
+        // Too wide to lay out: the entries one per line, zeros left out.
         let mut out = Vec::new();
         for i in 0..rows {
             for j in 0..cols {
+                let t = text[i * cols + j].trim_start();
+                if t == "0" {
+                    continue;
+                }
                 if cols == 1 {
-                    out.push(format!("[{}] = {}", i + 1, text[i * cols + j]));
+                    out.push(format!("[{}] = {t}", i + 1));
                 } else {
-                    out.push(format!("[{}, {}] = {}", i + 1, j + 1, text[i * cols + j]));
+                    out.push(format!("[{}, {}] = {t}", i + 1, j + 1));
                 }
             }
+        }
+        if out.len() < rows * cols {
+            out.push("(entries not listed are 0)".to_owned());
         }
         out
     }

@@ -15,8 +15,8 @@ pub struct SymbolicMatrix {
     pub cols: usize,
     pub row_labels: &'static [&'static str],
     pub col_labels: &'static [&'static str],
-    /// Row-major formulas.
-    pub entries: &'static [&'static str],
+    /// The entries that are not identically zero: (row, column, formula).
+    pub nonzero: &'static [(usize, usize, &'static str)],
 }
 
 /// Every generated quantity of one mechanism as text.
@@ -43,9 +43,21 @@ impl SymbolicTable {
 }
 
 impl SymbolicMatrix {
-    /// The entry in row `i`, column `j`.
+    /// The formula of the entry in row `i`, column `j` (`"0"` if it is
+    /// identically zero).
     pub fn entry(&self, i: usize, j: usize) -> &'static str {
-        self.entries[i * self.cols + j]
+        self.nonzero
+            .iter()
+            .find(|&&(r, c, _)| r == i && c == j)
+            .map_or("0", |&(_, _, f)| f)
+    }
+
+    /// Every entry, row-major.
+    pub fn entries(&self) -> Vec<&'static str> {
+        (0..self.rows)
+            .flat_map(|i| (0..self.cols).map(move |j| (i, j)))
+            .map(|(i, j)| self.entry(i, j))
+            .collect()
     }
 
     /// The entry as laid out in its column: a leading space where another
@@ -110,8 +122,11 @@ impl fmt::Display for SymbolicMatrix {
                 writeln!(f, "  {label} [ {} ]", cells.join("   "))?;
             }
         } else {
-            for i in 0..self.rows {
-                for j in 0..self.cols {
+            if self.nonzero.len() < self.rows * self.cols {
+                writeln!(f, "  (entries not listed are 0)")?;
+            }
+            for &(i, j, formula) in self.nonzero {
+                {
                     let row = self.row_labels.get(i).copied().unwrap_or("");
                     let col = self.col_labels.get(j).copied().unwrap_or("");
                     let at = match (row.is_empty(), col.is_empty()) {
@@ -120,7 +135,7 @@ impl fmt::Display for SymbolicMatrix {
                         (true, false) => col.to_owned(),
                         (true, true) => String::new(),
                     };
-                    writeln!(f, "  [{at}] {}", self.entry(i, j))?;
+                    writeln!(f, "  [{at}] {formula}")?;
                 }
             }
         }

@@ -544,9 +544,9 @@ const _: () = {
                     cols: 1,
                     row_labels: &["Ψ₁", "Ψ₂"],
                     col_labels: &[""],
-                    entries: &[
-                        "l2·cos θ2 + l3·cos θ3 + l4·cos θ4 - l1",
-                        "l2·sin θ2 + l3·sin θ3 + l4·sin θ4",
+                    nonzero: &[
+                        (0, 0, "l2·cos θ2 + l3·cos θ3 + l4·cos θ4 - l1"),
+                        (1, 0, "l2·sin θ2 + l3·sin θ3 + l4·sin θ4"),
                     ],
                 },
                 ::linkage::SymbolicMatrix {
@@ -556,13 +556,13 @@ const _: () = {
                     cols: 3,
                     row_labels: &["Ψ₁", "Ψ₂"],
                     col_labels: &["θ3", "θ4", "θ2"],
-                    entries: &[
-                        "-l3·sin θ3",
-                        "-l4·sin θ4",
-                        "-l2·sin θ2",
-                        "l3·cos θ3",
-                        "l4·cos θ4",
-                        "l2·cos θ2",
+                    nonzero: &[
+                        (0, 0, "-l3·sin θ3"),
+                        (0, 1, "-l4·sin θ4"),
+                        (0, 2, "-l2·sin θ2"),
+                        (1, 0, "l3·cos θ3"),
+                        (1, 1, "l4·cos θ4"),
+                        (1, 2, "l2·cos θ2"),
                     ],
                 },
                 ::linkage::SymbolicMatrix {
@@ -572,11 +572,11 @@ const _: () = {
                     cols: 2,
                     row_labels: &["Ψ₁", "Ψ₂"],
                     col_labels: &["θ3", "θ4"],
-                    entries: &[
-                        "-l3·sin θ3",
-                        "-l4·sin θ4",
-                        "l3·cos θ3",
-                        "l4·cos θ4",
+                    nonzero: &[
+                        (0, 0, "-l3·sin θ3"),
+                        (0, 1, "-l4·sin θ4"),
+                        (1, 0, "l3·cos θ3"),
+                        (1, 1, "l4·cos θ4"),
                     ],
                 },
                 ::linkage::SymbolicMatrix {
@@ -586,7 +586,7 @@ const _: () = {
                     cols: 1,
                     row_labels: &["Ψ₁", "Ψ₂"],
                     col_labels: &["θ2"],
-                    entries: &["-l2·sin θ2", "l2·cos θ2"],
+                    nonzero: &[(0, 0, "-l2·sin θ2"), (1, 0, "l2·cos θ2")],
                 },
                 ::linkage::SymbolicMatrix {
                     key: "det_psi_u",
@@ -595,7 +595,7 @@ const _: () = {
                     cols: 1,
                     row_labels: &[""],
                     col_labels: &[""],
-                    entries: &["-l3·l4·(sin θ3·cos θ4 - cos θ3·sin θ4)"],
+                    nonzero: &[(0, 0, "-l3·l4·(sin θ3·cos θ4 - cos θ3·sin θ4)")],
                 },
                 ::linkage::SymbolicMatrix {
                     key: "psi_u_udot_u",
@@ -604,11 +604,11 @@ const _: () = {
                     cols: 2,
                     row_labels: &["Ψ₁", "Ψ₂"],
                     col_labels: &["θ3", "θ4"],
-                    entries: &[
-                        "-l3·cos θ3·θ\u{307}3",
-                        "-l4·cos θ4·θ\u{307}4",
-                        "-l3·sin θ3·θ\u{307}3",
-                        "-l4·sin θ4·θ\u{307}4",
+                    nonzero: &[
+                        (0, 0, "-l3·cos θ3·θ\u{307}3"),
+                        (0, 1, "-l4·cos θ4·θ\u{307}4"),
+                        (1, 0, "-l3·sin θ3·θ\u{307}3"),
+                        (1, 1, "-l4·sin θ4·θ\u{307}4"),
                     ],
                 },
                 ::linkage::SymbolicMatrix {
@@ -618,7 +618,7 @@ const _: () = {
                     cols: 1,
                     row_labels: &["Ψ₁", "Ψ₂"],
                     col_labels: &["θ2"],
-                    entries: &["0", "0"],
+                    nonzero: &[],
                 },
                 ::linkage::SymbolicMatrix {
                     key: "psi_v_vdot_u",
@@ -627,7 +627,7 @@ const _: () = {
                     cols: 2,
                     row_labels: &["Ψ₁", "Ψ₂"],
                     col_labels: &["θ3", "θ4"],
-                    entries: &["0", "0", "0", "0"],
+                    nonzero: &[],
                 },
                 ::linkage::SymbolicMatrix {
                     key: "psi_v_vdot_v",
@@ -636,7 +636,10 @@ const _: () = {
                     cols: 1,
                     row_labels: &["Ψ₁", "Ψ₂"],
                     col_labels: &["θ2"],
-                    entries: &["-l2·cos θ2·θ\u{307}2", "-l2·sin θ2·θ\u{307}2"],
+                    nonzero: &[
+                        (0, 0, "-l2·cos θ2·θ\u{307}2"),
+                        (1, 0, "-l2·sin θ2·θ\u{307}2"),
+                    ],
                 },
                 ::linkage::SymbolicMatrix {
                     key: "psi_u_dot",
@@ -645,11 +648,11 @@ const _: () = {
                     cols: 2,
                     row_labels: &["Ψ₁", "Ψ₂"],
                     col_labels: &["θ3", "θ4"],
-                    entries: &[
-                        "-l3·cos θ3·θ\u{307}3",
-                        "-l4·cos θ4·θ\u{307}4",
-                        "-l3·sin θ3·θ\u{307}3",
-                        "-l4·sin θ4·θ\u{307}4",
+                    nonzero: &[
+                        (0, 0, "-l3·cos θ3·θ\u{307}3"),
+                        (0, 1, "-l4·cos θ4·θ\u{307}4"),
+                        (1, 0, "-l3·sin θ3·θ\u{307}3"),
+                        (1, 1, "-l4·sin θ4·θ\u{307}4"),
                     ],
                 },
                 ::linkage::SymbolicMatrix {
@@ -659,7 +662,10 @@ const _: () = {
                     cols: 1,
                     row_labels: &["Ψ₁", "Ψ₂"],
                     col_labels: &["θ2"],
-                    entries: &["-l2·cos θ2·θ\u{307}2", "-l2·sin θ2·θ\u{307}2"],
+                    nonzero: &[
+                        (0, 0, "-l2·cos θ2·θ\u{307}2"),
+                        (1, 0, "-l2·sin θ2·θ\u{307}2"),
+                    ],
                 },
                 ::linkage::SymbolicMatrix {
                     key: "gamma",
@@ -668,9 +674,17 @@ const _: () = {
                     cols: 1,
                     row_labels: &["Ψ₁", "Ψ₂"],
                     col_labels: &[""],
-                    entries: &[
-                        "-l3·cos θ3·θ\u{307}3² - l4·cos θ4·θ\u{307}4² - l2·cos θ2·θ\u{307}2²",
-                        "-l3·sin θ3·θ\u{307}3² - l4·sin θ4·θ\u{307}4² - l2·sin θ2·θ\u{307}2²",
+                    nonzero: &[
+                        (
+                            0,
+                            0,
+                            "-l3·cos θ3·θ\u{307}3² - l4·cos θ4·θ\u{307}4² - l2·cos θ2·θ\u{307}2²",
+                        ),
+                        (
+                            1,
+                            0,
+                            "-l3·sin θ3·θ\u{307}3² - l4·sin θ4·θ\u{307}4² - l2·sin θ2·θ\u{307}2²",
+                        ),
                     ],
                 },
                 ::linkage::SymbolicMatrix {
@@ -680,17 +694,17 @@ const _: () = {
                     cols: 2,
                     row_labels: &["B", "C", "G2", "G3", "G4"],
                     col_labels: &["x", "y"],
-                    entries: &[
-                        "l2·cos θ2",
-                        "l2·sin θ2",
-                        "l2·cos θ2 + l3·cos θ3",
-                        "l2·sin θ2 + l3·sin θ3",
-                        "0.5·l2·cos θ2",
-                        "0.5·l2·sin θ2",
-                        "l2·cos θ2 + 0.5·l3·cos θ3",
-                        "l2·sin θ2 + 0.5·l3·sin θ3",
-                        "l2·cos θ2 + l3·cos θ3 + 0.5·l4·cos θ4",
-                        "l2·sin θ2 + l3·sin θ3 + 0.5·l4·sin θ4",
+                    nonzero: &[
+                        (0, 0, "l2·cos θ2"),
+                        (0, 1, "l2·sin θ2"),
+                        (1, 0, "l2·cos θ2 + l3·cos θ3"),
+                        (1, 1, "l2·sin θ2 + l3·sin θ3"),
+                        (2, 0, "0.5·l2·cos θ2"),
+                        (2, 1, "0.5·l2·sin θ2"),
+                        (3, 0, "l2·cos θ2 + 0.5·l3·cos θ3"),
+                        (3, 1, "l2·sin θ2 + 0.5·l3·sin θ3"),
+                        (4, 0, "l2·cos θ2 + l3·cos θ3 + 0.5·l4·cos θ4"),
+                        (4, 1, "l2·sin θ2 + l3·sin θ3 + 0.5·l4·sin θ4"),
                     ],
                 },
                 ::linkage::SymbolicMatrix {
@@ -700,17 +714,29 @@ const _: () = {
                     cols: 2,
                     row_labels: &["B", "C", "G2", "G3", "G4"],
                     col_labels: &["x", "y"],
-                    entries: &[
-                        "-l2·sin θ2·θ\u{307}2",
-                        "l2·cos θ2·θ\u{307}2",
-                        "-l3·sin θ3·θ\u{307}3 - l2·sin θ2·θ\u{307}2",
-                        "l3·cos θ3·θ\u{307}3 + l2·cos θ2·θ\u{307}2",
-                        "-0.5·l2·sin θ2·θ\u{307}2",
-                        "0.5·l2·cos θ2·θ\u{307}2",
-                        "-0.5·l3·sin θ3·θ\u{307}3 - l2·sin θ2·θ\u{307}2",
-                        "0.5·l3·cos θ3·θ\u{307}3 + l2·cos θ2·θ\u{307}2",
-                        "-l3·sin θ3·θ\u{307}3 - 0.5·l4·sin θ4·θ\u{307}4 - l2·sin θ2·θ\u{307}2",
-                        "l3·cos θ3·θ\u{307}3 + 0.5·l4·cos θ4·θ\u{307}4 + l2·cos θ2·θ\u{307}2",
+                    nonzero: &[
+                        (0, 0, "-l2·sin θ2·θ\u{307}2"),
+                        (0, 1, "l2·cos θ2·θ\u{307}2"),
+                        (1, 0, "-l3·sin θ3·θ\u{307}3 - l2·sin θ2·θ\u{307}2"),
+                        (1, 1, "l3·cos θ3·θ\u{307}3 + l2·cos θ2·θ\u{307}2"),
+                        (2, 0, "-0.5·l2·sin θ2·θ\u{307}2"),
+                        (2, 1, "0.5·l2·cos θ2·θ\u{307}2"),
+                        (
+                            3,
+                            0,
+                            "-0.5·l3·sin θ3·θ\u{307}3 - l2·sin θ2·θ\u{307}2",
+                        ),
+                        (3, 1, "0.5·l3·cos θ3·θ\u{307}3 + l2·cos θ2·θ\u{307}2"),
+                        (
+                            4,
+                            0,
+                            "-l3·sin θ3·θ\u{307}3 - 0.5·l4·sin θ4·θ\u{307}4 - l2·sin θ2·θ\u{307}2",
+                        ),
+                        (
+                            4,
+                            1,
+                            "l3·cos θ3·θ\u{307}3 + 0.5·l4·cos θ4·θ\u{307}4 + l2·cos θ2·θ\u{307}2",
+                        ),
                     ],
                 },
                 ::linkage::SymbolicMatrix {
@@ -720,17 +746,49 @@ const _: () = {
                     cols: 2,
                     row_labels: &["B", "C", "G2", "G3", "G4"],
                     col_labels: &["x", "y"],
-                    entries: &[
-                        "-l2·(cos θ2·θ\u{307}2² + sin θ2·θ\u{308}2)",
-                        "-l2·(sin θ2·θ\u{307}2² - cos θ2·θ\u{308}2)",
-                        "-l3·cos θ3·θ\u{307}3² - l2·cos θ2·θ\u{307}2² - l2·sin θ2·θ\u{308}2 - l3·sin θ3·θ\u{308}3",
-                        "-l3·sin θ3·θ\u{307}3² - l2·sin θ2·θ\u{307}2² + l2·cos θ2·θ\u{308}2 + l3·cos θ3·θ\u{308}3",
-                        "-0.5·l2·(cos θ2·θ\u{307}2² + sin θ2·θ\u{308}2)",
-                        "-0.5·l2·(sin θ2·θ\u{307}2² - cos θ2·θ\u{308}2)",
-                        "-0.5·l3·cos θ3·θ\u{307}3² - l2·cos θ2·θ\u{307}2² - l2·sin θ2·θ\u{308}2 - 0.5·l3·sin θ3·θ\u{308}3",
-                        "-0.5·l3·sin θ3·θ\u{307}3² - l2·sin θ2·θ\u{307}2² + l2·cos θ2·θ\u{308}2 + 0.5·l3·cos θ3·θ\u{308}3",
-                        "-l3·cos θ3·θ\u{307}3² - 0.5·l4·cos θ4·θ\u{307}4² - l2·cos θ2·θ\u{307}2² - l2·sin θ2·θ\u{308}2 - l3·sin θ3·θ\u{308}3 - 0.5·l4·sin θ4·θ\u{308}4",
-                        "-l3·sin θ3·θ\u{307}3² - 0.5·l4·sin θ4·θ\u{307}4² - l2·sin θ2·θ\u{307}2² + l2·cos θ2·θ\u{308}2 + l3·cos θ3·θ\u{308}3 + 0.5·l4·cos θ4·θ\u{308}4",
+                    nonzero: &[
+                        (0, 0, "-l2·(cos θ2·θ\u{307}2² + sin θ2·θ\u{308}2)"),
+                        (0, 1, "-l2·(sin θ2·θ\u{307}2² - cos θ2·θ\u{308}2)"),
+                        (
+                            1,
+                            0,
+                            "-l3·cos θ3·θ\u{307}3² - l2·cos θ2·θ\u{307}2² - l2·sin θ2·θ\u{308}2 - l3·sin θ3·θ\u{308}3",
+                        ),
+                        (
+                            1,
+                            1,
+                            "-l3·sin θ3·θ\u{307}3² - l2·sin θ2·θ\u{307}2² + l2·cos θ2·θ\u{308}2 + l3·cos θ3·θ\u{308}3",
+                        ),
+                        (
+                            2,
+                            0,
+                            "-0.5·l2·(cos θ2·θ\u{307}2² + sin θ2·θ\u{308}2)",
+                        ),
+                        (
+                            2,
+                            1,
+                            "-0.5·l2·(sin θ2·θ\u{307}2² - cos θ2·θ\u{308}2)",
+                        ),
+                        (
+                            3,
+                            0,
+                            "-0.5·l3·cos θ3·θ\u{307}3² - l2·cos θ2·θ\u{307}2² - l2·sin θ2·θ\u{308}2 - 0.5·l3·sin θ3·θ\u{308}3",
+                        ),
+                        (
+                            3,
+                            1,
+                            "-0.5·l3·sin θ3·θ\u{307}3² - l2·sin θ2·θ\u{307}2² + l2·cos θ2·θ\u{308}2 + 0.5·l3·cos θ3·θ\u{308}3",
+                        ),
+                        (
+                            4,
+                            0,
+                            "-l3·cos θ3·θ\u{307}3² - 0.5·l4·cos θ4·θ\u{307}4² - l2·cos θ2·θ\u{307}2² - l2·sin θ2·θ\u{308}2 - l3·sin θ3·θ\u{308}3 - 0.5·l4·sin θ4·θ\u{308}4",
+                        ),
+                        (
+                            4,
+                            1,
+                            "-l3·sin θ3·θ\u{307}3² - 0.5·l4·sin θ4·θ\u{307}4² - l2·sin θ2·θ\u{307}2² + l2·cos θ2·θ\u{308}2 + l3·cos θ3·θ\u{308}3 + 0.5·l4·cos θ4·θ\u{308}4",
+                        ),
                     ],
                 },
             ],

@@ -1,0 +1,348 @@
+//! What the macro costs its user's build: for the worksheet's four-bar, the
+//! two-loop six-bar and chains of N coupled four-bar loops (N = 1 … 32),
+//! the expansion time of the macro's own function in-process, the lines and
+//! tokens of the emitted code, and the release compile time of a crate
+//! containing that one mechanism.
+//!
+//! ```sh
+//! cargo run --release -p linkage-macros --example expansion_cost
+//! ```
+//!
+//! writes `docs/figures/expansion_cost.csv` and `.svg` and prints the
+//! table. `--no-compile` skips the (slow) compile-time column.
+#![allow(dead_code)]
+
+// The macro's stages, compiled into this program (a proc-macro crate
+// exports nothing else).
+#[path = "../src/ast.rs"]
+mod ast;
+#[path = "../src/dag.rs"]
+mod dag;
+#[path = "../src/diff.rs"]
+mod diff;
+#[path = "../src/display.rs"]
+mod display;
+#[path = "../src/emit.rs"]
+mod emit;
+#[path = "../src/errors.rs"]
+mod errors;
+#[path = "../src/expand.rs"]
+mod expand;
+#[path = "../src/lower.rs"]
+mod lower;
+#[path = "../src/model.rs"]
+mod model;
+#[path = "../src/normal.rs"]
+mod normal;
+#[path = "../src/suggest.rs"]
+mod suggest;
+#[path = "../src/valid.rs"]
+mod valid;
+
+use plotters::prelude::*;
+use proc_macro2::{TokenStream, TokenTree};
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+/// A mechanism as the text of its attribute and struct.
+struct Case {
+    name: String,
+    n: Option<usize>,
+    attr: String,
+    item: String,
+}
+
+fn fourbar() -> Case {
+    Case {
+        name: "four-bar (worksheet)".into(),
+        n: None,
+        attr: "u = [theta3, theta4], v = [theta2],
+            points = [
+                B = (l2 * theta2.cos(), l2 * theta2.sin()),
+                C = (B.x + l3 * theta3.cos(), B.y + l3 * theta3.sin()),
+                G2 = (0.5 * B.x, 0.5 * B.y),
+                G3 = (0.5 * (B.x + C.x), 0.5 * (B.y + C.y)),
+                G4 = (C.x + 0.5 * l4 * theta4.cos(), C.y + 0.5 * l4 * theta4.sin()),
+            ],
+            closure = [
+                l2 * theta2.cos() + l3 * theta3.cos() + l4 * theta4.cos() - l1,
+                l2 * theta2.sin() + l3 * theta3.sin() + l4 * theta4.sin(),
+            ]"
+        .into(),
+        item: "pub struct Mechanism { pub l1: f64, pub l2: f64, pub l3: f64, pub l4: f64 }".into(),
+    }
+}
+
+fn sixbar() -> Case {
+    Case {
+        name: "six-bar (two loops)".into(),
+        n: None,
+        attr: "u = [theta3, theta4, theta5, theta6], v = [theta2],
+            points = [
+                B = (l2 * theta2.cos(), l2 * theta2.sin()),
+                C = (B.x + l3 * theta3.cos(), B.y + l3 * theta3.sin()),
+                E = (B.x + e * (theta3 + beta).cos(), B.y + e * (theta3 + beta).sin()),
+                F = (E.x + l5 * theta5.cos(), E.y + l5 * theta5.sin()),
+            ],
+            closure = [
+                l2 * theta2.cos() + l3 * theta3.cos() + l4 * theta4.cos() - l1,
+                l2 * theta2.sin() + l3 * theta3.sin() + l4 * theta4.sin(),
+                E.x + l5 * theta5.cos() - gx - l6 * theta6.cos(),
+                E.y + l5 * theta5.sin() - gy - l6 * theta6.sin(),
+            ]"
+        .into(),
+        item: "pub struct Mechanism { pub l1: f64, pub l2: f64, pub l3: f64, pub l4: f64, pub e: f64, \
+               pub beta: f64, pub l5: f64, pub l6: f64, pub gx: f64, pub gy: f64 }"
+            .into(),
+    }
+}
+
+/// N four-bar loops in a chain: the crank of loop k is keyed to the rocker
+/// of loop k − 1 (at an angle offset), its ground pivots shifted along x;
+/// each loop has a coupler point. m = 2N.
+fn chain(n: usize) -> Case {
+    let mut u = Vec::new();
+    let mut points = Vec::new();
+    let mut closure = Vec::new();
+    for k in 1..=n {
+        u.push(format!("a{k}"));
+        u.push(format!("b{k}"));
+        let crank = if k == 1 { "t".to_owned() } else { format!("(b{} + delta)", k - 1) };
+        let x0 = format!("{}.0 * l1", k - 1);
+        points.push(format!(
+            "P{k} = ({x0} + l2 * {crank}.cos() + e * (a{k} + beta).cos(), l2 * {crank}.sin() + e * (a{k} + beta).sin())"
+        ));
+        closure.push(format!("l2 * {crank}.cos() + l3 * a{k}.cos() + l4 * b{k}.cos() - l1"));
+        closure.push(format!("l2 * {crank}.sin() + l3 * a{k}.sin() + l4 * b{k}.sin()"));
+    }
+    Case {
+        name: format!("chain N = {n}"),
+        n: Some(n),
+        attr: format!(
+            "u = [{}], v = [t], points = [{}], closure = [{}]",
+            u.join(", "),
+            points.join(", "),
+            closure.join(", ")
+        ),
+        item: "pub struct Mechanism { pub l1: f64, pub l2: f64, pub l3: f64, pub l4: f64, pub e: f64, \
+               pub beta: f64, pub delta: f64 }"
+            .into(),
+    }
+}
+
+fn count_tokens(tokens: TokenStream) -> usize {
+    tokens
+        .into_iter()
+        .map(|t| match t {
+            TokenTree::Group(g) => 1 + count_tokens(g.stream()),
+            _ => 1,
+        })
+        .sum()
+}
+
+struct Row {
+    name: String,
+    n: Option<usize>,
+    m: usize,
+    expansion: Duration,
+    lines: usize,
+    tokens: usize,
+    compile: Option<Duration>,
+}
+
+fn measure(case: &Case, compile: Option<&Path>) -> Row {
+    let attr: TokenStream = case.attr.parse().expect("attribute text");
+    let item: TokenStream = case.item.parse().expect("struct text");
+    let mut times = Vec::new();
+    let mut output = TokenStream::new();
+    for _ in 0..7 {
+        let start = Instant::now();
+        output = expand::expand(attr.clone(), item.clone());
+        times.push(start.elapsed());
+    }
+    times.sort();
+    let text = output.to_string();
+    assert!(!text.contains("compile_error"), "{}: the attribute has errors", case.name);
+    let file: syn::File = syn::parse2(output.clone()).expect("the expansion parses");
+    let pretty = prettyplease::unparse(&file);
+    let m = case.attr.split("v =").next().unwrap_or("").matches(',').count();
+    Row {
+        name: case.name.clone(),
+        n: case.n,
+        m: if case.n.is_some() { 2 * case.n.unwrap_or(0) } else { m },
+        expansion: times[times.len() / 2],
+        lines: pretty.lines().count(),
+        tokens: count_tokens(output),
+        compile: compile.map(|dir| compile_time(dir, case)),
+    }
+}
+
+/// The release compile time of a crate holding this one mechanism (its
+/// dependencies already built).
+fn compile_time(dir: &Path, case: &Case) -> Duration {
+    let src = dir.join("src/lib.rs");
+    let code = format!(
+        "#![allow(dead_code)]\n#[linkage::linkage({})]\n{}\n",
+        case.attr, case.item
+    );
+    std::fs::write(&src, code).expect("write the probe crate");
+    let start = Instant::now();
+    let status = std::process::Command::new(env!("CARGO"))
+        .args(["build", "--release", "--offline", "--quiet"])
+        .current_dir(dir)
+        .status()
+        .expect("run cargo");
+    let elapsed = start.elapsed();
+    assert!(status.success(), "{}: the probe crate does not build", case.name);
+    elapsed
+}
+
+/// A crate depending on `linkage`, with its dependencies built once.
+fn probe_crate(workspace: &Path) -> PathBuf {
+    let dir = workspace.join("target/expansion-cost/probe");
+    std::fs::create_dir_all(dir.join("src")).expect("create the probe crate");
+    std::fs::write(
+        dir.join("Cargo.toml"),
+        format!(
+            "[package]\nname = \"probe\"\nversion = \"0.0.0\"\nedition = \"2024\"\npublish = false\n\n\
+             [dependencies]\nlinkage = {{ path = {:?} }}\n\n[workspace]\n",
+            workspace.display().to_string()
+        ),
+    )
+    .expect("write the probe manifest");
+    std::fs::write(dir.join("src/lib.rs"), "").expect("write the probe crate");
+    let status = std::process::Command::new(env!("CARGO"))
+        .args(["build", "--release", "--offline", "--quiet"])
+        .current_dir(&dir)
+        .status()
+        .expect("run cargo");
+    assert!(status.success(), "the probe crate's dependencies do not build");
+    dir
+}
+
+fn main() {
+    let workspace = Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("the workspace").to_path_buf();
+    let with_compile = !std::env::args().any(|a| a == "--no-compile");
+    let probe = with_compile.then(|| probe_crate(&workspace));
+    let mut cases = vec![fourbar(), sixbar()];
+    cases.extend([1, 2, 4, 8, 16, 32].map(chain));
+    let rows: Vec<Row> = cases
+        .iter()
+        .map(|c| {
+            let row = measure(c, probe.as_deref());
+            eprintln!("measured {}", row.name);
+            row
+        })
+        .collect();
+
+    let mut table = String::from(
+        "| mechanism | m | expansion (median of 7) | emitted lines | emitted tokens | tokens / m | release compile |\n\
+         |---|---:|---:|---:|---:|---:|---:|\n",
+    );
+    let mut csv = String::from("mechanism,n,m,expansion_ms,lines,tokens,compile_s\n");
+    for r in &rows {
+        let compile = r.compile.map_or("—".to_owned(), |d| format!("{:.2} s", d.as_secs_f64()));
+        writeln!(
+            table,
+            "| {} | {} | {:.2} ms | {} | {} | {:.0} | {} |",
+            r.name,
+            r.m,
+            r.expansion.as_secs_f64() * 1e3,
+            r.lines,
+            r.tokens,
+            r.tokens as f64 / r.m as f64,
+            compile
+        )
+        .unwrap();
+        writeln!(
+            csv,
+            "{},{},{},{:.4},{},{},{}",
+            r.name,
+            r.n.map_or(String::new(), |n| n.to_string()),
+            r.m,
+            r.expansion.as_secs_f64() * 1e3,
+            r.lines,
+            r.tokens,
+            r.compile.map_or(String::new(), |d| format!("{:.3}", d.as_secs_f64()))
+        )
+        .unwrap();
+    }
+    println!("{table}");
+    let figures = workspace.join("docs/figures");
+    std::fs::create_dir_all(&figures).expect("create docs/figures");
+    std::fs::write(figures.join("expansion_cost.csv"), csv).expect("write the CSV");
+    chart(&rows, &figures.join("expansion_cost.svg"));
+    println!("wrote {}", figures.join("expansion_cost.svg").display());
+}
+
+/// Log–log chart of the chain's cost against N, each quantity relative to
+/// N = 1, with the slopes of N and N² for reference.
+fn chart(rows: &[Row], path: &Path) {
+    let chain: Vec<&Row> = rows.iter().filter(|r| r.n.is_some()).collect();
+    let base = chain[0];
+    let series: Vec<(&str, RGBColor, Vec<(f64, f64)>)> = vec![
+        (
+            "expansion time",
+            RGBColor(200, 30, 30),
+            chain.iter().map(|r| (r.n.unwrap_or(1) as f64, r.expansion.as_secs_f64() / base.expansion.as_secs_f64())).collect(),
+        ),
+        (
+            "emitted tokens",
+            RGBColor(30, 90, 200),
+            chain.iter().map(|r| (r.n.unwrap_or(1) as f64, r.tokens as f64 / base.tokens as f64)).collect(),
+        ),
+        (
+            "emitted lines",
+            RGBColor(30, 150, 60),
+            chain.iter().map(|r| (r.n.unwrap_or(1) as f64, r.lines as f64 / base.lines as f64)).collect(),
+        ),
+    ];
+    let mut series = series;
+    if chain.iter().all(|r| r.compile.is_some()) {
+        let c0 = base.compile.map_or(1.0, |d| d.as_secs_f64());
+        series.push((
+            "release compile time",
+            RGBColor(140, 60, 170),
+            chain.iter().map(|r| (r.n.unwrap_or(1) as f64, r.compile.map_or(0.0, |d| d.as_secs_f64()) / c0)).collect(),
+        ));
+    }
+    let root = SVGBackend::new(path, (760, 520)).into_drawing_area();
+    root.fill(&WHITE).expect("draw");
+    let mut c = ChartBuilder::on(&root)
+        .caption("Cost of the macro for a chain of N four-bar loops (relative to N = 1)", ("sans-serif", 18))
+        .margin(16)
+        .x_label_area_size(44)
+        .y_label_area_size(56)
+        .build_cartesian_2d((1f64..40f64).log_scale(), (0.5f64..2000f64).log_scale())
+        .expect("chart");
+    c.configure_mesh()
+        .x_desc("N (loops; m = 2N dependent coordinates)")
+        .y_desc("cost / cost at N = 1")
+        .x_label_formatter(&|x| format!("{x:.0}"))
+        .y_label_formatter(&|y| format!("{y}"))
+        .draw()
+        .expect("mesh");
+    for (label, slope, style) in [("∝ N", 1.0, BLACK.mix(0.45)), ("∝ N²", 2.0, BLACK.mix(0.25))] {
+        c.draw_series(LineSeries::new((0..=40).map(|i| {
+            let n = 1.0 + 39.0 * f64::from(i) / 40.0;
+            (n, n.powf(slope))
+        }), style.stroke_width(1)))
+        .expect("reference")
+        .label(label)
+        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], style));
+    }
+    for (label, color, points) in series {
+        c.draw_series(LineSeries::new(points.clone(), color.stroke_width(2))).expect("series")
+            .label(label)
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2)));
+        c.draw_series(points.iter().map(|&p| Circle::new(p, 3, color.filled()))).expect("points");
+    }
+    c.configure_series_labels()
+        .position(SeriesLabelPosition::UpperLeft)
+        .background_style(WHITE.mix(0.9))
+        .border_style(BLACK.mix(0.3))
+        .draw()
+        .expect("legend");
+    root.present().expect("write the SVG");
+}
