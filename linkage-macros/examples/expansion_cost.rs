@@ -317,6 +317,8 @@ fn chart(rows: &[Row], path: &Path) {
         .build_cartesian_2d((1f64..40f64).log_scale(), (0.5f64..2000f64).log_scale())
         .expect("chart");
     c.configure_mesh()
+        .light_line_style(WHITE)
+        .bold_line_style(BLACK.mix(0.12))
         .x_desc("N (loops; m = 2N dependent coordinates)")
         .y_desc("cost / cost at N = 1")
         .x_label_formatter(&|x| format!("{x:.0}"))
