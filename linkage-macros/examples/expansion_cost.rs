@@ -108,13 +108,21 @@ fn chain(n: usize) -> Case {
     for k in 1..=n {
         u.push(format!("a{k}"));
         u.push(format!("b{k}"));
-        let crank = if k == 1 { "t".to_owned() } else { format!("(b{} + delta)", k - 1) };
+        let crank = if k == 1 {
+            "t".to_owned()
+        } else {
+            format!("(b{} + delta)", k - 1)
+        };
         let x0 = format!("{}.0 * l1", k - 1);
         points.push(format!(
             "P{k} = ({x0} + l2 * {crank}.cos() + e * (a{k} + beta).cos(), l2 * {crank}.sin() + e * (a{k} + beta).sin())"
         ));
-        closure.push(format!("l2 * {crank}.cos() + l3 * a{k}.cos() + l4 * b{k}.cos() - l1"));
-        closure.push(format!("l2 * {crank}.sin() + l3 * a{k}.sin() + l4 * b{k}.sin()"));
+        closure.push(format!(
+            "l2 * {crank}.cos() + l3 * a{k}.cos() + l4 * b{k}.cos() - l1"
+        ));
+        closure.push(format!(
+            "l2 * {crank}.sin() + l3 * a{k}.sin() + l4 * b{k}.sin()"
+        ));
     }
     Case {
         name: format!("chain N = {n}"),
@@ -163,14 +171,28 @@ fn measure(case: &Case, compile: Option<&Path>) -> Row {
     }
     times.sort();
     let text = output.to_string();
-    assert!(!text.contains("compile_error"), "{}: the attribute has errors", case.name);
+    assert!(
+        !text.contains("compile_error"),
+        "{}: the attribute has errors",
+        case.name
+    );
     let file: syn::File = syn::parse2(output.clone()).expect("the expansion parses");
     let pretty = prettyplease::unparse(&file);
-    let m = case.attr.split("v =").next().unwrap_or("").matches(',').count();
+    let m = case
+        .attr
+        .split("v =")
+        .next()
+        .unwrap_or("")
+        .matches(',')
+        .count();
     Row {
         name: case.name.clone(),
         n: case.n,
-        m: if case.n.is_some() { 2 * case.n.unwrap_or(0) } else { m },
+        m: if case.n.is_some() {
+            2 * case.n.unwrap_or(0)
+        } else {
+            m
+        },
         expansion: times[times.len() / 2],
         lines: pretty.lines().count(),
         tokens: count_tokens(output),
@@ -194,7 +216,11 @@ fn compile_time(dir: &Path, case: &Case) -> Duration {
         .status()
         .expect("run cargo");
     let elapsed = start.elapsed();
-    assert!(status.success(), "{}: the probe crate does not build", case.name);
+    assert!(
+        status.success(),
+        "{}: the probe crate does not build",
+        case.name
+    );
     elapsed
 }
 
@@ -217,12 +243,18 @@ fn probe_crate(workspace: &Path) -> PathBuf {
         .current_dir(&dir)
         .status()
         .expect("run cargo");
-    assert!(status.success(), "the probe crate's dependencies do not build");
+    assert!(
+        status.success(),
+        "the probe crate's dependencies do not build"
+    );
     dir
 }
 
 fn main() {
-    let workspace = Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("the workspace").to_path_buf();
+    let workspace = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("the workspace")
+        .to_path_buf();
     let with_compile = !std::env::args().any(|a| a == "--no-compile");
     let probe = with_compile.then(|| probe_crate(&workspace));
     let mut cases = vec![fourbar(), sixbar()];
@@ -242,7 +274,9 @@ fn main() {
     );
     let mut csv = String::from("mechanism,n,m,expansion_ms,lines,tokens,compile_s\n");
     for r in &rows {
-        let compile = r.compile.map_or("—".to_owned(), |d| format!("{:.2} s", d.as_secs_f64()));
+        let compile = r
+            .compile
+            .map_or("—".to_owned(), |d| format!("{:.2} s", d.as_secs_f64()));
         writeln!(
             table,
             "| {} | {} | {:.2} ms | {} | {} | {:.0} | {} |",
@@ -264,7 +298,8 @@ fn main() {
             r.expansion.as_secs_f64() * 1e3,
             r.lines,
             r.tokens,
-            r.compile.map_or(String::new(), |d| format!("{:.3}", d.as_secs_f64()))
+            r.compile
+                .map_or(String::new(), |d| format!("{:.3}", d.as_secs_f64()))
         )
         .unwrap();
     }
@@ -285,17 +320,36 @@ fn chart(rows: &[Row], path: &Path) {
         (
             "expansion time",
             RGBColor(200, 30, 30),
-            chain.iter().map(|r| (r.n.unwrap_or(1) as f64, r.expansion.as_secs_f64() / base.expansion.as_secs_f64())).collect(),
+            chain
+                .iter()
+                .map(|r| {
+                    (
+                        r.n.unwrap_or(1) as f64,
+                        r.expansion.as_secs_f64() / base.expansion.as_secs_f64(),
+                    )
+                })
+                .collect(),
         ),
         (
             "emitted tokens",
             RGBColor(30, 90, 200),
-            chain.iter().map(|r| (r.n.unwrap_or(1) as f64, r.tokens as f64 / base.tokens as f64)).collect(),
+            chain
+                .iter()
+                .map(|r| {
+                    (
+                        r.n.unwrap_or(1) as f64,
+                        r.tokens as f64 / base.tokens as f64,
+                    )
+                })
+                .collect(),
         ),
         (
             "emitted lines",
             RGBColor(30, 150, 60),
-            chain.iter().map(|r| (r.n.unwrap_or(1) as f64, r.lines as f64 / base.lines as f64)).collect(),
+            chain
+                .iter()
+                .map(|r| (r.n.unwrap_or(1) as f64, r.lines as f64 / base.lines as f64))
+                .collect(),
         ),
     ];
     let mut series = series;
@@ -304,13 +358,24 @@ fn chart(rows: &[Row], path: &Path) {
         series.push((
             "release compile time",
             RGBColor(140, 60, 170),
-            chain.iter().map(|r| (r.n.unwrap_or(1) as f64, r.compile.map_or(0.0, |d| d.as_secs_f64()) / c0)).collect(),
+            chain
+                .iter()
+                .map(|r| {
+                    (
+                        r.n.unwrap_or(1) as f64,
+                        r.compile.map_or(0.0, |d| d.as_secs_f64()) / c0,
+                    )
+                })
+                .collect(),
         ));
     }
     let root = SVGBackend::new(path, (760, 520)).into_drawing_area();
     root.fill(&WHITE).expect("draw");
     let mut c = ChartBuilder::on(&root)
-        .caption("Cost of the macro for a chain of N four-bar loops (relative to N = 1)", ("sans-serif", 18))
+        .caption(
+            "Cost of the macro for a chain of N four-bar loops (relative to N = 1)",
+            ("sans-serif", 18),
+        )
         .margin(16)
         .x_label_area_size(44)
         .y_label_area_size(56)
@@ -325,20 +390,30 @@ fn chart(rows: &[Row], path: &Path) {
         .y_label_formatter(&|y| format!("{y}"))
         .draw()
         .expect("mesh");
-    for (label, slope, style) in [("∝ N", 1.0, BLACK.mix(0.45)), ("∝ N²", 2.0, BLACK.mix(0.25))] {
-        c.draw_series(LineSeries::new((0..=40).map(|i| {
-            let n = 1.0 + 39.0 * f64::from(i) / 40.0;
-            (n, n.powf(slope))
-        }), style.stroke_width(1)))
+    for (label, slope, style) in [
+        ("∝ N", 1.0, BLACK.mix(0.45)),
+        ("∝ N²", 2.0, BLACK.mix(0.25)),
+    ] {
+        c.draw_series(LineSeries::new(
+            (0..=40).map(|i| {
+                let n = 1.0 + 39.0 * f64::from(i) / 40.0;
+                (n, n.powf(slope))
+            }),
+            style.stroke_width(1),
+        ))
         .expect("reference")
         .label(label)
         .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], style));
     }
     for (label, color, points) in series {
-        c.draw_series(LineSeries::new(points.clone(), color.stroke_width(2))).expect("series")
+        c.draw_series(LineSeries::new(points.clone(), color.stroke_width(2)))
+            .expect("series")
             .label(label)
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2)));
-        c.draw_series(points.iter().map(|&p| Circle::new(p, 3, color.filled()))).expect("points");
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2))
+            });
+        c.draw_series(points.iter().map(|&p| Circle::new(p, 3, color.filled())))
+            .expect("points");
     }
     c.configure_series_labels()
         .position(SeriesLabelPosition::UpperLeft)

@@ -864,14 +864,19 @@ impl<'a> Generator<'a> {
         let mut entries: Vec<TokenStream> = Vec::new();
         let mut add =
             |key: &str, title: &str, matrix: &Matrix, rows: &[String], cols: &[String]| {
-                let nonzero = matrix.entries.iter().enumerate().filter(|(_, e)| **e != Dag::ZERO).map(|(k, &e)| {
-                    let (i, j) = (
-                        Literal::usize_unsuffixed(k / matrix.cols),
-                        Literal::usize_unsuffixed(k % matrix.cols),
-                    );
-                    let text = fmt.format(e);
-                    quote!((#i, #j, #text))
-                });
+                let nonzero = matrix
+                    .entries
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, e)| **e != Dag::ZERO)
+                    .map(|(k, &e)| {
+                        let (i, j) = (
+                            Literal::usize_unsuffixed(k / matrix.cols),
+                            Literal::usize_unsuffixed(k % matrix.cols),
+                        );
+                        let text = fmt.format(e);
+                        quote!((#i, #j, #text))
+                    });
                 let (r, c) = (
                     Literal::usize_unsuffixed(matrix.rows),
                     Literal::usize_unsuffixed(matrix.cols),

@@ -334,7 +334,11 @@ fn source(t: &Tree, style: &mut u32) -> String {
         Tree::Neg(a) => format!("(-{})", source(a, style)),
         Tree::Powi(a, n) => {
             let a = source(a, style);
-            let base = if *n < 0 { format!("(1.0 + {a} * {a})") } else { a };
+            let base = if *n < 0 {
+                format!("(1.0 + {a} * {a})")
+            } else {
+                a
+            };
             match pick {
                 0 => format!("{base}.powi({n})"),
                 _ => format!("powi({base}, {n})"),
@@ -342,7 +346,11 @@ fn source(t: &Tree, style: &mut u32) -> String {
         }
         Tree::Free(f, a) => {
             let a = source(a, style);
-            let a = if matches!(f, Func::Exp | Func::Sinh | Func::Cosh) { format!("0.25 * {a}") } else { a };
+            let a = if matches!(f, Func::Exp | Func::Sinh | Func::Cosh) {
+                format!("0.25 * {a}")
+            } else {
+                a
+            };
             call(f.method(), a, pick)
         }
         Tree::Bounded(f, a) => {
@@ -373,7 +381,11 @@ fn source(t: &Tree, style: &mut u32) -> String {
         }
         Tree::PowfVar(a, b, c) => {
             let a = source(a, style);
-            format!("powf({} + {a} * {a}, ({}).tanh())", num(*c), source(b, style))
+            format!(
+                "powf({} + {a} * {a}, ({}).tanh())",
+                num(*c),
+                source(b, style)
+            )
         }
     }
 }

@@ -33,7 +33,9 @@ impl Value {
         match self {
             Value::Matrix(data, rows) => {
                 let cols = data.len() / rows.max(&1);
-                (0..*rows).flat_map(|i| (0..cols).map(move |j| data[j * rows + i])).collect()
+                (0..*rows)
+                    .flat_map(|i| (0..cols).map(move |j| data[j * rows + i]))
+                    .collect()
             }
             Value::Num(x) => vec![*x],
             other => panic!("not a matrix: {other:?}"),
@@ -43,13 +45,25 @@ impl Value {
 
 /// Finds the generated method `name` in an expansion and runs it with the
 /// given fields of `self` and arguments (each a vector).
-pub fn call(file: &syn::File, name: &str, fields: &HashMap<String, f64>, args: &[Vec<f64>]) -> Value {
+pub fn call(
+    file: &syn::File,
+    name: &str,
+    fields: &HashMap<String, f64>,
+    args: &[Vec<f64>],
+) -> Value {
     let method = find(file, name).unwrap_or_else(|| panic!("no generated function `{name}`"));
     let mut env: HashMap<String, Value> = HashMap::new();
     for (input, value) in method.sig.inputs.iter().skip(1).zip(args) {
-        let syn::FnArg::Typed(t) = input else { unreachable!() };
-        let Pat::Ident(p) = &*t.pat else { unreachable!() };
-        env.insert(p.ident.to_string(), Value::Matrix(value.clone(), value.len()));
+        let syn::FnArg::Typed(t) = input else {
+            unreachable!()
+        };
+        let Pat::Ident(p) = &*t.pat else {
+            unreachable!()
+        };
+        env.insert(
+            p.ident.to_string(),
+            Value::Matrix(value.clone(), value.len()),
+        );
     }
     let mut machine = Machine { env, fields };
     let mut result = Value::Tuple(Vec::new());
@@ -72,9 +86,13 @@ pub fn call(file: &syn::File, name: &str, fields: &HashMap<String, f64>, args: &
 fn find<'a>(file: &'a syn::File, name: &str) -> Option<&'a syn::ImplItemFn> {
     for item in &file.items {
         let syn::Item::Const(c) = item else { continue };
-        let Expr::Block(block) = &*c.expr else { continue };
+        let Expr::Block(block) = &*c.expr else {
+            continue;
+        };
         for stmt in &block.block.stmts {
-            let Stmt::Item(syn::Item::Impl(imp)) = stmt else { continue };
+            let Stmt::Item(syn::Item::Impl(imp)) = stmt else {
+                continue;
+            };
             if imp.trait_.is_some() {
                 continue;
             }
@@ -109,7 +127,9 @@ impl Machine<'_> {
             // let Self { a, b, .. } = *self;
             (Pat::Struct(s), _) => {
                 for f in &s.fields {
-                    let syn::Member::Named(name) = &f.member else { unreachable!() };
+                    let syn::Member::Named(name) = &f.member else {
+                        unreachable!()
+                    };
                     let value = self.fields[&name.to_string()];
                     self.env.insert(name.to_string(), Value::Num(value));
                 }
@@ -128,9 +148,18 @@ impl Machine<'_> {
             Expr::Paren(p) => self.eval(&p.expr),
             Expr::Group(g) => self.eval(&g.expr),
             Expr::Path(p) => {
-                let segments: Vec<String> = p.path.segments.iter().map(|s| s.ident.to_string()).collect();
+                let segments: Vec<String> = p
+                    .path
+                    .segments
+                    .iter()
+                    .map(|s| s.ident.to_string())
+                    .collect();
                 if segments.len() == 1 {
-                    return self.env.get(&segments[0]).cloned().unwrap_or_else(|| panic!("unbound {}", segments[0]));
+                    return self
+                        .env
+                        .get(&segments[0])
+                        .cloned()
+                        .unwrap_or_else(|| panic!("unbound {}", segments[0]));
                 }
                 Value::Num(constant(segments.last().unwrap()))
             }
@@ -162,8 +191,12 @@ impl Machine<'_> {
             }
             Expr::Assign(a) => {
                 let value = self.eval(&a.right).num();
-                let Expr::Index(ix) = &*a.left else { panic!("assignment") };
-                let Expr::Path(p) = &*ix.expr else { panic!("assignment") };
+                let Expr::Index(ix) = &*a.left else {
+                    panic!("assignment")
+                };
+                let Expr::Path(p) = &*ix.expr else {
+                    panic!("assignment")
+                };
                 let name = p.path.segments[0].ident.to_string();
                 let rows = match &self.env[&name] {
                     Value::Matrix(_, r) => *r,
@@ -177,7 +210,9 @@ impl Machine<'_> {
             }
             // SVector::<f64, R>::zeros(), SMatrix::<f64, R, C>::zeros(), Vector2::new(x, y)
             Expr::Call(c) => {
-                let Expr::Path(p) = &*c.func else { panic!("call") };
+                let Expr::Path(p) = &*c.func else {
+                    panic!("call")
+                };
                 let last = p.path.segments.last().unwrap().ident.to_string();
                 if last == "new" {
                     let entries: Vec<f64> = c.args.iter().map(|a| self.eval(a).num()).collect();
