@@ -311,12 +311,15 @@ fn main() {
     println!("wrote {}", figures.join("expansion_cost.svg").display());
 }
 
+/// A labelled, coloured curve.
+type Series = (&'static str, RGBColor, Vec<(f64, f64)>);
+
 /// Log–log chart of the chain's cost against N, each quantity relative to
 /// N = 1, with the slopes of N and N² for reference.
 fn chart(rows: &[Row], path: &Path) {
     let chain: Vec<&Row> = rows.iter().filter(|r| r.n.is_some()).collect();
     let base = chain[0];
-    let series: Vec<(&str, RGBColor, Vec<(f64, f64)>)> = vec![
+    let series: Vec<Series> = vec![
         (
             "expansion time",
             RGBColor(200, 30, 30),
