@@ -145,6 +145,64 @@ fn unassemblable_pose_is_an_error() {
     }
 }
 
+/// Damped Newton tells "cannot be assembled" from "did not converge": at
+/// θ2 = 180° the non-Grashof four-bar's B–D distance is 125 > l3 + l4 = 120,
+/// so the closest pose, coupler and rocker stretched along BD, misses by 5.
+#[test]
+fn damped_newton_reports_cannot_assemble_with_the_gap() {
+    let bar = FourBar { l2: 45.0, ..SEED };
+    for guess in [vector![0.1, -0.1], vector![2.0, 1.0], vector![-1.0, 2.5]] {
+        let err = bar
+            .solve_position(&guess, &vector![PI], &Options::damped())
+            .unwrap_err();
+        match err {
+            Error::CannotAssemble {
+                residual,
+                ref closest,
+                gradient,
+            } => {
+                assert!((residual - 5.0).abs() < 1e-9, "residual {residual}");
+                assert!(gradient < 1e-6);
+                // Both links point from B to D: θ3 = θ4 = 0 (mod 2π).
+                for angle in closest {
+                    assert!(angle.sin().abs() < 1e-6 && angle.cos() > 0.0, "{closest:?}");
+                }
+                assert!(err.to_string().contains("cannot be assembled"), "{err}");
+            }
+            other => panic!("from {guess:?}: {other}"),
+        }
+    }
+    // Where it can be assembled, damped Newton finds the same pose as Newton.
+    let v = vector![20f64.to_radians()];
+    let plain = SEED
+        .solve_position(&guess(), &v, &Options::default())
+        .unwrap();
+    let damped = SEED
+        .solve_position(&guess(), &v, &Options::damped())
+        .unwrap();
+    assert!((plain.u - damped.u).amax() < 1e-14);
+}
+
+/// From a poor guess plain Newton may wander; damped Newton converges.
+#[test]
+fn damped_newton_converges_from_poor_guesses() {
+    let v = vector![20f64.to_radians()];
+    let mut damped_ok = 0;
+    for k in 0..36 {
+        let a = f64::from(k) * 10f64.to_radians();
+        let start = vector![a, -a];
+        if let Ok(p) = SEED.solve_position(&start, &v, &Options::damped()) {
+            // Either assembly mode is a valid answer; it must satisfy Ψ = 0.
+            assert!(SEED.psi(&p.u, &v).amax() < 1e-12);
+            damped_ok += 1;
+        }
+    }
+    assert_eq!(
+        damped_ok, 36,
+        "damped Newton converged from {damped_ok} of 36 guesses"
+    );
+}
+
 /// Whatever the inputs, an `Ok` holds finite numbers that satisfy the
 /// equations; an `Err` is typed.
 #[test]

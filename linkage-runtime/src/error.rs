@@ -66,6 +66,22 @@ pub enum Error {
         /// The threshold in force ([`crate::Options::min_rcond`]).
         min_rcond: f64,
     },
+    /// The equations have no solution at this driver value: damped Newton
+    /// reached a least-squares minimum of ‖Ψ‖ (Ψ_uᵀΨ ≈ 0) that is not a
+    /// root. The mechanism cannot be assembled here; `residual` says by how
+    /// much it fails to close, `closest` is the pose that comes closest.
+    #[error(
+        "the mechanism cannot be assembled here: the closest pose leaves ‖Ψ‖∞ = {residual:.6e} \
+         (a least-squares minimum, relative gradient {gradient:.1e})"
+    )]
+    CannotAssemble {
+        /// ‖Ψ‖∞ at the closest pose.
+        residual: f64,
+        /// The dependent coordinates of the closest pose.
+        closest: Vec<f64>,
+        /// ‖Ψ_uᵀΨ‖∞ / (‖Ψ_u‖∞‖Ψ‖∞) there.
+        gradient: f64,
+    },
     /// A generated quantity is NaN or infinite although the inputs are
     /// finite: the pose or the parameters are outside the domain of the
     /// equations (e.g. `sqrt` of a negative number), or a value overflows.

@@ -13,9 +13,12 @@
 mod error;
 mod linalg;
 mod model;
+mod newton;
+mod sources;
 mod symbolic;
 
 pub use error::{Error, Stage};
 pub use linalg::{Inverse, invert};
 pub use model::{AccelerationMethod, Analysis, Iterate, Linkage, Options, Position, Velocity};
+pub use sources::JacobianSource;
 pub use symbolic::{SymbolicMatrix, SymbolicTable};

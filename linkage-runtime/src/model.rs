@@ -3,6 +3,7 @@
 
 use crate::error::{Error, Stage, check_input, check_value};
 use crate::linalg::{Inverse, invert};
+use crate::sources::{self, JacobianSource};
 use crate::symbolic::SymbolicTable;
 use nalgebra::{SMatrix, SVector, Vector2};
 use num_dual::DualNum;
@@ -38,8 +39,16 @@ pub struct Options {
     /// 1/(‖Ψ_u‖₁‖Ψ_u⁻¹‖₁) is below this fails with [`Error::Singular`]
     /// rather than return a result that lost more digits than it kept.
     pub min_rcond: f64,
-    /// The form of γ used by [`Linkage::analyze`].
+    /// The form of γ used by the acceleration solves (generated code only).
     pub method: AccelerationMethod,
+    /// Where Ψ_u, Ψ_v and γ come from: the generated code (default),
+    /// automatic differentiation or finite differences.
+    pub jacobian: JacobianSource,
+    /// Damped Newton: backtracking on ½‖Ψ‖², with Levenberg–Marquardt steps
+    /// where Ψ_u is singular. Slower per step, but it converges from poor
+    /// guesses and tells a pose that cannot be assembled
+    /// ([`Error::CannotAssemble`]) from one that merely did not converge.
+    pub damped: bool,
 }
 
 impl Default for Options {
@@ -50,6 +59,18 @@ impl Default for Options {
             max_iterations: 50,
             min_rcond: 1e-10,
             method: AccelerationMethod::Fused,
+            jacobian: JacobianSource::Generated,
+            damped: false,
+        }
+    }
+}
+
+impl Options {
+    /// The defaults with the damped Newton method.
+    pub fn damped() -> Options {
+        Options {
+            damped: true,
+            ..Options::default()
         }
     }
 }
@@ -246,51 +267,7 @@ pub trait Linkage<const M: usize, const F: usize> {
         options: &Options,
         mut observe: impl FnMut(&Iterate<M>),
     ) -> Result<Position<M>, Error> {
-        check_input("u0", u0.as_slice())?;
-        check_input("v", v.as_slice())?;
-        let mut u = *u0;
-        let (mut psi, mut psi_u) = self.psi_and_psi_u(&u, v);
-        check_value(Stage::Position, "Ψ", psi.as_slice())?;
-        check_value(Stage::Position, "Ψ_u", psi_u.as_slice())?;
-        let mut residual = psi.amax();
-        observe(&Iterate {
-            iteration: 0,
-            u,
-            residual,
-            step: 0.0,
-        });
-        let mut step = f64::INFINITY;
-        for iteration in 1..=options.max_iterations {
-            let inv = factor(&psi_u, Stage::Position, options.min_rcond)?;
-            let delta = -(inv.inverse * psi);
-            u += delta;
-            step = delta.amax();
-            check_value(Stage::Position, "u", u.as_slice())?;
-            (psi, psi_u) = self.psi_and_psi_u(&u, v);
-            check_value(Stage::Position, "Ψ", psi.as_slice())?;
-            check_value(Stage::Position, "Ψ_u", psi_u.as_slice())?;
-            residual = psi.amax();
-            observe(&Iterate {
-                iteration,
-                u,
-                residual,
-                step,
-            });
-            let small_step = step <= options.step_tol * u.amax().max(1.0);
-            if (small_step || residual == 0.0) && residual <= options.residual_tol {
-                return Ok(Position {
-                    u,
-                    iterations: iteration,
-                    residual,
-                    psi_u,
-                });
-            }
-        }
-        Err(Error::NotConverged {
-            iterations: options.max_iterations,
-            residual,
-            step,
-        })
+        crate::newton::solve(self, u0, v, options, &mut observe)
     }
 
     /// The velocity u̇ = −Ψ_u⁻¹Ψ_v v̇ and the ratio matrix R = Ψ_u⁻¹Ψ_v at an
@@ -305,7 +282,7 @@ pub trait Linkage<const M: usize, const F: usize> {
         check_input("u", u.as_slice())?;
         check_input("v", v.as_slice())?;
         check_input("vdot", vdot.as_slice())?;
-        let psi_u = self.psi_u(u, v);
+        let psi_u = sources::psi_and_psi_u(self, options.jacobian, u, v).1;
         velocity_with(self, &psi_u, u, v, vdot, options)
     }
 
@@ -354,8 +331,9 @@ pub trait Linkage<const M: usize, const F: usize> {
         ] {
             check_input(name, values)?;
         }
-        let inv = factor(&self.psi_u(u, v), Stage::Acceleration, options.min_rcond)?;
-        acceleration_with(self, &inv, u, v, udot, vdot, vddot, options.method)
+        let psi_u = sources::psi_and_psi_u(self, options.jacobian, u, v).1;
+        let inv = factor(&psi_u, Stage::Acceleration, options.min_rcond)?;
+        acceleration_with(self, &inv, u, v, udot, vdot, vddot, options)
     }
 
     /// The whole analysis of one pose: Newton–Raphson from `u_guess`, then
@@ -374,16 +352,7 @@ pub trait Linkage<const M: usize, const F: usize> {
         let u = position.u;
         let velocity = velocity_with(self, &position.psi_u, &u, v, vdot, options)?;
         let inv = factor(&position.psi_u, Stage::Acceleration, options.min_rcond)?;
-        let uddot = acceleration_with(
-            self,
-            &inv,
-            &u,
-            v,
-            &velocity.udot,
-            vdot,
-            vddot,
-            options.method,
-        )?;
+        let uddot = acceleration_with(self, &inv, &u, v, &velocity.udot, vdot, vddot, options)?;
         let points = self.point_positions(&u, v);
         let point_velocities = self.point_velocities(&u, v, &velocity.udot, vdot);
         let point_accelerations =
@@ -443,7 +412,7 @@ fn velocity_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     options: &Options,
 ) -> Result<Velocity<M, F>, Error> {
     let inv = factor(psi_u, Stage::Velocity, options.min_rcond)?;
-    let psi_v = model.psi_v(u, v);
+    let psi_v = sources::psi_v(model, options.jacobian, u, v);
     check_value(Stage::Velocity, "Ψ_v", psi_v.as_slice())?;
     let ratios = inv.inverse * psi_v;
     let udot = -(ratios * vdot);
@@ -464,11 +433,12 @@ fn acceleration_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     udot: &SVector<f64, M>,
     vdot: &SVector<f64, F>,
     vddot: &SVector<f64, F>,
-    method: AccelerationMethod,
+    options: &Options,
 ) -> Result<SVector<f64, M>, Error> {
-    let gamma = model.gamma_by(method, u, v, udot, vdot);
+    let generated = || model.gamma_by(options.method, u, v, udot, vdot);
+    let gamma = sources::gamma(model, options.jacobian, generated, u, v, udot, vdot);
     check_value(Stage::Acceleration, "γ", gamma.as_slice())?;
-    let rhs = -(model.psi_v(u, v) * vddot + gamma);
+    let rhs = -(sources::psi_v(model, options.jacobian, u, v) * vddot + gamma);
     let uddot = inv.inverse * rhs;
     check_value(Stage::Acceleration, "ü", uddot.as_slice())?;
     Ok(uddot)

@@ -1,0 +1,178 @@
+//! Newton–Raphson on Ψ(u, v) = 0, plain or damped.
+//!
+//! The plain method takes full steps Δu = −Ψ_u⁻¹Ψ. The damped method
+//! backtracks along the Newton step until ½‖Ψ‖² decreases enough (Armijo),
+//! and where Ψ_u is singular or the Newton step does not descend it takes a
+//! Levenberg–Marquardt step −(Ψ_uᵀΨ_u + μI)⁻¹Ψ_uᵀΨ instead. It therefore
+//! ends either at a root or at a least-squares minimum of ‖Ψ‖ with
+//! Ψ_uᵀΨ ≈ 0 and ‖Ψ‖ > 0: there the mechanism cannot be assembled, and the
+//! error says how far it is from closing.
+
+use crate::error::{Error, Stage, check_input, check_value};
+use crate::linalg::invert;
+use crate::model::{Iterate, Linkage, Options, Position};
+use crate::sources::psi_and_psi_u;
+use nalgebra::{SMatrix, SVector};
+
+/// Ψ_uᵀΨ below this fraction of ‖Ψ_u‖·‖Ψ‖ is a stationary point of ‖Ψ‖².
+const STATIONARY: f64 = 1e-9;
+/// Where no step descends any more (rounding limits ½‖Ψ‖² to about ε of its
+/// value, so a minimum is located only to about √ε), a relative gradient
+/// below this is a minimum.
+const STATIONARY_AT_ROUNDING: f64 = 1e-6;
+/// The Armijo constant of the line search.
+const ARMIJO: f64 = 1e-4;
+
+pub(crate) fn solve<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
+    model: &L,
+    u0: &SVector<f64, M>,
+    v: &SVector<f64, F>,
+    options: &Options,
+    observe: &mut dyn FnMut(&Iterate<M>),
+) -> Result<Position<M>, Error> {
+    check_input("u0", u0.as_slice())?;
+    check_input("v", v.as_slice())?;
+    let evaluate = |u: &SVector<f64, M>| -> Result<(SVector<f64, M>, SMatrix<f64, M, M>), Error> {
+        let (psi, psi_u) = psi_and_psi_u(model, options.jacobian, u, v);
+        check_value(Stage::Position, "Ψ", psi.as_slice())?;
+        check_value(Stage::Position, "Ψ_u", psi_u.as_slice())?;
+        Ok((psi, psi_u))
+    };
+    let mut u = *u0;
+    let (mut psi, mut psi_u) = evaluate(&u)?;
+    let mut residual = psi.amax();
+    observe(&Iterate {
+        iteration: 0,
+        u,
+        residual,
+        step: 0.0,
+    });
+    let mut step = f64::INFINITY;
+    // The Levenberg–Marquardt parameter, relative to ‖Ψ_uᵀΨ_u‖.
+    let mut mu = 1e-3;
+    for iteration in 1..=options.max_iterations {
+        let delta = if options.damped {
+            let gradient =
+                (psi_u.transpose() * psi).amax() / (psi_u.amax() * residual).max(f64::MIN_POSITIVE);
+            let cannot_assemble = || Error::CannotAssemble {
+                residual,
+                closest: u.as_slice().to_vec(),
+                gradient,
+            };
+            if residual > options.residual_tol && gradient <= STATIONARY {
+                return Err(cannot_assemble());
+            }
+            match damped_step(&evaluate, &u, &psi, &psi_u, options, &mut mu)? {
+                Some(delta) => delta,
+                None if residual > options.residual_tol && gradient <= STATIONARY_AT_ROUNDING => {
+                    return Err(cannot_assemble());
+                }
+                None => {
+                    return Err(Error::NotConverged {
+                        iterations: iteration - 1,
+                        residual,
+                        step: 0.0,
+                    });
+                }
+            }
+        } else {
+            let inv = factor(&psi_u, options.min_rcond)?;
+            -(inv * psi)
+        };
+        u += delta;
+        step = delta.amax();
+        check_value(Stage::Position, "u", u.as_slice())?;
+        (psi, psi_u) = evaluate(&u)?;
+        residual = psi.amax();
+        observe(&Iterate {
+            iteration,
+            u,
+            residual,
+            step,
+        });
+        let small_step = step <= options.step_tol * u.amax().max(1.0);
+        if (small_step || residual == 0.0) && residual <= options.residual_tol {
+            return Ok(Position {
+                u,
+                iterations: iteration,
+                residual,
+                psi_u,
+            });
+        }
+    }
+    Err(Error::NotConverged {
+        iterations: options.max_iterations,
+        residual,
+        step,
+    })
+}
+
+fn factor<const M: usize>(
+    psi_u: &SMatrix<f64, M, M>,
+    min_rcond: f64,
+) -> Result<SMatrix<f64, M, M>, Error> {
+    let inv = invert(psi_u);
+    if inv.rcond > 0.0 && inv.rcond >= min_rcond {
+        Ok(inv.inverse)
+    } else {
+        Err(Error::Singular {
+            stage: Stage::Position,
+            rcond: inv.rcond,
+            min_rcond,
+        })
+    }
+}
+
+/// One damped step: the Newton step shortened until ½‖Ψ‖² decreases enough,
+/// or, where that fails, a Levenberg–Marquardt step with μ adapted.
+fn damped_step<const M: usize>(
+    evaluate: &dyn Fn(&SVector<f64, M>) -> Result<(SVector<f64, M>, SMatrix<f64, M, M>), Error>,
+    u: &SVector<f64, M>,
+    psi: &SVector<f64, M>,
+    psi_u: &SMatrix<f64, M, M>,
+    options: &Options,
+    mu: &mut f64,
+) -> Result<Option<SVector<f64, M>>, Error> {
+    let merit = |r: &SVector<f64, M>| 0.5 * r.norm_squared();
+    let phi = merit(psi);
+    let gradient = psi_u.transpose() * psi;
+    let trial = |d: &SVector<f64, M>| -> Result<f64, Error> { Ok(merit(&evaluate(&(u + d))?.0)) };
+
+    // The Newton direction with backtracking; full steps once the residual
+    // is within tolerance, where ½‖Ψ‖² is at rounding level and can no longer
+    // decide between steps.
+    let inv = invert(psi_u);
+    if inv.rcond > 0.0 && inv.rcond >= options.min_rcond {
+        let newton = -(inv.inverse * psi);
+        if psi.amax() <= options.residual_tol {
+            return Ok(Some(newton));
+        }
+        let slope = gradient.dot(&newton);
+        let mut lambda = 1.0;
+        while lambda >= 1e-4 {
+            let d = newton * lambda;
+            if trial(&d)? <= phi + ARMIJO * lambda * slope {
+                *mu = (*mu / 3.0).max(1e-12);
+                return Ok(Some(d));
+            }
+            lambda *= 0.5;
+        }
+    }
+    // Levenberg–Marquardt: (JᵀJ + μ·s·I) d = −Jᵀr, μ raised until it descends.
+    let jtj = psi_u.transpose() * psi_u;
+    let s = jtj.amax().max(f64::MIN_POSITIVE);
+    for _ in 0..60 {
+        let a = jtj + SMatrix::<f64, M, M>::identity() * (*mu * s);
+        let inv = invert(&a);
+        if inv.rcond > 0.0 {
+            let d = -(inv.inverse * gradient);
+            if trial(&d)? < phi {
+                *mu = (*mu / 3.0).max(1e-12);
+                return Ok(Some(d));
+            }
+        }
+        *mu *= 4.0;
+    }
+    // No descent even with tiny steps: a minimum, to rounding.
+    Ok(None)
+}
