@@ -23,6 +23,9 @@ const STATIONARY_AT_ROUNDING: f64 = 1e-6;
 /// The Armijo constant of the line search.
 const ARMIJO: f64 = 1e-4;
 
+/// Ψ and Ψ_u at a pose.
+type Evaluation<const M: usize> = (SVector<f64, M>, SMatrix<f64, M, M>);
+
 pub(crate) fn solve<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     model: &L,
     u0: &SVector<f64, M>,
@@ -32,7 +35,7 @@ pub(crate) fn solve<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
 ) -> Result<Position<M>, Error> {
     check_input("u0", u0.as_slice())?;
     check_input("v", v.as_slice())?;
-    let evaluate = |u: &SVector<f64, M>| -> Result<(SVector<f64, M>, SMatrix<f64, M, M>), Error> {
+    let evaluate = |u: &SVector<f64, M>| -> Result<Evaluation<M>, Error> {
         let (psi, psi_u) = psi_and_psi_u(model, options.jacobian, u, v);
         check_value(Stage::Position, "Ψ", psi.as_slice())?;
         check_value(Stage::Position, "Ψ_u", psi_u.as_slice())?;
@@ -126,7 +129,7 @@ fn factor<const M: usize>(
 /// One damped step: the Newton step shortened until ½‖Ψ‖² decreases enough,
 /// or, where that fails, a Levenberg–Marquardt step with μ adapted.
 fn damped_step<const M: usize>(
-    evaluate: &dyn Fn(&SVector<f64, M>) -> Result<(SVector<f64, M>, SMatrix<f64, M, M>), Error>,
+    evaluate: &dyn Fn(&SVector<f64, M>) -> Result<Evaluation<M>, Error>,
     u: &SVector<f64, M>,
     psi: &SVector<f64, M>,
     psi_u: &SMatrix<f64, M, M>,
