@@ -47,6 +47,8 @@
 
 extern crate self as linkage;
 
+pub mod closed_form;
+
 pub use linkage_macros::linkage;
 pub use linkage_runtime::*;
 pub use nalgebra;
