@@ -59,8 +59,9 @@ pub use num_dual;
 pub mod prelude {
     pub use crate::linkage;
     pub use linkage_runtime::{
-        AccelerationMethod, Analysis, Error, Iterate, JacobianSource, Linkage, Options, Position,
-        Stage, SymbolicMatrix, SymbolicTable, Velocity,
+        AccelerationMethod, Analysis, Drive, Error, Event, EventKind, Iterate, JacobianSource,
+        Linkage, Options, Position, Stage, Sweep, SweepOptions, SweepPose, SymbolicMatrix,
+        SymbolicTable, Velocity,
     };
     pub use nalgebra::{
         Matrix2, SMatrix, SVector, Vector1, Vector2, Vector3, Vector4, matrix, vector,

@@ -15,10 +15,12 @@ mod linalg;
 mod model;
 mod newton;
 mod sources;
+mod sweep;
 mod symbolic;
 
 pub use error::{Error, Stage};
-pub use linalg::{Inverse, invert};
+pub use linalg::{Inverse, determinant, invert};
 pub use model::{AccelerationMethod, Analysis, Iterate, Linkage, Options, Position, Velocity};
 pub use sources::JacobianSource;
+pub use sweep::{Drive, Event, EventKind, Sweep, SweepOptions, SweepPose};
 pub use symbolic::{SymbolicMatrix, SymbolicTable};

@@ -71,6 +71,41 @@ pub fn invert<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
     }
 }
 
+/// The determinant, by Gaussian elimination with partial pivoting (closed
+/// form for m ≤ 2).
+pub fn determinant<const M: usize>(a: &SMatrix<f64, M, M>) -> f64 {
+    match M {
+        0 => 1.0,
+        1 => a[(0, 0)],
+        2 => a[(0, 0)] * a[(1, 1)] - a[(0, 1)] * a[(1, 0)],
+        _ => {
+            let mut work = *a;
+            let mut det = 1.0;
+            for col in 0..M {
+                let pivot = (col..M)
+                    .max_by(|&i, &j| work[(i, col)].abs().total_cmp(&work[(j, col)].abs()))
+                    .unwrap_or(col);
+                let p = work[(pivot, col)];
+                if p == 0.0 {
+                    return 0.0;
+                }
+                if pivot != col {
+                    work.swap_rows(col, pivot);
+                    det = -det;
+                }
+                det *= p;
+                for row in col + 1..M {
+                    let factor = work[(row, col)] / p;
+                    for j in col..M {
+                        work[(row, j)] -= factor * work[(col, j)];
+                    }
+                }
+            }
+            det
+        }
+    }
+}
+
 /// Gauss–Jordan elimination with partial pivoting; `None` on a zero pivot.
 fn gauss_jordan<const M: usize>(a: &SMatrix<f64, M, M>) -> Option<SMatrix<f64, M, M>> {
     let mut work = *a;
@@ -128,6 +163,20 @@ mod tests {
             0.2, 0.1, 1.0, 0.0, //
             1.0, 0.0, 0.0, 1.0,
         ));
+    }
+
+    #[test]
+    fn determinants() {
+        let a = Matrix3::new(2.0, 1.0, 0.5, -1.0, 3.0, 0.0, 0.2, 0.1, 1.0);
+        assert!((determinant(&a) - a.determinant()).abs() < 1e-14);
+        let b = Matrix4::new(
+            0.0, 1.0, 0.5, 2.0, //
+            -1.0, 3.0, 0.0, 0.1, //
+            0.2, 0.1, 1.0, 0.0, //
+            1.0, 0.0, 0.0, 1.0,
+        );
+        assert!((determinant(&b) - b.determinant()).abs() < 1e-14);
+        assert_eq!(determinant(&Matrix2::new(1.0, 2.0, 2.0, 4.0)), 0.0);
     }
 
     #[test]

@@ -336,6 +336,19 @@ pub trait Linkage<const M: usize, const F: usize> {
         acceleration_with(self, &inv, u, v, udot, vdot, vddot, options)
     }
 
+    /// Drives the mechanism along `drive` from the pose near `u0`, by
+    /// continuation: every pose with its velocities and accelerations, and
+    /// every singular pose met, located and classified (see
+    /// [`crate::Drive`]).
+    fn sweep(
+        &self,
+        u0: &SVector<f64, M>,
+        drive: &crate::sweep::Drive<F>,
+        options: &crate::sweep::SweepOptions,
+    ) -> Result<crate::sweep::Sweep<M, F>, Error> {
+        crate::sweep::sweep(self, u0, drive, options)
+    }
+
     /// The whole analysis of one pose: Newton–Raphson from `u_guess`, then
     /// velocities and accelerations of the coordinates and the points.
     fn analyze(

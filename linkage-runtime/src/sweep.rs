@@ -1,0 +1,762 @@
+//! Continuation sweeps: the mechanism driven along a path, pose after pose,
+//! without ever jumping silently to another assembly branch, and with every
+//! singular pose on the way located and classified.
+//!
+//! Between two requested driver values the sweep takes as many sub-steps as
+//! it needs. Each sub-step predicts the next pose from the velocity ratios
+//! (first order, u + u′Δt) and, by default, the second-order analog
+//! (+ ½u″Δt²), then corrects it with Newton. A corrected pose is accepted
+//! only if it lies close to the prediction (the continuity of u), and a
+//! change of sign of det Ψ_u between accepted poses is examined: where the
+//! branch truly passes through a singular pose (a *branch point*, e.g. the
+//! change-point four-bar at its collinear pose) the crossing is located and
+//! reported; a jump to the mirror branch is refused and the step halved.
+//!
+//! Where the driver cannot advance any further, the pose is a *limit
+//! position*: it is located exactly as the solution of Ψ = 0, det Ψ_u = 0,
+//! and, when the drive rocks, the sweep passes onto the other branch and
+//! reverses the driver — the full rocking motion of a non-Grashof four-bar.
+
+use crate::error::{Error, Stage, check_input};
+use crate::linalg::{determinant, invert};
+use crate::model::{Linkage, Options};
+use crate::sources;
+use nalgebra::{DMatrix, DVector, SVector};
+
+/// How the driver moves.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Drive<const F: usize> {
+    /// From `from` to `to` along a straight line of driver space, in `steps`
+    /// equal steps. A limit position on the way ends the sweep (the path
+    /// cannot be followed further).
+    Line {
+        from: SVector<f64, F>,
+        to: SVector<f64, F>,
+        steps: usize,
+    },
+    /// Steps of `step` from `from`, reversing at every limit position, until
+    /// the mechanism is back at `from` moving the way it started after two
+    /// reversals (one full rocking cycle), or after `max_steps` steps.
+    Rocking {
+        from: SVector<f64, F>,
+        step: SVector<f64, F>,
+        max_steps: usize,
+    },
+}
+
+/// The choices of a sweep.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SweepOptions {
+    /// Newton's tolerances and the other solver choices.
+    pub options: Options,
+    /// The driver's speed along the path (driver units per second): the
+    /// poses' velocities and accelerations are for this speed with no
+    /// driver acceleration. 1 gives the kinematic analogs du/dv, d²u/dv².
+    pub speed: f64,
+    /// Predict with the second-order analog as well as the first.
+    pub second_order: bool,
+    /// A corrected pose farther from its prediction than this fraction of
+    /// the predicted step is taken for a jump to another branch.
+    pub continuity: f64,
+    /// Singular poses are located to this precision in the path parameter
+    /// (the driver, for f = 1).
+    pub locate_tolerance: f64,
+    /// The largest predicted change of u in one sub-step, relative to
+    /// max(1, ‖u‖∞): near a singular pose the velocity ratios blow up, and
+    /// this keeps the predictor from throwing Newton onto a far branch.
+    pub max_move: f64,
+}
+
+impl Default for SweepOptions {
+    fn default() -> Self {
+        SweepOptions {
+            options: Options::default(),
+            speed: 1.0,
+            second_order: true,
+            continuity: 0.5,
+            locate_tolerance: 1e-12,
+            max_move: 0.1,
+        }
+    }
+}
+
+/// One pose of a sweep.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SweepPose<const M: usize, const F: usize> {
+    /// The sequence number of the driver step that reached this pose (0 for
+    /// the start).
+    pub step: usize,
+    pub v: SVector<f64, F>,
+    pub u: SVector<f64, M>,
+    /// Velocities for the driver moving at `speed` in its current direction.
+    pub vdot: SVector<f64, F>,
+    pub udot: SVector<f64, M>,
+    pub uddot: SVector<f64, M>,
+    /// det Ψ_u: its sign is the assembly branch.
+    pub det: f64,
+    /// The reciprocal condition number of Ψ_u.
+    pub rcond: f64,
+    /// Newton iterations of the last corrector.
+    pub iterations: usize,
+}
+
+/// What kind of singular pose the sweep met.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EventKind {
+    /// The driver cannot go further: det Ψ_u = 0 with [Ψ_u Ψ_v] of full
+    /// rank; the mechanism must reverse (a dead centre for this driver).
+    LimitPosition,
+    /// Two branches cross: det Ψ_u = 0 and [Ψ_u Ψ_v] rank-deficient (the
+    /// change-point linkage's collinear pose); the sweep went straight on.
+    BranchPoint,
+}
+
+/// A singular pose met by a sweep.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Event<const M: usize, const F: usize> {
+    pub kind: EventKind,
+    pub v: SVector<f64, F>,
+    pub u: SVector<f64, M>,
+    /// The path parameter t of the event (v = from + t·direction).
+    pub t: f64,
+    /// The number of poses recorded before the event.
+    pub after: usize,
+    /// The smallest singular value of [Ψ_u Ψ_v] relative to the largest:
+    /// about 0 at a branch point.
+    pub rank_measure: f64,
+}
+
+/// The poses and events of a sweep.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sweep<const M: usize, const F: usize> {
+    pub poses: Vec<SweepPose<M, F>>,
+    pub events: Vec<Event<M, F>>,
+    /// Whether the whole drive was followed (false: a limit position ended
+    /// a line, or `max_steps` ended a rocking drive before it closed).
+    pub complete: bool,
+}
+
+/// A solved state on the path: t is the path parameter.
+#[derive(Clone, Copy, Debug)]
+struct State<const M: usize> {
+    t: f64,
+    u: SVector<f64, M>,
+    /// du/dt and d²u/dt² (zero where they cannot be computed).
+    du: SVector<f64, M>,
+    ddu: SVector<f64, M>,
+    det: f64,
+    rcond: f64,
+    iterations: usize,
+}
+
+/// Below this, [Ψ_u Ψ_v] is rank-deficient: a branch point.
+const BRANCH_RANK: f64 = 1e-6;
+
+/// Why a sub-step failed.
+enum Rejection {
+    /// No acceptable pose: halve the step.
+    Retry,
+    /// A hard error (non-finite values).
+    Fatal(Error),
+}
+
+struct Tracker<'a, L: ?Sized, const M: usize, const F: usize> {
+    model: &'a L,
+    options: SweepOptions,
+    base: SVector<f64, F>,
+    dir: SVector<f64, F>,
+}
+
+impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
+    fn v(&self, t: f64) -> SVector<f64, F> {
+        self.base + self.dir * t
+    }
+
+    /// Ψ_t = Ψ_v · direction
+    fn psi_t(&self, u: &SVector<f64, M>, t: f64) -> SVector<f64, M> {
+        sources::psi_v(self.model, self.options.options.jacobian, u, &self.v(t)) * self.dir
+    }
+
+    /// Newton at t from `guess`, without the conditioning threshold (the
+    /// continuity test and the event logic judge the result).
+    fn correct(&self, guess: &SVector<f64, M>, t: f64) -> Result<(SVector<f64, M>, usize), Error> {
+        let options = Options {
+            min_rcond: 0.0,
+            damped: false,
+            ..self.options.options
+        };
+        let p = self.model.solve_position(guess, &self.v(t), &options)?;
+        Ok((p.u, p.iterations))
+    }
+
+    /// The state at (u, t): det, conditioning and the analogs along the path.
+    fn state(&self, u: SVector<f64, M>, t: f64, iterations: usize) -> State<M> {
+        let v = self.v(t);
+        let psi_u = sources::psi_and_psi_u(self.model, self.options.options.jacobian, &u, &v).1;
+        let inv = invert(&psi_u);
+        let det = determinant(&psi_u);
+        let (mut du, mut ddu) = (SVector::zeros(), SVector::zeros());
+        if inv.rcond > 0.0 {
+            du = -(inv.inverse * self.psi_t(&u, t));
+            let generated = || self.model.gamma(&u, &v, &du, &self.dir);
+            let gamma = sources::gamma(
+                self.model,
+                self.options.options.jacobian,
+                generated,
+                &u,
+                &v,
+                &du,
+                &self.dir,
+            );
+            ddu = -(inv.inverse * gamma);
+            if !du.iter().chain(ddu.iter()).all(|x| x.is_finite()) {
+                du = SVector::zeros();
+                ddu = SVector::zeros();
+            }
+        }
+        State {
+            t,
+            u,
+            du,
+            ddu,
+            det,
+            rcond: inv.rcond,
+            iterations,
+        }
+    }
+
+    fn predict(&self, from: &State<M>, t: f64) -> SVector<f64, M> {
+        let h = t - from.t;
+        let mut u = from.u + from.du * h;
+        if self.options.second_order {
+            u += from.ddu * (0.5 * h * h);
+        }
+        u
+    }
+
+    /// One sub-step from `from` to t: predicted, corrected, and accepted
+    /// only if continuous with the prediction.
+    fn attempt(&self, from: &State<M>, t: f64) -> Result<State<M>, Rejection> {
+        let predicted = self.predict(from, t);
+        let scale = from.u.amax().max(1.0);
+        let moved = (predicted - from.u).amax();
+        if moved.is_nan() || moved > self.options.max_move * scale {
+            return Err(Rejection::Retry);
+        }
+        let (u, iterations) = match self.correct(&predicted, t) {
+            Ok(x) => x,
+            Err(Error::NonFiniteInput { .. }) | Err(Error::NonFiniteValue { .. }) => {
+                return Err(Rejection::Retry);
+            }
+            Err(_) => return Err(Rejection::Retry),
+        };
+        let step = (predicted - from.u).amax();
+        let correction = (u - predicted).amax();
+        let floor = 1e-9 * from.u.amax().max(1.0);
+        if correction > self.options.continuity * step.max(floor) + floor {
+            return Err(Rejection::Retry);
+        }
+        let state = self.state(u, t, iterations);
+        if !state.det.is_finite() {
+            return Err(Rejection::Fatal(Error::NonFiniteValue {
+                stage: Stage::Position,
+                quantity: "det Ψ_u",
+            }));
+        }
+        Ok(state)
+    }
+
+    /// Advances from `from` to the path parameter `target`, sub-stepping as
+    /// needed; returns the reached track, or the last one before a limit the
+    /// driver cannot pass, with the events met on the way.
+    fn advance(
+        &self,
+        from: Track<M>,
+        target: f64,
+        events: &mut Vec<Event<M, F>>,
+        recorded: usize,
+    ) -> Result<Advance<M>, Error> {
+        let mut track = from;
+        let mut delta = target - track.state.t;
+        let min_delta = self.options.locate_tolerance * (target - from.state.t).abs().max(1e-300);
+        while track.state.t != target {
+            let t_try = if (target - track.state.t).abs() <= delta.abs() {
+                target
+            } else {
+                track.state.t + delta
+            };
+            // Predict from a well-conditioned state: at a singular pose the
+            // tangent is undefined.
+            let source = track.source();
+            match self.attempt(&source, t_try) {
+                Ok(next) => {
+                    let regular = track.regular;
+                    if next.det != 0.0 && next.det.signum() != regular.det.signum() {
+                        match self.locate_crossing(&regular, &next) {
+                            Some(event) => events.push(Event {
+                                after: recorded,
+                                ..event
+                            }),
+                            None => {
+                                // A jump to the mirror branch, not a crossing.
+                                delta *= 0.5;
+                                if delta.abs() < min_delta {
+                                    return Ok(Advance::Blocked(track));
+                                }
+                                continue;
+                            }
+                        }
+                    }
+                    track.accept(next);
+                    // Grow back towards the full step after a success.
+                    let remaining = target - track.state.t;
+                    delta = (delta * 2.0).abs().min(remaining.abs()) * remaining.signum();
+                }
+                Err(Rejection::Fatal(e)) => return Err(e),
+                Err(Rejection::Retry) => {
+                    delta *= 0.5;
+                    if delta.abs() < min_delta {
+                        // Try to jump over a branch point before calling it
+                        // a limit.
+                        if let Some((next, event)) = self.jump_branch_point(&track, target) {
+                            events.push(Event {
+                                after: recorded,
+                                ..event
+                            });
+                            track.accept(next);
+                            delta = target - track.state.t;
+                            continue;
+                        }
+                        return Ok(Advance::Blocked(track));
+                    }
+                }
+            }
+        }
+        Ok(Advance::Reached(track))
+    }
+
+    /// Where det Ψ_u changed sign between two accepted states, finds the
+    /// crossing by bisection on the tracked branch; `None` if the branch
+    /// does not continue through it (the second state was on another branch).
+    fn locate_crossing(&self, a: &State<M>, b: &State<M>) -> Option<Event<M, F>> {
+        let (mut lo, mut hi) = (*a, *b);
+        for _ in 0..200 {
+            if (hi.t - lo.t).abs() <= self.options.locate_tolerance * hi.t.abs().max(1.0) {
+                break;
+            }
+            let mid = 0.5 * (lo.t + hi.t);
+            if mid == lo.t || mid == hi.t {
+                break;
+            }
+            // The secant through the bracket predicts well on both sides of a
+            // transversal crossing, where the tangent is ill-conditioned.
+            let guess = lo.u + (hi.u - lo.u) * ((mid - lo.t) / (hi.t - lo.t));
+            let Ok((u, iterations)) = self.correct(&guess, mid) else {
+                break;
+            };
+            let span = (hi.u - lo.u).amax();
+            if (u - guess).amax() > self.options.continuity * span + 1e-12 * u.amax().max(1.0) {
+                // Newton left the bracket's branch: not a crossing.
+                return None;
+            }
+            let m = self.state(u, mid, iterations);
+            if m.det == 0.0 {
+                lo = m;
+                hi = m;
+                break;
+            }
+            if m.det.signum() == lo.det.signum() {
+                lo = m;
+            } else {
+                hi = m;
+            }
+        }
+        // det is linear through a transversal crossing.
+        let w = if lo.t == hi.t {
+            0.0
+        } else {
+            lo.det / (lo.det - hi.det)
+        };
+        if !(0.0..=1.0).contains(&w) {
+            return None;
+        }
+        let t = lo.t + w * (hi.t - lo.t);
+        let u = lo.u + (hi.u - lo.u) * w;
+        // Two branches cross only where [Ψ_u Ψ_v] loses rank; elsewhere the
+        // sign change was a jump across a limit position's fold.
+        let rank_measure = self.rank_measure(&u, t);
+        (rank_measure < BRANCH_RANK).then(|| Event {
+            kind: EventKind::BranchPoint,
+            v: self.v(t),
+            u,
+            t,
+            after: 0,
+            rank_measure,
+        })
+    }
+
+    /// Near a pose where Newton fails, tries to step over a branch point
+    /// with the tangent predictor: success with det of the other sign means
+    /// the branch crosses another one there.
+    fn jump_branch_point(&self, track: &Track<M>, target: f64) -> Option<(State<M>, Event<M, F>)> {
+        let (from, regular) = (track.source(), track.regular);
+        let direction = (target - track.state.t).signum();
+        let mut h = self.options.locate_tolerance * track.state.t.abs().max(1.0) * 4.0;
+        let limit = (target - track.state.t).abs();
+        while h <= limit {
+            let t = track.state.t + direction * h;
+            if let Ok(next) = self.attempt(&from, t) {
+                if next.det != 0.0 && next.det.signum() != regular.det.signum() {
+                    return self
+                        .locate_crossing(&regular, &next)
+                        .map(|event| (next, event));
+                }
+                return None;
+            }
+            h *= 4.0;
+        }
+        None
+    }
+
+    /// σ_min/σ_max of [Ψ_u Ψ_t].
+    fn rank_measure(&self, u: &SVector<f64, M>, t: f64) -> f64 {
+        let v = self.v(t);
+        let psi_u = sources::psi_and_psi_u(self.model, self.options.options.jacobian, u, &v).1;
+        // Ψ_v along the unit direction of the path: the measure must not
+        // depend on the step length.
+        let psi_t = self.psi_t(u, t) / self.dir.norm().max(f64::MIN_POSITIVE);
+        let mut q = DMatrix::<f64>::zeros(M, M + 1);
+        for i in 0..M {
+            for j in 0..M {
+                q[(i, j)] = psi_u[(i, j)];
+            }
+            q[(i, M)] = psi_t[i];
+        }
+        let s = q.singular_values();
+        let (max, min) = s
+            .iter()
+            .fold((0.0_f64, f64::INFINITY), |(a, b), &x| (a.max(x), b.min(x)));
+        if max > 0.0 { min / max } else { 0.0 }
+    }
+
+    /// det Ψ_u relative to the product of its column norms (|·| ≤ 1).
+    fn normalized_det(&self, u: &SVector<f64, M>, t: f64) -> f64 {
+        let psi_u =
+            sources::psi_and_psi_u(self.model, self.options.options.jacobian, u, &self.v(t)).1;
+        let scale: f64 = psi_u
+            .column_iter()
+            .map(|c| c.norm().max(f64::MIN_POSITIVE))
+            .product();
+        determinant(&psi_u) / scale
+    }
+
+    /// The limit position near `near`: Newton on Ψ(u, t) = 0, det Ψ_u = 0
+    /// for (u, t), with the gradient of det by central differences.
+    fn locate_limit(&self, near: &State<M>) -> Option<(SVector<f64, M>, f64)> {
+        let (mut u, mut t) = (near.u, near.t);
+        let n = M + 1;
+        for _ in 0..50 {
+            let v = self.v(t);
+            let psi = self.model.psi(&u, &v);
+            let psi_u = sources::psi_and_psi_u(self.model, self.options.options.jacobian, &u, &v).1;
+            let psi_t = self.psi_t(&u, t);
+            let d = self.normalized_det(&u, t);
+            let mut jac = DMatrix::<f64>::zeros(n, n);
+            let mut rhs = DVector::<f64>::zeros(n);
+            for i in 0..M {
+                for j in 0..M {
+                    jac[(i, j)] = psi_u[(i, j)];
+                }
+                jac[(i, M)] = psi_t[i];
+                rhs[i] = -psi[i];
+            }
+            rhs[M] = -d;
+            for j in 0..n {
+                let x = if j < M { u[j] } else { t };
+                let h = 1e-7 * x.abs().max(1.0);
+                let (mut up, mut um, mut tp, mut tm) = (u, u, t, t);
+                if j < M {
+                    up[j] += h;
+                    um[j] -= h;
+                } else {
+                    tp += h;
+                    tm -= h;
+                }
+                jac[(M, j)] =
+                    (self.normalized_det(&up, tp) - self.normalized_det(&um, tm)) / (2.0 * h);
+            }
+            let step = jac.lu().solve(&rhs)?;
+            if !step.iter().all(|x| x.is_finite()) {
+                return None;
+            }
+            for j in 0..M {
+                u[j] += step[j];
+            }
+            t += step[M];
+            let size = step.amax();
+            if size <= 1e-14 * u.amax().max(t.abs()).max(1.0) {
+                break;
+            }
+        }
+        let residual = self.model.psi(&u, &self.v(t)).amax();
+        let scale =
+            sources::psi_and_psi_u(self.model, self.options.options.jacobian, &u, &self.v(t))
+                .1
+                .amax()
+                .max(1.0);
+        (residual <= 1e-9 * scale && self.normalized_det(&u, t).abs() <= 1e-6).then_some((u, t))
+    }
+
+    /// From a limit position, the state on the other branch mirroring
+    /// `came_from` (the same distance along the null direction of Ψ_u, on
+    /// the other side), found with the component along that direction held.
+    fn mirror(
+        &self,
+        limit_u: &SVector<f64, M>,
+        limit_t: f64,
+        came_from: &State<M>,
+    ) -> Option<State<M>> {
+        let v = self.v(limit_t);
+        let psi_u =
+            sources::psi_and_psi_u(self.model, self.options.options.jacobian, limit_u, &v).1;
+        let dyn_u = DMatrix::<f64>::from_fn(M, M, |i, j| psi_u[(i, j)]);
+        let svd = dyn_u.svd(false, true);
+        let v_t = svd.v_t?;
+        let k = svd
+            .singular_values
+            .iter()
+            .enumerate()
+            .min_by(|a, b| a.1.total_cmp(b.1))
+            .map(|(k, _)| k)?;
+        let null = SVector::<f64, M>::from_fn(|i, _| v_t[(k, i)]);
+        let s = null.dot(&(came_from.u - limit_u));
+        if s == 0.0 {
+            return None;
+        }
+        // Solve Ψ(u, t) = 0 with null·(u − u*) = −s: (m+1) unknowns (u, t).
+        let target = -s;
+        let (mut u, mut t) = (limit_u - null * s, came_from.t);
+        let n = M + 1;
+        for _ in 0..50 {
+            let vt = self.v(t);
+            let psi = self.model.psi(&u, &vt);
+            let psi_u =
+                sources::psi_and_psi_u(self.model, self.options.options.jacobian, &u, &vt).1;
+            let psi_t = self.psi_t(&u, t);
+            let mut jac = DMatrix::<f64>::zeros(n, n);
+            let mut rhs = DVector::<f64>::zeros(n);
+            for i in 0..M {
+                for j in 0..M {
+                    jac[(i, j)] = psi_u[(i, j)];
+                }
+                jac[(i, M)] = psi_t[i];
+                rhs[i] = -psi[i];
+                jac[(M, i)] = null[i];
+            }
+            rhs[M] = target - null.dot(&(u - limit_u));
+            let step = jac.lu().solve(&rhs)?;
+            for j in 0..M {
+                u[j] += step[j];
+            }
+            t += step[M];
+            if step.amax() <= 1e-14 * u.amax().max(t.abs()).max(1.0) {
+                break;
+            }
+        }
+        let (u, iterations) = self.correct(&u, t).ok()?;
+        let state = self.state(u, t, iterations);
+        (state.det.signum() != came_from.det.signum()).then_some(state)
+    }
+
+    fn pose(&self, state: &State<M>, step: usize, direction: f64) -> SweepPose<M, F> {
+        let speed = self.options.speed * direction;
+        SweepPose {
+            step,
+            v: self.v(state.t),
+            u: state.u,
+            vdot: self.dir * speed,
+            udot: state.du * speed,
+            uddot: state.ddu * (speed * speed),
+            det: state.det,
+            rcond: state.rcond,
+            iterations: state.iterations,
+        }
+    }
+}
+
+/// Below this reciprocal condition number a state's tangent is not trusted
+/// for prediction, nor its det's sign for the branch.
+const REGULAR_RCOND: f64 = 1e-8;
+
+/// The current state and the last well-conditioned one (which gives the
+/// branch's sign and the predictor near singular poses).
+#[derive(Clone, Copy, Debug)]
+struct Track<const M: usize> {
+    state: State<M>,
+    regular: State<M>,
+}
+
+impl<const M: usize> Track<M> {
+    fn new(state: State<M>) -> Track<M> {
+        Track {
+            state,
+            regular: state,
+        }
+    }
+
+    fn accept(&mut self, next: State<M>) {
+        self.state = next;
+        if next.rcond >= REGULAR_RCOND {
+            self.regular = next;
+        }
+    }
+
+    /// Where to predict from.
+    fn source(&self) -> State<M> {
+        if self.state.rcond >= REGULAR_RCOND {
+            self.state
+        } else {
+            self.regular
+        }
+    }
+}
+
+enum Advance<const M: usize> {
+    Reached(Track<M>),
+    /// The driver cannot pass beyond this track.
+    Blocked(Track<M>),
+}
+
+/// Runs a sweep (see [`Linkage::sweep`]).
+pub(crate) fn sweep<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
+    model: &L,
+    u0: &SVector<f64, M>,
+    drive: &Drive<F>,
+    options: &SweepOptions,
+) -> Result<Sweep<M, F>, Error> {
+    let (base, dir, steps, rocking) = match *drive {
+        Drive::Line { from, to, steps } => {
+            let steps = steps.max(1);
+            (from, (to - from) / steps as f64, steps, false)
+        }
+        Drive::Rocking {
+            from,
+            step,
+            max_steps,
+        } => (from, step, max_steps, true),
+    };
+    check_input("from", base.as_slice())?;
+    check_input("step", dir.as_slice())?;
+    let tracker = Tracker {
+        model,
+        options: *options,
+        base,
+        dir,
+    };
+    let start = model.solve_position(u0, &base, &options.options)?;
+    let state = tracker.state(start.u, 0.0, start.iterations);
+    if state.rcond < options.options.min_rcond {
+        return Err(Error::Singular {
+            stage: Stage::Position,
+            rcond: state.rcond,
+            min_rcond: options.options.min_rcond,
+        });
+    }
+    let mut poses = vec![tracker.pose(&state, 0, 1.0)];
+    let mut events = Vec::new();
+    let mut track = Track::new(state);
+    // The grid index of the current state, the direction of travel, and
+    // the number of reversals.
+    let mut index: i64 = 0;
+    let mut direction = 1.0;
+    let mut reversals = 0;
+    let mut last_grid = state;
+    let mut previous_grid = state;
+    let mut complete = true;
+    for step in 1..=steps {
+        let next_index = index + direction as i64;
+        let target = next_index as f64;
+        match tracker.advance(track, target, &mut events, poses.len())? {
+            Advance::Reached(t) => {
+                track = t;
+                index = next_index;
+            }
+            Advance::Blocked(near) => {
+                let near = near.state;
+                let Some((u_star, t_star)) = tracker.locate_limit(&near) else {
+                    return Err(Error::NotConverged {
+                        iterations: options.options.max_iterations,
+                        residual: model.psi(&near.u, &tracker.v(near.t)).amax(),
+                        step: 0.0,
+                    });
+                };
+                let rank_measure = tracker.rank_measure(&u_star, t_star);
+                let kind = if rank_measure < BRANCH_RANK {
+                    // A branch point the sweep could not step across.
+                    EventKind::BranchPoint
+                } else {
+                    EventKind::LimitPosition
+                };
+                events.push(Event {
+                    kind,
+                    v: tracker.v(t_star),
+                    u: u_star,
+                    t: t_star,
+                    after: poses.len(),
+                    rank_measure,
+                });
+                if !rocking || kind == EventKind::BranchPoint {
+                    complete = false;
+                    break;
+                }
+                // Onto the other branch, mirroring the last grid pose at
+                // least half a step from the limit, the driver reversed.
+                let source = if (last_grid.t - t_star).abs() >= 0.5 {
+                    last_grid
+                } else {
+                    previous_grid
+                };
+                let Some(mirrored) = tracker.mirror(&u_star, t_star, &source) else {
+                    complete = false;
+                    break;
+                };
+                direction = -direction;
+                reversals += 1;
+                index = mirrored.t.round() as i64;
+                track = match tracker.advance(
+                    Track::new(mirrored),
+                    index as f64,
+                    &mut events,
+                    poses.len(),
+                )? {
+                    Advance::Reached(t) => t,
+                    Advance::Blocked(_) => {
+                        complete = false;
+                        break;
+                    }
+                };
+            }
+        }
+        let state = track.state;
+        if state.rcond >= options.options.min_rcond {
+            poses.push(tracker.pose(&state, step, direction));
+        }
+        previous_grid = last_grid;
+        last_grid = state;
+        if rocking && reversals >= 2 && index == 0 && direction > 0.0 {
+            return Ok(Sweep {
+                poses,
+                events,
+                complete: true,
+            });
+        }
+    }
+    if rocking {
+        complete = false;
+    }
+    Ok(Sweep {
+        poses,
+        events,
+        complete,
+    })
+}
