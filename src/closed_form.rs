@@ -213,10 +213,10 @@ mod tests {
         let s = SEED
             .state(20f64.to_radians(), 41.88790204786391, 0.0, 1.0)
             .unwrap();
-        assert!((s.angles[0] - 1.231343147254347320311).abs() < 1e-15);
-        assert!((s.angles[1] + 0.8807969085934082721764).abs() < 1e-15);
-        assert!((s.velocities[0] + 18.42528425908482198611).abs() < 1e-12);
-        assert!((s.accelerations[1] - 584.7107579843262782250).abs() < 1e-10);
+        assert!((s.angles[0] - 1.231_343_147_254_347_3).abs() < 1e-15);
+        assert!((s.angles[1] + 0.880_796_908_593_408_3).abs() < 1e-15);
+        assert!((s.velocities[0] + 18.425_284_259_084_822).abs() < 1e-12);
+        assert!((s.accelerations[1] - 584.710_757_984_326_3).abs() < 1e-10);
         assert_eq!(SEED.branch(20f64.to_radians(), s.angles[0]), 1.0);
     }
 
@@ -252,7 +252,7 @@ mod tests {
     fn limit_positions_by_the_law_of_cosines() {
         let angles = FourBar { l2: 45.0, ..SEED }.collinear_crank_angles();
         assert_eq!(angles.len(), 1);
-        assert!((angles[0].to_degrees() - 146.0844733999917097103).abs() < 1e-12);
+        assert!((angles[0].to_degrees() - 146.084_473_399_991_7).abs() < 1e-12);
         assert!(
             FourBar { l2: 45.0, ..SEED }
                 .position(std::f64::consts::PI, 1.0)

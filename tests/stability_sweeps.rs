@@ -356,8 +356,8 @@ fn six_bar_full_cycle_never_flips() {
         let mut worst: f64 = 0.0;
         for p in &sweep.poses {
             let exact = closed(p.v[0], sigma2);
-            for i in 0..4 {
-                worst = worst.max(angle_error(p.u[i], exact[i]));
+            for (ours, theirs) in p.u.iter().zip(exact) {
+                worst = worst.max(angle_error(*ours, theirs));
             }
         }
         assert!(
