@@ -56,14 +56,14 @@ pub enum Error {
     /// change-point pose, or the equations do not determine u.
     #[error(
         "Ψ_u is singular in the {stage} solve: reciprocal condition number {rcond:.3e} \
-         is below the threshold {min_rcond:.3e} (the pose is at or near a singular \
-         configuration: dead centre, limit position or branch point)"
+         is below {min_rcond:.3e}, the least that keeps the requested accuracy (the pose \
+         is at or near a singular configuration: dead centre, limit position or branch point)"
     )]
     Singular {
         stage: Stage,
         /// 1/(‖Ψ_u‖₁‖Ψ_u⁻¹‖₁), 0 for an exactly singular matrix.
         rcond: f64,
-        /// The threshold in force ([`crate::Options::min_rcond`]).
+        /// The threshold in force for this stage ([`crate::Options::min_rcond`]).
         min_rcond: f64,
     },
     /// The equations have no solution at this driver value: damped Newton

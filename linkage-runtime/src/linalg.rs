@@ -7,7 +7,10 @@ use nalgebra::SMatrix;
 #[derive(Clone, Copy, Debug)]
 pub struct Inverse<const M: usize> {
     pub inverse: SMatrix<f64, M, M>,
-    /// 1/(‖A‖₁‖A⁻¹‖₁) in [0, 1]; 0 if A is exactly singular.
+    /// The reciprocal condition number 1/(‖B‖₁‖B⁻¹‖₁) in [0, 1] of the
+    /// column-equilibrated matrix B = A D_c (each column scaled to unit
+    /// 1-norm), so that it does not depend on the units of the coordinates;
+    /// 0 if A is exactly singular.
     pub rcond: f64,
 }
 
@@ -55,19 +58,33 @@ pub fn invert<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
         _ => gauss_jordan(a),
     };
     let rcond = match inverse {
-        Some(inv) if inv.iter().all(|x| x.is_finite()) => {
-            let product = norm1(a) * norm1(&inv);
-            if product.is_finite() && product > 0.0 {
-                1.0 / product
-            } else {
-                0.0
-            }
-        }
+        Some(inv) if inv.iter().all(|x| x.is_finite()) => equilibrated_rcond(a, &inv),
         _ => 0.0,
     };
     Inverse {
         inverse: inverse.unwrap_or_else(SMatrix::zeros),
         rcond,
+    }
+}
+
+/// 1/(‖B‖₁‖B⁻¹‖₁) for B = A D_c, the columns scaled to unit 1-norm, with
+/// B⁻¹ = D_c⁻¹ A⁻¹ taken from the inverse already computed. (Rows are not
+/// scaled: a row that shrinks is how a singular pose shows itself.)
+fn equilibrated_rcond<const M: usize>(a: &SMatrix<f64, M, M>, inv: &SMatrix<f64, M, M>) -> f64 {
+    let mut col = [0.0; M];
+    for (j, c) in col.iter_mut().enumerate() {
+        *c = a.column(j).iter().map(|x| x.abs()).sum::<f64>();
+        if *c == 0.0 {
+            return 0.0;
+        }
+    }
+    let b = SMatrix::<f64, M, M>::from_fn(|i, j| a[(i, j)] / col[j]);
+    let b_inv = SMatrix::<f64, M, M>::from_fn(|i, j| inv[(i, j)] * col[i]);
+    let product = norm1(&b) * norm1(&b_inv);
+    if product.is_finite() && product > 0.0 {
+        (1.0 / product).min(1.0)
+    } else {
+        0.0
     }
 }
 

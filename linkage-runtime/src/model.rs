@@ -35,10 +35,17 @@ pub struct Options {
     pub step_tol: f64,
     /// The most Newton steps taken.
     pub max_iterations: usize,
-    /// A solve with Ψ_u whose reciprocal condition number
-    /// 1/(‖Ψ_u‖₁‖Ψ_u⁻¹‖₁) is below this fails with [`Error::Singular`]
-    /// rather than return a result that lost more digits than it kept.
-    pub min_rcond: f64,
+    /// The relative accuracy a result must keep, or the solve fails with
+    /// [`Error::Singular`] instead of returning it. Near a singular pose
+    /// rounding is amplified by the condition number κ of Ψ_u (equilibrated,
+    /// see [`crate::Inverse::rcond`]) once in the positions, twice in the
+    /// velocities and three times in the accelerations; so positions are
+    /// refused where ε·κ exceeds `accuracy`, velocities where ε·κ² does and
+    /// accelerations where ε·κ³ does ([`Options::min_rcond`]). The default
+    /// 1e-6 refuses accelerations within about 1e-3 rad of a change point,
+    /// and velocities within about 1e-8 rad of a limit position.
+    /// `f64::INFINITY` switches the check off.
+    pub accuracy: f64,
     /// The form of γ used by the acceleration solves (generated code only).
     pub method: AccelerationMethod,
     /// Where Ψ_u, Ψ_v and γ come from: the generated code (default),
@@ -57,7 +64,7 @@ impl Default for Options {
             residual_tol: 1e-9,
             step_tol: 1e-10,
             max_iterations: 50,
-            min_rcond: 1e-10,
+            accuracy: 1e-6,
             method: AccelerationMethod::Fused,
             jacobian: JacobianSource::Generated,
             damped: false,
@@ -66,6 +73,18 @@ impl Default for Options {
 }
 
 impl Options {
+    /// The smallest reciprocal condition number of Ψ_u with which `stage`
+    /// keeps [`Options::accuracy`]: (ε/accuracy)^(1/k) with k = 1 for
+    /// positions, 2 for velocities, 3 for accelerations and points.
+    pub fn min_rcond(&self, stage: Stage) -> f64 {
+        let k = match stage {
+            Stage::Position => 1.0,
+            Stage::Velocity => 2.0,
+            Stage::Acceleration | Stage::Points => 3.0,
+        };
+        (f64::EPSILON / self.accuracy).powf(1.0 / k)
+    }
+
     /// The defaults with the damped Newton method.
     pub fn damped() -> Options {
         Options {
@@ -332,8 +351,7 @@ pub trait Linkage<const M: usize, const F: usize> {
             check_input(name, values)?;
         }
         let psi_u = sources::psi_and_psi_u(self, options.jacobian, u, v).1;
-        let inv = factor(&psi_u, Stage::Acceleration, options.min_rcond)?;
-        acceleration_with(self, &inv, u, v, udot, vdot, vddot, options)
+        acceleration_with(self, &psi_u, u, v, udot, vdot, vddot, options)
     }
 
     /// Drives the mechanism along `drive` from the pose near `u0`, by
@@ -364,8 +382,16 @@ pub trait Linkage<const M: usize, const F: usize> {
         let position = self.solve_position(u_guess, v, options)?;
         let u = position.u;
         let velocity = velocity_with(self, &position.psi_u, &u, v, vdot, options)?;
-        let inv = factor(&position.psi_u, Stage::Acceleration, options.min_rcond)?;
-        let uddot = acceleration_with(self, &inv, &u, v, &velocity.udot, vdot, vddot, options)?;
+        let uddot = acceleration_with(
+            self,
+            &position.psi_u,
+            &u,
+            v,
+            &velocity.udot,
+            vdot,
+            vddot,
+            options,
+        )?;
         let points = self.point_positions(&u, v);
         let point_velocities = self.point_velocities(&u, v, &velocity.udot, vdot);
         let point_accelerations =
@@ -397,14 +423,15 @@ pub trait Linkage<const M: usize, const F: usize> {
     }
 }
 
-/// Ψ_u inverted, or [`Error::Singular`] if its conditioning is below the
-/// threshold.
+/// Ψ_u inverted, or [`Error::Singular`] if its conditioning is below what
+/// `stage` needs to keep the requested accuracy.
 fn factor<const M: usize>(
     psi_u: &SMatrix<f64, M, M>,
     stage: Stage,
-    min_rcond: f64,
+    options: &Options,
 ) -> Result<Inverse<M>, Error> {
     let inv = invert(psi_u);
+    let min_rcond = options.min_rcond(stage);
     if inv.rcond > 0.0 && inv.rcond >= min_rcond {
         Ok(inv)
     } else {
@@ -424,7 +451,7 @@ fn velocity_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     vdot: &SVector<f64, F>,
     options: &Options,
 ) -> Result<Velocity<M, F>, Error> {
-    let inv = factor(psi_u, Stage::Velocity, options.min_rcond)?;
+    let inv = factor(psi_u, Stage::Velocity, options)?;
     let psi_v = sources::psi_v(model, options.jacobian, u, v);
     check_value(Stage::Velocity, "Ψ_v", psi_v.as_slice())?;
     let ratios = inv.inverse * psi_v;
@@ -440,7 +467,7 @@ fn velocity_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
 #[allow(clippy::too_many_arguments)]
 fn acceleration_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     model: &L,
-    inv: &Inverse<M>,
+    psi_u: &SMatrix<f64, M, M>,
     u: &SVector<f64, M>,
     v: &SVector<f64, F>,
     udot: &SVector<f64, M>,
@@ -448,11 +475,78 @@ fn acceleration_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     vddot: &SVector<f64, F>,
     options: &Options,
 ) -> Result<SVector<f64, M>, Error> {
+    let inv = invert(psi_u);
+    let psi_v = sources::psi_v(model, options.jacobian, u, v);
+    check_value(Stage::Acceleration, "Ψ_v", psi_v.as_slice())?;
+    acceleration_conditioning(psi_u, &psi_v, inv.rcond, options)?;
     let generated = || model.gamma_by(options.method, u, v, udot, vdot);
     let gamma = sources::gamma(model, options.jacobian, generated, u, v, udot, vdot);
     check_value(Stage::Acceleration, "γ", gamma.as_slice())?;
-    let rhs = -(sources::psi_v(model, options.jacobian, u, v) * vddot + gamma);
+    let rhs = -(psi_v * vddot + gamma);
     let uddot = inv.inverse * rhs;
     check_value(Stage::Acceleration, "ü", uddot.as_slice())?;
     Ok(uddot)
+}
+
+/// Whether an acceleration solve keeps [`Options::accuracy`]. Far from
+/// singular poses ε·κ³ ≤ accuracy settles it. Nearer, the amplification is
+/// ε·κ²·κ_q, with κ_q the condition number of [Ψ_u Ψ_v]: about 1 at a limit
+/// position (where accelerations stay accurate as long as velocities do)
+/// and about κ at a branch point (where they degrade first).
+pub(crate) fn acceleration_conditioning<const M: usize, const F: usize>(
+    psi_u: &SMatrix<f64, M, M>,
+    psi_v: &SMatrix<f64, M, F>,
+    rcond: f64,
+    options: &Options,
+) -> Result<(), Error> {
+    let fast = options.min_rcond(Stage::Acceleration);
+    if rcond > 0.0 && rcond >= fast {
+        return Ok(());
+    }
+    let needed = if rcond > 0.0 {
+        (f64::EPSILON * augmented_condition(psi_u, psi_v) / options.accuracy)
+            .sqrt()
+            .min(fast)
+    } else {
+        fast
+    };
+    if rcond > 0.0 && rcond >= needed {
+        Ok(())
+    } else {
+        Err(Error::Singular {
+            stage: Stage::Acceleration,
+            rcond,
+            min_rcond: needed,
+        })
+    }
+}
+
+/// σ_max/σ_min of [Ψ_u Ψ_v] with its columns scaled to unit length.
+fn augmented_condition<const M: usize, const F: usize>(
+    psi_u: &SMatrix<f64, M, M>,
+    psi_v: &SMatrix<f64, M, F>,
+) -> f64 {
+    let mut q = nalgebra::DMatrix::<f64>::zeros(M, M + F);
+    for j in 0..M + F {
+        let column: Vec<f64> = (0..M)
+            .map(|i| {
+                if j < M {
+                    psi_u[(i, j)]
+                } else {
+                    psi_v[(i, j - M)]
+                }
+            })
+            .collect();
+        let norm = column.iter().map(|x| x * x).sum::<f64>().sqrt();
+        if norm > 0.0 {
+            for (i, x) in column.iter().enumerate() {
+                q[(i, j)] = x / norm;
+            }
+        }
+    }
+    let s = q.singular_values();
+    let (max, min) = s
+        .iter()
+        .fold((0.0_f64, f64::INFINITY), |(a, b), &x| (a.max(x), b.min(x)));
+    if min > 0.0 { max / min } else { f64::INFINITY }
 }

@@ -79,7 +79,7 @@ pub(crate) fn solve<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
                 }
             }
         } else {
-            let inv = factor(&psi_u, options.min_rcond)?;
+            let inv = factor(&psi_u, options.min_rcond(Stage::Position))?;
             -(inv * psi)
         };
         u += delta;
@@ -145,7 +145,7 @@ fn damped_step<const M: usize>(
     // is within tolerance, where ½‖Ψ‖² is at rounding level and can no longer
     // decide between steps.
     let inv = invert(psi_u);
-    if inv.rcond > 0.0 && inv.rcond >= options.min_rcond {
+    if inv.rcond > 0.0 && inv.rcond >= options.min_rcond(Stage::Position) {
         let newton = -(inv.inverse * psi);
         if psi.amax() <= options.residual_tol {
             return Ok(Some(newton));

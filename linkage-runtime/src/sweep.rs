@@ -181,7 +181,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
     /// continuity test and the event logic judge the result).
     fn correct(&self, guess: &SVector<f64, M>, t: f64) -> Result<(SVector<f64, M>, usize), Error> {
         let options = Options {
-            min_rcond: 0.0,
+            accuracy: f64::INFINITY,
             damped: false,
             ..self.options.options
         };
@@ -568,6 +568,19 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         (state.det.signum() != came_from.det.signum()).then_some(state)
     }
 
+    /// Whether the pose's velocities and accelerations keep the requested
+    /// accuracy (see [`Options::accuracy`]).
+    fn keeps_accuracy(&self, state: &State<M>) -> bool {
+        let options = &self.options.options;
+        if state.rcond < options.min_rcond(Stage::Velocity) {
+            return false;
+        }
+        let v = self.v(state.t);
+        let psi_u = sources::psi_and_psi_u(self.model, options.jacobian, &state.u, &v).1;
+        let psi_v = sources::psi_v(self.model, options.jacobian, &state.u, &v);
+        crate::model::acceleration_conditioning(&psi_u, &psi_v, state.rcond, options).is_ok()
+    }
+
     fn pose(&self, state: &State<M>, step: usize, direction: f64) -> SweepPose<M, F> {
         let speed = self.options.speed * direction;
         SweepPose {
@@ -655,11 +668,12 @@ pub(crate) fn sweep<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     };
     let start = model.solve_position(u0, &base, &options.options)?;
     let state = tracker.state(start.u, 0.0, start.iterations);
-    if state.rcond < options.options.min_rcond {
+    if !tracker.keeps_accuracy(&state) {
+        let min_rcond = options.options.min_rcond(Stage::Velocity);
         return Err(Error::Singular {
-            stage: Stage::Position,
+            stage: Stage::Velocity,
             rcond: state.rcond,
-            min_rcond: options.options.min_rcond,
+            min_rcond,
         });
     }
     let mut poses = vec![tracker.pose(&state, 0, 1.0)];
@@ -738,7 +752,7 @@ pub(crate) fn sweep<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
             }
         }
         let state = track.state;
-        if state.rcond >= options.options.min_rcond {
+        if tracker.keeps_accuracy(&state) {
             poses.push(tracker.pose(&state, step, direction));
         }
         previous_grid = last_grid;
