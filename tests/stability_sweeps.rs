@@ -178,11 +178,10 @@ fn triple_rocker_rocks_between_its_limit_positions() {
         }
         let worst = check_fourbar(&bar, &sweep, sigma, false);
         eprintln!(
-            "triple rocker, step {step:.2e}: {} poses, limits at {:.12}° and {:.12}° (law of cosines ±{:.12}°), worst angle error {worst:.1e}",
+            "triple rocker, step {step:.2e}: {} poses, limits off the law of cosines by {:.1e} and {:.1e} rad, worst angle error {worst:.1e}",
             sweep.poses.len(),
-            sweep.events[0].v[0].to_degrees(),
-            sweep.events[1].v[0].to_degrees(),
-            limit.to_degrees()
+            (sweep.events[0].v[0] - limit).abs(),
+            (sweep.events[1].v[0] + limit).abs(),
         );
         // Back at the start on the starting branch.
         let (first, last) = (sweep.poses[0], *sweep.poses.last().unwrap());
@@ -308,8 +307,9 @@ fn slider_driven_through_its_dead_centres() {
         "the crank turned by {turn}"
     );
     eprintln!(
-        "slider-driven: dead centres at s = {:.15} and {:.15} (exact {s_max:.15}, {s_min:.15}), worst angle error {worst:.1e}",
-        sweep.events[0].v[0], sweep.events[1].v[0]
+        "slider-driven: dead centres off by {:.1e} and {:.1e} m, worst angle error {worst:.1e}",
+        (sweep.events[0].v[0] - s_max).abs(),
+        (sweep.events[1].v[0] - s_min).abs()
     );
 }
 
@@ -365,5 +365,85 @@ fn six_bar_full_cycle_never_flips() {
             "six-bar branch {sigma2}: worst angle error {worst:e}"
         );
         eprintln!("six-bar, dyad branch {sigma2}: worst angle error {worst:.1e}");
+    }
+}
+
+/// f = 2: the five-bar's two cranks driven along a straight line of driver
+/// space (both turning, at different rates), against its closed form.
+#[test]
+fn five_bar_along_a_path_of_both_drivers() {
+    let bar = common::FIVE_BAR;
+    let closed = |t2: f64, t5: f64| {
+        let b = Vector2::new(bar.l2 * t2.cos(), bar.l2 * t2.sin());
+        let d = Vector2::new(bar.l1 + bar.l5 * t5.cos(), bar.l5 * t5.sin());
+        let c = circle_intersection(b, bar.l3, d, bar.l4, 1.0).unwrap();
+        let (bc, dc) = (c - b, c - d);
+        [bc.y.atan2(bc.x), dc.y.atan2(dc.x)]
+    };
+    let start = closed(0.0, 1.0);
+    let sweep = bar
+        .sweep(
+            &vector![start[0], start[1]],
+            &Drive::Line {
+                from: vector![0.0, 1.0],
+                to: vector![TAU, 1.0 + 2.0 * TAU],
+                steps: STEPS,
+            },
+            &SweepOptions::default(),
+        )
+        .unwrap();
+    assert!(
+        sweep.complete && sweep.events.is_empty(),
+        "{:?}",
+        sweep.events
+    );
+    assert_eq!(sweep.poses.len(), STEPS + 1);
+    let mut worst: f64 = 0.0;
+    for p in &sweep.poses {
+        let exact = closed(p.v[0], p.v[1]);
+        worst = worst.max(angle_error(p.u[0], exact[0]).max(angle_error(p.u[1], exact[1])));
+        // The drivers move along the line at the sweep's speed.
+        assert!((p.vdot.norm() - 1.0).abs() < 1e-12);
+    }
+    assert!(worst < 1e-9, "five-bar: worst angle error {worst:e}");
+    eprintln!("five-bar along a path: worst angle error {worst:.1e}");
+}
+
+/// The sweep's velocities and accelerations are those of `analyze` for the
+/// driver at the sweep's speed: ω2 = 400 rpm over the worksheet's cycle.
+#[test]
+fn sweep_kinematics_match_analyze() {
+    let omega2 = common::OMEGA2;
+    let options = SweepOptions {
+        speed: omega2,
+        ..SweepOptions::default()
+    };
+    let sweep = SEED
+        .sweep(&start_pose(&SEED, 0.0, 1.0), &full_turn(360), &options)
+        .unwrap();
+    for p in &sweep.poses {
+        let a = SEED
+            .analyze(
+                &p.u,
+                &p.v,
+                &vector![omega2],
+                &vector![0.0],
+                &Options::default(),
+            )
+            .unwrap();
+        assert_eq!(p.vdot, vector![omega2]);
+        assert!((p.u - a.u).amax() < 1e-14);
+        assert!(
+            (p.udot - a.udot).amax() <= 1e-12 * a.udot.amax(),
+            "{:?} vs {:?}",
+            p.udot,
+            a.udot
+        );
+        assert!(
+            (p.uddot - a.uddot).amax() <= 1e-12 * a.uddot.amax(),
+            "{:?} vs {:?}",
+            p.uddot,
+            a.uddot
+        );
     }
 }

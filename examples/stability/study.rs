@@ -130,6 +130,12 @@ pub struct Row {
     pub methods_ab: f64,
 }
 
+/// |a − b| for angles: a Newton that lands on θ + 2πk found the same pose.
+fn angle_error(a: f64, b: f64) -> f64 {
+    let d = (a - b).rem_euclid(std::f64::consts::TAU);
+    d.min(std::f64::consts::TAU - d)
+}
+
 /// The error of a pair of analogs relative to their size, but at least 1:
 /// the analogs of these four-bars are of order 1 over the cycle, and near a
 /// branch point the accelerations pass through zero.
@@ -237,7 +243,7 @@ pub fn run(case: Case) -> Vec<Row> {
             match result {
                 Ok((x, iterations)) => {
                     row.iterations = Some(iterations);
-                    row.position = (x[0] - t3).abs().max((x[1] - t4).abs());
+                    row.position = angle_error(x[0], t3).max(angle_error(x[1], t4));
                     row.velocity = relative([x[2], x[3]], [w3, w4]);
                     row.acceleration = relative([x[4], x[5]], [a3, a4]);
                 }

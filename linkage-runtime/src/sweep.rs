@@ -582,14 +582,16 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
     }
 
     fn pose(&self, state: &State<M>, step: usize, direction: f64) -> SweepPose<M, F> {
-        let speed = self.options.speed * direction;
+        // dt/dτ for the driver moving at `speed` along the path: one unit of
+        // t is one step, of length |dir| in driver space.
+        let rate = self.options.speed * direction / self.dir.norm();
         SweepPose {
             step,
             v: self.v(state.t),
             u: state.u,
-            vdot: self.dir * speed,
-            udot: state.du * speed,
-            uddot: state.ddu * (speed * speed),
+            vdot: self.dir * rate,
+            udot: state.du * rate,
+            uddot: state.ddu * (rate * rate),
             det: state.det,
             rcond: state.rcond,
             iterations: state.iterations,
