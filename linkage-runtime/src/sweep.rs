@@ -129,6 +129,9 @@ pub struct Event<const M: usize, const F: usize> {
 /// The poses and events of a sweep.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Sweep<const M: usize, const F: usize> {
+    /// One pose per driver step, except where the velocities and
+    /// accelerations would not keep [`Options::accuracy`] (at or next to a
+    /// singular pose, which the events report): `step` numbers them.
     pub poses: Vec<SweepPose<M, F>>,
     pub events: Vec<Event<M, F>>,
     /// Whether the whole drive was followed (false: a limit position ended
