@@ -60,8 +60,8 @@ pub mod prelude {
     pub use crate::linkage;
     pub use linkage_runtime::{
         AccelerationMethod, Analysis, Drive, Error, Event, EventKind, Iterate, JacobianSource,
-        Linkage, Options, Position, Stage, Sweep, SweepOptions, SweepPose, SymbolicMatrix,
-        SymbolicTable, Velocity,
+        Kinematics, Linkage, Options, Position, Stage, Sweep, SweepOptions, SweepPose,
+        SweepSummary, SymbolicMatrix, SymbolicTable, Velocity,
     };
     pub use nalgebra::{
         Matrix2, SMatrix, SVector, Vector1, Vector2, Vector3, Vector4, matrix, vector,

@@ -124,3 +124,33 @@ fn gamma_is_the_second_derivative_of_psi_generic() {
     }
     eprintln!("worst relative difference of γ: {worst:.2e}");
 }
+
+/// The fused kernel computes the same Ψ, Ψ_u, Ψ_v as the separate
+/// functions, to the bit, and the same velocities and accelerations to
+/// rounding.
+#[test]
+fn the_fused_kernel_equals_the_separate_functions() {
+    for (theta2, u) in revolution(360) {
+        let (v, vdot, vddot) = (vector![theta2], vector![OMEGA2], vector![37.0]);
+        let k = SEED.kinematics(&u, &v, &vdot, &vddot);
+        assert_eq!(k.psi, SEED.psi(&u, &v));
+        assert_eq!(k.psi_u, SEED.psi_u(&u, &v));
+        assert_eq!(k.psi_v, SEED.psi_v(&u, &v));
+        let options = Options {
+            method: AccelerationMethod::B,
+            ..Options::default()
+        };
+        let vel = SEED.velocity(&u, &v, &vdot, &options).unwrap();
+        let acc = SEED
+            .acceleration(&u, &v, &vel.udot, &vdot, &vddot, &options)
+            .unwrap();
+        assert!(rel_norm(k.udot.as_slice(), vel.udot.as_slice(), 0.0) <= 1e-15);
+        assert!(
+            rel_norm(k.uddot.as_slice(), acc.as_slice(), 0.0) <= 1e-14,
+            "{} vs {}",
+            k.uddot,
+            acc
+        );
+        assert_eq!(k.rcond, vel.rcond);
+    }
+}

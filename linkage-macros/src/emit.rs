@@ -132,25 +132,62 @@ pub fn emit(
     reserved: &[String],
     mode: Mode,
 ) -> Body {
-    // Reachable nodes and their use counts.
+    let phased = emit_phases(dag, names, &[roots], hints, reserved, mode, &[]);
+    let mut statements = phased.prologue;
+    let mut phases = phased.phases.into_iter();
+    let (phase_statements, values) = phases.next().unwrap_or_default();
+    statements.extend(phase_statements);
+    Body {
+        statements,
+        values,
+        reads: phased.reads,
+    }
+}
+
+/// Code in phases: the values of phase k may use everything computed in
+/// phases before it, and the `late` symbols become available only from
+/// phase 1 on (the caller binds them between the phases — e.g. the
+/// velocities u̇, solved for after phase 0). Common subexpressions are
+/// shared across all phases, each computed in the first phase that needs it.
+pub struct Phased {
+    /// Reading the (early) symbols from the arguments.
+    pub prologue: Vec<TokenStream>,
+    /// For each phase: its statements and the values of its roots.
+    pub phases: Vec<(Vec<TokenStream>, Vec<TokenStream>)>,
+    pub reads: Reads,
+}
+
+pub fn emit_phases(
+    dag: &Dag,
+    names: &CodeNames,
+    phases: &[&[Id]],
+    hints: &[(Id, String)],
+    reserved: &[String],
+    mode: Mode,
+    late: &[Symbol],
+) -> Phased {
+    // Reachable nodes, their use counts, and the first phase needing each.
     let mut uses: HashMap<Id, usize> = HashMap::new();
-    let mut stack: Vec<Id> = roots.to_vec();
-    for &r in roots {
-        *uses.entry(r).or_default() += 1;
-    }
-    let mut seen: HashSet<Id> = HashSet::new();
-    while let Some(id) = stack.pop() {
-        if !seen.insert(id) {
-            continue;
+    let mut phase_of: HashMap<Id, usize> = HashMap::new();
+    for (p, roots) in phases.iter().enumerate() {
+        let mut stack: Vec<Id> = roots.to_vec();
+        for &r in roots.iter() {
+            *uses.entry(r).or_default() += 1;
         }
-        for c in children(dag.node(id)) {
-            if c != Dag::ONE {
-                *uses.entry(c).or_default() += 1;
+        while let Some(id) = stack.pop() {
+            if phase_of.contains_key(&id) {
+                continue;
             }
-            stack.push(c);
+            phase_of.insert(id, p);
+            for c in children(dag.node(id)) {
+                if c != Dag::ONE {
+                    *uses.entry(c).or_default() += 1;
+                }
+                stack.push(c);
+            }
         }
     }
-    let mut order: Vec<Id> = seen.iter().copied().collect();
+    let mut order: Vec<Id> = phase_of.keys().copied().collect();
     order.sort();
 
     let hint_of: HashMap<Id, &str> = hints
@@ -182,13 +219,21 @@ pub fn emit(
         bound: HashMap::new(),
     };
 
-    // Sine and cosine of the same angle share one sin_cos.
+    // Sine and cosine of the same angle share one sin_cos, in the first
+    // phase that needs either.
     let mut trig_pairs: HashMap<Id, (Option<Id>, Option<Id>)> = HashMap::new();
     for &id in &to_bind {
         match dag.node(id) {
             Node::Call(Func::Sin, a) => trig_pairs.entry(*a).or_default().0 = Some(id),
             Node::Call(Func::Cos, a) => trig_pairs.entry(*a).or_default().1 = Some(id),
             _ => {}
+        }
+    }
+    for (sin, cos) in trig_pairs.values() {
+        if let (Some(sin), Some(cos)) = (sin, cos) {
+            let first = phase_of[sin].min(phase_of[cos]);
+            phase_of.insert(*sin, first);
+            phase_of.insert(*cos, first);
         }
     }
     let mut angle_count = 0;
@@ -226,51 +271,54 @@ pub fn emit(
         emitter.bound.insert(id, name);
     }
 
-    // The symbols read from the arguments.
+    // The symbols read from the arguments (the late ones by the caller).
     let mut reads = Reads::default();
-    let mut statements = Vec::new();
     let mut symbols: Vec<Symbol> = order
         .iter()
         .filter_map(|&id| match dag.node(id) {
-            Node::Sym(s) => Some(*s),
+            Node::Sym(s) if !late.contains(s) => Some(*s),
             _ => None,
         })
         .collect();
     symbols.sort();
-    statements.extend(emitter.prologue(&symbols, &mut reads));
+    let prologue = emitter.prologue(&symbols, &mut reads);
 
-    // The temporaries, in topological order.
+    // The temporaries of each phase, in topological order.
     let mut emitted_pairs: HashSet<Id> = HashSet::new();
-    for &id in &to_bind {
-        let name = ident(&emitter.bound[&id]);
-        if let Node::Call(f @ (Func::Sin | Func::Cos), a) = dag.node(id) {
-            let (sin, cos) = trig_pairs[a];
-            let arg = emitter.operand(*a, Prec::Atom);
-            match (sin, cos) {
-                (Some(s), Some(c)) => {
-                    if emitted_pairs.insert(*a) {
-                        let (s, c) = (ident(&emitter.bound[&s]), ident(&emitter.bound[&c]));
-                        statements.push(quote! { let (#s, #c) = #arg.sin_cos(); });
+    let mut out = Vec::with_capacity(phases.len());
+    for (p, roots) in phases.iter().enumerate() {
+        let mut statements = Vec::new();
+        for &id in to_bind.iter().filter(|id| phase_of[id] == p) {
+            let name = ident(&emitter.bound[&id]);
+            if let Node::Call(f @ (Func::Sin | Func::Cos), a) = dag.node(id) {
+                let (sin, cos) = trig_pairs[a];
+                let arg = emitter.operand(*a, Prec::Atom);
+                match (sin, cos) {
+                    (Some(s), Some(c)) => {
+                        if emitted_pairs.insert(*a) {
+                            let (s, c) = (ident(&emitter.bound[&s]), ident(&emitter.bound[&c]));
+                            statements.push(quote! { let (#s, #c) = #arg.sin_cos(); });
+                        }
+                    }
+                    _ => {
+                        let method = format_ident!("{}", f.method());
+                        statements.push(quote! { let #name = #arg.#method(); });
                     }
                 }
-                _ => {
-                    let method = format_ident!("{}", f.method());
-                    statements.push(quote! { let #name = #arg.#method(); });
-                }
+                continue;
             }
-            continue;
+            let value = emitter.definition(id).0;
+            statements.push(quote! { let #name = #value; });
         }
-        let value = emitter.definition(id).0;
-        statements.push(quote! { let #name = #value; });
+        let values = roots
+            .iter()
+            .map(|&r| emitter.operand(r, Prec::Sum))
+            .collect();
+        out.push((statements, values));
     }
-
-    let values = roots
-        .iter()
-        .map(|&r| emitter.operand(r, Prec::Sum))
-        .collect();
-    Body {
-        statements,
-        values,
+    Phased {
+        prologue,
+        phases: out,
         reads,
     }
 }

@@ -108,6 +108,15 @@ fn stub(input: &Input) -> TokenStream {
                     #never
                 }
                 #(#inherent)*
+                pub fn kinematics<const M: usize, const F: usize>(
+                    &self,
+                    _u: &SVector<f64, M>,
+                    _v: &SVector<f64, F>,
+                    _vdot: &SVector<f64, F>,
+                    _vddot: &SVector<f64, F>,
+                ) -> ::linkage::Kinematics<M, F> {
+                    #never
+                }
                 pub fn psi_generic<D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy, const M: usize, const F: usize>(
                     &self,
                     _u: &SVector<D, M>,
@@ -131,6 +140,15 @@ fn stub(input: &Input) -> TokenStream {
                 const POINT_NAMES: &'static [&'static str] = &[];
                 const SYMBOLIC: ::linkage::SymbolicTable = Self::SYMBOLIC;
                 #(#in_trait)*
+                fn kinematics(
+                    &self,
+                    _u: &SVector<f64, __M>,
+                    _v: &SVector<f64, __F>,
+                    _vdot: &SVector<f64, __F>,
+                    _vddot: &SVector<f64, __F>,
+                ) -> ::linkage::Kinematics<__M, __F> {
+                    #never
+                }
                 fn psi_generic<D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy>(
                     &self,
                     _u: &SVector<D, __M>,
@@ -517,6 +535,7 @@ impl<'a> Generator<'a> {
             });
         }
 
+        let kinematics = self.kinematics_function();
         let generic = self.generic_functions();
         let u_names = self.input.u.items.iter().map(crate::lower::unraw);
         let v_names = self.input.v.items.iter().map(crate::lower::unraw);
@@ -542,6 +561,8 @@ impl<'a> Generator<'a> {
                     pub const POINT_NAMES: [&'static str; #npl] = [#(#point_names),*];
 
                     #(#functions)*
+
+                    #kinematics
 
                     #generic
 
@@ -661,6 +682,143 @@ impl<'a> Generator<'a> {
             candidate.push('_');
         }
         candidate
+    }
+
+    /// `kinematics`: Ψ, Ψ_u, Ψ_v, the velocity solve and γ in one pass, every
+    /// sine, cosine and common subexpression computed once.
+    fn kinematics_function(&self) -> TokenStream {
+        let model = self.model;
+        let (m, f) = (self.m, self.f);
+        let (ml, fl) = (Literal::usize_unsuffixed(m), Literal::usize_unsuffixed(f));
+        let nonzero = |matrix: &Matrix| -> Vec<Id> {
+            matrix
+                .entries
+                .iter()
+                .copied()
+                .filter(|&e| e != Dag::ZERO)
+                .collect()
+        };
+        let mut first: Vec<Id> = nonzero(&model.psi);
+        first.extend(nonzero(&model.psi_u));
+        first.extend(nonzero(&model.psi_v));
+        let second = nonzero(&model.gamma);
+        let locals = [
+            "psi", "psi_u", "psi_v", "gamma", "inverse", "rcond", "udot", "uddot",
+        ];
+        let local: Vec<String> = locals.iter().map(|n| self.free_name(n)).collect();
+        let late: Vec<crate::dag::Symbol> =
+            (0..m).map(|k| crate::dag::Symbol::Vel(k as u16)).collect();
+        let phased = crate::emit::emit_phases(
+            self.dag(),
+            &self.code,
+            &[&first, &second],
+            &[],
+            &local,
+            Mode::F64,
+            &late,
+        );
+        let [psi, psi_u, psi_v, gamma, inverse, rcond, udot, uddot] = locals.map(|n| {
+            let k = locals.iter().position(|x| *x == n).unwrap_or(0);
+            format_ident!("{}", local[k])
+        });
+        let mut phases = phased.phases.into_iter();
+        let (first_statements, first_values) = phases.next().unwrap_or_default();
+        let (second_statements, second_values) = phases.next().unwrap_or_default();
+        let mut values = first_values.iter();
+        let (psi_fill, _, _) = assemble(&model.psi, &psi.to_string(), &mut values, quote!(f64));
+        let (psi_u_fill, _, _) =
+            assemble(&model.psi_u, &psi_u.to_string(), &mut values, quote!(f64));
+        let (psi_v_fill, _, _) =
+            assemble(&model.psi_v, &psi_v.to_string(), &mut values, quote!(f64));
+        let mut values = second_values.iter();
+        let (gamma_fill, _, _) =
+            assemble(&model.gamma, &gamma.to_string(), &mut values, quote!(f64));
+        let bind = |name: &proc_macro2::Ident, fill: Vec<TokenStream>, ty: TokenStream| {
+            if fill.is_empty() {
+                quote!(let #name = #ty::zeros();)
+            } else {
+                quote!(#(#fill)*)
+            }
+        };
+        let psi_bind = bind(&psi, psi_fill, quote!(SVector::<f64, #ml>));
+        let psi_u_bind = bind(&psi_u, psi_u_fill, quote!(SMatrix::<f64, #ml, #ml>));
+        let psi_v_bind = bind(&psi_v, psi_v_fill, quote!(SMatrix::<f64, #ml, #fl>));
+        let gamma_bind = bind(&gamma, gamma_fill, quote!(SVector::<f64, #ml>));
+        // The velocities u̇ that γ uses, read from the solved vector.
+        let used: Vec<usize> = (0..m)
+            .filter(|&k| reaches(self.dag(), &second, crate::dag::Symbol::Vel(k as u16)))
+            .collect();
+        let velocity_names: Vec<proc_macro2::Ident> = used
+            .iter()
+            .map(|&k| format_ident!("{}", format!("{}_dot", self.model.lowered.coord_name(k))))
+            .collect();
+        let indices = used.iter().map(|&k| Literal::usize_unsuffixed(k));
+        let velocity_bind = match velocity_names.len() {
+            0 => quote!(),
+            1 => quote!(let #(#velocity_names)* = #(#udot[#indices])*;),
+            _ => quote!(let (#(#velocity_names),*) = (#(#udot[#indices]),*);),
+        };
+        // `field` when the local has the field's name, `field: local` else.
+        let field = |name: &str, local: &proc_macro2::Ident| {
+            let f = format_ident!("{}", name);
+            if *local == name {
+                quote!(#f)
+            } else {
+                quote!(#f: #local)
+            }
+        };
+        let inverse_pattern = {
+            let (a, b) = (field("inverse", &inverse), field("rcond", &rcond));
+            quote!(#a, #b)
+        };
+        let fields = [
+            ("psi", &psi),
+            ("psi_u", &psi_u),
+            ("psi_v", &psi_v),
+            ("inverse", &inverse),
+            ("rcond", &rcond),
+            ("udot", &udot),
+            ("uddot", &uddot),
+        ]
+        .map(|(name, local)| field(name, local));
+        let prologue = &phased.prologue;
+        let reads = phased.reads;
+        let arg = |used: bool, name: &str| {
+            if used {
+                format_ident!("{}", name)
+            } else {
+                format_ident!("_{}", name)
+            }
+        };
+        let (u_arg, v_arg) = (arg(reads.u, "u"), arg(reads.v, "v"));
+        quote! {
+            /// Everything at one pose in one pass: Ψ, Ψ_u and Ψ_v; the velocity
+            /// u̇ = −Ψ_u⁻¹Ψ_v v̇; γ = (Ψ_q q̇)_q q̇ at that velocity; and the
+            /// acceleration ü = −Ψ_u⁻¹(Ψ_v v̈ + γ). Each sine and cosine, and each
+            /// subexpression shared between these, is computed once: the fast path
+            /// of the runtime's analyses and sweeps.
+            #[must_use]
+            pub fn kinematics(
+                &self,
+                #u_arg: &SVector<f64, #ml>,
+                #v_arg: &SVector<f64, #fl>,
+                vdot: &SVector<f64, #fl>,
+                vddot: &SVector<f64, #fl>,
+            ) -> ::linkage::Kinematics<#ml, #fl> {
+                #(#prologue)*
+                #(#first_statements)*
+                #psi_bind
+                #psi_u_bind
+                #psi_v_bind
+                let ::linkage::Inverse { #inverse_pattern } = ::linkage::invert(&#psi_u);
+                let #udot = -(#inverse * (#psi_v * vdot));
+                #velocity_bind
+                #(#second_statements)*
+                #gamma_bind
+                let #uddot = -(#inverse * (#psi_v * vddot + #gamma));
+                ::linkage::Kinematics { #(#fields),* }
+            }
+        }
     }
 
     /// `psi_generic` and `point_positions_generic` over dual numbers.
@@ -816,6 +974,15 @@ impl<'a> Generator<'a> {
                 }
                 fn gamma(&self, u: &SVector<f64, #m>, v: &SVector<f64, #f>, udot: &SVector<f64, #m>, vdot: &SVector<f64, #f>) -> SVector<f64, #m> {
                     Self::gamma(self, u, v, udot, vdot)
+                }
+                fn kinematics(
+                    &self,
+                    u: &SVector<f64, #m>,
+                    v: &SVector<f64, #f>,
+                    vdot: &SVector<f64, #f>,
+                    vddot: &SVector<f64, #f>,
+                ) -> ::linkage::Kinematics<#m, #f> {
+                    Self::kinematics(self, u, v, vdot, vddot)
                 }
                 fn point_positions(&self, u: &SVector<f64, #m>, v: &SVector<f64, #f>) -> [Vector2<f64>; #np] {
                     Self::point_positions(self, u, v)
@@ -1026,6 +1193,22 @@ fn assemble<'v>(
         stmts.push(quote!(#var[#index] = #value;));
     }
     (stmts, quote!(#var), ty)
+}
+
+/// Whether any of `roots` depends on the symbol.
+fn reaches(dag: &Dag, roots: &[Id], symbol: crate::dag::Symbol) -> bool {
+    let mut seen = std::collections::HashSet::new();
+    let mut stack: Vec<Id> = roots.to_vec();
+    while let Some(id) = stack.pop() {
+        if !seen.insert(id) {
+            continue;
+        }
+        match dag.node(id) {
+            crate::dag::Node::Sym(s) if *s == symbol => return true,
+            node => stack.extend(crate::dag::children(node)),
+        }
+    }
+    false
 }
 
 /// A matrix of formulas laid out in aligned columns, or one entry per line

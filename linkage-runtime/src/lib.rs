@@ -20,7 +20,9 @@ mod symbolic;
 
 pub use error::{Error, Stage};
 pub use linalg::{Inverse, determinant, invert};
-pub use model::{AccelerationMethod, Analysis, Iterate, Linkage, Options, Position, Velocity};
+pub use model::{
+    AccelerationMethod, Analysis, Iterate, Kinematics, Linkage, Options, Position, Velocity,
+};
 pub use sources::JacobianSource;
-pub use sweep::{Drive, Event, EventKind, Sweep, SweepOptions, SweepPose};
+pub use sweep::{Drive, Event, EventKind, Sweep, SweepOptions, SweepPose, SweepSummary};
 pub use symbolic::{SymbolicMatrix, SymbolicTable};

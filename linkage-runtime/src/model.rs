@@ -130,6 +130,24 @@ pub struct Velocity<const M: usize, const F: usize> {
     pub rcond: f64,
 }
 
+/// Everything at one pose, from one pass of generated code
+/// ([`Linkage::kinematics`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Kinematics<const M: usize, const F: usize> {
+    /// Ψ (the residual of the pose).
+    pub psi: SVector<f64, M>,
+    pub psi_u: SMatrix<f64, M, M>,
+    pub psi_v: SMatrix<f64, M, F>,
+    /// Ψ_u⁻¹ (meaningless if `rcond` is 0).
+    pub inverse: SMatrix<f64, M, M>,
+    /// The column-equilibrated reciprocal condition number of Ψ_u.
+    pub rcond: f64,
+    /// u̇ = −Ψ_u⁻¹Ψ_v v̇
+    pub udot: SVector<f64, M>,
+    /// ü = −Ψ_u⁻¹(Ψ_v v̈ + γ)
+    pub uddot: SVector<f64, M>,
+}
+
 /// Positions, velocities and accelerations of a pose, of the coordinates
 /// and of the points.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -228,6 +246,15 @@ pub trait Linkage<const M: usize, const F: usize> {
         udot: &SVector<f64, M>,
         vdot: &SVector<f64, F>,
     ) -> SVector<f64, M>;
+    /// Ψ, Ψ_u, Ψ_v, u̇ and ü in one pass (no conditioning check: the
+    /// caller judges `rcond`).
+    fn kinematics(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        vdot: &SVector<f64, F>,
+        vddot: &SVector<f64, F>,
+    ) -> Kinematics<M, F>;
     /// P(q)
     fn point_positions(&self, u: &SVector<f64, M>, v: &SVector<f64, F>) -> Self::Points;
     /// Ṗ = P_q q̇
@@ -364,7 +391,25 @@ pub trait Linkage<const M: usize, const F: usize> {
         drive: &crate::sweep::Drive<F>,
         options: &crate::sweep::SweepOptions,
     ) -> Result<crate::sweep::Sweep<M, F>, Error> {
-        crate::sweep::sweep(self, u0, drive, options)
+        let mut poses = Vec::new();
+        let summary = crate::sweep::sweep(self, u0, drive, options, &mut |p| poses.push(*p))?;
+        Ok(crate::sweep::Sweep {
+            poses,
+            events: summary.events,
+            complete: summary.complete,
+        })
+    }
+
+    /// [`Linkage::sweep`], passing each pose to `on_pose` instead of
+    /// storing it: a sweep of millions of poses in constant memory.
+    fn sweep_each(
+        &self,
+        u0: &SVector<f64, M>,
+        drive: &crate::sweep::Drive<F>,
+        options: &crate::sweep::SweepOptions,
+        mut on_pose: impl FnMut(&crate::sweep::SweepPose<M, F>),
+    ) -> Result<crate::sweep::SweepSummary<M, F>, Error> {
+        crate::sweep::sweep(self, u0, drive, options, &mut on_pose)
     }
 
     /// The whole analysis of one pose: Newton–Raphson from `u_guess`, then
@@ -381,17 +426,24 @@ pub trait Linkage<const M: usize, const F: usize> {
         check_input("vddot", vddot.as_slice())?;
         let position = self.solve_position(u_guess, v, options)?;
         let u = position.u;
-        let velocity = velocity_with(self, &position.psi_u, &u, v, vdot, options)?;
-        let uddot = acceleration_with(
-            self,
-            &position.psi_u,
-            &u,
-            v,
-            &velocity.udot,
-            vdot,
-            vddot,
-            options,
-        )?;
+        let (velocity, uddot) = if options.jacobian == JacobianSource::Generated
+            && options.method == AccelerationMethod::Fused
+        {
+            fused_kinematics(self, &u, v, vdot, vddot, options)?
+        } else {
+            let velocity = velocity_with(self, &position.psi_u, &u, v, vdot, options)?;
+            let uddot = acceleration_with(
+                self,
+                &position.psi_u,
+                &u,
+                v,
+                &velocity.udot,
+                vdot,
+                vddot,
+                options,
+            )?;
+            (velocity, uddot)
+        };
         let points = self.point_positions(&u, v);
         let point_velocities = self.point_velocities(&u, v, &velocity.udot, vdot);
         let point_accelerations =
@@ -462,6 +514,37 @@ fn velocity_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
         ratios,
         rcond: inv.rcond,
     })
+}
+
+/// Velocities and accelerations from one fused generated evaluation, with
+/// the same conditioning checks as the separate solves.
+fn fused_kinematics<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
+    model: &L,
+    u: &SVector<f64, M>,
+    v: &SVector<f64, F>,
+    vdot: &SVector<f64, F>,
+    vddot: &SVector<f64, F>,
+    options: &Options,
+) -> Result<(Velocity<M, F>, SVector<f64, M>), Error> {
+    let k = model.kinematics(u, v, vdot, vddot);
+    check_value(Stage::Velocity, "Ψ_v", k.psi_v.as_slice())?;
+    let min_rcond = options.min_rcond(Stage::Velocity);
+    if !(k.rcond > 0.0 && k.rcond >= min_rcond) {
+        return Err(Error::Singular {
+            stage: Stage::Velocity,
+            rcond: k.rcond,
+            min_rcond,
+        });
+    }
+    check_value(Stage::Velocity, "u̇", k.udot.as_slice())?;
+    acceleration_conditioning(&k.psi_u, &k.psi_v, k.rcond, options)?;
+    check_value(Stage::Acceleration, "ü", k.uddot.as_slice())?;
+    let velocity = Velocity {
+        udot: k.udot,
+        ratios: k.inverse * k.psi_v,
+        rcond: k.rcond,
+    };
+    Ok((velocity, k.uddot))
 }
 
 #[allow(clippy::too_many_arguments)]

@@ -19,9 +19,9 @@
 
 use crate::error::{Error, Stage, check_input};
 use crate::linalg::{determinant, invert};
-use crate::model::{Linkage, Options};
+use crate::model::{AccelerationMethod, Linkage, Options};
 use crate::sources;
-use nalgebra::{DMatrix, DVector, SVector};
+use nalgebra::{DMatrix, DVector, SMatrix, SVector};
 
 /// How the driver moves.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -139,9 +139,19 @@ pub struct Sweep<const M: usize, const F: usize> {
     pub complete: bool,
 }
 
+/// The outcome of a streamed sweep ([`Linkage::sweep_each`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SweepSummary<const M: usize, const F: usize> {
+    pub events: Vec<Event<M, F>>,
+    /// As [`Sweep::complete`].
+    pub complete: bool,
+    /// The number of poses passed on.
+    pub poses: usize,
+}
+
 /// A solved state on the path: t is the path parameter.
 #[derive(Clone, Copy, Debug)]
-struct State<const M: usize> {
+struct State<const M: usize, const F: usize> {
     t: f64,
     u: SVector<f64, M>,
     /// du/dt and d²u/dt² (zero where they cannot be computed).
@@ -150,7 +160,15 @@ struct State<const M: usize> {
     det: f64,
     rcond: f64,
     iterations: usize,
+    psi_u: SMatrix<f64, M, M>,
+    psi_v: SMatrix<f64, M, F>,
 }
+
+/// A Newton correction below this (relative to max(1, ‖u‖∞)) at the
+/// prediction is accepted without a second evaluation: the pose is then
+/// exact to rounding, and the analogs evaluated at the prediction differ from
+/// those at the pose by about this much.
+const FAST_ACCEPT: f64 = 1e-14;
 
 /// Below this, [Ψ_u Ψ_v] is rank-deficient: a branch point.
 const BRANCH_RANK: f64 = 1e-6;
@@ -193,24 +211,33 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
     }
 
     /// The state at (u, t): det, conditioning and the analogs along the path.
-    fn state(&self, u: SVector<f64, M>, t: f64, iterations: usize) -> State<M> {
+    /// Whether the fused generated kernel can serve (generated Jacobians,
+    /// fused γ).
+    fn fused(&self) -> bool {
+        let o = &self.options.options;
+        o.jacobian == sources::JacobianSource::Generated && o.method == AccelerationMethod::Fused
+    }
+
+    /// The state at (u, t): det, conditioning and the analogs along the path.
+    fn state(&self, u: SVector<f64, M>, t: f64, iterations: usize) -> State<M, F> {
         let v = self.v(t);
-        let psi_u = sources::psi_and_psi_u(self.model, self.options.options.jacobian, &u, &v).1;
+        if self.fused() {
+            let k = self.model.kinematics(&u, &v, &self.dir, &SVector::zeros());
+            return self.state_from(u, t, iterations, &k);
+        }
+        let jacobian = self.options.options.jacobian;
+        let psi_u = sources::psi_and_psi_u(self.model, jacobian, &u, &v).1;
+        let psi_v = sources::psi_v(self.model, jacobian, &u, &v);
         let inv = invert(&psi_u);
         let det = determinant(&psi_u);
         let (mut du, mut ddu) = (SVector::zeros(), SVector::zeros());
         if inv.rcond > 0.0 {
-            du = -(inv.inverse * self.psi_t(&u, t));
-            let generated = || self.model.gamma(&u, &v, &du, &self.dir);
-            let gamma = sources::gamma(
-                self.model,
-                self.options.options.jacobian,
-                generated,
-                &u,
-                &v,
-                &du,
-                &self.dir,
-            );
+            du = -(inv.inverse * (psi_v * self.dir));
+            let generated = || {
+                self.model
+                    .gamma_by(self.options.options.method, &u, &v, &du, &self.dir)
+            };
+            let gamma = sources::gamma(self.model, jacobian, generated, &u, &v, &du, &self.dir);
             ddu = -(inv.inverse * gamma);
             if !du.iter().chain(ddu.iter()).all(|x| x.is_finite()) {
                 du = SVector::zeros();
@@ -225,10 +252,34 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             det,
             rcond: inv.rcond,
             iterations,
+            psi_u,
+            psi_v,
         }
     }
 
-    fn predict(&self, from: &State<M>, t: f64) -> SVector<f64, M> {
+    /// The state from a fused evaluation (du/dt = u̇ for v̇ = dir, v̈ = 0).
+    fn state_from(
+        &self,
+        u: SVector<f64, M>,
+        t: f64,
+        iterations: usize,
+        k: &crate::model::Kinematics<M, F>,
+    ) -> State<M, F> {
+        let finite = k.rcond > 0.0 && k.udot.iter().chain(k.uddot.iter()).all(|x| x.is_finite());
+        State {
+            t,
+            u,
+            du: if finite { k.udot } else { SVector::zeros() },
+            ddu: if finite { k.uddot } else { SVector::zeros() },
+            det: determinant(&k.psi_u),
+            rcond: k.rcond,
+            iterations,
+            psi_u: k.psi_u,
+            psi_v: k.psi_v,
+        }
+    }
+
+    fn predict(&self, from: &State<M, F>, t: f64) -> SVector<f64, M> {
         let h = t - from.t;
         let mut u = from.u + from.du * h;
         if self.options.second_order {
@@ -239,12 +290,28 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
 
     /// One sub-step from `from` to t: predicted, corrected, and accepted
     /// only if continuous with the prediction.
-    fn attempt(&self, from: &State<M>, t: f64) -> Result<State<M>, Rejection> {
+    fn attempt(&self, from: &State<M, F>, t: f64) -> Result<State<M, F>, Rejection> {
         let predicted = self.predict(from, t);
         let scale = from.u.amax().max(1.0);
         let moved = (predicted - from.u).amax();
         if moved.is_nan() || moved > self.options.max_move * scale {
             return Err(Rejection::Retry);
+        }
+        // The fast path: one fused evaluation at the prediction gives Ψ and
+        // the Newton correction, and, when that correction is at rounding
+        // level, the velocities and accelerations too.
+        if self.fused() {
+            let k = self
+                .model
+                .kinematics(&predicted, &self.v(t), &self.dir, &SVector::zeros());
+            if k.rcond > 0.0 && k.psi.iter().all(|x| x.is_finite()) {
+                let delta = -(k.inverse * k.psi);
+                if delta.amax() <= FAST_ACCEPT * scale
+                    && k.psi.amax() <= self.options.options.residual_tol
+                {
+                    return Ok(self.state_from(predicted + delta, t, 1, &k));
+                }
+            }
         }
         let (u, iterations) = match self.correct(&predicted, t) {
             Ok(x) => x,
@@ -274,11 +341,11 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
     /// driver cannot pass, with the events met on the way.
     fn advance(
         &self,
-        from: Track<M>,
+        from: Track<M, F>,
         target: f64,
         events: &mut Vec<Event<M, F>>,
         recorded: usize,
-    ) -> Result<Advance<M>, Error> {
+    ) -> Result<Advance<M, F>, Error> {
         let mut track = from;
         let mut delta = target - track.state.t;
         let min_delta = self.options.locate_tolerance * (target - from.state.t).abs().max(1e-300);
@@ -341,7 +408,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
     /// Where det Ψ_u changed sign between two accepted states, finds the
     /// crossing by bisection on the tracked branch; `None` if the branch
     /// does not continue through it (the second state was on another branch).
-    fn locate_crossing(&self, a: &State<M>, b: &State<M>) -> Option<Event<M, F>> {
+    fn locate_crossing(&self, a: &State<M, F>, b: &State<M, F>) -> Option<Event<M, F>> {
         let (mut lo, mut hi) = (*a, *b);
         for _ in 0..200 {
             if (hi.t - lo.t).abs() <= self.options.locate_tolerance * hi.t.abs().max(1.0) {
@@ -401,7 +468,11 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
     /// Near a pose where Newton fails, tries to step over a branch point
     /// with the tangent predictor: success with det of the other sign means
     /// the branch crosses another one there.
-    fn jump_branch_point(&self, track: &Track<M>, target: f64) -> Option<(State<M>, Event<M, F>)> {
+    fn jump_branch_point(
+        &self,
+        track: &Track<M, F>,
+        target: f64,
+    ) -> Option<(State<M, F>, Event<M, F>)> {
         let (from, regular) = (track.source(), track.regular);
         let direction = (target - track.state.t).signum();
         let mut h = self.options.locate_tolerance * track.state.t.abs().max(1.0) * 4.0;
@@ -455,7 +526,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
 
     /// The limit position near `near`: Newton on Ψ(u, t) = 0, det Ψ_u = 0
     /// for (u, t), with the gradient of det by central differences.
-    fn locate_limit(&self, near: &State<M>) -> Option<(SVector<f64, M>, f64)> {
+    fn locate_limit(&self, near: &State<M, F>) -> Option<(SVector<f64, M>, f64)> {
         let (mut u, mut t) = (near.u, near.t);
         let n = M + 1;
         for _ in 0..50 {
@@ -517,8 +588,8 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         &self,
         limit_u: &SVector<f64, M>,
         limit_t: f64,
-        came_from: &State<M>,
-    ) -> Option<State<M>> {
+        came_from: &State<M, F>,
+    ) -> Option<State<M, F>> {
         let v = self.v(limit_t);
         let psi_u =
             sources::psi_and_psi_u(self.model, self.options.options.jacobian, limit_u, &v).1;
@@ -573,18 +644,16 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
 
     /// Whether the pose's velocities and accelerations keep the requested
     /// accuracy (see [`Options::accuracy`]).
-    fn keeps_accuracy(&self, state: &State<M>) -> bool {
+    fn keeps_accuracy(&self, state: &State<M, F>) -> bool {
         let options = &self.options.options;
         if state.rcond < options.min_rcond(Stage::Velocity) {
             return false;
         }
-        let v = self.v(state.t);
-        let psi_u = sources::psi_and_psi_u(self.model, options.jacobian, &state.u, &v).1;
-        let psi_v = sources::psi_v(self.model, options.jacobian, &state.u, &v);
-        crate::model::acceleration_conditioning(&psi_u, &psi_v, state.rcond, options).is_ok()
+        crate::model::acceleration_conditioning(&state.psi_u, &state.psi_v, state.rcond, options)
+            .is_ok()
     }
 
-    fn pose(&self, state: &State<M>, step: usize, direction: f64) -> SweepPose<M, F> {
+    fn pose(&self, state: &State<M, F>, step: usize, direction: f64) -> SweepPose<M, F> {
         // dt/dτ for the driver moving at `speed` along the path: one unit of
         // t is one step, of length |dir| in driver space.
         let rate = self.options.speed * direction / self.dir.norm();
@@ -609,20 +678,20 @@ const REGULAR_RCOND: f64 = 1e-8;
 /// The current state and the last well-conditioned one (which gives the
 /// branch's sign and the predictor near singular poses).
 #[derive(Clone, Copy, Debug)]
-struct Track<const M: usize> {
-    state: State<M>,
-    regular: State<M>,
+struct Track<const M: usize, const F: usize> {
+    state: State<M, F>,
+    regular: State<M, F>,
 }
 
-impl<const M: usize> Track<M> {
-    fn new(state: State<M>) -> Track<M> {
+impl<const M: usize, const F: usize> Track<M, F> {
+    fn new(state: State<M, F>) -> Track<M, F> {
         Track {
             state,
             regular: state,
         }
     }
 
-    fn accept(&mut self, next: State<M>) {
+    fn accept(&mut self, next: State<M, F>) {
         self.state = next;
         if next.rcond >= REGULAR_RCOND {
             self.regular = next;
@@ -630,7 +699,7 @@ impl<const M: usize> Track<M> {
     }
 
     /// Where to predict from.
-    fn source(&self) -> State<M> {
+    fn source(&self) -> State<M, F> {
         if self.state.rcond >= REGULAR_RCOND {
             self.state
         } else {
@@ -639,10 +708,10 @@ impl<const M: usize> Track<M> {
     }
 }
 
-enum Advance<const M: usize> {
-    Reached(Track<M>),
+enum Advance<const M: usize, const F: usize> {
+    Reached(Track<M, F>),
     /// The driver cannot pass beyond this track.
-    Blocked(Track<M>),
+    Blocked(Track<M, F>),
 }
 
 /// Runs a sweep (see [`Linkage::sweep`]).
@@ -651,7 +720,8 @@ pub(crate) fn sweep<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     u0: &SVector<f64, M>,
     drive: &Drive<F>,
     options: &SweepOptions,
-) -> Result<Sweep<M, F>, Error> {
+    on_pose: &mut dyn FnMut(&SweepPose<M, F>),
+) -> Result<SweepSummary<M, F>, Error> {
     let (base, dir, steps, rocking) = match *drive {
         Drive::Line { from, to, steps } => {
             let steps = steps.max(1);
@@ -681,7 +751,8 @@ pub(crate) fn sweep<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
             min_rcond,
         });
     }
-    let mut poses = vec![tracker.pose(&state, 0, 1.0)];
+    on_pose(&tracker.pose(&state, 0, 1.0));
+    let mut recorded = 1;
     let mut events = Vec::new();
     let mut track = Track::new(state);
     // The grid index of the current state, the direction of travel, and
@@ -695,7 +766,7 @@ pub(crate) fn sweep<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     for step in 1..=steps {
         let next_index = index + direction as i64;
         let target = next_index as f64;
-        match tracker.advance(track, target, &mut events, poses.len())? {
+        match tracker.advance(track, target, &mut events, recorded)? {
             Advance::Reached(t) => {
                 track = t;
                 index = next_index;
@@ -721,7 +792,7 @@ pub(crate) fn sweep<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
                     v: tracker.v(t_star),
                     u: u_star,
                     t: t_star,
-                    after: poses.len(),
+                    after: recorded,
                     rank_measure,
                 });
                 if !rocking || kind == EventKind::BranchPoint {
@@ -746,7 +817,7 @@ pub(crate) fn sweep<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
                     Track::new(mirrored),
                     index as f64,
                     &mut events,
-                    poses.len(),
+                    recorded,
                 )? {
                     Advance::Reached(t) => t,
                     Advance::Blocked(_) => {
@@ -758,24 +829,25 @@ pub(crate) fn sweep<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
         }
         let state = track.state;
         if tracker.keeps_accuracy(&state) {
-            poses.push(tracker.pose(&state, step, direction));
+            on_pose(&tracker.pose(&state, step, direction));
+            recorded += 1;
         }
         previous_grid = last_grid;
         last_grid = state;
         if rocking && reversals >= 2 && index == 0 && direction > 0.0 {
-            return Ok(Sweep {
-                poses,
+            return Ok(SweepSummary {
                 events,
                 complete: true,
+                poses: recorded,
             });
         }
     }
     if rocking {
         complete = false;
     }
-    Ok(Sweep {
-        poses,
+    Ok(SweepSummary {
         events,
         complete,
+        poses: recorded,
     })
 }

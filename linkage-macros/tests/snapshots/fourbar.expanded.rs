@@ -469,6 +469,64 @@ const _: () = {
                 Vector2::new(g4_x_ddot, g4_y_ddot),
             ]
         }
+        /// Everything at one pose in one pass: Ψ, Ψ_u and Ψ_v; the velocity
+        /// u̇ = −Ψ_u⁻¹Ψ_v v̇; γ = (Ψ_q q̇)_q q̇ at that velocity; and the
+        /// acceleration ü = −Ψ_u⁻¹(Ψ_v v̈ + γ). Each sine and cosine, and each
+        /// subexpression shared between these, is computed once: the fast path
+        /// of the runtime's analyses and sweeps.
+        #[must_use]
+        pub fn kinematics(
+            &self,
+            u: &SVector<f64, 2>,
+            v: &SVector<f64, 1>,
+            vdot: &SVector<f64, 1>,
+            vddot: &SVector<f64, 1>,
+        ) -> ::linkage::Kinematics<2, 1> {
+            let Self { l1, l2, l3, l4, .. } = *self;
+            let (theta3, theta4) = (u[0], u[1]);
+            let theta2 = v[0];
+            let theta2_dot = vdot[0];
+            let (s_theta2, c_theta2) = theta2.sin_cos();
+            let l2_c_theta2 = l2 * c_theta2;
+            let l2_s_theta2 = l2 * s_theta2;
+            let (s_theta3, c_theta3) = theta3.sin_cos();
+            let l3_c_theta3 = l3 * c_theta3;
+            let l3_s_theta3 = l3 * s_theta3;
+            let (s_theta4, c_theta4) = theta4.sin_cos();
+            let l4_c_theta4 = l4 * c_theta4;
+            let l4_s_theta4 = l4 * s_theta4;
+            let mut psi = SVector::<f64, 2>::zeros();
+            psi[0] = l2_c_theta2 + l3_c_theta3 + l4_c_theta4 - l1;
+            psi[1] = l2_s_theta2 + l3_s_theta3 + l4_s_theta4;
+            let mut psi_u = SMatrix::<f64, 2, 2>::zeros();
+            psi_u[(0, 0)] = -l3_s_theta3;
+            psi_u[(0, 1)] = -l4_s_theta4;
+            psi_u[(1, 0)] = l3_c_theta3;
+            psi_u[(1, 1)] = l4_c_theta4;
+            let mut psi_v = SVector::<f64, 2>::zeros();
+            psi_v[0] = -l2_s_theta2;
+            psi_v[1] = l2_c_theta2;
+            let ::linkage::Inverse { inverse, rcond } = ::linkage::invert(&psi_u);
+            let udot = -(inverse * (psi_v * vdot));
+            let (theta3_dot, theta4_dot) = (udot[0], udot[1]);
+            let mut gamma = SVector::<f64, 2>::zeros();
+            gamma[0] = -l3 * c_theta3 * theta3_dot.powi(2)
+                - l4 * c_theta4 * theta4_dot.powi(2)
+                - l2 * c_theta2 * theta2_dot.powi(2);
+            gamma[1] = -l3 * s_theta3 * theta3_dot.powi(2)
+                - l4 * s_theta4 * theta4_dot.powi(2)
+                - l2 * s_theta2 * theta2_dot.powi(2);
+            let uddot = -(inverse * (psi_v * vddot + gamma));
+            ::linkage::Kinematics {
+                psi,
+                psi_u,
+                psi_v,
+                inverse,
+                rcond,
+                udot,
+                uddot,
+            }
+        }
         /// Ψ(u, v) on any dual number of `num_dual`: the same closure equations as
         /// [`Self::psi`], for derivatives by automatic differentiation (cross-checks,
         /// and the alternative Jacobian source of the runtime).
@@ -876,6 +934,15 @@ const _: () = {
             vdot: &SVector<f64, 1>,
         ) -> SVector<f64, 2> {
             Self::gamma(self, u, v, udot, vdot)
+        }
+        fn kinematics(
+            &self,
+            u: &SVector<f64, 2>,
+            v: &SVector<f64, 1>,
+            vdot: &SVector<f64, 1>,
+            vddot: &SVector<f64, 1>,
+        ) -> ::linkage::Kinematics<2, 1> {
+            Self::kinematics(self, u, v, vdot, vddot)
         }
         fn point_positions(
             &self,
