@@ -14,15 +14,9 @@ pub struct Inverse<const M: usize> {
     pub rcond: f64,
 }
 
-/// The 1-norm: the largest absolute column sum.
-fn norm1<const M: usize>(a: &SMatrix<f64, M, M>) -> f64 {
-    a.column_iter()
-        .map(|c| c.iter().map(|x| x.abs()).sum::<f64>())
-        .fold(0.0, f64::max)
-}
-
 /// Inverts `a`; `rcond` is 0 when `a` is singular or the inverse is not
 /// finite (the returned inverse is then meaningless).
+#[inline]
 pub fn invert<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
     let inverse = match M {
         1 => {
@@ -31,12 +25,12 @@ pub fn invert<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
             Some(inv)
         }
         2 => {
-            let det = a[(0, 0)] * a[(1, 1)] - a[(0, 1)] * a[(1, 0)];
+            let r = 1.0 / (a[(0, 0)] * a[(1, 1)] - a[(0, 1)] * a[(1, 0)]);
             let mut inv = SMatrix::<f64, M, M>::zeros();
-            inv[(0, 0)] = a[(1, 1)] / det;
-            inv[(0, 1)] = -a[(0, 1)] / det;
-            inv[(1, 0)] = -a[(1, 0)] / det;
-            inv[(1, 1)] = a[(0, 0)] / det;
+            inv[(0, 0)] = a[(1, 1)] * r;
+            inv[(0, 1)] = -a[(0, 1)] * r;
+            inv[(1, 0)] = -a[(1, 0)] * r;
+            inv[(1, 1)] = a[(0, 0)] * r;
             Some(inv)
         }
         3 => {
@@ -45,44 +39,47 @@ pub fn invert<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
                 let (j1, j2) = ((j + 1) % 3, (j + 2) % 3);
                 a[(i1, j1)] * a[(i2, j2)] - a[(i1, j2)] * a[(i2, j1)]
             };
-            let det = a[(0, 0)] * c(0, 0) + a[(0, 1)] * c(0, 1) + a[(0, 2)] * c(0, 2);
+            let r = 1.0 / (a[(0, 0)] * c(0, 0) + a[(0, 1)] * c(0, 1) + a[(0, 2)] * c(0, 2));
             let mut inv = SMatrix::<f64, M, M>::zeros();
             for i in 0..3 {
                 for j in 0..3 {
                     // adjugate: transpose of the cofactors
-                    inv[(j, i)] = c(i, j) / det;
+                    inv[(j, i)] = c(i, j) * r;
                 }
             }
             Some(inv)
         }
         _ => gauss_jordan(a),
     };
-    let rcond = match inverse {
-        Some(inv) if inv.iter().all(|x| x.is_finite()) => equilibrated_rcond(a, &inv),
-        _ => 0.0,
-    };
-    Inverse {
-        inverse: inverse.unwrap_or_else(SMatrix::zeros),
-        rcond,
+    match inverse {
+        Some(inv) if inv.iter().all(|x| x.is_finite()) => Inverse {
+            inverse: inv,
+            rcond: equilibrated_rcond(a, &inv),
+        },
+        _ => Inverse {
+            inverse: SMatrix::zeros(),
+            rcond: 0.0,
+        },
     }
 }
 
-/// 1/(‖B‖₁‖B⁻¹‖₁) for B = A D_c, the columns scaled to unit 1-norm, with
-/// B⁻¹ = D_c⁻¹ A⁻¹ taken from the inverse already computed. (Rows are not
-/// scaled: a row that shrinks is how a singular pose shows itself.)
+/// 1/(‖B‖₁‖B⁻¹‖₁) for B = A D_c, the columns of A scaled to unit 1-norm:
+/// ‖B‖₁ = 1, and B⁻¹ = D_c⁻¹ A⁻¹ is row i of A⁻¹ times the 1-norm of
+/// column i of A. (Rows are not scaled: a row that shrinks is how a
+/// singular pose shows itself.)
+#[inline]
 fn equilibrated_rcond<const M: usize>(a: &SMatrix<f64, M, M>, inv: &SMatrix<f64, M, M>) -> f64 {
     let mut col = [0.0; M];
     for (j, c) in col.iter_mut().enumerate() {
         *c = a.column(j).iter().map(|x| x.abs()).sum::<f64>();
-        if *c == 0.0 {
-            return 0.0;
-        }
     }
-    let b = SMatrix::<f64, M, M>::from_fn(|i, j| a[(i, j)] / col[j]);
-    let b_inv = SMatrix::<f64, M, M>::from_fn(|i, j| inv[(i, j)] * col[i]);
-    let product = norm1(&b) * norm1(&b_inv);
-    if product.is_finite() && product > 0.0 {
-        (1.0 / product).min(1.0)
+    let mut norm = 0.0_f64;
+    for j in 0..M {
+        let sum: f64 = (0..M).map(|i| inv[(i, j)].abs() * col[i]).sum();
+        norm = norm.max(sum);
+    }
+    if norm.is_finite() && norm > 0.0 {
+        (1.0 / norm).min(1.0)
     } else {
         0.0
     }

@@ -77,12 +77,12 @@ impl Options {
     /// keeps [`Options::accuracy`]: (ε/accuracy)^(1/k) with k = 1 for
     /// positions, 2 for velocities, 3 for accelerations and points.
     pub fn min_rcond(&self, stage: Stage) -> f64 {
-        let k = match stage {
-            Stage::Position => 1.0,
-            Stage::Velocity => 2.0,
-            Stage::Acceleration | Stage::Points => 3.0,
-        };
-        (f64::EPSILON / self.accuracy).powf(1.0 / k)
+        let ratio = f64::EPSILON / self.accuracy;
+        match stage {
+            Stage::Position => ratio,
+            Stage::Velocity => ratio.sqrt(),
+            Stage::Acceleration | Stage::Points => ratio.cbrt(),
+        }
     }
 
     /// The defaults with the damped Newton method.
@@ -582,7 +582,24 @@ pub(crate) fn acceleration_conditioning<const M: usize, const F: usize>(
     rcond: f64,
     options: &Options,
 ) -> Result<(), Error> {
-    let fast = options.min_rcond(Stage::Acceleration);
+    acceleration_conditioning_with(
+        psi_u,
+        psi_v,
+        rcond,
+        options.min_rcond(Stage::Acceleration),
+        options,
+    )
+}
+
+/// [`acceleration_conditioning`] with the threshold ε·κ³ ≤ accuracy already
+/// worked out (`fast`).
+pub(crate) fn acceleration_conditioning_with<const M: usize, const F: usize>(
+    psi_u: &SMatrix<f64, M, M>,
+    psi_v: &SMatrix<f64, M, F>,
+    rcond: f64,
+    fast: f64,
+    options: &Options,
+) -> Result<(), Error> {
     if rcond > 0.0 && rcond >= fast {
         return Ok(());
     }

@@ -186,6 +186,11 @@ struct Tracker<'a, L: ?Sized, const M: usize, const F: usize> {
     options: SweepOptions,
     base: SVector<f64, F>,
     dir: SVector<f64, F>,
+    /// The conditioning the velocities and the accelerations need.
+    min_rcond_velocity: f64,
+    min_rcond_acceleration: f64,
+    /// dt/dτ at the sweep's speed (one unit of t is one step of length |dir|).
+    rate: f64,
 }
 
 impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
@@ -290,28 +295,40 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
 
     /// One sub-step from `from` to t: predicted, corrected, and accepted
     /// only if continuous with the prediction.
+    /// The fast path: one fused evaluation at the prediction gives Ψ and
+    /// the Newton correction, and, when that correction is at rounding level,
+    /// the velocities and accelerations too. `None` if it does not apply.
+    #[inline]
+    fn attempt_fast(&self, from: &State<M, F>, t: f64) -> Option<State<M, F>> {
+        if !self.fused() {
+            return None;
+        }
+        let predicted = self.predict(from, t);
+        let scale = from.u.amax().max(1.0);
+        let moved = (predicted - from.u).amax();
+        if moved.is_nan() || moved > self.options.max_move * scale {
+            return None;
+        }
+        let k = self
+            .model
+            .kinematics(&predicted, &self.v(t), &self.dir, &SVector::zeros());
+        let residual = k.psi.amax();
+        if k.rcond <= 0.0 || residual.is_nan() || residual > self.options.options.residual_tol {
+            return None;
+        }
+        let delta = -(k.inverse * k.psi);
+        (delta.amax() <= FAST_ACCEPT * scale).then(|| self.state_from(predicted + delta, t, 1, &k))
+    }
+
     fn attempt(&self, from: &State<M, F>, t: f64) -> Result<State<M, F>, Rejection> {
+        if let Some(state) = self.attempt_fast(from, t) {
+            return Ok(state);
+        }
         let predicted = self.predict(from, t);
         let scale = from.u.amax().max(1.0);
         let moved = (predicted - from.u).amax();
         if moved.is_nan() || moved > self.options.max_move * scale {
             return Err(Rejection::Retry);
-        }
-        // The fast path: one fused evaluation at the prediction gives Ψ and
-        // the Newton correction, and, when that correction is at rounding
-        // level, the velocities and accelerations too.
-        if self.fused() {
-            let k = self
-                .model
-                .kinematics(&predicted, &self.v(t), &self.dir, &SVector::zeros());
-            if k.rcond > 0.0 && k.psi.iter().all(|x| x.is_finite()) {
-                let delta = -(k.inverse * k.psi);
-                if delta.amax() <= FAST_ACCEPT * scale
-                    && k.psi.amax() <= self.options.options.residual_tol
-                {
-                    return Ok(self.state_from(predicted + delta, t, 1, &k));
-                }
-            }
         }
         let (u, iterations) = match self.correct(&predicted, t) {
             Ok(x) => x,
@@ -646,17 +663,21 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
     /// accuracy (see [`Options::accuracy`]).
     fn keeps_accuracy(&self, state: &State<M, F>) -> bool {
         let options = &self.options.options;
-        if state.rcond < options.min_rcond(Stage::Velocity) {
+        if state.rcond < self.min_rcond_velocity {
             return false;
         }
-        crate::model::acceleration_conditioning(&state.psi_u, &state.psi_v, state.rcond, options)
-            .is_ok()
+        crate::model::acceleration_conditioning_with(
+            &state.psi_u,
+            &state.psi_v,
+            state.rcond,
+            self.min_rcond_acceleration,
+            options,
+        )
+        .is_ok()
     }
 
     fn pose(&self, state: &State<M, F>, step: usize, direction: f64) -> SweepPose<M, F> {
-        // dt/dτ for the driver moving at `speed` along the path: one unit of
-        // t is one step, of length |dir| in driver space.
-        let rate = self.options.speed * direction / self.dir.norm();
+        let rate = self.rate * direction;
         SweepPose {
             step,
             v: self.v(state.t),
@@ -740,6 +761,9 @@ pub(crate) fn sweep<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
         options: *options,
         base,
         dir,
+        min_rcond_velocity: options.options.min_rcond(Stage::Velocity),
+        min_rcond_acceleration: options.options.min_rcond(Stage::Acceleration),
+        rate: options.speed / dir.norm(),
     };
     let start = model.solve_position(u0, &base, &options.options)?;
     let state = tracker.state(start.u, 0.0, start.iterations);
@@ -766,65 +790,80 @@ pub(crate) fn sweep<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     for step in 1..=steps {
         let next_index = index + direction as i64;
         let target = next_index as f64;
-        match tracker.advance(track, target, &mut events, recorded)? {
-            Advance::Reached(t) => {
-                track = t;
-                index = next_index;
-            }
-            Advance::Blocked(near) => {
-                let near = near.state;
-                let Some((u_star, t_star)) = tracker.locate_limit(&near) else {
-                    return Err(Error::NotConverged {
-                        iterations: options.options.max_iterations,
-                        residual: model.psi(&near.u, &tracker.v(near.t)).amax(),
-                        step: 0.0,
-                    });
-                };
-                let rank_measure = tracker.rank_measure(&u_star, t_star);
-                let kind = if rank_measure < BRANCH_RANK {
-                    // A branch point the sweep could not step across.
-                    EventKind::BranchPoint
-                } else {
-                    EventKind::LimitPosition
-                };
-                events.push(Event {
-                    kind,
-                    v: tracker.v(t_star),
-                    u: u_star,
-                    t: t_star,
-                    after: recorded,
-                    rank_measure,
-                });
-                if !rocking || kind == EventKind::BranchPoint {
-                    complete = false;
-                    break;
+        // The common case in one fused evaluation, without the sub-stepping
+        // machinery: a regular pose, a good prediction, the same branch.
+        let fast = if track.state.rcond >= REGULAR_RCOND {
+            tracker.attempt_fast(&track.state, target)
+        } else {
+            None
+        };
+        if let Some(next) = fast
+            .filter(|n| n.det.signum() == track.regular.det.signum() && n.rcond >= REGULAR_RCOND)
+        {
+            track.state = next;
+            track.regular = next;
+            index = next_index;
+        } else {
+            match tracker.advance(track, target, &mut events, recorded)? {
+                Advance::Reached(t) => {
+                    track = t;
+                    index = next_index;
                 }
-                // Onto the other branch, mirroring the last grid pose at
-                // least half a step from the limit, the driver reversed.
-                let source = if (last_grid.t - t_star).abs() >= 0.5 {
-                    last_grid
-                } else {
-                    previous_grid
-                };
-                let Some(mirrored) = tracker.mirror(&u_star, t_star, &source) else {
-                    complete = false;
-                    break;
-                };
-                direction = -direction;
-                reversals += 1;
-                index = mirrored.t.round() as i64;
-                track = match tracker.advance(
-                    Track::new(mirrored),
-                    index as f64,
-                    &mut events,
-                    recorded,
-                )? {
-                    Advance::Reached(t) => t,
-                    Advance::Blocked(_) => {
+                Advance::Blocked(near) => {
+                    let near = near.state;
+                    let Some((u_star, t_star)) = tracker.locate_limit(&near) else {
+                        return Err(Error::NotConverged {
+                            iterations: options.options.max_iterations,
+                            residual: model.psi(&near.u, &tracker.v(near.t)).amax(),
+                            step: 0.0,
+                        });
+                    };
+                    let rank_measure = tracker.rank_measure(&u_star, t_star);
+                    let kind = if rank_measure < BRANCH_RANK {
+                        // A branch point the sweep could not step across.
+                        EventKind::BranchPoint
+                    } else {
+                        EventKind::LimitPosition
+                    };
+                    events.push(Event {
+                        kind,
+                        v: tracker.v(t_star),
+                        u: u_star,
+                        t: t_star,
+                        after: recorded,
+                        rank_measure,
+                    });
+                    if !rocking || kind == EventKind::BranchPoint {
                         complete = false;
                         break;
                     }
-                };
+                    // Onto the other branch, mirroring the last grid pose at
+                    // least half a step from the limit, the driver reversed.
+                    let source = if (last_grid.t - t_star).abs() >= 0.5 {
+                        last_grid
+                    } else {
+                        previous_grid
+                    };
+                    let Some(mirrored) = tracker.mirror(&u_star, t_star, &source) else {
+                        complete = false;
+                        break;
+                    };
+                    direction = -direction;
+                    reversals += 1;
+                    index = mirrored.t.round() as i64;
+                    track = match tracker.advance(
+                        Track::new(mirrored),
+                        index as f64,
+                        &mut events,
+                        recorded,
+                    )? {
+                        Advance::Reached(t) => t,
+                        Advance::Blocked(_) => {
+                            complete = false;
+                            break;
+                        }
+                    };
+                }
             }
         }
         let state = track.state;
