@@ -5,9 +5,10 @@ Everything is computed with mpmath at 50 significant digits, from the closed
 forms of the mechanisms, at driver values that are exactly representable as
 f64 (the value the Rust code is given), and written as CSV under tests/data/.
 
-    python3 bench/reference/make_reference.py
+    python3 bench/reference/make_reference.py [--bench | --all]
 
-creates its own virtual environment (bench/reference/.venv) with mpmath from
+(the near-singular references; --bench the dense-sweep references of the
+benchmarks; --all both) creates its own virtual environment (bench/reference/.venv) with mpmath from
 PyPI on first use, then reruns itself inside it.
 """
 import os
@@ -36,8 +37,11 @@ import mpmath as mp  # noqa: E402
 mp.mp.dps = 50
 
 
+DIGITS = 40
+
+
 def fmt(x):
-    return mp.nstr(x, 40, min_fixed=-5, max_fixed=5, strip_zeros=False)
+    return mp.nstr(x, DIGITS, min_fixed=-5, max_fixed=5, strip_zeros=False)
 
 
 def f64(x):
@@ -133,7 +137,104 @@ def near_limit_boom():
     ], rows)
 
 
+# The dense sweep of the benchmarks: N samples per revolution, theta2_k =
+# (TAU * k) / N computed in f64 exactly as the Rust code does; the reference
+# is written at every STRIDE-th sample (3600 rows).
+N = 1_008_000
+STRIDE = 280
+
+
+def grid():
+    tau = 2 * 3.141592653589793  # TAU, exactly as in Rust
+    for k in range(0, N, STRIDE):
+        theta2 = (tau * k) / N
+        yield k, mp.mpf(theta2), repr(theta2)
+
+
+def dense_fourbar():
+    omega2 = 400 * 2 * mp.pi / 60
+    rows = [["k", "theta2", "theta3", "theta4", "omega3", "omega4", "alpha3", "alpha4"]]
+    for k, theta2, text in grid():
+        r = fourbar(80, 20, 50, 70, theta2, 1, omega2=omega2, alpha2=0)
+        rows.append([str(k), text] + [fmt(x) for x in r])
+    write("bench_fourbar.csv", [
+        "The worksheet's four-bar (80/20/50/70, branch sigma = +1), omega2 = 400 rpm, alpha2 = 0, on the dense grid",
+        "theta2 = (TAU*k)/1008000 (f64), every 280th sample: the reference of the speed-accuracy benchmark.",
+        "Written by bench/reference/make_reference.py (mpmath at 40 digits, 22 kept), from the closed form.",
+    ], rows)
+
+
+def derivatives(f, x):
+    """f, f', f'' of a scalar function at x, by mpmath's high-precision diff."""
+    return f(x), mp.diff(f, x), mp.diff(f, x, 2)
+
+
+def dense_slider_crank():
+    r, l, e = mp.mpf("0.05"), mp.mpf("0.2"), mp.mpf("0.01")
+    theta3 = lambda t: mp.asin((e - r * mp.sin(t)) / l)
+    s = lambda t: r * mp.cos(t) + l * mp.cos(theta3(t))
+    rows = [["k", "theta2", "theta3", "s", "dtheta3", "ds", "ddtheta3", "dds"]]
+    for k, theta2, text in grid():
+        a = derivatives(theta3, theta2)
+        b = derivatives(s, theta2)
+        rows.append([str(k), text] + [fmt(x) for x in (a[0], b[0], a[1], b[1], a[2], b[2])])
+    write("bench_slider_crank.csv", [
+        "The offset slider-crank of the tests (r = 0.05, l = 0.2, e = 0.01 m) on the dense grid theta2 = (TAU*k)/1008000,",
+        "every 280th sample: theta3 = asin((e - r sin theta2)/l), s = r cos theta2 + l cos theta3 and their first and second",
+        "derivatives with respect to theta2 (kinematic analogs). Written by bench/reference/make_reference.py (mpmath).",
+    ], rows)
+
+
+def circle(p0, r0, p1, r1, sigma):
+    d = (p1[0] - p0[0], p1[1] - p0[1])
+    L = mp.sqrt(d[0] ** 2 + d[1] ** 2)
+    a = (r0 ** 2 - r1 ** 2 + L ** 2) / (2 * L)
+    h = mp.sqrt(r0 ** 2 - a ** 2)
+    e = (d[0] / L, d[1] / L)
+    return (p0[0] + a * e[0] - sigma * h * e[1], p0[1] + a * e[1] + sigma * h * e[0])
+
+
+def six_bar(theta2, sigma2=1):
+    l1, l2, l3, l4 = 80, 20, 50, 70
+    e, beta, l5, l6, gx, gy = 40, mp.pi / 6, 60, 50, 20, 90
+    t3, t4 = fourbar(l1, l2, l3, l4, theta2, 1)[:2]
+    B = (l2 * mp.cos(theta2), l2 * mp.sin(theta2))
+    E = (B[0] + e * mp.cos(t3 + beta), B[1] + e * mp.sin(t3 + beta))
+    G = (mp.mpf(gx), mp.mpf(gy))
+    Fp = circle(E, l5, G, l6, sigma2)
+    return t3, t4, mp.atan2(Fp[1] - E[1], Fp[0] - E[0]), mp.atan2(Fp[1] - G[1], Fp[0] - G[0])
+
+
+def dense_six_bar():
+    rows = [["k", "theta2"] + [f"{p}theta{i}" for p in ("", "d", "dd") for i in (3, 4, 5, 6)]]
+    for k, theta2, text in grid():
+        values, firsts, seconds = [], [], []
+        for i in range(4):
+            f = lambda t, i=i: six_bar(t)[i]
+            a = derivatives(f, theta2)
+            values.append(a[0])
+            firsts.append(a[1])
+            seconds.append(a[2])
+        rows.append([str(k), text] + [fmt(x) for x in values + firsts + seconds])
+    write("bench_six_bar.csv", [
+        "The two-loop six-bar of the tests (the worksheet's four-bar; coupler point at 40 mm, 30 deg; dyad 60/50 to the",
+        "ground pivot (20, 90); dyad branch sigma = +1) on the dense grid theta2 = (TAU*k)/1008000, every 280th sample:",
+        "theta3..theta6 and their first and second derivatives with respect to theta2 (kinematic analogs), by mpmath's",
+        "diff on the closed form. Written by bench/reference/make_reference.py.",
+    ], rows)
+
+
 def main():
+    global DIGITS
+    if "--bench" in sys.argv or "--all" in sys.argv:
+        # 22 digits are plenty to measure f64 errors, and keep the files small.
+        mp.mp.dps, DIGITS = 40, 22
+        dense_fourbar()
+        dense_slider_crank()
+        dense_six_bar()
+        mp.mp.dps, DIGITS = 50, 40
+        if "--bench" in sys.argv:
+            return
     near_limit_boom()
     limit = mp.acos((mp.mpf(80) ** 2 + 45 ** 2 - 120 ** 2) / (2 * 80 * 45))
     near_singular(
