@@ -145,6 +145,13 @@ fn build(dag: &mut Dag, t: &Tree) -> Id {
             if *f == Func::Exp || *f == Func::Sinh || *f == Func::Cosh {
                 a = dag.scale(0.25, a);
             }
+            if *f == Func::Sin || *f == Func::Cos {
+                // 3·tanh(a/3): a sine of a huge argument is ill-conditioned,
+                // whatever computes it.
+                let inner = dag.scale(1.0 / 3.0, a);
+                let t = dag.call(Func::Tanh, inner);
+                a = dag.scale(3.0, t);
+            }
             dag.call(*f, a)
         }
         Tree::Bounded(f, a) => {
@@ -222,8 +229,8 @@ fn direct<D: DualNum<Primitive = f64> + Copy>(t: &Tree, x: D, y: D) -> D {
         Tree::Free(f, a) => {
             let a = direct(a, x, y);
             match f {
-                Func::Sin => a.sin(),
-                Func::Cos => a.cos(),
+                Func::Sin => (tanh(a * (1.0 / 3.0)) * 3.0).sin(),
+                Func::Cos => (tanh(a * (1.0 / 3.0)) * 3.0).cos(),
                 Func::Atan => a.atan(),
                 Func::Sinh => (a * 0.25).sinh(),
                 Func::Cosh => (a * 0.25).cosh(),
@@ -361,6 +368,8 @@ fn source(t: &Tree, style: &mut u32) -> String {
             let a = source(a, style);
             let a = if matches!(f, Func::Exp | Func::Sinh | Func::Cosh) {
                 format!("0.25 * {a}")
+            } else if matches!(f, Func::Sin | Func::Cos) {
+                format!("3.0 * {}", call("tanh", format!("{a} * (1.0 / 3.0)"), pick))
             } else {
                 a
             };

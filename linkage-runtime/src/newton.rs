@@ -51,6 +51,7 @@ pub(crate) fn solve<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
         step: 0.0,
     });
     let mut step = f64::INFINITY;
+    let mut previous_step = f64::INFINITY;
     // The Levenberg–Marquardt parameter, relative to ‖Ψ_uᵀΨ_u‖.
     let mut mu = 1e-3;
     for iteration in 1..=options.max_iterations {
@@ -93,8 +94,13 @@ pub(crate) fn solve<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
             residual,
             step,
         });
-        let small_step = step <= options.step_tol * u.amax().max(1.0);
-        if (small_step || residual == 0.0) && residual <= options.residual_tol {
+        let scale = u.amax().max(1.0);
+        let small_step = step <= options.step_tol * scale;
+        // At rounding level the steps stop shrinking: that is convergence
+        // too, whatever the step tolerance asked for.
+        let stagnated = step >= previous_step && step <= 64.0 * f64::EPSILON * scale;
+        previous_step = step;
+        if (small_step || stagnated || residual == 0.0) && residual <= options.residual_tol {
             return Ok(Position {
                 u,
                 iterations: iteration,

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Runs the peers on this machine, on the same work as
+# `cargo run --release --example speed_accuracy`: the seed four-bar over a
+# revolution of the dense grid, positions, velocities and accelerations, errors
+# against tests/data/bench_fourbar.csv. Sets up its own Python environment
+# from PyPI (bench/peers/.venv) and writes bench/results/peers.csv.
+set -euo pipefail
+cd "$(dirname "$0")"
+if [ ! -x .venv/bin/python ]; then
+  python3 -m venv .venv
+  .venv/bin/pip install --quiet sympy==1.14.0 numpy==2.4.6 casadi==3.8.2
+fi
+PY=.venv/bin/python
+mkdir -p build ../results
+out=../results/peers.csv
+{
+  echo "# Written by bench/peers/run.sh on $(date -u +%Y-%m-%d) ($(uname -m), $(nproc) cores): the peers on the seed four-bar,"
+  echo "# median ns per sample and worst relative errors against tests/data/bench_fourbar.csv."
+  echo "workload,method,ns_per_sample,error_positions,error_velocities,error_accelerations,samples"
+} > "$out"
+echo "SymPy ..." >&2
+$PY sympy_peer.py >> "$out"
+echo "CasADi VM ..." >&2
+$PY casadi_peer.py vm >> "$out"
+echo "CasADi generated C ..." >&2
+$PY casadi_peer.py codegen
+gcc -O3 -I build casadi_harness.c build/fourbar_step.c -lm -o build/harness
+start=$($PY -c 'from common import start; print(*start())')
+read -r ns _ < <(./build/harness build/casadi_c.csv $start)
+$PY casadi_c_errors.py build/casadi_c.csv "$ns" >> "$out"
+cat "$out"

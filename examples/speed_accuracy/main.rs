@@ -1,0 +1,435 @@
+//! Speed against accuracy: every method over a full revolution of the dense
+//! sweep (N = 1 008 000 samples; positions, velocities and accelerations),
+//! timed per sample, its errors measured against the 50-digit reference.
+//!
+//! ```sh
+//! cargo run --release --example speed_accuracy             # measure ours, then chart
+//! cargo run --release --example speed_accuracy -- --chart  # chart the CSVs only
+//! ```
+//!
+//! It writes `bench/results/ours.csv`, reads the peers' results
+//! (`bench/results/peers.csv`, written by `bench/peers/run.sh`), prints the
+//! table and writes `docs/figures/speed_accuracy.svg`.
+
+mod workloads;
+
+use linkage::closed_form;
+use linkage::prelude::*;
+use plotters::prelude::*;
+use std::path::Path;
+use std::time::Instant;
+use workloads::{FOUR_BAR, N, OMEGA2, Reference, SIX_BAR, SLIDER_CRANK, STRIDE, errors, theta2};
+
+/// One measured method on one workload.
+#[derive(Clone, Debug)]
+struct Result {
+    workload: String,
+    method: String,
+    /// Median nanoseconds per sample.
+    ns: f64,
+    /// Worst relative errors of positions, velocities, accelerations.
+    errors: [f64; 3],
+    samples: usize,
+}
+
+/// Times `run` (which processes `samples` samples and returns a checksum):
+/// the median of `repeats` runs, in ns per sample.
+fn time(samples: usize, repeats: usize, mut run: impl FnMut() -> f64) -> f64 {
+    let mut times: Vec<f64> = (0..repeats)
+        .map(|_| {
+            let start = Instant::now();
+            std::hint::black_box(run());
+            start.elapsed().as_secs_f64() * 1e9 / samples as f64
+        })
+        .collect();
+    times.sort_by(f64::total_cmp);
+    times[times.len() / 2]
+}
+
+type Sample<const M: usize> = ([f64; M], [f64; M], [f64; M]);
+
+fn sample<const M: usize>(
+    u: &SVector<f64, M>,
+    udot: &SVector<f64, M>,
+    uddot: &SVector<f64, M>,
+) -> Sample<M> {
+    (
+        std::array::from_fn(|i| u[i]),
+        std::array::from_fn(|i| udot[i]),
+        std::array::from_fn(|i| uddot[i]),
+    )
+}
+
+/// The library's sweep over the revolution: the generated code through the
+/// public API, or with another source of derivatives.
+#[allow(clippy::too_many_arguments)]
+fn sweep_method<L: Linkage<M, 1>, const M: usize>(
+    workload: &str,
+    method: &str,
+    model: &L,
+    u0: SVector<f64, M>,
+    speed: f64,
+    jacobian: JacobianSource,
+    reference: &Reference<M>,
+    repeats: usize,
+) -> Result {
+    let drive = Drive::Line {
+        from: vector![0.0],
+        to: vector![std::f64::consts::TAU],
+        steps: N,
+    };
+    let options = SweepOptions {
+        speed,
+        options: Options {
+            jacobian,
+            ..Options::default()
+        },
+        ..SweepOptions::default()
+    };
+    let mut at_reference = Vec::new();
+    let summary = model
+        .sweep_each(&u0, &drive, &options, |p| {
+            if p.step % STRIDE == 0 && p.step < N {
+                at_reference.push(sample(&p.u, &p.udot, &p.uddot));
+            }
+        })
+        .expect("the sweep runs");
+    assert!(
+        summary.complete && summary.poses == N + 1,
+        "{workload} {method}: {summary:?}"
+    );
+    let ns = time(N + 1, repeats, || {
+        let mut checksum = 0.0;
+        model
+            .sweep_each(&u0, &drive, &options, |p| checksum += p.uddot[0])
+            .expect("the sweep runs");
+        checksum
+    });
+    Result {
+        workload: workload.into(),
+        method: method.into(),
+        ns,
+        errors: errors(reference, &at_reference),
+        samples: N + 1,
+    }
+}
+
+/// `analyze` at every sample, Newton warm-started from the previous pose
+/// (no predictor), stopping when the step falls below `step_tol`.
+fn tolerance_method(
+    step_tol: f64,
+    label: &str,
+    reference: &Reference<2>,
+    u0: SVector<f64, 2>,
+) -> Result {
+    let options = Options {
+        step_tol,
+        residual_tol: 1e-3,
+        ..Options::default()
+    };
+    let run = |record: &mut Vec<Sample<2>>| {
+        let mut u = u0;
+        let mut checksum = 0.0;
+        for k in 0..N {
+            let a = FOUR_BAR
+                .analyze(
+                    &u,
+                    &vector![theta2(k)],
+                    &vector![OMEGA2],
+                    &vector![0.0],
+                    &options,
+                )
+                .expect("analysis");
+            u = a.u;
+            checksum += a.uddot[0];
+            if k % STRIDE == 0 {
+                record.push(sample(&a.u, &a.udot, &a.uddot));
+            }
+        }
+        checksum
+    };
+    let mut at_reference = Vec::new();
+    run(&mut at_reference);
+    let ns = time(N, 3, || run(&mut Vec::with_capacity(N / STRIDE + 1)));
+    Result {
+        workload: "four-bar".into(),
+        method: format!("Newton per sample, step tol {label}"),
+        ns,
+        errors: errors(reference, &at_reference),
+        samples: N,
+    }
+}
+
+fn measure() -> Vec<Result> {
+    let mut results = Vec::new();
+    let fourbar_ref = Reference::<2>::parse(include_str!("../../tests/data/bench_fourbar.csv"));
+    let cf = closed_form::FourBar {
+        l1: 80.0,
+        l2: 20.0,
+        l3: 50.0,
+        l4: 70.0,
+    };
+    let start = cf.position(0.0, 1.0).expect("assembled");
+    let u0 = vector![start[0], start[1]];
+    for (method, jacobian, repeats) in [
+        ("generated (sweep API)", JacobianSource::Generated, 7),
+        ("num-dual Jacobians (sweep API)", JacobianSource::Dual, 3),
+        (
+            "finite differences (sweep API)",
+            JacobianSource::FiniteDifference,
+            3,
+        ),
+    ] {
+        results.push(sweep_method(
+            "four-bar",
+            method,
+            &FOUR_BAR,
+            u0,
+            OMEGA2,
+            jacobian,
+            &fourbar_ref,
+            repeats,
+        ));
+        eprintln!("measured four-bar: {method}");
+    }
+    // The hand-written closed form, sample by sample.
+    let closed = |k: usize| cf.state(theta2(k), OMEGA2, 0.0, 1.0).expect("assembled");
+    let at_reference: Vec<Sample<2>> = (0..N)
+        .step_by(STRIDE)
+        .map(|k| {
+            let s = closed(k);
+            (s.angles, s.velocities, s.accelerations)
+        })
+        .collect();
+    let ns = time(N + 1, 7, || {
+        (0..=N)
+            .map(|k| closed(std::hint::black_box(k)).accelerations[0])
+            .sum()
+    });
+    results.push(Result {
+        workload: "four-bar".into(),
+        method: "closed form (hand-written)".into(),
+        ns,
+        errors: errors(&fourbar_ref, &at_reference),
+        samples: N + 1,
+    });
+    eprintln!("measured four-bar: closed form");
+    for (tol, label) in [
+        (1e-4, "1e-4"),
+        (1e-6, "1e-6"),
+        (1e-8, "1e-8"),
+        (1e-10, "1e-10"),
+        (1e-12, "1e-12"),
+        (1e-14, "1e-14"),
+        (0.0, "0 (to convergence)"),
+    ] {
+        results.push(tolerance_method(tol, label, &fourbar_ref, u0));
+        eprintln!("measured four-bar: tolerance {label}");
+    }
+
+    let slider_ref = Reference::<2>::parse(include_str!("../../tests/data/bench_slider_crank.csv"));
+    let r = slider_ref.rows[0];
+    let slider_u0 = vector![r.1[0], r.1[1]];
+    for (method, jacobian, repeats) in [
+        ("generated (sweep API)", JacobianSource::Generated, 5),
+        ("num-dual Jacobians (sweep API)", JacobianSource::Dual, 3),
+        (
+            "finite differences (sweep API)",
+            JacobianSource::FiniteDifference,
+            3,
+        ),
+    ] {
+        results.push(sweep_method(
+            "slider-crank",
+            method,
+            &SLIDER_CRANK,
+            slider_u0,
+            1.0,
+            jacobian,
+            &slider_ref,
+            repeats,
+        ));
+        eprintln!("measured slider-crank: {method}");
+    }
+    let six_ref = Reference::<4>::parse(include_str!("../../tests/data/bench_six_bar.csv"));
+    let r = six_ref.rows[0];
+    let six_u0 = SVector::<f64, 4>::from(r.1);
+    for (method, jacobian, repeats) in [
+        ("generated (sweep API)", JacobianSource::Generated, 5),
+        ("num-dual Jacobians (sweep API)", JacobianSource::Dual, 3),
+        (
+            "finite differences (sweep API)",
+            JacobianSource::FiniteDifference,
+            3,
+        ),
+    ] {
+        results.push(sweep_method(
+            "six-bar", method, &SIX_BAR, six_u0, 1.0, jacobian, &six_ref, repeats,
+        ));
+        eprintln!("measured six-bar: {method}");
+    }
+    results
+}
+
+fn write_csv(path: &Path, results: &[Result]) -> std::io::Result<()> {
+    let mut text = String::from(
+        "# Measured by `cargo run --release --example speed_accuracy`: median ns per sample over a revolution of the\n\
+         # dense sweep (positions, velocities, accelerations), worst relative errors against tests/data/bench_*.csv.\n\
+         workload,method,ns_per_sample,error_positions,error_velocities,error_accelerations,samples\n",
+    );
+    for r in results {
+        text.push_str(&format!(
+            "{},{},{:.2},{:.3e},{:.3e},{:.3e},{}\n",
+            r.workload, r.method, r.ns, r.errors[0], r.errors[1], r.errors[2], r.samples
+        ));
+    }
+    std::fs::create_dir_all(path.parent().expect("a folder"))?;
+    std::fs::write(path, text)
+}
+
+fn read_csv(path: &Path) -> Vec<Result> {
+    let Ok(text) = std::fs::read_to_string(path) else {
+        return Vec::new();
+    };
+    text.lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with("workload"))
+        .filter_map(|l| {
+            let f: Vec<&str> = l.split(',').collect();
+            if f.len() < 7 {
+                return None;
+            }
+            Some(Result {
+                workload: f[0].into(),
+                method: f[1].into(),
+                ns: f[2].parse().ok()?,
+                errors: [f[3].parse().ok()?, f[4].parse().ok()?, f[5].parse().ok()?],
+                samples: f[6].parse().ok()?,
+            })
+        })
+        .collect()
+}
+
+fn print_table(results: &[Result]) {
+    println!(
+        "| workload | method | ns / sample | vs closed form | positions | velocities | accelerations | samples |\n\
+         |---|---|---:|---:|---:|---:|---:|---:|"
+    );
+    let floor = results
+        .iter()
+        .find(|r| r.workload == "four-bar" && r.method.starts_with("closed form"))
+        .map(|r| r.ns);
+    for r in results {
+        let ratio = match (floor, r.workload.as_str()) {
+            (Some(f), "four-bar") => format!("{:.2}×", r.ns / f),
+            _ => "—".to_owned(),
+        };
+        println!(
+            "| {} | {} | {:.1} | {} | {:.1e} | {:.1e} | {:.1e} | {} |",
+            r.workload, r.method, r.ns, ratio, r.errors[0], r.errors[1], r.errors[2], r.samples
+        );
+    }
+}
+
+/// The chart: ns per sample against the worst relative error, for the
+/// four-bar, one panel per kind of quantity.
+fn chart(results: &[Result], path: &Path) -> std::result::Result<(), Box<dyn std::error::Error>> {
+    let four: Vec<&Result> = results
+        .iter()
+        .filter(|r| r.workload == "four-bar")
+        .collect();
+    let root = SVGBackend::new(path, (1260, 520)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let (top, body) = root.split_vertically(34);
+    top.draw(&Text::new(
+        "The seed four-bar over a revolution (1 008 000 samples): time per sample against worst relative error",
+        (14, 9),
+        ("sans-serif", 17).into_font(),
+    ))?;
+    let panels = body.split_evenly((1, 3));
+    let palette = [
+        RGBColor(20, 20, 20),
+        RGBColor(40, 110, 200),
+        RGBColor(230, 140, 20),
+        RGBColor(40, 150, 70),
+        RGBColor(200, 40, 40),
+        RGBColor(140, 60, 170),
+        RGBColor(120, 120, 120),
+        RGBColor(0, 150, 160),
+    ];
+    let x_min = four.iter().map(|r| r.ns).fold(f64::INFINITY, f64::min) / 2.0;
+    let x_max = four.iter().map(|r| r.ns).fold(0.0, f64::max) * 2.0;
+    for (kind, panel) in panels.iter().enumerate() {
+        let title = ["positions", "velocities", "accelerations"][kind];
+        let mut c = ChartBuilder::on(panel)
+            .caption(title, ("sans-serif", 15))
+            .margin(10)
+            .x_label_area_size(42)
+            .y_label_area_size(56)
+            .build_cartesian_2d((x_min..x_max).log_scale(), (1e-17f64..1e-2f64).log_scale())?;
+        c.configure_mesh()
+            .light_line_style(WHITE)
+            .bold_line_style(BLACK.mix(0.1))
+            .x_desc("ns per sample (log)")
+            .y_desc("worst relative error (log)")
+            .x_label_formatter(&|x| format!("{x:.0}"))
+            .y_label_formatter(&|y| format!("{y:.0e}"))
+            .draw()?;
+        // Newton's tolerance as a curve.
+        let curve: Vec<(f64, f64)> = four
+            .iter()
+            .filter(|r| r.method.starts_with("Newton per sample"))
+            .map(|r| (r.ns, r.errors[kind].max(1e-17)))
+            .collect();
+        let grey = RGBColor(120, 120, 120);
+        c.draw_series(LineSeries::new(curve.clone(), grey.stroke_width(1)))?
+            .label("Newton per sample, tolerance swept")
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 14, y)], grey));
+        c.draw_series(curve.iter().map(|&p| Circle::new(p, 3, grey.filled())))?;
+        let mut colour = 0;
+        for r in four
+            .iter()
+            .filter(|r| !r.method.starts_with("Newton per sample"))
+        {
+            let col = palette[colour % palette.len()];
+            if colour == 6 {
+                colour += 1;
+            }
+            colour += 1;
+            let p = (r.ns, r.errors[kind].max(1e-17));
+            let label = r.method.clone();
+            c.draw_series(std::iter::once(TriangleMarker::new(p, 7, col.filled())))?
+                .label(label)
+                .legend(move |(x, y)| TriangleMarker::new((x + 7, y), 5, col.filled()));
+        }
+        if kind == 0 {
+            c.configure_series_labels()
+                .position(SeriesLabelPosition::UpperRight)
+                .background_style(WHITE.mix(0.9))
+                .border_style(BLACK.mix(0.3))
+                .label_font(("sans-serif", 11))
+                .draw()?;
+        }
+    }
+    root.present()?;
+    Ok(())
+}
+
+fn main() -> std::result::Result<(), Box<dyn std::error::Error>> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let ours_path = root.join("bench/results/ours.csv");
+    let ours = if std::env::args().any(|a| a == "--chart") {
+        read_csv(&ours_path)
+    } else {
+        let measured = measure();
+        write_csv(&ours_path, &measured)?;
+        measured
+    };
+    let peers = read_csv(&root.join("bench/results/peers.csv"));
+    let mut all = ours;
+    all.extend(peers);
+    print_table(&all);
+    let figure = root.join("docs/figures/speed_accuracy.svg");
+    chart(&all, &figure)?;
+    println!("\nwrote {} and {}", ours_path.display(), figure.display());
+    Ok(())
+}
