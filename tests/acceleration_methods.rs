@@ -154,3 +154,22 @@ fn the_fused_kernel_equals_the_separate_functions() {
         assert_eq!(k.rcond, vel.rcond);
     }
 }
+
+/// Given the exact sines and cosines, the kernel that takes them equals the
+/// one that computes them, to the bit; given perturbed ones, it uses them
+/// (so a sweep that carries them really saves the calls).
+#[test]
+fn the_kernel_with_given_trig_equals_the_fused_kernel() {
+    for (theta2, u) in revolution(360) {
+        let (v, vdot, vddot) = (vector![theta2], vector![OMEGA2], vector![37.0]);
+        let trig_u = [u[0].sin_cos(), u[1].sin_cos()];
+        let trig_v = [theta2.sin_cos()];
+        let k = SEED.kinematics(&u, &v, &vdot, &vddot);
+        let t = SEED.kinematics_with_trig(&u, &v, &trig_u, &trig_v, &vdot, &vddot);
+        assert_eq!(k, t, "θ2 = {theta2}");
+        let shifted = (theta2 + 1e-3).sin_cos();
+        let moved = SEED.kinematics_with_trig(&u, &v, &trig_u, &[shifted], &vdot, &vddot);
+        let expected = SEED.kinematics(&u, &vector![theta2 + 1e-3], &vdot, &vddot);
+        assert_eq!(moved.psi, expected.psi);
+    }
+}

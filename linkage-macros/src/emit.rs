@@ -132,7 +132,7 @@ pub fn emit(
     reserved: &[String],
     mode: Mode,
 ) -> Body {
-    let phased = emit_phases(dag, names, &[roots], hints, reserved, mode, &[]);
+    let phased = emit_phases(dag, names, &[roots], hints, reserved, mode, &[], None);
     let mut statements = phased.prologue;
     let mut phases = phased.phases.into_iter();
     let (phase_statements, values) = phases.next().unwrap_or_default();
@@ -157,6 +157,15 @@ pub struct Phased {
     pub reads: Reads,
 }
 
+/// Sines and cosines of the coordinates given by the caller instead of
+/// computed: `u[k]` is (sin, cos) of u's coordinate k, `v[k]` of v's.
+pub struct TrigSource {
+    pub u: proc_macro2::Ident,
+    pub v: proc_macro2::Ident,
+    pub m: usize,
+}
+
+#[allow(clippy::too_many_arguments)]
 pub fn emit_phases(
     dag: &Dag,
     names: &CodeNames,
@@ -165,6 +174,7 @@ pub fn emit_phases(
     reserved: &[String],
     mode: Mode,
     late: &[Symbol],
+    trig_source: Option<&TrigSource>,
 ) -> Phased {
     // Reachable nodes, their use counts, and the first phase needing each.
     let mut uses: HashMap<Id, usize> = HashMap::new();
@@ -292,6 +302,29 @@ pub fn emit_phases(
             let name = ident(&emitter.bound[&id]);
             if let Node::Call(f @ (Func::Sin | Func::Cos), a) = dag.node(id) {
                 let (sin, cos) = trig_pairs[a];
+                // A coordinate's sine and cosine from the caller.
+                if let (Some(source), Node::Sym(Symbol::Coord(k))) = (trig_source, dag.node(*a)) {
+                    let k = *k as usize;
+                    let (array, index) = if k < source.m {
+                        (&source.u, k)
+                    } else {
+                        (&source.v, k - source.m)
+                    };
+                    let index = Literal::usize_unsuffixed(index);
+                    match (sin, cos) {
+                        (Some(s), Some(c)) => {
+                            if emitted_pairs.insert(*a) {
+                                let (s, c) = (ident(&emitter.bound[&s]), ident(&emitter.bound[&c]));
+                                statements.push(quote! { let (#s, #c) = #array[#index]; });
+                            }
+                        }
+                        _ => {
+                            let field = Literal::usize_unsuffixed(usize::from(*f == Func::Cos));
+                            statements.push(quote! { let #name = #array[#index].#field; });
+                        }
+                    }
+                    continue;
+                }
                 let arg = emitter.operand(*a, Prec::Atom);
                 match (sin, cos) {
                     (Some(s), Some(c)) => {

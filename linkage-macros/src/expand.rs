@@ -117,6 +117,18 @@ fn stub(input: &Input) -> TokenStream {
                 ) -> ::linkage::Kinematics<M, F> {
                     #never
                 }
+                #[allow(clippy::too_many_arguments)]
+                pub fn kinematics_with_trig<const M: usize, const F: usize>(
+                    &self,
+                    _u: &SVector<f64, M>,
+                    _v: &SVector<f64, F>,
+                    _trig_u: &[(f64, f64); M],
+                    _trig_v: &[(f64, f64); F],
+                    _vdot: &SVector<f64, F>,
+                    _vddot: &SVector<f64, F>,
+                ) -> ::linkage::Kinematics<M, F> {
+                    #never
+                }
                 pub fn psi_generic<D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy, const M: usize, const F: usize>(
                     &self,
                     _u: &SVector<D, M>,
@@ -535,7 +547,8 @@ impl<'a> Generator<'a> {
             });
         }
 
-        let kinematics = self.kinematics_function();
+        let kinematics = self.kinematics_function(false);
+        let kinematics_with_trig = self.kinematics_function(true);
         let generic = self.generic_functions();
         let u_names = self.input.u.items.iter().map(crate::lower::unraw);
         let v_names = self.input.v.items.iter().map(crate::lower::unraw);
@@ -563,6 +576,8 @@ impl<'a> Generator<'a> {
                     #(#functions)*
 
                     #kinematics
+
+                    #kinematics_with_trig
 
                     #generic
 
@@ -686,7 +701,7 @@ impl<'a> Generator<'a> {
 
     /// `kinematics`: Ψ, Ψ_u, Ψ_v, the velocity solve and γ in one pass, every
     /// sine, cosine and common subexpression computed once.
-    fn kinematics_function(&self) -> TokenStream {
+    fn kinematics_function(&self, with_trig: bool) -> TokenStream {
         let model = self.model;
         let (m, f) = (self.m, self.f);
         let (ml, fl) = (Literal::usize_unsuffixed(m), Literal::usize_unsuffixed(f));
@@ -708,14 +723,23 @@ impl<'a> Generator<'a> {
         let local: Vec<String> = locals.iter().map(|n| self.free_name(n)).collect();
         let late: Vec<crate::dag::Symbol> =
             (0..m).map(|k| crate::dag::Symbol::Vel(k as u16)).collect();
+        let trig_names = [self.free_name("trig_u"), self.free_name("trig_v")];
+        let source = crate::emit::TrigSource {
+            u: format_ident!("{}", trig_names[0]),
+            v: format_ident!("{}", trig_names[1]),
+            m,
+        };
+        let mut reserved = local.clone();
+        reserved.extend(trig_names.iter().cloned());
         let phased = crate::emit::emit_phases(
             self.dag(),
             &self.code,
             &[&first, &second],
             &[],
-            &local,
+            &reserved,
             Mode::F64,
             &late,
+            with_trig.then_some(&source),
         );
         let [psi, psi_u, psi_v, gamma, inverse, rcond, udot, uddot] = locals.map(|n| {
             let k = locals.iter().position(|x| *x == n).unwrap_or(0);
@@ -791,6 +815,40 @@ impl<'a> Generator<'a> {
             }
         };
         let (u_arg, v_arg) = (arg(reads.u, "u"), arg(reads.v, "v"));
+        if with_trig {
+            let (trig_u, trig_v) = (&source.u, &source.v);
+            return quote! {
+                /// [`Self::kinematics`] with the sines and cosines of the
+                /// coordinates given (`trig_u[k]` = (sin uₖ, cos uₖ), likewise
+                /// `trig_v`) instead of computed: a sweep carries them from pose
+                /// to pose by the angle-addition formulas, which costs a few
+                /// multiplications instead of a transcendental call.
+                #[must_use]
+                #[allow(unused_variables, clippy::too_many_arguments)]
+                pub fn kinematics_with_trig(
+                    &self,
+                    #u_arg: &SVector<f64, #ml>,
+                    #v_arg: &SVector<f64, #fl>,
+                    #trig_u: &[(f64, f64); #ml],
+                    #trig_v: &[(f64, f64); #fl],
+                    vdot: &SVector<f64, #fl>,
+                    vddot: &SVector<f64, #fl>,
+                ) -> ::linkage::Kinematics<#ml, #fl> {
+                    #(#prologue)*
+                    #(#first_statements)*
+                    #psi_bind
+                    #psi_u_bind
+                    #psi_v_bind
+                    let ::linkage::Inverse { #inverse_pattern } = ::linkage::invert(&#psi_u);
+                    let #udot = -(#inverse * (#psi_v * vdot));
+                    #velocity_bind
+                    #(#second_statements)*
+                    #gamma_bind
+                    let #uddot = -(#inverse * (#psi_v * vddot + #gamma));
+                    ::linkage::Kinematics { #(#fields),* }
+                }
+            };
+        }
         quote! {
             /// Everything at one pose in one pass: Ψ, Ψ_u and Ψ_v; the velocity
             /// u̇ = −Ψ_u⁻¹Ψ_v v̇; γ = (Ψ_q q̇)_q q̇ at that velocity; and the
@@ -983,6 +1041,17 @@ impl<'a> Generator<'a> {
                     vddot: &SVector<f64, #f>,
                 ) -> ::linkage::Kinematics<#m, #f> {
                     Self::kinematics(self, u, v, vdot, vddot)
+                }
+                fn kinematics_with_trig(
+                    &self,
+                    u: &SVector<f64, #m>,
+                    v: &SVector<f64, #f>,
+                    trig_u: &[(f64, f64); #m],
+                    trig_v: &[(f64, f64); #f],
+                    vdot: &SVector<f64, #f>,
+                    vddot: &SVector<f64, #f>,
+                ) -> ::linkage::Kinematics<#m, #f> {
+                    Self::kinematics_with_trig(self, u, v, trig_u, trig_v, vdot, vddot)
                 }
                 fn point_positions(&self, u: &SVector<f64, #m>, v: &SVector<f64, #f>) -> [Vector2<f64>; #np] {
                     Self::point_positions(self, u, v)

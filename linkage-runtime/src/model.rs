@@ -255,6 +255,24 @@ pub trait Linkage<const M: usize, const F: usize> {
         vdot: &SVector<f64, F>,
         vddot: &SVector<f64, F>,
     ) -> Kinematics<M, F>;
+    /// [`Linkage::kinematics`] with the sines and cosines of the coordinates
+    /// supplied: `trig_u[k]` = (sin uₖ, cos uₖ), likewise `trig_v`. A sweep
+    /// carries them from pose to pose by the angle-addition formulas. The
+    /// generated code reads only the entries of coordinates that appear under
+    /// `sin`/`cos`; the default ignores them and calls `kinematics`.
+    #[allow(clippy::too_many_arguments)]
+    fn kinematics_with_trig(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        trig_u: &[(f64, f64); M],
+        trig_v: &[(f64, f64); F],
+        vdot: &SVector<f64, F>,
+        vddot: &SVector<f64, F>,
+    ) -> Kinematics<M, F> {
+        let _ = (trig_u, trig_v);
+        self.kinematics(u, v, vdot, vddot)
+    }
     /// P(q)
     fn point_positions(&self, u: &SVector<f64, M>, v: &SVector<f64, F>) -> Self::Points;
     /// Ṗ = P_q q̇

@@ -527,6 +527,67 @@ const _: () = {
                 uddot,
             }
         }
+        /// [`Self::kinematics`] with the sines and cosines of the
+        /// coordinates given (`trig_u[k]` = (sin uₖ, cos uₖ), likewise
+        /// `trig_v`) instead of computed: a sweep carries them from pose
+        /// to pose by the angle-addition formulas, which costs a few
+        /// multiplications instead of a transcendental call.
+        #[must_use]
+        #[allow(unused_variables, clippy::too_many_arguments)]
+        pub fn kinematics_with_trig(
+            &self,
+            u: &SVector<f64, 2>,
+            v: &SVector<f64, 1>,
+            trig_u: &[(f64, f64); 2],
+            trig_v: &[(f64, f64); 1],
+            vdot: &SVector<f64, 1>,
+            vddot: &SVector<f64, 1>,
+        ) -> ::linkage::Kinematics<2, 1> {
+            let Self { l1, l2, l3, l4, .. } = *self;
+            let (theta3, theta4) = (u[0], u[1]);
+            let theta2 = v[0];
+            let theta2_dot = vdot[0];
+            let (s_theta2, c_theta2) = trig_v[0];
+            let l2_c_theta2 = l2 * c_theta2;
+            let l2_s_theta2 = l2 * s_theta2;
+            let (s_theta3, c_theta3) = trig_u[0];
+            let l3_c_theta3 = l3 * c_theta3;
+            let l3_s_theta3 = l3 * s_theta3;
+            let (s_theta4, c_theta4) = trig_u[1];
+            let l4_c_theta4 = l4 * c_theta4;
+            let l4_s_theta4 = l4 * s_theta4;
+            let mut psi = SVector::<f64, 2>::zeros();
+            psi[0] = l2_c_theta2 + l3_c_theta3 + l4_c_theta4 - l1;
+            psi[1] = l2_s_theta2 + l3_s_theta3 + l4_s_theta4;
+            let mut psi_u = SMatrix::<f64, 2, 2>::zeros();
+            psi_u[(0, 0)] = -l3_s_theta3;
+            psi_u[(0, 1)] = -l4_s_theta4;
+            psi_u[(1, 0)] = l3_c_theta3;
+            psi_u[(1, 1)] = l4_c_theta4;
+            let mut psi_v = SVector::<f64, 2>::zeros();
+            psi_v[0] = -l2_s_theta2;
+            psi_v[1] = l2_c_theta2;
+            let ::linkage::Inverse { inverse, rcond } = ::linkage::invert(&psi_u);
+            let udot = -(inverse * (psi_v * vdot));
+            let (theta3_dot, theta4_dot) = (udot[0], udot[1]);
+            let mut gamma = SVector::<f64, 2>::zeros();
+            gamma[0] = -l3 * c_theta3 * theta3_dot.powi(2)
+                - l4 * c_theta4 * theta4_dot.powi(2)
+                - l2 * c_theta2 * theta2_dot.powi(2);
+            gamma[1] = -l3 * s_theta3 * theta3_dot.powi(2)
+                - l4 * s_theta4 * theta4_dot.powi(2)
+                - l2 * s_theta2 * theta2_dot.powi(2);
+            let uddot = -(inverse * (psi_v * vddot + gamma));
+            ::linkage::Kinematics {
+                psi,
+                psi_u,
+                psi_v,
+                inverse,
+                rcond,
+                udot,
+                uddot,
+            }
+        }
         /// Ψ(u, v) on any dual number of `num_dual`: the same closure equations as
         /// [`Self::psi`], for derivatives by automatic differentiation (cross-checks,
         /// and the alternative Jacobian source of the runtime).
@@ -943,6 +1004,17 @@ const _: () = {
             vddot: &SVector<f64, 1>,
         ) -> ::linkage::Kinematics<2, 1> {
             Self::kinematics(self, u, v, vdot, vddot)
+        }
+        fn kinematics_with_trig(
+            &self,
+            u: &SVector<f64, 2>,
+            v: &SVector<f64, 1>,
+            trig_u: &[(f64, f64); 2],
+            trig_v: &[(f64, f64); 1],
+            vdot: &SVector<f64, 1>,
+            vddot: &SVector<f64, 1>,
+        ) -> ::linkage::Kinematics<2, 1> {
+            Self::kinematics_with_trig(self, u, v, trig_u, trig_v, vdot, vddot)
         }
         fn point_positions(
             &self,
