@@ -155,6 +155,9 @@ pub struct Phased {
     /// For each phase: its statements and the values of its roots.
     pub phases: Vec<(Vec<TokenStream>, Vec<TokenStream>)>,
     pub reads: Reads,
+    /// The coordinates (indices into q = (u, v)) whose sine or cosine is read
+    /// from the [`TrigSource`], ascending.
+    pub trig_coords: Vec<usize>,
 }
 
 /// Sines and cosines of the coordinates given by the caller instead of
@@ -283,6 +286,7 @@ pub fn emit_phases(
 
     // The symbols read from the arguments (the late ones by the caller).
     let mut reads = Reads::default();
+    let mut trig_coords = std::collections::BTreeSet::new();
     let mut symbols: Vec<Symbol> = order
         .iter()
         .filter_map(|&id| match dag.node(id) {
@@ -305,6 +309,7 @@ pub fn emit_phases(
                 // A coordinate's sine and cosine from the caller.
                 if let (Some(source), Node::Sym(Symbol::Coord(k))) = (trig_source, dag.node(*a)) {
                     let k = *k as usize;
+                    trig_coords.insert(k);
                     let (array, index) = if k < source.m {
                         (&source.u, k)
                     } else {
@@ -353,6 +358,7 @@ pub fn emit_phases(
         prologue,
         phases: out,
         reads,
+        trig_coords: trig_coords.into_iter().collect(),
     }
 }
 

@@ -718,7 +718,7 @@ impl<'a> Generator<'a> {
         first.extend(nonzero(&model.psi_v));
         let second = nonzero(&model.gamma);
         let locals = [
-            "psi", "psi_u", "psi_v", "gamma", "inverse", "rcond", "udot", "uddot",
+            "psi", "psi_u", "psi_v", "gamma", "inverse", "rcond", "det", "udot", "uddot",
         ];
         let local: Vec<String> = locals.iter().map(|n| self.free_name(n)).collect();
         let late: Vec<crate::dag::Symbol> =
@@ -741,7 +741,7 @@ impl<'a> Generator<'a> {
             &late,
             with_trig.then_some(&source),
         );
-        let [psi, psi_u, psi_v, gamma, inverse, rcond, udot, uddot] = locals.map(|n| {
+        let [psi, psi_u, psi_v, gamma, inverse, rcond, det, udot, uddot] = locals.map(|n| {
             let k = locals.iter().position(|x| *x == n).unwrap_or(0);
             format_ident!("{}", local[k])
         });
@@ -792,8 +792,12 @@ impl<'a> Generator<'a> {
             }
         };
         let inverse_pattern = {
-            let (a, b) = (field("inverse", &inverse), field("rcond", &rcond));
-            quote!(#a, #b)
+            let (a, b, c) = (
+                field("inverse", &inverse),
+                field("rcond", &rcond),
+                field("det", &det),
+            );
+            quote!(#a, #b, #c)
         };
         let fields = [
             ("psi", &psi),
@@ -801,6 +805,7 @@ impl<'a> Generator<'a> {
             ("psi_v", &psi_v),
             ("inverse", &inverse),
             ("rcond", &rcond),
+            ("det", &det),
             ("udot", &udot),
             ("uddot", &uddot),
         ]
@@ -817,13 +822,26 @@ impl<'a> Generator<'a> {
         let (u_arg, v_arg) = (arg(reads.u, "u"), arg(reads.v, "v"));
         if with_trig {
             let (trig_u, trig_v) = (&source.u, &source.v);
+            let mask = |range: std::ops::Range<usize>| {
+                let flags = range.map(|k| phased.trig_coords.contains(&k));
+                quote!([#(#flags),*])
+            };
+            let (mask_u, mask_v) = (mask(0..m), mask(m..m + f));
             return quote! {
+                /// Which coordinates of u appear under `sin`/`cos` in
+                /// [`Self::kinematics_with_trig`], which reads their sine and
+                /// cosine from `trig_u` (the others' entries are not read).
+                pub const TRIG_U: [bool; #ml] = #mask_u;
+                /// Which coordinates of v appear under `sin`/`cos`, read from
+                /// `trig_v`.
+                pub const TRIG_V: [bool; #fl] = #mask_v;
                 /// [`Self::kinematics`] with the sines and cosines of the
                 /// coordinates given (`trig_u[k]` = (sin uₖ, cos uₖ), likewise
                 /// `trig_v`) instead of computed: a sweep carries them from pose
                 /// to pose by the angle-addition formulas, which costs a few
                 /// multiplications instead of a transcendental call.
                 #[must_use]
+                #[inline]
                 #[allow(unused_variables, clippy::too_many_arguments)]
                 pub fn kinematics_with_trig(
                     &self,
@@ -856,6 +874,7 @@ impl<'a> Generator<'a> {
             /// subexpression shared between these, is computed once: the fast path
             /// of the runtime's analyses and sweeps.
             #[must_use]
+            #[inline]
             pub fn kinematics(
                 &self,
                 #u_arg: &SVector<f64, #ml>,
@@ -1033,6 +1052,7 @@ impl<'a> Generator<'a> {
                 fn gamma(&self, u: &SVector<f64, #m>, v: &SVector<f64, #f>, udot: &SVector<f64, #m>, vdot: &SVector<f64, #f>) -> SVector<f64, #m> {
                     Self::gamma(self, u, v, udot, vdot)
                 }
+                #[inline]
                 fn kinematics(
                     &self,
                     u: &SVector<f64, #m>,
@@ -1042,6 +1062,9 @@ impl<'a> Generator<'a> {
                 ) -> ::linkage::Kinematics<#m, #f> {
                     Self::kinematics(self, u, v, vdot, vddot)
                 }
+                const TRIG_U: [bool; #m] = Self::TRIG_U;
+                const TRIG_V: [bool; #f] = Self::TRIG_V;
+                #[inline]
                 fn kinematics_with_trig(
                     &self,
                     u: &SVector<f64, #m>,

@@ -3,7 +3,7 @@
 
 use nalgebra::SMatrix;
 
-/// An inverted square matrix and its conditioning.
+/// An inverted square matrix, its determinant and its conditioning.
 #[derive(Clone, Copy, Debug)]
 pub struct Inverse<const M: usize> {
     pub inverse: SMatrix<f64, M, M>,
@@ -12,26 +12,70 @@ pub struct Inverse<const M: usize> {
     /// 1-norm), so that it does not depend on the units of the coordinates;
     /// 0 if A is exactly singular.
     pub rcond: f64,
+    /// det A (its sign tells the assembly branch).
+    pub det: f64,
 }
 
 /// Inverts `a`; `rcond` is 0 when `a` is singular or the inverse is not
-/// finite (the returned inverse is then meaningless).
-#[inline]
+/// finite (the returned inverse is then meaningless). Closed forms for
+/// m ≤ 3: the adjugate, whose norms give rcond = |det A| / ‖D_c adj A‖₁
+/// without a second division, and A⁻¹ = adj A / det A. Gauss–Jordan
+/// elimination with partial pivoting above.
+#[inline(always)]
 pub fn invert<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
-    let inverse = match M {
+    let singular = |det: f64| Inverse {
+        inverse: SMatrix::zeros(),
+        rcond: 0.0,
+        det,
+    };
+    if M > 3 {
+        return match gauss_jordan(a) {
+            (Some(inv), det) if inv.iter().all(|x| x.is_finite()) => {
+                let norm = equilibrated_norm(a, &inv);
+                if norm.is_finite() && norm > 0.0 {
+                    Inverse {
+                        inverse: inv,
+                        rcond: (1.0 / norm).min(1.0),
+                        det,
+                    }
+                } else {
+                    singular(det)
+                }
+            }
+            (_, det) => singular(det),
+        };
+    }
+    let (adjugate, det) = adjugate(a);
+    let rcond = det.abs() / equilibrated_norm(a, &adjugate);
+    let inverse = adjugate * (1.0 / det);
+    // A NaN or infinite entry makes the sum non-finite.
+    if rcond > 0.0 && rcond.is_finite() && inverse.sum().is_finite() {
+        Inverse {
+            inverse,
+            rcond: rcond.min(1.0),
+            det,
+        }
+    } else {
+        singular(det)
+    }
+}
+
+/// adj A and det A for m ≤ 3 (the adjugate is the transpose of the
+/// cofactors).
+#[inline(always)]
+fn adjugate<const M: usize>(a: &SMatrix<f64, M, M>) -> (SMatrix<f64, M, M>, f64) {
+    let mut adj = SMatrix::<f64, M, M>::zeros();
+    let det = match M {
         1 => {
-            let mut inv = SMatrix::<f64, M, M>::zeros();
-            inv[(0, 0)] = 1.0 / a[(0, 0)];
-            Some(inv)
+            adj[(0, 0)] = 1.0;
+            a[(0, 0)]
         }
         2 => {
-            let r = 1.0 / (a[(0, 0)] * a[(1, 1)] - a[(0, 1)] * a[(1, 0)]);
-            let mut inv = SMatrix::<f64, M, M>::zeros();
-            inv[(0, 0)] = a[(1, 1)] * r;
-            inv[(0, 1)] = -a[(0, 1)] * r;
-            inv[(1, 0)] = -a[(1, 0)] * r;
-            inv[(1, 1)] = a[(0, 0)] * r;
-            Some(inv)
+            adj[(0, 0)] = a[(1, 1)];
+            adj[(0, 1)] = -a[(0, 1)];
+            adj[(1, 0)] = -a[(1, 0)];
+            adj[(1, 1)] = a[(0, 0)];
+            a[(0, 0)] * a[(1, 1)] - a[(0, 1)] * a[(1, 0)]
         }
         3 => {
             let c = |i: usize, j: usize| {
@@ -39,50 +83,35 @@ pub fn invert<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
                 let (j1, j2) = ((j + 1) % 3, (j + 2) % 3);
                 a[(i1, j1)] * a[(i2, j2)] - a[(i1, j2)] * a[(i2, j1)]
             };
-            let r = 1.0 / (a[(0, 0)] * c(0, 0) + a[(0, 1)] * c(0, 1) + a[(0, 2)] * c(0, 2));
-            let mut inv = SMatrix::<f64, M, M>::zeros();
             for i in 0..3 {
                 for j in 0..3 {
-                    // adjugate: transpose of the cofactors
-                    inv[(j, i)] = c(i, j) * r;
+                    adj[(j, i)] = c(i, j);
                 }
             }
-            Some(inv)
+            a[(0, 0)] * adj[(0, 0)] + a[(0, 1)] * adj[(1, 0)] + a[(0, 2)] * adj[(2, 0)]
         }
-        _ => gauss_jordan(a),
+        _ => f64::NAN,
     };
-    match inverse {
-        Some(inv) if inv.iter().all(|x| x.is_finite()) => Inverse {
-            inverse: inv,
-            rcond: equilibrated_rcond(a, &inv),
-        },
-        _ => Inverse {
-            inverse: SMatrix::zeros(),
-            rcond: 0.0,
-        },
-    }
+    (adj, det)
 }
 
-/// 1/(‖B‖₁‖B⁻¹‖₁) for B = A D_c, the columns of A scaled to unit 1-norm:
-/// ‖B‖₁ = 1, and B⁻¹ = D_c⁻¹ A⁻¹ is row i of A⁻¹ times the 1-norm of
-/// column i of A. (Rows are not scaled: a row that shrinks is how a
-/// singular pose shows itself.)
-#[inline]
-fn equilibrated_rcond<const M: usize>(a: &SMatrix<f64, M, M>, inv: &SMatrix<f64, M, M>) -> f64 {
+/// ‖D_c B‖₁ = max_j Σ_i |B_ij|·‖A_:i‖₁, D_c the 1-norms of A's columns.
+/// With B = A⁻¹ this is ‖(A D_c⁻¹)⁻¹‖₁, and as ‖A D_c⁻¹‖₁ = 1 its
+/// reciprocal is the reciprocal condition number of A with its columns
+/// scaled to unit 1-norm (rows are not scaled: a row that shrinks is how a
+/// singular pose shows itself). With B = adj A it is that times |det A|.
+#[inline(always)]
+fn equilibrated_norm<const M: usize>(a: &SMatrix<f64, M, M>, b: &SMatrix<f64, M, M>) -> f64 {
     let mut col = [0.0; M];
     for (j, c) in col.iter_mut().enumerate() {
         *c = a.column(j).iter().map(|x| x.abs()).sum::<f64>();
     }
     let mut norm = 0.0_f64;
     for j in 0..M {
-        let sum: f64 = (0..M).map(|i| inv[(i, j)].abs() * col[i]).sum();
+        let sum: f64 = (0..M).map(|i| b[(i, j)].abs() * col[i]).sum();
         norm = norm.max(sum);
     }
-    if norm.is_finite() && norm > 0.0 {
-        (1.0 / norm).min(1.0)
-    } else {
-        0.0
-    }
+    norm
 }
 
 /// The determinant, by Gaussian elimination with partial pivoting (closed
@@ -120,22 +149,30 @@ pub fn determinant<const M: usize>(a: &SMatrix<f64, M, M>) -> f64 {
     }
 }
 
-/// Gauss–Jordan elimination with partial pivoting; `None` on a zero pivot.
-fn gauss_jordan<const M: usize>(a: &SMatrix<f64, M, M>) -> Option<SMatrix<f64, M, M>> {
+/// Gauss–Jordan elimination with partial pivoting, and the determinant as
+/// the signed product of the pivots; `None` (and det 0) on a zero pivot.
+fn gauss_jordan<const M: usize>(a: &SMatrix<f64, M, M>) -> (Option<SMatrix<f64, M, M>>, f64) {
     let mut work = *a;
     let mut inv = SMatrix::<f64, M, M>::identity();
+    let mut det = 1.0;
     for col in 0..M {
-        let pivot =
-            (col..M).max_by(|&i, &j| work[(i, col)].abs().total_cmp(&work[(j, col)].abs()))?;
+        let pivot = (col..M)
+            .max_by(|&i, &j| work[(i, col)].abs().total_cmp(&work[(j, col)].abs()))
+            .unwrap_or(col);
         let p = work[(pivot, col)];
         if p == 0.0 || !p.is_finite() {
-            return None;
+            return (None, if p == 0.0 { 0.0 } else { f64::NAN });
         }
-        work.swap_rows(col, pivot);
-        inv.swap_rows(col, pivot);
+        if pivot != col {
+            work.swap_rows(col, pivot);
+            inv.swap_rows(col, pivot);
+            det = -det;
+        }
+        det *= p;
+        let r = 1.0 / p;
         for j in 0..M {
-            work[(col, j)] /= p;
-            inv[(col, j)] /= p;
+            work[(col, j)] *= r;
+            inv[(col, j)] *= r;
         }
         for row in 0..M {
             if row != col {
@@ -149,7 +186,7 @@ fn gauss_jordan<const M: usize>(a: &SMatrix<f64, M, M>) -> Option<SMatrix<f64, M
             }
         }
     }
-    Some(inv)
+    (Some(inv), det)
 }
 
 #[cfg(test)]
@@ -164,6 +201,12 @@ mod tests {
             .max();
         assert!(err < 1e-14, "‖A·A⁻¹ − I‖ = {err}");
         assert!(inv.rcond > 0.0 && inv.rcond <= 1.0);
+        let det = determinant(&a);
+        assert!(
+            (inv.det - det).abs() <= 1e-14 * det.abs(),
+            "{} vs {det}",
+            inv.det
+        );
     }
 
     #[test]
@@ -198,6 +241,8 @@ mod tests {
         assert_eq!(invert(&Matrix2::new(1.0, 2.0, 2.0, 4.0)).rcond, 0.0);
         assert_eq!(invert(&Matrix3::<f64>::zeros()).rcond, 0.0);
         assert_eq!(invert(&Matrix4::<f64>::zeros()).rcond, 0.0);
+        assert_eq!(invert(&Matrix2::new(1.0, 2.0, 2.0, 4.0)).det, 0.0);
+        assert_eq!(invert(&Matrix4::<f64>::zeros()).det, 0.0);
     }
 
     #[test]

@@ -142,6 +142,8 @@ pub struct Kinematics<const M: usize, const F: usize> {
     pub inverse: SMatrix<f64, M, M>,
     /// The column-equilibrated reciprocal condition number of Ψ_u.
     pub rcond: f64,
+    /// det Ψ_u
+    pub det: f64,
     /// u̇ = −Ψ_u⁻¹Ψ_v v̇
     pub udot: SVector<f64, M>,
     /// ü = −Ψ_u⁻¹(Ψ_v v̈ + γ)
@@ -255,6 +257,11 @@ pub trait Linkage<const M: usize, const F: usize> {
         vdot: &SVector<f64, F>,
         vddot: &SVector<f64, F>,
     ) -> Kinematics<M, F>;
+    /// Which coordinates of u have their sine and cosine read from `trig_u`
+    /// by [`Linkage::kinematics_with_trig`] (none by default).
+    const TRIG_U: [bool; M] = [false; M];
+    /// Which coordinates of v have their sine and cosine read from `trig_v`.
+    const TRIG_V: [bool; F] = [false; F];
     /// [`Linkage::kinematics`] with the sines and cosines of the coordinates
     /// supplied: `trig_u[k]` = (sin uₖ, cos uₖ), likewise `trig_v`. A sweep
     /// carries them from pose to pose by the angle-addition formulas. The

@@ -475,6 +475,7 @@ const _: () = {
         /// subexpression shared between these, is computed once: the fast path
         /// of the runtime's analyses and sweeps.
         #[must_use]
+        #[inline]
         pub fn kinematics(
             &self,
             u: &SVector<f64, 2>,
@@ -506,7 +507,7 @@ const _: () = {
             let mut psi_v = SVector::<f64, 2>::zeros();
             psi_v[0] = -l2_s_theta2;
             psi_v[1] = l2_c_theta2;
-            let ::linkage::Inverse { inverse, rcond } = ::linkage::invert(&psi_u);
+            let ::linkage::Inverse { inverse, rcond, det } = ::linkage::invert(&psi_u);
             let udot = -(inverse * (psi_v * vdot));
             let (theta3_dot, theta4_dot) = (udot[0], udot[1]);
             let mut gamma = SVector::<f64, 2>::zeros();
@@ -523,16 +524,25 @@ const _: () = {
                 psi_v,
                 inverse,
                 rcond,
+                det,
                 udot,
                 uddot,
             }
         }
+        /// Which coordinates of u appear under `sin`/`cos` in
+        /// [`Self::kinematics_with_trig`], which reads their sine and
+        /// cosine from `trig_u` (the others' entries are not read).
+        pub const TRIG_U: [bool; 2] = [true, true];
+        /// Which coordinates of v appear under `sin`/`cos`, read from
+        /// `trig_v`.
+        pub const TRIG_V: [bool; 1] = [true];
         /// [`Self::kinematics`] with the sines and cosines of the
         /// coordinates given (`trig_u[k]` = (sin uₖ, cos uₖ), likewise
         /// `trig_v`) instead of computed: a sweep carries them from pose
         /// to pose by the angle-addition formulas, which costs a few
         /// multiplications instead of a transcendental call.
         #[must_use]
+        #[inline]
         #[allow(unused_variables, clippy::too_many_arguments)]
         pub fn kinematics_with_trig(
             &self,
@@ -567,7 +577,7 @@ const _: () = {
             let mut psi_v = SVector::<f64, 2>::zeros();
             psi_v[0] = -l2_s_theta2;
             psi_v[1] = l2_c_theta2;
-            let ::linkage::Inverse { inverse, rcond } = ::linkage::invert(&psi_u);
+            let ::linkage::Inverse { inverse, rcond, det } = ::linkage::invert(&psi_u);
             let udot = -(inverse * (psi_v * vdot));
             let (theta3_dot, theta4_dot) = (udot[0], udot[1]);
             let mut gamma = SVector::<f64, 2>::zeros();
@@ -584,6 +594,7 @@ const _: () = {
                 psi_v,
                 inverse,
                 rcond,
+                det,
                 udot,
                 uddot,
             }
@@ -996,6 +1007,7 @@ const _: () = {
         ) -> SVector<f64, 2> {
             Self::gamma(self, u, v, udot, vdot)
         }
+        #[inline]
         fn kinematics(
             &self,
             u: &SVector<f64, 2>,
@@ -1005,6 +1017,9 @@ const _: () = {
         ) -> ::linkage::Kinematics<2, 1> {
             Self::kinematics(self, u, v, vdot, vddot)
         }
+        const TRIG_U: [bool; 2] = Self::TRIG_U;
+        const TRIG_V: [bool; 1] = Self::TRIG_V;
+        #[inline]
         fn kinematics_with_trig(
             &self,
             u: &SVector<f64, 2>,
