@@ -841,7 +841,7 @@ impl<'a> Generator<'a> {
                 /// to pose by the angle-addition formulas, which costs a few
                 /// multiplications instead of a transcendental call.
                 #[must_use]
-                #[inline]
+                #[inline(always)]
                 #[allow(unused_variables, clippy::too_many_arguments)]
                 pub fn kinematics_with_trig(
                     &self,
@@ -1064,7 +1064,7 @@ impl<'a> Generator<'a> {
                 }
                 const TRIG_U: [bool; #m] = Self::TRIG_U;
                 const TRIG_V: [bool; #f] = Self::TRIG_V;
-                #[inline]
+                #[inline(always)]
                 fn kinematics_with_trig(
                     &self,
                     u: &SVector<f64, #m>,

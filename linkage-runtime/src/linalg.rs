@@ -48,11 +48,13 @@ pub fn invert<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
     let (adjugate, det) = adjugate(a);
     let rcond = det.abs() / equilibrated_norm(a, &adjugate);
     let inverse = adjugate * (1.0 / det);
-    // A NaN or infinite entry makes the sum non-finite.
-    if rcond > 0.0 && rcond.is_finite() && inverse.sum().is_finite() {
+    // rcond is NaN for a non-finite A (and ≤ 1 but for rounding); a NaN or
+    // infinite entry of the inverse (an overflow) makes the sum non-finite.
+    let regular = (rcond > 0.0) & (rcond <= 2.0) & (inverse.sum().abs() <= f64::MAX);
+    if regular {
         Inverse {
             inverse,
-            rcond: rcond.min(1.0),
+            rcond: if rcond < 1.0 { rcond } else { 1.0 },
             det,
         }
     } else {
@@ -109,7 +111,8 @@ fn equilibrated_norm<const M: usize>(a: &SMatrix<f64, M, M>, b: &SMatrix<f64, M,
     let mut norm = 0.0_f64;
     for j in 0..M {
         let sum: f64 = (0..M).map(|i| b[(i, j)].abs() * col[i]).sum();
-        norm = norm.max(sum);
+        // (A NaN sum is dropped here and caught by the caller's checks.)
+        norm = if sum > norm { sum } else { norm };
     }
     norm
 }

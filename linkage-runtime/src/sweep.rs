@@ -168,6 +168,12 @@ struct State<const M: usize, const F: usize> {
 /// those at the pose by about this much.
 const FAST_ACCEPT: f64 = 1e-14;
 
+/// Whether every |xᵢ| ≤ bound (false if any is NaN), without branches.
+#[inline(always)]
+fn within<const N: usize>(x: &SVector<f64, N>, bound: f64) -> bool {
+    x.iter().fold(true, |ok, xi| ok & (xi.abs() <= bound))
+}
+
 /// Below this, [Ψ_u Ψ_v] is rank-deficient: a branch point.
 const BRANCH_RANK: f64 = 1e-6;
 
@@ -480,10 +486,12 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             } else {
                 self.predict(&state, t)
             };
-            let scale = state.u.amax().max(1.0);
-            // (NaN fails every test below.)
-            let small_move = (predicted - state.u).amax() <= options.max_move * scale;
-            if !small_move {
+            // The tests below are branch-free folds, and NaN fails each.
+            let scale = state
+                .u
+                .iter()
+                .fold(1.0, |m: f64, x| if x.abs() > m { x.abs() } else { m });
+            if !within(&(predicted - state.u), options.max_move * scale) {
                 break;
             }
             let v = self.v(t);
@@ -494,22 +502,21 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             } else {
                 self.model.kinematics(&predicted, &v, &self.dir, &zero)
             };
-            if !(k.rcond >= min_rcond
-                && k.psi.amax() <= options.options.residual_tol
-                && k.det.signum() == sign
-                && (k.udot.sum() + k.uddot.sum()).is_finite())
-            {
+            let regular = (k.rcond >= min_rcond)
+                & within(&k.psi, options.options.residual_tol)
+                & (k.det * sign > 0.0)
+                & ((k.udot.sum() + k.uddot.sum()).abs() <= f64::MAX);
+            if !regular {
                 break;
             }
             let inverse = lag.as_ref().unwrap_or(&k.inverse);
-            let delta = -(inverse * k.psi);
-            let at_rounding = delta.amax() <= FAST_ACCEPT * scale;
-            if !at_rounding {
+            let newton = inverse * k.psi;
+            if !within(&newton, FAST_ACCEPT * scale) {
                 break;
             }
             let next = State {
                 t,
-                u: predicted + delta,
+                u: predicted - newton,
                 du: k.udot,
                 ddu: k.uddot,
                 det: k.det,

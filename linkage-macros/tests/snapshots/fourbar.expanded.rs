@@ -542,7 +542,7 @@ const _: () = {
         /// to pose by the angle-addition formulas, which costs a few
         /// multiplications instead of a transcendental call.
         #[must_use]
-        #[inline]
+        #[inline(always)]
         #[allow(unused_variables, clippy::too_many_arguments)]
         pub fn kinematics_with_trig(
             &self,
@@ -1019,7 +1019,7 @@ const _: () = {
         }
         const TRIG_U: [bool; 2] = Self::TRIG_U;
         const TRIG_V: [bool; 1] = Self::TRIG_V;
-        #[inline]
+        #[inline(always)]
         fn kinematics_with_trig(
             &self,
             u: &SVector<f64, 2>,
