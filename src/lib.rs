@@ -47,12 +47,14 @@
 
 extern crate self as linkage;
 
+pub mod batch;
 pub mod closed_form;
 
 pub use linkage_macros::linkage;
 pub use linkage_runtime::*;
 pub use nalgebra;
 pub use num_dual;
+pub use rayon;
 
 /// Everything a user of the attribute needs: the runtime's types, the
 /// `Linkage` trait (for the analyses) and nalgebra's vectors and matrices.

@@ -168,6 +168,10 @@ struct State<const M: usize, const F: usize> {
 /// those at the pose by about this much.
 const FAST_ACCEPT: f64 = 1e-14;
 
+/// The most Newton iterations a step of the fast run may take before the
+/// general machinery takes over.
+const FAST_ITERATIONS: usize = 4;
+
 /// Whether every |xᵢ| ≤ bound (false if any is NaN), without branches.
 #[inline(always)]
 fn within<const N: usize>(x: &SVector<f64, N>, bound: f64) -> bool {
@@ -438,10 +442,31 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         (delta.amax() <= FAST_ACCEPT * scale).then(|| self.state_from(predicted + delta, t, 1, &k))
     }
 
-    /// The common case, as a tight loop: grid steps each taken by one fused
-    /// evaluation at the prediction, for as long as every pose is regular,
-    /// on the branch, at rounding level after one Newton step, and keeps the
-    /// requested accuracy. Each pose goes to `on_pose`. Stops before the
+    /// The fused kernel at (x, v), with the sines and cosines carried by
+    /// `trig` when the model reads them.
+    #[inline(always)]
+    fn evaluate(
+        &self,
+        x: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        carries: bool,
+        trig: &mut TrigCarrier<M, F>,
+    ) -> crate::model::Kinematics<M, F> {
+        let zero = SVector::<f64, F>::zeros();
+        if carries {
+            let (trig_u, trig_v) = trig.at(&L::TRIG_U, &L::TRIG_V, x, v);
+            self.model
+                .kinematics_with_trig(x, v, &trig_u, &trig_v, &self.dir, &zero)
+        } else {
+            self.model.kinematics(x, v, &self.dir, &zero)
+        }
+    }
+
+    /// The common case, as a tight loop: grid steps each taken by fused
+    /// evaluations only (one at the prediction on a dense grid, up to
+    /// [`FAST_ITERATIONS`] Newton steps on a coarse one), for as long as
+    /// every pose is regular, on the branch, continuous with its prediction,
+    /// converged to rounding level, and keeps the requested accuracy. Each pose goes to `on_pose`. Stops before the
     /// first step that does not qualify (the general machinery takes that
     /// one), after `steps`, or on reaching the grid index `stop`.
     ///
@@ -472,7 +497,6 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             .max(REGULAR_RCOND);
         let sign = at.track.regular.det.signum();
         let (h, stride) = (direction, direction as i64);
-        let zero = SVector::<f64, F>::zeros();
         let (mut state, mut previous) = (at.track.state, at.previous_grid);
         // Ψ_u⁻¹ one step back, once the run has taken a step (`previous` then
         // holds the analogs one step back).
@@ -495,33 +519,54 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
                 break;
             }
             let v = self.v(t);
-            let k = if carries {
-                let (trig_u, trig_v) = trig.at(&L::TRIG_U, &L::TRIG_V, &predicted, &v);
-                self.model
-                    .kinematics_with_trig(&predicted, &v, &trig_u, &trig_v, &self.dir, &zero)
-            } else {
-                self.model.kinematics(&predicted, &v, &self.dir, &zero)
+            // Newton from the prediction: usually one evaluation, whose
+            // correction is at rounding level already; a few more where the
+            // steps are coarse.
+            let mut x = predicted;
+            let mut k = self.evaluate(&x, &v, carries, trig);
+            let mut inverse = lag.unwrap_or(k.inverse);
+            let mut iterations = 1;
+            let converged = loop {
+                let regular = (k.rcond >= min_rcond)
+                    & (k.det * sign > 0.0)
+                    & ((k.udot.sum() + k.uddot.sum()).abs() <= f64::MAX);
+                if !regular {
+                    break false;
+                }
+                let newton = inverse * k.psi;
+                x -= newton;
+                if within(&newton, FAST_ACCEPT * scale) {
+                    break within(&k.psi, options.options.residual_tol);
+                }
+                if iterations == FAST_ITERATIONS {
+                    break false;
+                }
+                k = self.evaluate(&x, &v, carries, trig);
+                inverse = k.inverse;
+                iterations += 1;
             };
-            let regular = (k.rcond >= min_rcond)
-                & within(&k.psi, options.options.residual_tol)
-                & (k.det * sign > 0.0)
-                & ((k.udot.sum() + k.uddot.sum()).abs() <= f64::MAX);
-            if !regular {
+            if !converged {
                 break;
             }
-            let inverse = lag.as_ref().unwrap_or(&k.inverse);
-            let newton = inverse * k.psi;
-            if !within(&newton, FAST_ACCEPT * scale) {
-                break;
+            if iterations > 1 {
+                // Continuous with the prediction, as in `attempt`.
+                let step = (predicted - state.u).amax();
+                let floor = 1e-9 * scale;
+                if !within(
+                    &(x - predicted),
+                    options.continuity * step.max(floor) + floor,
+                ) {
+                    break;
+                }
             }
             let next = State {
                 t,
-                u: predicted - newton,
+                u: x,
                 du: k.udot,
                 ddu: k.uddot,
                 det: k.det,
                 rcond: k.rcond,
-                iterations: 1,
+                iterations,
             };
             lag = Some(k.inverse);
             previous = state;

@@ -1,0 +1,126 @@
+//! Many independent analyses at once, in parallel on rayon's thread pool.
+//!
+//! Optimising a design means analysing thousands of parameter sets; each is
+//! independent of the others, so they spread over the cores with nothing
+//! shared but the read-only jobs. The results come back in the jobs' order,
+//! one `Result` per job: a design that cannot be assembled is an `Err` in
+//! its slot and does not stop the others.
+//!
+//! The work runs on the current rayon pool: the global one (sized by
+//! `RAYON_NUM_THREADS`, by default one thread per core), or one of your own
+//! through [`rayon::ThreadPool::install`] (re-exported as
+//! [`linkage::rayon`](crate::rayon)).
+//!
+//! ```
+//! use linkage::prelude::*;
+//! use linkage::batch::{self, SweepJob};
+//!
+//! #[linkage::linkage(
+//!     u = [theta3, theta4],
+//!     v = [theta2],
+//!     closure = [
+//!         l2 * theta2.cos() + l3 * theta3.cos() + l4 * theta4.cos() - l1,
+//!         l2 * theta2.sin() + l3 * theta3.sin() + l4 * theta4.sin(),
+//!     ],
+//! )]
+//! #[derive(Clone, Copy, Debug)]
+//! pub struct FourBar { pub l1: f64, pub l2: f64, pub l3: f64, pub l4: f64 }
+//!
+//! // Crank-rockers with couplers from 45 to 55: the largest angular
+//! // acceleration of the rocker over a revolution at ω2 = 10 rad/s.
+//! let jobs: Vec<SweepJob<FourBar, 2, 1>> = (0..11)
+//!     .map(|k| SweepJob {
+//!         model: FourBar { l1: 80.0, l2: 20.0, l3: 45.0 + k as f64, l4: 70.0 },
+//!         u0: vector![1.2, -0.8],
+//!         drive: Drive::Line { from: vector![0.0], to: vector![std::f64::consts::TAU], steps: 3600 },
+//!     })
+//!     .collect();
+//! let options = SweepOptions { speed: 10.0, ..SweepOptions::default() };
+//! let peaks = batch::sweeps(&jobs, &options, |_| 0.0_f64, |peak, pose| {
+//!     *peak = peak.max(pose.uddot[1].abs());
+//! });
+//! for result in &peaks {
+//!     let swept = result.as_ref().expect("every design assembles");
+//!     assert!(swept.summary.complete && swept.value > 0.0);
+//! }
+//! ```
+
+use linkage_runtime::{Analysis, Drive, Error, Linkage, Options, SweepOptions, SweepSummary};
+use nalgebra::SVector;
+use rayon::prelude::*;
+
+/// One sweep of a batch: a model (a parameter set), the guess of its
+/// starting pose and its drive.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SweepJob<L, const M: usize, const F: usize> {
+    pub model: L,
+    pub u0: SVector<f64, M>,
+    pub drive: Drive<F>,
+}
+
+/// The outcome of one sweep of a batch: what `on_pose` made of its poses,
+/// and the sweep's summary (its events, whether it went the whole way).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Swept<A, const M: usize, const F: usize> {
+    pub value: A,
+    pub summary: SweepSummary<M, F>,
+}
+
+/// Runs every job's sweep ([`Linkage::sweep_each`]) in parallel. Each sweep
+/// starts from `init(job index)` and folds its poses into it with
+/// `on_pose`, in order; the poses themselves are not kept, so a batch of
+/// millions of poses runs in the memory of its accumulators.
+///
+/// Each result equals, to the bit, what the same sweep gives alone: the jobs
+/// share nothing.
+pub fn sweeps<L, A, I, P, const M: usize, const F: usize>(
+    jobs: &[SweepJob<L, M, F>],
+    options: &SweepOptions,
+    init: I,
+    on_pose: P,
+) -> Vec<Result<Swept<A, M, F>, Error>>
+where
+    L: Linkage<M, F> + Sync,
+    A: Send,
+    I: Fn(usize) -> A + Sync,
+    P: Fn(&mut A, &linkage_runtime::SweepPose<M, F>) + Sync,
+{
+    jobs.par_iter()
+        .enumerate()
+        .map(|(k, job)| {
+            let mut value = init(k);
+            let summary = job.model.sweep_each(&job.u0, &job.drive, options, |pose| {
+                on_pose(&mut value, pose)
+            })?;
+            Ok(Swept { value, summary })
+        })
+        .collect()
+}
+
+/// One pose of a batch of analyses ([`Linkage::analyze`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct AnalysisJob<L, const M: usize, const F: usize> {
+    pub model: L,
+    pub u_guess: SVector<f64, M>,
+    pub v: SVector<f64, F>,
+    pub vdot: SVector<f64, F>,
+    pub vddot: SVector<f64, F>,
+}
+
+/// Runs every job's [`Linkage::analyze`] in parallel.
+#[allow(clippy::type_complexity)]
+pub fn analyses<L, const M: usize, const F: usize>(
+    jobs: &[AnalysisJob<L, M, F>],
+    options: &Options,
+) -> Vec<Result<Analysis<M, F, L::Points>, Error>>
+where
+    L: Linkage<M, F> + Sync,
+    L::Points: Send,
+{
+    jobs.par_iter()
+        .map(|job| {
+            job.model
+                .analyze(&job.u_guess, &job.v, &job.vdot, &job.vddot, options)
+        })
+        .collect()
+}
