@@ -525,7 +525,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             .min_rcond_acceleration
             .max(self.min_rcond_velocity)
             .max(REGULAR_RCOND);
-        let sign = at.track.regular.det.signum();
+        let sign = at.track.sign;
         let (h, stride) = (direction, direction as i64);
         let (mut state, mut previous) = (at.track.state, at.previous_grid);
         // Ψ_u⁻¹ one step back, once the run has taken a step (`previous` then
@@ -598,7 +598,10 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
                 rcond: k.rcond,
                 iterations,
             };
-            lag = Some(k.inverse);
+            // Where one evaluation was not enough (a coarse grid), the next
+            // step starts with a fresh inverse and the current analogs: a
+            // chord step would only cost another evaluation there.
+            lag = (iterations == 1).then_some(k.inverse);
             previous = state;
             state = next;
             taken += 1;
@@ -675,12 +678,18 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             match self.attempt(&source, t_try) {
                 Ok(next) => {
                     let regular = track.regular;
-                    if next.det != 0.0 && next.det.signum() != regular.det.signum() {
+                    if next.det != 0.0 && next.det.signum() != track.sign {
                         match self.locate_crossing(&regular, &next) {
-                            Some(event) => events.push(Event {
-                                after: recorded,
-                                ..event
-                            }),
+                            Some(event) => {
+                                events.push(Event {
+                                    after: recorded,
+                                    ..event
+                                });
+                                // Crossed: the branch goes on with the other
+                                // sign, even if `next` is too singular to
+                                // show it.
+                                track.sign = -track.sign;
+                            }
                             None => {
                                 // A jump to the mirror branch, not a crossing.
                                 delta *= 0.5;
@@ -707,6 +716,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
                                 after: recorded,
                                 ..event
                             });
+                            track.sign = -track.sign;
                             track.accept(next);
                             delta = target - track.state.t;
                             continue;
@@ -794,7 +804,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         while h <= limit {
             let t = track.state.t + direction * h;
             if let Ok(next) = self.attempt(&from, t) {
-                if next.det != 0.0 && next.det.signum() != regular.det.signum() {
+                if next.det != 0.0 && next.det.signum() != track.sign {
                     return self
                         .locate_crossing(&regular, &next)
                         .map(|event| (next, event));
@@ -1000,12 +1010,14 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
 /// for prediction, nor its det's sign for the branch.
 const REGULAR_RCOND: f64 = 1e-8;
 
-/// The current state and the last well-conditioned one (which gives the
-/// branch's sign and the predictor near singular poses).
+/// The current state, the last well-conditioned one (the predictor near
+/// singular poses) and the sign of det Ψ_u on the branch: that of the last
+/// well-conditioned state, flipped at each located branch-point crossing.
 #[derive(Clone, Copy, Debug)]
 struct Track<const M: usize, const F: usize> {
     state: State<M, F>,
     regular: State<M, F>,
+    sign: f64,
 }
 
 impl<const M: usize, const F: usize> Track<M, F> {
@@ -1013,6 +1025,7 @@ impl<const M: usize, const F: usize> Track<M, F> {
         Track {
             state,
             regular: state,
+            sign: state.det.signum(),
         }
     }
 
@@ -1020,6 +1033,7 @@ impl<const M: usize, const F: usize> Track<M, F> {
         self.state = next;
         if next.rcond >= REGULAR_RCOND {
             self.regular = next;
+            self.sign = next.det.signum();
         }
     }
 
