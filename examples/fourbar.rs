@@ -90,7 +90,7 @@ fn heading(title: &str) {
     println!("\n{title}\n{}", "─".repeat(title.chars().count()));
 }
 
-fn main() -> Result<(), Error> {
+fn main() -> Result<(), Box<dyn std::error::Error>> {
     let bar = FourBar {
         l1: 80.0,
         l2: 20.0,
@@ -235,5 +235,78 @@ fn main() -> Result<(), Error> {
         "\nThe worksheet worked with 10 digits (Digits = 10); its last digits differ from the exact \
          values by up to 2e-9 relative. Ours agree with the 50-digit reference to 1e-15 (cargo test)."
     );
+
+    heading("Pictures");
+    for path in pictures(&bar, &analysis, omega2)? {
+        println!("wrote {}", path.display());
+    }
     Ok(())
+}
+
+/// The worksheet's drawing (θ2 = 20°, velocity scale 0.02, acceleration
+/// scale 0.0005), an animation of a revolution and the motion diagrams,
+/// written to `docs/figures/fourbar/`.
+fn pictures(
+    bar: &FourBar,
+    analysis: &Analysis<2, 1, [Vector2<f64>; 5]>,
+    omega2: f64,
+) -> Result<Vec<std::path::PathBuf>, Box<dyn std::error::Error>> {
+    use linkage::scene::{Frame, Scene};
+    let folder = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/figures/fourbar");
+    std::fs::create_dir_all(&folder)?;
+    // A revolution at ω2 = 400 rpm, by continuation from the worksheet's
+    // pose.
+    let drive = Drive::Line {
+        from: vector![20f64.to_radians()],
+        to: vector![20f64.to_radians() + TAU],
+        steps: 360,
+    };
+    let options = SweepOptions {
+        speed: omega2,
+        ..SweepOptions::default()
+    };
+    let sweep = bar.sweep(&analysis.u, &drive, &options)?;
+    let cycle: Vec<Frame> = sweep
+        .poses
+        .iter()
+        .map(|pose| Frame::from_sweep_pose(bar, pose))
+        .collect();
+    let scene = Scene::new()
+        .ground("A", [0.0, 0.0])
+        .ground("D", [bar.l1, 0.0])
+        .link(["A", "B"])
+        .link(["B", "C"])
+        .link(["C", "D"])
+        .velocities(["G2", "G3", "G4"])
+        .accelerations(["G2", "G3", "G4"])
+        .velocity_scale(0.02)
+        .acceleration_scale(0.0005)
+        .trace(["G3"])
+        .title("The four-bar at θ₂ = 20°, ω₂ = 400 rpm");
+    let mut written = Vec::new();
+    let path = folder.join("scene.svg");
+    std::fs::write(
+        &path,
+        scene.render(&Frame::from_analysis::<FourBar, 2, 1>(analysis), &cycle)?,
+    )?;
+    written.push(path);
+    let path = folder.join("animation.svg");
+    let frames: Vec<Frame> = cycle.iter().step_by(3).cloned().collect();
+    std::fs::write(
+        &path,
+        scene
+            .clone()
+            .title("A revolution of the crank, slowed down")
+            .animate(&frames, 4.0)?,
+    )?;
+    written.push(path);
+    let path = folder.join("motion.svg");
+    std::fs::write(
+        &path,
+        linkage::diagrams::Diagrams::new()
+            .title("θ₃, θ₄ and their rates over a revolution at ω₂ = 400 rpm")
+            .render(bar, &sweep)?,
+    )?;
+    written.push(path);
+    Ok(written)
 }

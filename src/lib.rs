@@ -49,6 +49,9 @@ extern crate self as linkage;
 
 pub mod batch;
 pub mod closed_form;
+pub mod diagrams;
+pub mod scene;
+mod svg;
 
 pub use linkage_macros::linkage;
 pub use linkage_runtime::*;

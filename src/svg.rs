@@ -1,0 +1,156 @@
+//! A small SVG writer: elements with escaped attributes and text, numbers
+//! to a hundredth of a pixel.
+
+use std::fmt::Write as _;
+
+/// An SVG document being written.
+pub(crate) struct Writer {
+    out: String,
+    depth: usize,
+}
+
+impl Writer {
+    /// A document of `width` × `height` pixels.
+    pub(crate) fn svg(width: f64, height: f64) -> Writer {
+        let mut out = String::new();
+        let _ = writeln!(
+            out,
+            r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}">"#,
+            w = fmt(width),
+            h = fmt(height)
+        );
+        Writer { out, depth: 1 }
+    }
+
+    fn start(&mut self, name: &str, attributes: &[(&str, &str)]) {
+        self.out.push_str(&"  ".repeat(self.depth));
+        self.out.push('<');
+        self.out.push_str(name);
+        for (key, value) in attributes {
+            let _ = write!(self.out, r#" {key}="{}""#, escape(value));
+        }
+    }
+
+    /// `<name …/>`
+    pub(crate) fn element(&mut self, name: &str, attributes: &[(&str, &str)]) {
+        self.start(name, attributes);
+        self.out.push_str("/>\n");
+    }
+
+    /// `<name …>`, to be closed by [`Writer::close`].
+    pub(crate) fn open(&mut self, name: &str, attributes: &[(&str, &str)]) {
+        self.start(name, attributes);
+        self.out.push_str(">\n");
+        self.depth += 1;
+    }
+
+    /// Text content, escaped.
+    pub(crate) fn text(&mut self, text: &str) {
+        self.out.push_str(&"  ".repeat(self.depth));
+        self.out.push_str(&escape(text));
+        self.out.push('\n');
+    }
+
+    pub(crate) fn close(&mut self, name: &str) {
+        self.depth = self.depth.saturating_sub(1);
+        self.out.push_str(&"  ".repeat(self.depth));
+        let _ = writeln!(self.out, "</{name}>");
+    }
+
+    pub(crate) fn finish(mut self) -> String {
+        self.out.push_str("</svg>\n");
+        self.out
+    }
+}
+
+/// A coordinate to 0.01 px, without trailing zeros ("12.5", "-3", "0").
+pub(crate) fn fmt(x: f64) -> String {
+    let text = format!("{x:.2}");
+    let text = text.trim_end_matches('0').trim_end_matches('.');
+    if text == "-0" {
+        "0".into()
+    } else {
+        text.into()
+    }
+}
+
+/// A name as a textbook prints it: a Greek letter's name as the letter,
+/// trailing digits as subscripts (theta3 → θ₃, G2 → G₂, s → s).
+pub(crate) fn pretty_name(name: &str) -> String {
+    const GREEK: [(&str, &str); 24] = [
+        ("alpha", "α"),
+        ("beta", "β"),
+        ("gamma", "γ"),
+        ("delta", "δ"),
+        ("epsilon", "ε"),
+        ("zeta", "ζ"),
+        ("eta", "η"),
+        ("theta", "θ"),
+        ("iota", "ι"),
+        ("kappa", "κ"),
+        ("lambda", "λ"),
+        ("mu", "μ"),
+        ("nu", "ν"),
+        ("xi", "ξ"),
+        ("omicron", "ο"),
+        ("pi", "π"),
+        ("rho", "ρ"),
+        ("sigma", "σ"),
+        ("tau", "τ"),
+        ("upsilon", "υ"),
+        ("phi", "φ"),
+        ("chi", "χ"),
+        ("psi", "ψ"),
+        ("omega", "ω"),
+    ];
+    let stem_end = name.trim_end_matches(|c: char| c.is_ascii_digit()).len();
+    let (stem, digits) = name.split_at(stem_end);
+    let stem = stem.strip_suffix('_').unwrap_or(stem);
+    let letter = GREEK
+        .iter()
+        .find(|(word, _)| *word == stem)
+        .map_or(stem, |(_, letter)| *letter);
+    if stem.is_empty() {
+        return name.to_string();
+    }
+    let sub: String = digits
+        .chars()
+        .map(|c| char::from_u32(0x2080 + c.to_digit(10).unwrap_or(0)).unwrap_or(c))
+        .collect();
+    format!("{letter}{sub}")
+}
+
+fn escape(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&apos;"),
+            _ => out.push(c),
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_and_escapes() {
+        assert_eq!(fmt(12.3049), "12.3");
+        assert_eq!(fmt(-0.001), "0");
+        assert_eq!(fmt(5.0), "5");
+        assert_eq!(fmt(-2.255), "-2.25");
+        assert_eq!(escape(r#"a<b & "c""#), "a&lt;b &amp; &quot;c&quot;");
+        assert_eq!(pretty_name("theta3"), "θ₃");
+        assert_eq!(pretty_name("G2"), "G₂");
+        assert_eq!(pretty_name("phi_12"), "φ₁₂");
+        assert_eq!(pretty_name("s"), "s");
+        assert_eq!(pretty_name("P"), "P");
+        assert_eq!(pretty_name("42"), "42");
+    }
+}
