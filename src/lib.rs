@@ -50,6 +50,7 @@ extern crate self as linkage;
 pub mod batch;
 pub mod closed_form;
 pub mod diagrams;
+pub mod dynamics;
 pub mod scene;
 mod svg;
 

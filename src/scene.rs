@@ -172,6 +172,19 @@ enum Body {
 struct Slider {
     point: String,
     angle: f64,
+    guide: Guide,
+}
+
+/// What a slider block slides on.
+#[derive(Clone, Debug, PartialEq)]
+enum Guide {
+    /// A fixed straight guide at the slider's angle, drawn hatched.
+    Ground,
+    /// A link: the block turns with the line from the first point to the
+    /// second (the link itself is drawn as a body).
+    Link([String; 2]),
+    /// A slot in a moving body at a fixed angle, drawn with that body.
+    Slot,
 }
 
 /// What a picture of the mechanism shows (see the module documentation).
@@ -268,6 +281,29 @@ impl Scene {
         self.sliders.push(Slider {
             point: point.into(),
             angle,
+            guide: Guide::Ground,
+        });
+        self
+    }
+
+    /// A slider block at `point` sliding along the link through `line`
+    /// (its two points): the block turns with the link.
+    pub fn slider_on(mut self, point: &str, line: [&str; 2]) -> Scene {
+        self.sliders.push(Slider {
+            point: point.into(),
+            angle: 0.0,
+            guide: Guide::Link(line.map(String::from)),
+        });
+        self
+    }
+
+    /// A slider block at `point` in a slot at a fixed `angle` (rad) of a
+    /// translating body, such as a ram: no ground guide is drawn.
+    pub fn block(mut self, point: &str, angle: f64) -> Scene {
+        self.sliders.push(Slider {
+            point: point.into(),
+            angle,
+            guide: Guide::Slot,
         });
         self
     }
@@ -399,8 +435,13 @@ impl Scene {
             Body::Bar(ends) => ends.as_slice(),
             Body::Plate(corners) => corners.as_slice(),
         });
+        let guides = self.sliders.iter().flat_map(|s| match &s.guide {
+            Guide::Link(line) => line.as_slice(),
+            _ => &[],
+        });
         bodies
             .chain(self.sliders.iter().map(|s| &s.point))
+            .chain(guides)
             .chain(&self.velocity_arrows)
             .chain(&self.acceleration_arrows)
             .chain(&self.traces)
@@ -587,7 +628,7 @@ impl Scene {
         frames: &[Frame],
         cycle: &[Frame],
     ) -> Result<(), SceneError> {
-        for slider in &self.sliders {
+        for slider in self.sliders.iter().filter(|s| s.guide == Guide::Ground) {
             let dir = Vector2::new(slider.angle.cos(), slider.angle.sin());
             let mut range = (f64::INFINITY, f64::NEG_INFINITY);
             let mut origin = None;
@@ -696,14 +737,45 @@ impl Scene {
                     ],
                 );
             }
-            // Screen y points down: the guide's screen angle is −angle.
+            // The block's angle on the screen (y points down there).
+            let degrees = |f: &Placed| match &slider.guide {
+                Guide::Link([a, b]) => {
+                    let d = f.get(b) - f.get(a);
+                    d.y.atan2(d.x).to_degrees()
+                }
+                _ => -slider.angle.to_degrees(),
+            };
             w.open(
                 "g",
-                &[(
-                    "transform",
-                    &format!("rotate({})", fmt(-slider.angle.to_degrees())),
-                )],
+                &[("transform", &format!("rotate({})", fmt(degrees(at))))],
             );
+            if let (Some(m), Guide::Link(_)) = (motion, &slider.guide) {
+                // Unwrapped, so that the block does not spin round at ±180°.
+                let mut previous: Option<f64> = None;
+                let values: Vec<String> = m
+                    .frames
+                    .iter()
+                    .map(|f| {
+                        let mut a = degrees(f);
+                        if let Some(p) = previous {
+                            a += 360.0 * ((p - a) / 360.0).round();
+                        }
+                        previous = Some(a);
+                        fmt(a)
+                    })
+                    .collect();
+                w.element(
+                    "animateTransform",
+                    &[
+                        ("attributeName", "transform"),
+                        ("type", "rotate"),
+                        ("dur", &format!("{}s", fmt(m.seconds))),
+                        ("repeatCount", "indefinite"),
+                        ("calcMode", "linear"),
+                        ("values", &values.join(";")),
+                    ],
+                );
+            }
             w.element(
                 "rect",
                 &[
@@ -953,7 +1025,12 @@ impl Scene {
         for slider in &self.sliders {
             // The block's outline (30 × 18 px).
             let p = at.get(&slider.point);
-            let along = Vector2::new(slider.angle.cos(), -slider.angle.sin());
+            let along = match &slider.guide {
+                Guide::Link([a, b]) => (at.get(b) - at.get(a))
+                    .try_normalize(1e-12)
+                    .unwrap_or(Vector2::x()),
+                _ => Vector2::new(slider.angle.cos(), -slider.angle.sin()),
+            };
             let across = Vector2::new(-along.y, along.x);
             let corners = [(-15.0, -9.0), (15.0, -9.0), (15.0, 9.0), (-15.0, 9.0)]
                 .map(|(a, c)| p + along * a + across * c);

@@ -1,0 +1,388 @@
+//! The shaping machine of the Mathcad course project (seed 002), first
+//! half: the slotted-lever mechanism synthesised from K_V, H and l_OC; its
+//! positions and kinematic analogs at the seed's position f (crank at 60°);
+//! reduced inertias and moments; work; the flywheel by the energy method;
+//! ω1 and ε1; the motor, gear and flywheel rim — each beside the number the
+//! seed printed and the 50-digit reference — and then what the seed could
+//! not do: the machine's real motion with that flywheel.
+//!
+//! Writes `docs/figures/shaper/diagrams.svg` (J, M, A, ΔT_I, ω1, ε1 over a
+//! cycle) and `docs/figures/shaper/mechanism.svg` (the mechanism at f).
+//!
+//!     cargo run --release --example shaper
+
+mod machine;
+
+use linkage::diagrams::{Chart, Panel};
+use linkage::dynamics::{Applied, Motor, flywheel};
+use linkage::prelude::*;
+use linkage::scene::{Frame, Scene};
+use machine::{SEED, Shaper, machine, synthesize};
+use std::collections::HashMap;
+use std::f64::consts::{PI, TAU};
+
+/// The 50-digit reference and the seed's printed numbers
+/// (tests/data/shaper_cam_reference.csv): key → (exact, printed).
+fn reference() -> HashMap<String, (f64, String)> {
+    include_str!("../../tests/data/shaper_cam_reference.csv")
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with("key,"))
+        .map(|l| {
+            let cols: Vec<&str> = l.split(',').collect();
+            (
+                cols[0].to_string(),
+                (cols[1].parse().unwrap_or(f64::NAN), cols[2].to_string()),
+            )
+        })
+        .collect()
+}
+
+/// Why a printed number differs from the exact one (SEED_NOTES, kept in
+/// tests/data/README.md).
+fn note(key: &str) -> &'static str {
+    match key {
+        "A_C_f" | "A_C_2pi" | "dT_Imin" | "dT_Imax" => "seed: Mathcad quadrature, 1.7e-4",
+        "M_PRDsr" | "A_D_f" | "A_Sigma_f" | "dT_I_f" | "J_PRI" | "eps_n" | "eps1_min"
+        | "eps1_max" | "m1" => "seed: inherits the quadrature",
+        _ => "",
+    }
+}
+
+/// Half a unit of the last printed digit: "102.041" → 0.0005.
+fn half_unit(text: &str) -> f64 {
+    let (mantissa, exponent) = match text.split_once('e') {
+        Some((m, e)) => (m, e.parse::<i32>().unwrap_or(0)),
+        None => (text, 0),
+    };
+    let decimals = mantissa.split_once('.').map_or(0, |(_, d)| d.len()) as i32;
+    0.5 * 10f64.powi(exponent - decimals)
+}
+
+struct Table {
+    reference: HashMap<String, (f64, String)>,
+}
+
+impl Table {
+    fn heading(&self, title: &str) {
+        println!("\n{title}\n{}", "─".repeat(title.chars().count()));
+        println!(
+            "{:<26} {:>22}  {:>12}  {:>9}  {:>9}",
+            "", "ours", "seed", "vs seed¹", "vs exact²"
+        );
+    }
+
+    fn row(&self, label: &str, key: &str, ours: f64) {
+        let (exact, printed) = self
+            .reference
+            .get(&format!("shaper.{key}"))
+            .cloned()
+            .unwrap_or((f64::NAN, String::new()));
+        let relative = |x: f64| {
+            if x == 0.0 {
+                format!("{:.1e}", ours.abs())
+            } else {
+                format!("{:.1e}", ((ours - x) / x).abs())
+            }
+        };
+        // Within the printed digits: ✓; else the relative difference.
+        let vs_seed = printed.parse::<f64>().map_or_else(
+            |_| "—".to_string(),
+            |seed| {
+                if (ours - seed).abs() <= half_unit(&printed) * (1.0 + 1e-9) {
+                    "✓".to_string()
+                } else {
+                    relative(seed)
+                }
+            },
+        );
+        let vs_exact = if exact.is_nan() {
+            "—".to_string()
+        } else {
+            relative(exact)
+        };
+        let printed = if printed.is_empty() {
+            "—".to_string()
+        } else {
+            printed
+        };
+        println!(
+            "{label:<26} {ours:>22.15}  {printed:>12}  {vs_seed:>9}  {vs_exact:>9}  {}",
+            note(key)
+        );
+    }
+}
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let data = SEED;
+    let shaper = synthesize(&data);
+    let m = machine(&shaper, &data)?;
+    let t = Table {
+        reference: reference(),
+    };
+    let f = shaper.seed_position();
+    let omega = TAU * data.n1;
+    println!("The shaping machine of the course project (seed 002), by linkage");
+    println!(
+        "¹ ✓: within the seed's printed digits; else the relative difference, explained in the last column.\n\
+         ² against the 50-digit reference (tests/data/shaper_cam_reference.csv)."
+    );
+    println!(
+        "K_V = {}, H = {} m (assumed: the seed never defines it), l_OC = {} m, n1 = 73 rpm, δ = {}",
+        data.k_v, data.stroke, data.l_oc, data.delta
+    );
+
+    t.heading("1. Link lengths (synthesis from K_V, H, l_OC)");
+    t.row("β [rad]", "beta", shaper.beta());
+    t.row("l_CD [m]", "l_CD", shaper.l_cd);
+    t.row("l_OA [m]", "l_OA", shaper.l_oa);
+    t.row("y_F [m]", "y_F", shaper.y_f);
+    t.row("φ0 [°]", "phi0_deg", shaper.phi0.to_degrees());
+    t.row("f [°]", "f_deg", f.to_degrees());
+    t.row("ω_1cp [rad/s]", "omega1cp", omega);
+
+    let a = m.analysis(f)?;
+    let index = |name| Shaper::point_index(name).expect("a point of the shaper");
+    let (pa, pd, ps3) = (index("A"), index("D"), index("S3"));
+    t.heading("2. Positions at f (Newton on the generated closure equations)");
+    t.row("x_A [m]", "x_A", a.points[pa].x);
+    t.row("y_A [m]", "y_A", a.points[pa].y);
+    t.row("φ3 [°]", "phi3_deg", a.u[0].to_degrees());
+    t.row("x_D [m]", "x_D", a.points[pd].x);
+    t.row("y_D [m]", "y_D", a.points[pd].y);
+    t.row("x_S3 [m]", "x_S3", a.points[ps3].x);
+    t.row("y_S3 [m]", "y_S3", a.points[ps3].y);
+
+    t.heading("3. Kinematic analogs at f (generated derivatives, not finite differences)");
+    t.row("v_qDx [m]", "v_qDx", a.point_velocities[pd].x);
+    t.row("v_qS3x [m]", "v_qS3x", a.point_velocities[ps3].x);
+    t.row("v_qS3y [m]", "v_qS3y", a.point_velocities[ps3].y);
+    t.row("ω_q3", "omega_q3", a.udot[0]);
+    t.row("a_qDx [m]", "a_qDx", a.point_accelerations[pd].x);
+    t.row("a_qS3x [m]", "a_qS3x", a.point_accelerations[ps3].x);
+    t.row("a_qS3y [m]", "a_qS3y", a.point_accelerations[ps3].y);
+    t.row("ε_q3", "eps_q3", a.uddot[0]);
+
+    let r = m.reduced(f)?;
+    t.heading("4. Reduced moments of inertia at f [kg·m²]");
+    t.row("J_PR3j = I_3S ω_q3²", "J_PR3j", r.bodies[0][0]);
+    t.row("J_PR3m = m3 v_qS3²", "J_PR3m", r.bodies[0][1]);
+    t.row("J_PR5m = m5 v_qD²", "J_PR5m", r.bodies[1][1]);
+    t.row("J_PRII", "J_PRII", r.inertia);
+    t.row("dJ_PR3j/dφ", "dJ_PR3j", r.bodies[0][2]);
+    t.row("dJ_PR3m/dφ", "dJ_PR3m", r.bodies[0][3]);
+    t.row("dJ_PR5m/dφ", "dJ_PR5m", r.bodies[1][3]);
+    t.row("dJ_PRII/dφ", "dJ_PRII", r.inertia_derivative);
+
+    let pose = m.pose(f)?;
+    let cutting = m
+        .applied(&pose)
+        .into_iter()
+        .find_map(|(load, applied)| match applied {
+            Applied::Force { force, .. } if load == 0 => Some(force.x),
+            _ => None,
+        })
+        .unwrap_or(f64::NAN);
+    t.heading("5. Loads and reduced moments at f [N, N·m]");
+    t.row("F_Cx", "F_Cx_f", cutting);
+    t.row("M_PRFC (cutting)", "M_PRFC", r.loads[0]);
+    t.row("M_PRFtr (friction)", "M_PRFtr", r.loads[1]);
+    t.row("M_PRG3 (gravity)", "M_PRG3", r.loads[2]);
+
+    let md = m.mean_driving_moment();
+    let e = m.energy_method(omega, data.delta)?;
+    t.heading("6. Work and the flywheel by the energy method [J, N·m, kg·m²]");
+    t.row("A_C(f)", "A_C_f", m.work(f)?);
+    t.row("A_C(2π)", "A_C_2pi", m.cycle_work());
+    t.row("M_PRDsr = −A_C(2π)/2π", "M_PRDsr", md);
+    t.row("A_D(f)", "A_D_f", md * f);
+    t.row("A_Σ(f)", "A_Sigma_f", m.work(f)? + md * f);
+    t.row("ΔT_I(f)", "dT_I_f", e.delta_t(f)?);
+    t.row("φ at min ΔT_I [rad]", "phi_min", e.minimum.0);
+    t.row("ΔT_Imin", "dT_Imin", e.minimum.1);
+    t.row("φ at max ΔT_I [rad]", "phi_max", e.maximum.0);
+    t.row("ΔT_Imax", "dT_Imax", e.maximum.1);
+    t.row("J_PRI", "J_PRI", e.flywheel);
+
+    let ratio = data.n_motor / data.n1;
+    let j_m = flywheel::on_motor_shaft(
+        e.flywheel,
+        ratio,
+        flywheel::from_md2(data.md2_motor),
+        flywheel::from_md2(data.md2_gears),
+    );
+    let rim = flywheel::Rim::course_rule(j_m);
+    t.heading("7. Motor, gear and the flywheel's rim");
+    t.row("u = n_d/n_1", "u_motor_to_crank", ratio);
+    t.row("J_m (motor shaft) [kg·m²]", "J_m", j_m);
+    t.row("D2 [m]", "D2", rim.outer);
+    t.row("D1 [m]", "D1", rim.inner);
+    t.row("b [m]", "b", rim.width);
+    t.row("m1 [kg]", "m1", rim.mass);
+
+    let (w_min, w_max) = e.omega_extremes();
+    let (eps_min, eps_max) = e.epsilon_extremes()?;
+    t.heading("8. The crank's speed and acceleration [rad/s, rad/s²]");
+    t.row("ω1(f)", "omega1_f", e.omega(f)?);
+    t.row("ε1(f)", "eps1_f", e.epsilon(f)?);
+    t.row("ω_n = ω1(0)", "omega_n", e.omega(0.0)?);
+    t.row("ε_n = ε1(0)", "eps_n", e.epsilon(0.0)?);
+    t.row("ω1min", "omega1_min", w_min.1);
+    t.row("ω1max", "omega1_max", w_max.1);
+    t.row("ε1min (at φ_min2)", "eps1_min", eps_min.1);
+    t.row("ε1max", "eps1_max", eps_max.1);
+    println!(
+        "(the seed's ε1min is printed for φ_min2; its formula reads ε1(φ_min) = {:.6}, the slip SEED_NOTES §2.4 describes)",
+        e.epsilon(e.minimum.0)?
+    );
+
+    let real = m.steady_motion(e.flywheel, Motor::Constant { moment: md }, omega)?;
+    println!(
+        "\n9. Beyond the seed: the real motion with J_PRI = {:.4} kg·m²",
+        e.flywheel
+    );
+    println!("─────────────────────────────────────────────────────────────");
+    println!(
+        "(J_PRI + J_II(φ))·ε + ½·J_II′(φ)·ω² = M_C(φ) + M_PRDsr, integrated over the cycle (RK4 on the kinetic energy, split at the loads' kinks),\n\
+         periodic with ½(ω_max + ω_min) = ω_1cp:"
+    );
+    println!(
+        "ω_min = {:.6} rad/s at φ = {:.4}, ω_max = {:.6} rad/s at φ = {:.4}",
+        real.omega_min.1, real.omega_min.0, real.omega_max.1, real.omega_max.0
+    );
+    println!(
+        "speed fluctuation achieved δ = {:.5}, against the target δ = {} (the energy method's flywheel is {:.1} % more than needed);\n\
+         the energy method's ω1 range is {:.6} … {:.6}; a cycle takes {:.5} s (2π/ω_1cp = {:.5} s).",
+        real.delta,
+        data.delta,
+        100.0 * (data.delta - real.delta) / data.delta,
+        w_min.1,
+        w_max.1,
+        real.period,
+        TAU / omega
+    );
+
+    // The diagrams.
+    let folder = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/figures/shaper");
+    std::fs::create_dir_all(&folder)?;
+    let phis: Vec<f64> = (0..=720).map(|k| k as f64 * TAU / 720.0).collect();
+    let reduced: Vec<_> = phis
+        .iter()
+        .map(|&p| m.reduced(p))
+        .collect::<Result<_, _>>()?;
+    let work = m.work_along(&phis)?;
+    let deg = |p: f64| p.to_degrees();
+    let curve = |values: &dyn Fn(usize) -> f64| -> Vec<(f64, f64)> {
+        phis.iter()
+            .enumerate()
+            .map(|(k, &p)| (deg(p), values(k)))
+            .collect()
+    };
+    let omega_e: Vec<f64> = phis.iter().map(|&p| e.omega(p)).collect::<Result<_, _>>()?;
+    let eps_e: Vec<f64> = phis
+        .iter()
+        .map(|&p| e.epsilon(p))
+        .collect::<Result<_, _>>()?;
+    let dt: Vec<f64> = phis
+        .iter()
+        .map(|&p| e.delta_t(p))
+        .collect::<Result<_, _>>()?;
+    let real_omega: Vec<(f64, f64)> = real
+        .phi
+        .iter()
+        .zip(&real.omega)
+        .map(|(&p, &w)| (deg(p), w))
+        .collect();
+    let real_eps: Vec<(f64, f64)> = real
+        .phi
+        .iter()
+        .zip(&real.epsilon)
+        .map(|(&p, &w)| (deg(p), w))
+        .collect();
+    let working = deg(PI + shaper.beta());
+    let chart = Chart::new(
+        "The shaping machine over a cycle: reduced dynamics, the flywheel by the energy method, and the real motion",
+        "φ [°]",
+    )
+    .columns(2)
+    .size(1180, 250)
+    .panel(
+        Panel::new("J [kg·m²]")
+            .line("J_II(φ)", curve(&|k| reduced[k].inertia))
+            .dashed("dJ_II/dφ", curve(&|k| reduced[k].inertia_derivative))
+            .mark(working, "end of the working stroke"),
+    )
+    .panel(
+        Panel::new("M [N·m]")
+            .line("M_C(φ)", curve(&|k| reduced[k].moment))
+            .line("cutting", curve(&|k| reduced[k].loads[0]))
+            .line("friction", curve(&|k| reduced[k].loads[1]))
+            .dashed("M_PRDsr", curve(&|_| md)),
+    )
+    .panel(
+        Panel::new("A [J]")
+            .line("A_C(φ)", curve(&|k| work[k]))
+            .line("A_D(φ)", curve(&|k| md * phis[k]))
+            .line("A_Σ(φ)", curve(&|k| work[k] + md * phis[k])),
+    )
+    .panel(
+        Panel::new("ΔT_I [J]")
+            .line("ΔT_I(φ)", curve(&|k| dt[k]))
+            .mark(deg(e.minimum.0), "min")
+            .mark(deg(e.maximum.0), "max"),
+    )
+    .panel(
+        Panel::new("ω1 [rad/s]")
+            .line("energy method", curve(&|k| omega_e[k]))
+            .line("real motion", real_omega),
+    )
+    .panel(
+        Panel::new("ε1 [rad/s²]")
+            .line("energy method", curve(&|k| eps_e[k]))
+            .dashed("real motion", real_eps),
+    );
+    let diagrams = folder.join("diagrams.svg");
+    std::fs::write(&diagrams, chart.render()?)?;
+
+    // The mechanism at f, moving at the speed the energy method gives.
+    let (w, eps) = (e.omega(f)?, e.epsilon(f)?);
+    let frame = Frame::at(
+        &shaper,
+        &a.u,
+        &vector![f],
+        &(a.udot * w),
+        &vector![w],
+        &(a.uddot * (w * w) + a.udot * eps),
+        &vector![eps],
+    );
+    let scene = Scene::new()
+        .ground("O", [0.0, 0.0])
+        .ground("C", [0.0, shaper.y_c])
+        .link(["O", "A"])
+        .link(["C", "D"])
+        .link(["D", "F"])
+        .link(["F", "S5"])
+        .link(["S5", "K"])
+        .slider_on("A", ["C", "D"])
+        .block("D", PI / 2.0)
+        .slider("S5", 0.0)
+        .velocities(["A", "D", "S3"])
+        .accelerations(["S3", "S5"])
+        .trace(["A", "D"])
+        .units("m", "s")
+        .title("The shaper at f (crank at 60°), ω1 = 7.646 rad/s");
+    let cycle: Vec<Frame> = (0..=72)
+        .map(|k| {
+            let phi = k as f64 * TAU / 72.0;
+            m.analysis(phi)
+                .map(|a| Frame::positions(&shaper, &a.u, &vector![phi]))
+        })
+        .collect::<Result<_, _>>()?;
+    let mechanism = folder.join("mechanism.svg");
+    std::fs::write(&mechanism, scene.render(&frame, &cycle)?)?;
+    println!(
+        "\nwrote {}\nwrote {}",
+        diagrams.display(),
+        mechanism.display()
+    );
+    Ok(())
+}

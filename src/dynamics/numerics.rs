@@ -1,0 +1,247 @@
+//! The one-dimensional numerics the dynamics need: adaptive Gauss–Kronrod
+//! quadrature, a bracketed root, and Brent's minimisation.
+
+/// Gauss–Kronrod 7–15 nodes (the positive half) and weights, to the digits
+/// of the published tables.
+#[allow(clippy::excessive_precision)]
+const XGK: [f64; 8] = [
+    0.991_455_371_120_812_639_206_854_697_526_3,
+    0.949_107_912_342_758_524_526_189_684_047_9,
+    0.864_864_423_359_769_072_789_712_788_640_9,
+    0.741_531_185_599_394_439_863_864_773_280_8,
+    0.586_087_235_467_691_130_294_144_845_693_0,
+    0.405_845_151_377_397_166_906_606_412_076_9,
+    0.207_784_955_007_898_467_600_689_403_773_2,
+    0.0,
+];
+#[allow(clippy::excessive_precision)]
+const WGK: [f64; 8] = [
+    0.022_935_322_010_529_224_963_732_008_058_97,
+    0.063_092_092_629_978_553_290_700_663_189_20,
+    0.104_790_010_322_250_183_839_876_322_541_5,
+    0.140_653_259_715_525_918_745_189_590_510_2,
+    0.169_004_726_639_267_902_826_583_426_598_6,
+    0.190_350_578_064_785_409_913_256_402_421_0,
+    0.204_432_940_075_298_892_414_161_999_234_6,
+    0.209_482_141_084_727_828_012_999_174_891_7,
+];
+/// The Gauss 7-point weights, for the nodes XGK[1], XGK[3], XGK[5], XGK[7].
+#[allow(clippy::excessive_precision)]
+const WG: [f64; 4] = [
+    0.129_484_966_168_869_693_270_611_432_679_1,
+    0.279_705_391_489_276_667_901_467_771_423_8,
+    0.381_830_050_505_118_944_950_369_775_489_0,
+    0.417_959_183_673_469_387_755_102_040_816_3,
+];
+
+/// ∫ₐᵇ f, an error estimate, and ∫ₐᵇ |f| (the scale of the rounding), by
+/// one Gauss–Kronrod 15-point rule.
+fn kronrod<E>(
+    f: &mut impl FnMut(f64) -> Result<f64, E>,
+    a: f64,
+    b: f64,
+) -> Result<(f64, f64, f64), E> {
+    let (centre, half) = (0.5 * (a + b), 0.5 * (b - a));
+    let fc = f(centre)?;
+    let mut kronrod = fc * WGK[7];
+    let mut gauss = fc * WG[3];
+    let mut absolute = fc.abs() * WGK[7];
+    for j in 0..7 {
+        let dx = half * XGK[j];
+        let (l, r) = (f(centre - dx)?, f(centre + dx)?);
+        kronrod += WGK[j] * (l + r);
+        absolute += WGK[j] * (l.abs() + r.abs());
+        if j % 2 == 1 {
+            gauss += WG[j / 2] * (l + r);
+        }
+    }
+    Ok((
+        kronrod * half,
+        ((kronrod - gauss) * half).abs(),
+        absolute * half.abs(),
+    ))
+}
+
+/// ∫ₐᵇ f, adaptively bisecting until each piece's estimated error is below
+/// its share of `tolerance` (absolute). For an integrand smooth on [a, b]:
+/// split at its kinks first.
+pub(crate) fn integrate<E>(
+    f: &mut impl FnMut(f64) -> Result<f64, E>,
+    a: f64,
+    b: f64,
+    tolerance: f64,
+) -> Result<f64, E> {
+    if a == b {
+        return Ok(0.0);
+    }
+    let mut total = 0.0;
+    // (a, b, depth); at most 2¹² pieces: beyond that the integrand is not
+    // smooth where the caller says it is, and more pieces will not help.
+    let mut stack = vec![(a, b, 0u32)];
+    let length = (b - a).abs();
+    while let Some((lo, hi, depth)) = stack.pop() {
+        let (value, error, absolute) = kronrod(f, lo, hi)?;
+        let share = tolerance * (hi - lo).abs() / length;
+        // Below the rounding of the sum itself, an estimate means nothing.
+        let noise = 50.0 * f64::EPSILON * absolute;
+        if error <= share.max(noise) || depth >= 12 {
+            total += value;
+        } else {
+            let mid = 0.5 * (lo + hi);
+            stack.push((mid, hi, depth + 1));
+            stack.push((lo, mid, depth + 1));
+        }
+    }
+    Ok(total)
+}
+
+/// A root of g in [a, b], where g(a) and g(b) differ in sign, to the
+/// precision of f64 (bisection safeguarding the secant: Illinois method).
+pub(crate) fn root<E>(
+    g: &mut impl FnMut(f64) -> Result<f64, E>,
+    mut a: f64,
+    mut b: f64,
+) -> Result<f64, E> {
+    let (mut ga, mut gb) = (g(a)?, g(b)?);
+    if ga == 0.0 {
+        return Ok(a);
+    }
+    if gb == 0.0 {
+        return Ok(b);
+    }
+    let mut side = 0;
+    for _ in 0..200 {
+        let x = (a * gb - b * ga) / (gb - ga);
+        let x = if x.is_finite() && x > a.min(b) && x < a.max(b) {
+            x
+        } else {
+            0.5 * (a + b)
+        };
+        let gx = g(x)?;
+        if gx == 0.0 || (b - a).abs() <= 4.0 * f64::EPSILON * x.abs().max(1.0) {
+            return Ok(x);
+        }
+        if (gx > 0.0) == (gb > 0.0) {
+            b = x;
+            gb = gx;
+            if side == 1 {
+                ga *= 0.5;
+            }
+            side = 1;
+        } else {
+            a = x;
+            ga = gx;
+            if side == -1 {
+                gb *= 0.5;
+            }
+            side = -1;
+        }
+    }
+    Ok(0.5 * (a + b))
+}
+
+/// The minimum of f on [a, b] by Brent's method (golden section with
+/// parabolic steps), to `tolerance` in x. Returns (x, f(x)).
+pub(crate) fn minimize<E>(
+    f: &mut impl FnMut(f64) -> Result<f64, E>,
+    a: f64,
+    b: f64,
+    tolerance: f64,
+) -> Result<(f64, f64), E> {
+    const GOLDEN: f64 = 0.381_966_011_250_105_1;
+    let (mut a, mut b) = (a.min(b), a.max(b));
+    let mut x = a + GOLDEN * (b - a);
+    let (mut w, mut v) = (x, x);
+    let mut fx = f(x)?;
+    let (mut fw, mut fv) = (fx, fx);
+    let (mut d, mut e): (f64, f64) = (0.0, 0.0);
+    for _ in 0..200 {
+        let m = 0.5 * (a + b);
+        let tol = tolerance + f64::EPSILON.sqrt() * 1e-4 * x.abs();
+        let t2 = 2.0 * tol;
+        if (x - m).abs() <= t2 - 0.5 * (b - a) {
+            break;
+        }
+        let mut golden = true;
+        if e.abs() > tol {
+            // A parabola through x, w, v.
+            let r = (x - w) * (fx - fv);
+            let q = (x - v) * (fx - fw);
+            let mut p = (x - v) * q - (x - w) * r;
+            let mut q = 2.0 * (q - r);
+            if q > 0.0 {
+                p = -p;
+            } else {
+                q = -q;
+            }
+            if p.abs() < (0.5 * q * e).abs() && p > q * (a - x) && p < q * (b - x) {
+                e = d;
+                d = p / q;
+                let u = x + d;
+                if u - a < t2 || b - u < t2 {
+                    d = if x < m { tol } else { -tol };
+                }
+                golden = false;
+            }
+        }
+        if golden {
+            e = if x < m { b - x } else { a - x };
+            d = GOLDEN * e;
+        }
+        let u = if d.abs() >= tol {
+            x + d
+        } else if d > 0.0 {
+            x + tol
+        } else {
+            x - tol
+        };
+        let fu = f(u)?;
+        if fu <= fx {
+            if u < x {
+                b = x;
+            } else {
+                a = x;
+            }
+            (v, fv, w, fw, x, fx) = (w, fw, x, fx, u, fu);
+        } else {
+            if u < x {
+                a = u;
+            } else {
+                b = u;
+            }
+            if fu <= fw || w == x {
+                (v, fv, w, fw) = (w, fw, u, fu);
+            } else if fu <= fv || v == x || v == w {
+                (v, fv) = (u, fu);
+            }
+        }
+    }
+    Ok((x, fx))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    type Never = std::convert::Infallible;
+
+    #[test]
+    fn quadrature_of_smooth_functions() {
+        let mut f = |x: f64| Ok::<f64, Never>(x.cos());
+        let v = integrate(&mut f, 0.0, 2.0, 1e-14).unwrap();
+        assert!((v - 2f64.sin()).abs() < 1e-15);
+        let mut g = |x: f64| Ok::<f64, Never>(1.0 / (1.0 + 25.0 * x * x));
+        let v = integrate(&mut g, -1.0, 1.0, 1e-14).unwrap();
+        assert!((v - 0.4 * 5f64.atan()).abs() < 1e-14);
+    }
+
+    #[test]
+    fn roots_and_minima() {
+        let mut g = |x: f64| Ok::<f64, Never>(x.cos() - x);
+        let r = root(&mut g, 0.0, 1.0).unwrap();
+        assert!((r - 0.739_085_133_215_160_6).abs() < 1e-15);
+        let mut f = |x: f64| Ok::<f64, Never>((x - 1.234).powi(2) + 0.5);
+        let (x, fx) = minimize(&mut f, 0.0, 3.0, 1e-10).unwrap();
+        assert!((x - 1.234).abs() < 1e-8 && (fx - 0.5).abs() < 1e-15);
+    }
+}
