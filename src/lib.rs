@@ -51,6 +51,7 @@ pub mod batch;
 pub mod closed_form;
 pub mod diagrams;
 pub mod dynamics;
+pub mod kinetostatics;
 pub mod scene;
 mod svg;
 

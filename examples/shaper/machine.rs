@@ -16,6 +16,7 @@
 #![allow(dead_code)]
 
 use linkage::dynamics::{Body, Load, Machine, MachineError, Table};
+use linkage::kinetostatics::{Guide, Kinetostatics, KinetostaticsError};
 use linkage::prelude::*;
 
 /// The mechanism: u = (φ3, s, x_D) — the rocker's angle, the distance C→A
@@ -192,6 +193,10 @@ pub fn machine(shaper: &Shaper, data: &Data) -> Result<Machine<Shaper, 3>, Machi
                 .angle("phi3"),
         )
         .body(Body::new("ram 5").mass(data.m5).at("S5"))
+        // Massless, but in the force analysis: the crank turns clockwise.
+        .body(Body::new("crank 1").angle_as("phi", -1.0))
+        .body(Body::new("block 2"))
+        .body(Body::new("block 4"))
         // The cutting force: the diagram over the ram's displacement from
         // its position at φ = 0, against the motion, on the working stroke.
         .load(Load::process("cutting", "K", vector![1.0, 0.0], table))
@@ -202,5 +207,51 @@ pub fn machine(shaper: &Shaper, data: &Data) -> Result<Machine<Shaper, 3>, Machi
             data.friction,
         ))
         .load(Load::gravity("gravity", vector![0.0, -data.g]))
+        .build()
+}
+
+/// The seed's force analysis: bodies 1–5 (crank, block, rocker, block,
+/// ram), the joint table 10, 12, 30, 34 (revolute), 23, 45, 50 (prismatic)
+/// in the seed's order, the loads on the ram, the flywheel's J_PRI on the
+/// crank, and the balancing moment on the crank.
+pub fn kinetostatics<'m>(
+    machine: &'m Machine<Shaper, 3>,
+    flywheel: f64,
+) -> Result<Kinetostatics<'m, Shaper, 3>, KinetostaticsError> {
+    let shaper = machine.model();
+    Kinetostatics::new(machine)
+        .ground_point("O", [0.0, 0.0])
+        .ground_point("C", [0.0, shaper.y_c])
+        .body("crank 1")
+        .body("block 2")
+        .body("rocker 3")
+        .body("block 4")
+        .body("ram 5")
+        .revolute("10", "crank 1", "ground", "O")
+        .revolute("12", "crank 1", "block 2", "A")
+        .revolute("30", "rocker 3", "ground", "C")
+        .revolute("34", "rocker 3", "block 4", "D")
+        // Block 2 slides along the rocker; block 4 in the ram's vertical
+        // slot; the ram on its horizontal guide (the reaction's line
+        // through F = (x_D, y_F)).
+        .prismatic(
+            "23",
+            "block 2",
+            "rocker 3",
+            "A",
+            Guide::Angle("phi3".into()),
+        )
+        .prismatic(
+            "45",
+            "block 4",
+            "ram 5",
+            "D",
+            Guide::Fixed(std::f64::consts::FRAC_PI_2),
+        )
+        .prismatic("50", "ram 5", "ground", "F", Guide::Fixed(0.0))
+        .load_on("cutting", "ram 5")
+        .load_on("friction", "ram 5")
+        .rotor("crank 1", flywheel, -1.0)
+        .driver("crank 1", -1.0)
         .build()
 }

@@ -1,13 +1,15 @@
-//! The shaping machine of the Mathcad course project (seed 002), first
-//! half: the slotted-lever mechanism synthesised from K_V, H and l_OC; its
-//! positions and kinematic analogs at the seed's position f (crank at 60°);
-//! reduced inertias and moments; work; the flywheel by the energy method;
-//! ω1 and ε1; the motor, gear and flywheel rim — each beside the number the
-//! seed printed and the 50-digit reference — and then what the seed could
-//! not do: the machine's real motion with that flywheel.
+//! The shaping machine of the Mathcad course project (seed 002): the
+//! slotted-lever mechanism synthesised from K_V, H and l_OC; its positions
+//! and kinematic analogs at the seed's position f (crank at 60°); reduced
+//! inertias and moments; work; the flywheel by the energy method; ω1 and
+//! ε1; the motor, gear and flywheel rim; what the seed could not do, the
+//! machine's real motion with that flywheel; and the kinetostatics — the
+//! 18×18 system of the joint reactions and the balancing moment — each
+//! number beside the one the seed printed and the 50-digit reference.
 //!
 //! Writes `docs/figures/shaper/diagrams.svg` (J, M, A, ΔT_I, ω1, ε1 over a
-//! cycle) and `docs/figures/shaper/mechanism.svg` (the mechanism at f).
+//! cycle), `docs/figures/shaper/mechanism.svg` (the mechanism at f) and
+//! `docs/figures/shaper/hodographs.svg` (the reactions over a cycle).
 //!
 //!     cargo run --release --example shaper
 
@@ -43,7 +45,8 @@ fn note(key: &str) -> &'static str {
     match key {
         "A_C_f" | "A_C_2pi" | "dT_Imin" | "dT_Imax" => "seed: Mathcad quadrature, 1.7e-4",
         "M_PRDsr" | "A_D_f" | "A_Sigma_f" | "dT_I_f" | "J_PRI" | "eps_n" | "eps1_min"
-        | "eps1_max" | "m1" => "seed: inherits the quadrature",
+        | "eps1_max" | "m1" | "M_Phi1" | "B10" | "Phi5x" | "reactions.F30y" | "reactions.F30"
+        | "reactions.M1" => "seed: inherits the quadrature",
         _ => "",
     }
 }
@@ -384,5 +387,100 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         diagrams.display(),
         mechanism.display()
     );
+
+    // The force analysis at f, moving as the energy method says.
+    let statics = machine::kinetostatics(&m, e.flywheel)?;
+    let (w, eps) = (e.omega(f)?, e.epsilon(f)?);
+    let sol = statics.solve(f, w, eps)?;
+    let rocker = a.uddot[0] * w * w + a.udot[0] * eps;
+    t.heading("10. Accelerations and inertia loads at f [m/s², rad/s², N, N·m]");
+    let acc = |p: usize| a.point_accelerations[p] * (w * w) + a.point_velocities[p] * eps;
+    t.row("a_S3x", "a_S3x", acc(ps3).x);
+    t.row("a_S3y", "a_S3y", acc(ps3).y);
+    t.row("a_Dx", "a_Dx", acc(pd).x);
+    t.row("ε3", "eps3", rocker);
+    t.row("M_Φ1 = J_PRI ε1", "M_Phi1", e.flywheel * eps);
+    t.row("Φ3x", "Phi3x", -data.m3 * acc(ps3).x);
+    t.row("Φ3y", "Phi3y", -data.m3 * acc(ps3).y);
+    t.row("M_Φ3", "M_Phi3", -data.i3s * rocker);
+    t.row("Φ5x", "Phi5x", -data.m5 * acc(pd).x);
+    t.row("G3", "G3", data.m3 * data.g);
+    t.row("G5", "G5", data.m5 * data.g);
+    t.heading(
+        "11. The right-hand side B (ΣFx, ΣFy, ΣM about O for bodies 1–5; the prismatic conditions)",
+    );
+    for k in 0..sol.rhs.len() {
+        t.row(&format!("B{k}"), &format!("B{k}"), sol.rhs[k]);
+    }
+    t.row("det A", "check.det_A", sol.matrix.determinant());
+    t.heading("12. The reactions at f: the seed's 18 unknowns [N, N·m]");
+    let names = ["F10", "F12", "F30", "F34", "F23", "F45", "F50"];
+    for (axis, offset) in [("x", 0), ("y", 7)] {
+        for (k, n) in names.iter().enumerate() {
+            t.row(
+                &format!("{n}{axis}"),
+                &format!("reactions.{n}{axis}"),
+                sol.unknowns[offset + k],
+            );
+        }
+    }
+    for (k, n) in ["M23", "M45", "M50", "M1"].iter().enumerate() {
+        t.row(n, &format!("reactions.{n}"), sol.unknowns[14 + k]);
+    }
+    t.heading("13. Magnitudes and directions");
+    for joint in &sol.joints {
+        let n = format!("F{}", joint.name);
+        t.row(
+            &format!("|{n}| [N]"),
+            &format!("reactions.{n}"),
+            joint.magnitude(),
+        );
+        t.row(
+            &format!("φ{} [°]", joint.name),
+            &format!("reactions.phi{}_deg", joint.name),
+            joint.angle_degrees(),
+        );
+    }
+    let balance = statics.power_balance(f, w, eps)?;
+    println!(
+        "\nThe balancing moment three ways: the linear system M1 = {:.12}, the power balance {:.12}, −M_PRDsr = {:.12}",
+        sol.driving_moment, balance, -md
+    );
+    // Over the whole cycle.
+    let mut worst: (f64, f64) = (0.0, 0.0);
+    let mut hodographs: Vec<Vec<(f64, f64)>> = vec![Vec::new(); 4];
+    for k in 0..360 {
+        let phi = k as f64 * TAU / 360.0;
+        let (w, eps) = (e.omega(phi)?, e.epsilon(phi)?);
+        let s = statics.solve(phi, w, eps)?;
+        let p = statics.power_balance(phi, w, eps)?;
+        worst.0 = worst.0.max(((s.driving_moment - p) / p).abs());
+        worst.1 = worst.1.max(((s.driving_moment + md) / md).abs());
+        for (h, j) in hodographs.iter_mut().zip([0, 1, 2, 3]) {
+            let force = s.joints[j].force;
+            h.push((force.x, force.y));
+        }
+    }
+    println!(
+        "over 360 poses of the cycle: linear system against power balance ≤ {:.1e}, against −M_PRDsr ≤ {:.1e} (relative)",
+        worst.0, worst.1
+    );
+    let labels = [
+        "F10: ground on crank, at O",
+        "F12: block 2 on crank, at A",
+        "F30: ground on rocker, at C",
+        "F34: block 4 on rocker, at D",
+    ];
+    let mut chart = linkage::diagrams::Hodographs::new(
+        "Hodographs of the joint reactions over a cycle (the red vector: at f)",
+        "N",
+    );
+    for (k, points) in hodographs.into_iter().enumerate() {
+        let at_f = sol.joints[k].force;
+        chart = chart.panel(labels[k], points, Some((at_f.x, at_f.y, "f")));
+    }
+    let path = folder.join("hodographs.svg");
+    std::fs::write(&path, chart.render()?)?;
+    println!("wrote {}", path.display());
     Ok(())
 }

@@ -94,6 +94,8 @@ pub struct Body {
     pub centre: Option<String>,
     /// The coordinate that is the body's angle (none: it does not turn).
     pub angle: Option<String>,
+    /// The body's angle is `angle_factor` × the coordinate + a constant.
+    pub angle_factor: f64,
 }
 
 impl Body {
@@ -105,6 +107,7 @@ impl Body {
             inertia: 0.0,
             centre: None,
             angle: None,
+            angle_factor: 1.0,
         }
     }
 
@@ -129,6 +132,15 @@ impl Body {
     /// constant).
     pub fn angle(mut self, coordinate: &str) -> Body {
         self.angle = Some(coordinate.into());
+        self
+    }
+
+    /// The body's angle is `factor` × `coordinate` + a constant: a crank
+    /// turning clockwise as φ grows has factor −1 (angles positive
+    /// counter-clockwise).
+    pub fn angle_as(mut self, coordinate: &str, factor: f64) -> Body {
+        self.angle = Some(coordinate.into());
+        self.angle_factor = factor;
         self
     }
 }
@@ -187,7 +199,7 @@ type KinksFn = Arc<dyn Fn(&Pose) -> Vec<f64> + Send + Sync>;
 
 /// What a load is.
 #[derive(Clone)]
-enum LoadKind {
+pub(crate) enum LoadKind {
     Force {
         point: String,
         force: ForceFn,
@@ -215,7 +227,7 @@ enum LoadKind {
 #[derive(Clone)]
 pub struct Load {
     pub name: String,
-    kind: LoadKind,
+    pub(crate) kind: LoadKind,
     kinks: Option<KinksFn>,
 }
 
@@ -422,7 +434,16 @@ impl<L: Linkage<M, 1>, const M: usize> MachineBuilder<L, M> {
                     });
                 }
             }
+            if !body.angle_factor.is_finite() {
+                return Err(MachineError::BadSetting {
+                    what: "an angle factor",
+                    must: "finite",
+                    value: body.angle_factor,
+                });
+            }
             bodies.push(ResolvedBody {
+                name: body.name.clone(),
+                angle_factor: body.angle_factor,
                 mass: body.mass,
                 inertia: body.inertia,
                 centre: body
@@ -537,17 +558,19 @@ impl<L: Linkage<M, 1>, const M: usize> MachineBuilder<L, M> {
     }
 }
 
-struct ResolvedBody {
-    mass: f64,
-    inertia: f64,
-    centre: Option<usize>,
-    angle: Option<usize>,
+pub(crate) struct ResolvedBody {
+    pub(crate) name: String,
+    pub(crate) mass: f64,
+    pub(crate) inertia: f64,
+    pub(crate) centre: Option<usize>,
+    pub(crate) angle: Option<usize>,
+    pub(crate) angle_factor: f64,
 }
 
-struct ResolvedLoad {
-    load: Load,
+pub(crate) struct ResolvedLoad {
+    pub(crate) load: Load,
     /// The point or coordinate index.
-    target: usize,
+    pub(crate) target: usize,
     /// The point's position at φ = 0 (process loads).
     origin: Vector2<f64>,
 }
@@ -564,8 +587,8 @@ struct GridPose<const M: usize> {
 /// the cycle φ ∈ [0, 2π] (see the module documentation).
 pub struct Machine<L, const M: usize> {
     model: L,
-    bodies: Vec<ResolvedBody>,
-    loads: Vec<ResolvedLoad>,
+    pub(crate) bodies: Vec<ResolvedBody>,
+    pub(crate) loads: Vec<ResolvedLoad>,
     grid: Vec<GridPose<M>>,
     options: Options,
     /// The loads' kinks in (0, 2π), ascending.
@@ -719,7 +742,8 @@ impl<L: Linkage<M, 1>, const M: usize> Machine<L, M> {
         for body in &self.bodies {
             let (rotation, rotation_d) = match body.angle {
                 Some(k) => {
-                    let (w, e) = (pose.q_phi[k], pose.q_phiphi[k]);
+                    let c = body.angle_factor;
+                    let (w, e) = (c * pose.q_phi[k], c * pose.q_phiphi[k]);
                     (body.inertia * w * w, 2.0 * body.inertia * w * e)
                 }
                 None => (0.0, 0.0),

@@ -1,0 +1,653 @@
+//! Kinetostatics: the joint reactions and the balancing (driving) moment of
+//! a one-degree-of-freedom machine in motion, from a table of bodies and
+//! joints, as the course project assembles them.
+//!
+//! The bodies are numbered from 1 (ground is body 0). A **revolute** joint
+//! between bodies i and j at a point carries a force F_ij (on i from j; j
+//! feels −F_ij); a **prismatic** joint carries a force normal to its guide
+//! and a moment M_ij. Every body carries its loads (the machine's, each
+//! assigned to a body), its weight and its d'Alembert inertia loads taken
+//! from the kinematics at the given motion (φ, ω = φ̇, ε = φ̈): −m·a_S at
+//! the centre of mass, −I·ε_body, and −J·ε for a rotor (a flywheel) on it.
+//! One body, the driver, carries the unknown balancing moment.
+//!
+//! The unknowns, in the seed's order: the x components of every joint's
+//! force in the table's order, then the y components, then the prismatic
+//! joints' moments, then the balancing moment. The equations: ΣFx = 0 for
+//! bodies 1…n, ΣFy = 0, ΣM about the origin = 0, then one condition per
+//! prismatic joint, F·guide = 0. The system must be square and regular:
+//! otherwise the error names the joints whose reactions it cannot tell.
+//!
+//! The power balance gives the balancing moment independently:
+//! M_b·ω_driver + Σ F·v + Σ M·ω (loads, weights and inertia loads) = 0;
+//! [`Kinetostatics::power_balance`] computes it for the check.
+
+use crate::dynamics::{Applied, LoadKind, Machine, MachineError, Pose};
+use linkage_runtime::Linkage;
+use nalgebra::{DMatrix, DVector, Vector2};
+
+/// What went wrong building or solving the force analysis.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum KinetostaticsError {
+    #[error("`{owner}` names the body `{name}`, which is not in the table (bodies: {known})")]
+    UnknownBody {
+        owner: String,
+        name: String,
+        known: String,
+    },
+    #[error(
+        "`{owner}` names the point `{name}`, neither a point of the model nor a ground point (points: {known})"
+    )]
+    UnknownPoint {
+        owner: String,
+        name: String,
+        known: String,
+    },
+    #[error("`{owner}` names the coordinate `{name}`, which the model does not have")]
+    UnknownCoordinate { owner: String, name: String },
+    #[error("the load `{load}` is not assigned to a body (use `load_on`)")]
+    UnassignedLoad { load: String },
+    #[error("no driver: say which body carries the balancing moment (`driver`)")]
+    NoDriver,
+    /// Unknowns ≠ equations.
+    #[error(
+        "the table gives {unknowns} unknowns (2 per revolute joint, 3 per prismatic, 1 balancing moment) but {equations} equations (3 per body, 1 per prismatic joint): {why}"
+    )]
+    NotSquare {
+        unknowns: usize,
+        equations: usize,
+        why: &'static str,
+    },
+    /// The equations do not determine these joints' reactions.
+    #[error(
+        "the reactions of the joints {joints:?} are not determined (reciprocal condition {rcond:.1e}): the structure is statically indeterminate there, or can move by itself"
+    )]
+    Indeterminate { joints: Vec<String>, rcond: f64 },
+    #[error("machine: {0}")]
+    Machine(#[from] MachineError),
+    #[error("kinematics: {0}")]
+    Kinematics(#[from] linkage_runtime::Error),
+}
+
+/// How a prismatic joint's guide is directed.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Guide {
+    /// At a fixed angle (rad) from the x axis.
+    Fixed(f64),
+    /// Along a coordinate that is an angle: (cos q, sin q).
+    Angle(String),
+    /// Along the line from one point to another.
+    Line(String, String),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+enum Kind {
+    Revolute,
+    Prismatic(Guide),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+struct Joint {
+    name: String,
+    bodies: (String, String),
+    point: String,
+    kind: Kind,
+}
+
+/// A [`Kinetostatics`] being described.
+pub struct KinetostaticsBuilder<'m, L, const M: usize> {
+    machine: &'m Machine<L, M>,
+    ground_points: Vec<(String, Vector2<f64>)>,
+    bodies: Vec<String>,
+    joints: Vec<Joint>,
+    load_bodies: Vec<(String, String)>,
+    driver: Option<(String, f64)>,
+    rotors: Vec<(String, f64, f64)>,
+}
+
+impl<'m, L: Linkage<M, 1>, const M: usize> KinetostaticsBuilder<'m, L, M> {
+    /// A fixed point of the ground, for joints with the ground.
+    pub fn ground_point(mut self, name: &str, at: [f64; 2]) -> Self {
+        self.ground_points
+            .push((name.into(), Vector2::new(at[0], at[1])));
+        self
+    }
+
+    /// The next body (1, 2, …). A body of the machine keeps its mass,
+    /// inertia, centre and angle; another is massless.
+    pub fn body(mut self, name: &str) -> Self {
+        self.bodies.push(name.into());
+        self
+    }
+
+    /// A revolute joint at `point` between bodies `i` and `j` ("ground" for
+    /// body 0): the reaction F_ij on i from j.
+    pub fn revolute(mut self, name: &str, i: &str, j: &str, point: &str) -> Self {
+        self.joints.push(Joint {
+            name: name.into(),
+            bodies: (i.into(), j.into()),
+            point: point.into(),
+            kind: Kind::Revolute,
+        });
+        self
+    }
+
+    /// A prismatic joint between bodies `i` and `j`, its reaction's line
+    /// through `point`, sliding along `guide`: the force normal to the
+    /// guide and the moment M_ij (on i, about `point`).
+    pub fn prismatic(mut self, name: &str, i: &str, j: &str, point: &str, guide: Guide) -> Self {
+        self.joints.push(Joint {
+            name: name.into(),
+            bodies: (i.into(), j.into()),
+            point: point.into(),
+            kind: Kind::Prismatic(guide),
+        });
+        self
+    }
+
+    /// The machine's load `load` acts on `body` (gravity needs no
+    /// assignment: each body carries its own weight).
+    pub fn load_on(mut self, load: &str, body: &str) -> Self {
+        self.load_bodies.push((load.into(), body.into()));
+        self
+    }
+
+    /// The body that carries the unknown balancing moment; its angle is
+    /// `factor` × φ + a constant (−1 for a crank turning clockwise).
+    pub fn driver(mut self, body: &str, factor: f64) -> Self {
+        self.driver = Some((body.into(), factor));
+        self
+    }
+
+    /// A rotor of moment of inertia `inertia` on `body`, turning at
+    /// `factor` × φ̇ (a flywheel reduced to the crank): it adds the
+    /// inertia moment −inertia·factor·φ̈.
+    pub fn rotor(mut self, body: &str, inertia: f64, factor: f64) -> Self {
+        self.rotors.push((body.into(), inertia, factor));
+        self
+    }
+
+    /// Resolves every name, and checks that the system is square and
+    /// regular at a pose of the cycle.
+    pub fn build(self) -> Result<Kinetostatics<'m, L, M>, KinetostaticsError> {
+        let body_index = |owner: &str, name: &str| -> Result<usize, KinetostaticsError> {
+            if name == "ground" {
+                return Ok(0);
+            }
+            self.bodies
+                .iter()
+                .position(|b| b == name)
+                .map(|k| k + 1)
+                .ok_or_else(|| KinetostaticsError::UnknownBody {
+                    owner: owner.into(),
+                    name: name.into(),
+                    known: format!("ground, {}", self.bodies.join(", ")),
+                })
+        };
+        let point_names = L::POINT_NAMES;
+        let point_ref = |owner: &str, name: &str| -> Result<PointRef, KinetostaticsError> {
+            if let Some(k) = point_names.iter().position(|n| *n == name) {
+                return Ok(PointRef::Model(k));
+            }
+            if let Some((_, p)) = self.ground_points.iter().find(|(n, _)| n == name) {
+                return Ok(PointRef::Ground(*p));
+            }
+            Err(KinetostaticsError::UnknownPoint {
+                owner: owner.into(),
+                name: name.into(),
+                known: point_names
+                    .iter()
+                    .copied()
+                    .chain(self.ground_points.iter().map(|(n, _)| n.as_str()))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+            })
+        };
+        let coordinates: Vec<&str> = L::U_NAMES.iter().chain(&L::V_NAMES).copied().collect();
+        let mut joints = Vec::new();
+        for joint in &self.joints {
+            let guide = match &joint.kind {
+                Kind::Revolute => None,
+                Kind::Prismatic(Guide::Fixed(angle)) => {
+                    Some(ResolvedGuide::Fixed(Vector2::new(angle.cos(), angle.sin())))
+                }
+                Kind::Prismatic(Guide::Angle(c)) => Some(ResolvedGuide::Angle(
+                    coordinates.iter().position(|n| n == c).ok_or_else(|| {
+                        KinetostaticsError::UnknownCoordinate {
+                            owner: joint.name.clone(),
+                            name: c.clone(),
+                        }
+                    })?,
+                )),
+                Kind::Prismatic(Guide::Line(a, b)) => Some(ResolvedGuide::Line(
+                    point_ref(&joint.name, a)?,
+                    point_ref(&joint.name, b)?,
+                )),
+            };
+            joints.push(ResolvedJoint {
+                name: joint.name.clone(),
+                names: joint.bodies.clone(),
+                bodies: (
+                    body_index(&joint.name, &joint.bodies.0)?,
+                    body_index(&joint.name, &joint.bodies.1)?,
+                ),
+                point: point_ref(&joint.name, &joint.point)?,
+                guide,
+            });
+        }
+        // The machine's bodies keep their masses.
+        let mut bodies: Vec<StaticBody> = self
+            .bodies
+            .iter()
+            .map(|name| StaticBody {
+                name: name.clone(),
+                machine_body: self.machine.bodies.iter().position(|b| &b.name == name),
+                rotors: Vec::new(),
+            })
+            .collect();
+        for (body, inertia, factor) in &self.rotors {
+            let k = body_index("a rotor", body)?;
+            if k == 0 {
+                continue;
+            }
+            bodies[k - 1].rotors.push((*inertia, *factor));
+        }
+        // Every load of the machine but gravity acts on a named body.
+        let mut load_bodies = Vec::new();
+        for load in &self.machine.loads {
+            if let LoadKind::Gravity { .. } = load.load.kind {
+                load_bodies.push(None);
+                continue;
+            }
+            let body = self
+                .load_bodies
+                .iter()
+                .find(|(l, _)| *l == load.load.name)
+                .ok_or_else(|| KinetostaticsError::UnassignedLoad {
+                    load: load.load.name.clone(),
+                })?;
+            load_bodies.push(Some(body_index(&body.0, &body.1)?));
+        }
+        let (driver_name, driver_factor) =
+            self.driver.clone().ok_or(KinetostaticsError::NoDriver)?;
+        let driver = body_index("the driver", &driver_name)?;
+        let prismatic = joints.iter().filter(|j| j.guide.is_some()).count();
+        let unknowns = 2 * joints.len() + prismatic + 1;
+        let equations = 3 * bodies.len() + prismatic;
+        if unknowns != equations {
+            return Err(KinetostaticsError::NotSquare {
+                unknowns,
+                equations,
+                why: if unknowns > equations {
+                    "more reactions than the equilibrium of the bodies can fix: statically indeterminate"
+                } else {
+                    "fewer reactions than equations: the bodies could move under the loads"
+                },
+            });
+        }
+        let statics = Kinetostatics {
+            machine: self.machine,
+            bodies,
+            joints,
+            load_bodies,
+            driver,
+            driver_factor,
+        };
+        // Regular at a generic pose of the cycle.
+        statics.solve(1.0, 1.0, 0.0)?;
+        Ok(statics)
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum PointRef {
+    Model(usize),
+    Ground(Vector2<f64>),
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum ResolvedGuide {
+    Fixed(Vector2<f64>),
+    Angle(usize),
+    Line(PointRef, PointRef),
+}
+
+struct ResolvedJoint {
+    name: String,
+    names: (String, String),
+    bodies: (usize, usize),
+    point: PointRef,
+    guide: Option<ResolvedGuide>,
+}
+
+struct StaticBody {
+    name: String,
+    /// The machine body it is, if it has mass.
+    machine_body: Option<usize>,
+    /// (inertia, factor) of rotors on it.
+    rotors: Vec<(f64, f64)>,
+}
+
+/// The force analysis of a machine (see the module documentation).
+pub struct Kinetostatics<'m, L, const M: usize> {
+    machine: &'m Machine<L, M>,
+    bodies: Vec<StaticBody>,
+    joints: Vec<ResolvedJoint>,
+    /// The body each machine load acts on (None: gravity).
+    load_bodies: Vec<Option<usize>>,
+    driver: usize,
+    driver_factor: f64,
+}
+
+/// One joint's reaction.
+#[derive(Clone, Debug, PartialEq)]
+pub struct JointReaction {
+    pub name: String,
+    /// (i, j): the force is on i from j.
+    pub bodies: (String, String),
+    pub force: Vector2<f64>,
+    /// The moment M_ij of a prismatic joint.
+    pub moment: Option<f64>,
+}
+
+impl JointReaction {
+    pub fn magnitude(&self) -> f64 {
+        self.force.norm()
+    }
+
+    /// The force's direction, degrees in (−180°, 180°].
+    pub fn angle_degrees(&self) -> f64 {
+        self.force.y.atan2(self.force.x).to_degrees()
+    }
+}
+
+/// A body's loads at a pose: the external ones, the weight and the inertia
+/// loads, each a force at a point or a couple.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BodyLoads {
+    pub body: String,
+    /// (point, force) pairs.
+    pub forces: Vec<(Vector2<f64>, Vector2<f64>)>,
+    /// The sum of the couples.
+    pub couple: f64,
+}
+
+/// A body's loads, the velocities of their points, and the power of its
+/// couples.
+type LoadsAndPower = (BodyLoads, Vec<Vector2<f64>>, f64);
+
+/// The solution at one pose.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Reactions {
+    pub joints: Vec<JointReaction>,
+    /// The balancing moment on the driver (positive counter-clockwise).
+    pub driving_moment: f64,
+    /// The system A·x = b as assembled, and x, in the seed's order.
+    pub matrix: DMatrix<f64>,
+    pub rhs: DVector<f64>,
+    pub unknowns: DVector<f64>,
+    /// Each body's loads.
+    pub loads: Vec<BodyLoads>,
+}
+
+impl<'m, L: Linkage<M, 1>, const M: usize> Kinetostatics<'m, L, M> {
+    /// A force analysis of `machine`, to be described.
+    #[allow(clippy::new_ret_no_self)]
+    pub fn new(machine: &'m Machine<L, M>) -> KinetostaticsBuilder<'m, L, M> {
+        KinetostaticsBuilder {
+            machine,
+            ground_points: Vec::new(),
+            bodies: Vec::new(),
+            joints: Vec::new(),
+            load_bodies: Vec::new(),
+            driver: None,
+            rotors: Vec::new(),
+        }
+    }
+
+    fn point(&self, pose: &Pose, p: PointRef) -> Vector2<f64> {
+        match p {
+            PointRef::Model(k) => pose.points[k],
+            PointRef::Ground(at) => at,
+        }
+    }
+
+    fn guide(&self, pose: &Pose, g: ResolvedGuide) -> Vector2<f64> {
+        match g {
+            ResolvedGuide::Fixed(d) => d,
+            ResolvedGuide::Angle(k) => Vector2::new(pose.q[k].cos(), pose.q[k].sin()),
+            ResolvedGuide::Line(a, b) => (self.point(pose, b) - self.point(pose, a))
+                .try_normalize(0.0)
+                .unwrap_or(Vector2::x()),
+        }
+    }
+
+    /// Each body's loads at φ moving at ω, ε: the machine's loads, the
+    /// weights, −m·a_S and −I·ε_body, rotors' −J·ε. Also each body's
+    /// angular velocity, and the velocities of the forces' points, for the
+    /// power balance.
+    fn body_loads(&self, pose: &Pose, omega: f64, epsilon: f64) -> Vec<LoadsAndPower> {
+        let n = self.bodies.len();
+        let mut out: Vec<LoadsAndPower> = self
+            .bodies
+            .iter()
+            .map(|b| {
+                (
+                    BodyLoads {
+                        body: b.name.clone(),
+                        forces: Vec::new(),
+                        couple: 0.0,
+                    },
+                    Vec::new(),
+                    0.0,
+                )
+            })
+            .collect();
+        // Weights and inertia of the machine's bodies.
+        let gravity = self.machine.loads.iter().find_map(|l| match l.load.kind {
+            LoadKind::Gravity { g } => Some(g),
+            _ => None,
+        });
+        for (k, body) in self.bodies.iter().enumerate() {
+            let (forces, velocities) = {
+                let entry = &mut out[k];
+                (&mut entry.0.forces, &mut entry.1)
+            };
+            if let Some(mb) = body.machine_body {
+                let b = &self.machine.bodies[mb];
+                if let Some(c) = b.centre {
+                    let (p, v_q, a_q) = (pose.points[c], pose.points_phi[c], pose.points_phiphi[c]);
+                    let v = v_q * omega;
+                    let a = a_q * (omega * omega) + v_q * epsilon;
+                    if let Some(g) = gravity {
+                        forces.push((p, g * b.mass));
+                        velocities.push(v);
+                    }
+                    forces.push((p, -a * b.mass));
+                    velocities.push(v);
+                }
+                if let Some(q) = b.angle {
+                    let c = b.angle_factor;
+                    let w = c * pose.q_phi[q] * omega;
+                    let e = c * (pose.q_phiphi[q] * omega * omega + pose.q_phi[q] * epsilon);
+                    out[k].0.couple += -b.inertia * e;
+                    out[k].2 += -b.inertia * e * w;
+                }
+            }
+            for &(inertia, factor) in &body.rotors {
+                let (w, e) = (factor * omega, factor * epsilon);
+                out[k].0.couple += -inertia * e;
+                out[k].2 += -inertia * e * w;
+            }
+        }
+        // The machine's other loads, on their bodies.
+        for (load, applied) in self.machine.applied(pose) {
+            let Some(Some(body)) = self.load_bodies.get(load) else {
+                continue;
+            };
+            if *body == 0 || *body > n {
+                continue;
+            }
+            let entry = &mut out[body - 1];
+            match applied {
+                Applied::Force { point, force } => {
+                    entry.0.forces.push((pose.points[point], force));
+                    entry.1.push(pose.points_phi[point] * omega);
+                }
+                Applied::Moment { coordinate, moment } => {
+                    entry.0.couple += moment;
+                    entry.2 += moment * pose.q_phi[coordinate] * omega;
+                }
+            }
+        }
+        out
+    }
+
+    /// The reactions and the balancing moment at φ, with the machine
+    /// moving at ω = φ̇ and ε = φ̈.
+    pub fn solve(
+        &self,
+        phi: f64,
+        omega: f64,
+        epsilon: f64,
+    ) -> Result<Reactions, KinetostaticsError> {
+        let pose = self.machine.pose(phi)?;
+        let n = self.bodies.len();
+        let joints = self.joints.len();
+        let prismatic: Vec<usize> = (0..joints)
+            .filter(|&j| self.joints[j].guide.is_some())
+            .collect();
+        let size = 3 * n + prismatic.len();
+        let mut a = DMatrix::<f64>::zeros(size, size);
+        let mut b = DVector::<f64>::zeros(size);
+        let (col_x, col_y) = (|j: usize| j, |j: usize| joints + j);
+        let col_m = |p: usize| 2 * joints + p;
+        let col_d = 2 * joints + prismatic.len();
+        for (j, joint) in self.joints.iter().enumerate() {
+            let at = self.point(&pose, joint.point);
+            for (body, sign) in [(joint.bodies.0, 1.0), (joint.bodies.1, -1.0)] {
+                if body == 0 {
+                    continue;
+                }
+                let r = body - 1;
+                a[(r, col_x(j))] += sign;
+                a[(n + r, col_y(j))] += sign;
+                // About the origin: x·Fy − y·Fx.
+                a[(2 * n + r, col_x(j))] += -sign * at.y;
+                a[(2 * n + r, col_y(j))] += sign * at.x;
+                if let Some(p) = prismatic.iter().position(|&k| k == j) {
+                    a[(2 * n + r, col_m(p))] += sign;
+                }
+            }
+        }
+        if self.driver > 0 {
+            a[(2 * n + self.driver - 1, col_d)] = 1.0;
+        }
+        for (p, &j) in prismatic.iter().enumerate() {
+            let d = self.guide(
+                &pose,
+                self.joints[j]
+                    .guide
+                    .unwrap_or(ResolvedGuide::Fixed(Vector2::x())),
+            );
+            a[(3 * n + p, col_x(j))] = d.x;
+            a[(3 * n + p, col_y(j))] = d.y;
+        }
+        let loads = self.body_loads(&pose, omega, epsilon);
+        for (r, (body, _, _)) in loads.iter().enumerate() {
+            let (mut fx, mut fy, mut m) = (0.0, 0.0, body.couple);
+            for (p, f) in &body.forces {
+                fx += f.x;
+                fy += f.y;
+                m += p.x * f.y - p.y * f.x;
+            }
+            b[r] = -fx;
+            b[n + r] = -fy;
+            b[2 * n + r] = -m;
+        }
+        let svd = a.clone().svd(true, true);
+        let (smax, smin) = svd
+            .singular_values
+            .iter()
+            .fold((0.0_f64, f64::INFINITY), |(hi, lo), &s| {
+                (hi.max(s), lo.min(s))
+            });
+        let rcond = if smax > 0.0 { smin / smax } else { 0.0 };
+        let regular = rcond > 1e-13;
+        if !regular {
+            // The unknowns the null space moves: their joints.
+            let k = (0..svd.singular_values.len())
+                .min_by(|&p, &q| svd.singular_values[p].total_cmp(&svd.singular_values[q]))
+                .unwrap_or(0);
+            let mut named = Vec::new();
+            if let Some(v_t) = &svd.v_t {
+                let row = v_t.row(k);
+                let big = row.amax();
+                for (c, x) in row.iter().enumerate() {
+                    if x.abs() > 1e-3 * big {
+                        let name = if c < 2 * joints {
+                            self.joints[c % joints].name.clone()
+                        } else if c < col_d {
+                            self.joints[prismatic[c - 2 * joints]].name.clone()
+                        } else {
+                            "balancing moment".to_string()
+                        };
+                        if !named.contains(&name) {
+                            named.push(name);
+                        }
+                    }
+                }
+            }
+            return Err(KinetostaticsError::Indeterminate {
+                joints: named,
+                rcond,
+            });
+        }
+        let x = a
+            .clone()
+            .lu()
+            .solve(&b)
+            .ok_or(KinetostaticsError::Indeterminate {
+                joints: self.joints.iter().map(|j| j.name.clone()).collect(),
+                rcond,
+            })?;
+        let reactions = self
+            .joints
+            .iter()
+            .enumerate()
+            .map(|(j, joint)| JointReaction {
+                name: joint.name.clone(),
+                bodies: joint.names.clone(),
+                force: Vector2::new(x[col_x(j)], x[col_y(j)]),
+                moment: prismatic.iter().position(|&k| k == j).map(|p| x[col_m(p)]),
+            })
+            .collect();
+        Ok(Reactions {
+            joints: reactions,
+            driving_moment: x[col_d],
+            matrix: a,
+            rhs: b,
+            unknowns: x,
+            loads: loads.into_iter().map(|l| l.0).collect(),
+        })
+    }
+
+    /// The balancing moment from the power balance alone: M_b·ω_driver +
+    /// Σ F·v + Σ M·ω = 0 over every load, weight and inertia load.
+    pub fn power_balance(
+        &self,
+        phi: f64,
+        omega: f64,
+        epsilon: f64,
+    ) -> Result<f64, KinetostaticsError> {
+        let pose = self.machine.pose(phi)?;
+        let mut power = 0.0;
+        for (body, velocities, couple_power) in self.body_loads(&pose, omega, epsilon) {
+            for ((_, f), v) in body.forces.iter().zip(&velocities) {
+                power += f.dot(v);
+            }
+            power += couple_power;
+        }
+        Ok(-power / (self.driver_factor * omega))
+    }
+}
