@@ -48,6 +48,7 @@
 extern crate self as linkage;
 
 pub mod batch;
+pub mod cam;
 pub mod closed_form;
 pub mod diagrams;
 pub mod dynamics;

@@ -26,7 +26,7 @@
 //! J_I (flywheel, rotors) besides J(φ), driven by a moment M_D:
 //! (J_I + J)·ε + ½·J′·ω² = M + M_D, i.e. d/dφ [½(J_I + J)ω²] = M + M_D.
 
-mod numerics;
+pub(crate) mod numerics;
 mod table;
 
 use linkage_runtime::{Analysis, Drive, Error, Linkage, Options, SweepOptions};
