@@ -82,6 +82,26 @@ pub enum Error {
         /// ‖Ψ_uᵀΨ‖∞ / (‖Ψ_u‖∞‖Ψ‖∞) there.
         gradient: f64,
     },
+    /// The equations' coefficients are so small that f64 holds them only
+    /// as subnormal numbers, whose relative precision is lost: a column or a
+    /// row of [Ψ_u Ψ_v] has no entry above 2⁻⁹⁷⁰ ≈ 1e-292. No result could
+    /// keep the requested accuracy; express the mechanism in larger units.
+    #[error(
+        "{quantity} underflows in the {stage} stage: its scale {scale:.3e} is below the normal range of f64 that keeps relative precision (express the mechanism in larger units)"
+    )]
+    Underflow {
+        stage: Stage,
+        quantity: &'static str,
+        scale: f64,
+    },
+    /// A setting or an argument is out of its range (other than not being
+    /// finite): a negative tolerance, a drive that does not move.
+    #[error("{argument} = {value} is out of range: {why}")]
+    InvalidInput {
+        argument: &'static str,
+        value: f64,
+        why: &'static str,
+    },
     /// A generated quantity is NaN or infinite although the inputs are
     /// finite: the pose or the parameters are outside the domain of the
     /// equations (e.g. `sqrt` of a negative number), or a value overflows.
@@ -104,6 +124,48 @@ pub(crate) fn check_input(argument: &'static str, values: &[f64]) -> Result<(), 
             index,
             value: values[index],
         }),
+    }
+}
+
+/// The smallest scale of a nonzero column or row that keeps relative
+/// precision: 2⁻⁹⁷⁰, 52 binary orders above the subnormal range.
+const NORMAL_SCALE: f64 = f64::from_bits(((1023 - 970) as u64) << 52);
+
+/// Checks that no nonzero row or column of [Ψ_u Ψ_v] lives in the
+/// subnormal range (see [`Error::Underflow`]).
+pub(crate) fn check_scale<const M: usize, const F: usize>(
+    stage: Stage,
+    psi_u: &nalgebra::SMatrix<f64, M, M>,
+    psi_v: &nalgebra::SMatrix<f64, M, F>,
+) -> Result<(), Error> {
+    let entry = |i: usize, j: usize| {
+        if j < M {
+            psi_u[(i, j)]
+        } else {
+            psi_v[(i, j - M)]
+        }
+    };
+    let mut smallest = f64::INFINITY;
+    for j in 0..M + F {
+        let scale = (0..M).map(|i| entry(i, j).abs()).fold(0.0, f64::max);
+        if scale > 0.0 {
+            smallest = smallest.min(scale);
+        }
+    }
+    for i in 0..M {
+        let scale = (0..M + F).map(|j| entry(i, j).abs()).fold(0.0, f64::max);
+        if scale > 0.0 {
+            smallest = smallest.min(scale);
+        }
+    }
+    if smallest < NORMAL_SCALE {
+        Err(Error::Underflow {
+            stage,
+            quantity: "[Ψ_u Ψ_v]",
+            scale: smallest,
+        })
+    } else {
+        Ok(())
     }
 }
 

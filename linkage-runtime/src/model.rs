@@ -73,6 +73,35 @@ impl Default for Options {
 }
 
 impl Options {
+    /// That every setting is in its range: tolerances ≥ 0, the accuracy
+    /// > 0 (∞ allowed), nothing NaN.
+    pub fn check(&self) -> Result<(), Error> {
+        let invalid = |argument, value, why| {
+            Err(Error::InvalidInput {
+                argument,
+                value,
+                why,
+            })
+        };
+        let residual_tol_ok = self.residual_tol >= 0.0; // false for NaN too
+        if !residual_tol_ok {
+            return invalid("residual_tol", self.residual_tol, "a tolerance must be ≥ 0");
+        }
+        let step_tol_ok = self.step_tol >= 0.0; // false for NaN too
+        if !step_tol_ok {
+            return invalid("step_tol", self.step_tol, "a tolerance must be ≥ 0");
+        }
+        let accuracy_ok = self.accuracy > 0.0; // false for NaN too
+        if !accuracy_ok {
+            return invalid(
+                "accuracy",
+                self.accuracy,
+                "the accuracy must be > 0 (∞: no check)",
+            );
+        }
+        Ok(())
+    }
+
     /// The smallest reciprocal condition number of Ψ_u with which `stage`
     /// keeps [`Options::accuracy`]: (ε/accuracy)^(1/k) with k = 1 for
     /// positions, 2 for velocities, 3 for accelerations and points.
@@ -353,6 +382,7 @@ pub trait Linkage<const M: usize, const F: usize> {
         check_input("u", u.as_slice())?;
         check_input("v", v.as_slice())?;
         check_input("vdot", vdot.as_slice())?;
+        options.check()?;
         let psi_u = sources::psi_and_psi_u(self, options.jacobian, u, v).1;
         velocity_with(self, &psi_u, u, v, vdot, options)
     }
@@ -402,6 +432,7 @@ pub trait Linkage<const M: usize, const F: usize> {
         ] {
             check_input(name, values)?;
         }
+        options.check()?;
         let psi_u = sources::psi_and_psi_u(self, options.jacobian, u, v).1;
         acceleration_with(self, &psi_u, u, v, udot, vdot, vddot, options)
     }
@@ -528,9 +559,10 @@ fn velocity_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     vdot: &SVector<f64, F>,
     options: &Options,
 ) -> Result<Velocity<M, F>, Error> {
-    let inv = factor(psi_u, Stage::Velocity, options)?;
     let psi_v = sources::psi_v(model, options.jacobian, u, v);
     check_value(Stage::Velocity, "Ψ_v", psi_v.as_slice())?;
+    crate::error::check_scale(Stage::Velocity, psi_u, &psi_v)?;
+    let inv = factor(psi_u, Stage::Velocity, options)?;
     let ratios = inv.inverse * psi_v;
     let udot = -(ratios * vdot);
     check_value(Stage::Velocity, "u̇", udot.as_slice())?;
@@ -553,6 +585,7 @@ fn fused_kinematics<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
 ) -> Result<(Velocity<M, F>, SVector<f64, M>), Error> {
     let k = model.kinematics(u, v, vdot, vddot);
     check_value(Stage::Velocity, "Ψ_v", k.psi_v.as_slice())?;
+    crate::error::check_scale(Stage::Velocity, &k.psi_u, &k.psi_v)?;
     let min_rcond = options.min_rcond(Stage::Velocity);
     if !(k.rcond > 0.0 && k.rcond >= min_rcond) {
         return Err(Error::Singular {
@@ -586,6 +619,7 @@ fn acceleration_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     let inv = invert(psi_u);
     let psi_v = sources::psi_v(model, options.jacobian, u, v);
     check_value(Stage::Acceleration, "Ψ_v", psi_v.as_slice())?;
+    crate::error::check_scale(Stage::Acceleration, psi_u, &psi_v)?;
     acceleration_conditioning(psi_u, &psi_v, inv.rcond, options)?;
     let generated = || model.gamma_by(options.method, u, v, udot, vdot);
     let gamma = sources::gamma(model, options.jacobian, generated, u, v, udot, vdot);

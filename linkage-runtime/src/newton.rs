@@ -35,6 +35,7 @@ pub(crate) fn solve<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
 ) -> Result<Position<M>, Error> {
     check_input("u0", u0.as_slice())?;
     check_input("v", v.as_slice())?;
+    options.check()?;
     let evaluate = |u: &SVector<f64, M>| -> Result<Evaluation<M>, Error> {
         let (psi, psi_u) = psi_and_psi_u(model, options.jacobian, u, v);
         check_value(Stage::Position, "Ψ", psi.as_slice())?;
@@ -56,8 +57,7 @@ pub(crate) fn solve<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     let mut mu = 1e-3;
     for iteration in 1..=options.max_iterations {
         let delta = if options.damped {
-            let gradient =
-                (psi_u.transpose() * psi).amax() / (psi_u.amax() * residual).max(f64::MIN_POSITIVE);
+            let gradient = relative_gradient(&psi_u, &psi);
             let cannot_assemble = || Error::CannotAssemble {
                 residual,
                 closest: u.as_slice().to_vec(),
@@ -114,6 +114,30 @@ pub(crate) fn solve<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
         residual,
         step,
     })
+}
+
+/// How far from a least-squares minimum of ½‖Ψ‖²: the largest |cos| of
+/// the angle between Ψ and a column of Ψ_u, max_j |Ψ_u,jᵀΨ| / (‖Ψ_u,j‖‖Ψ‖)
+/// (0 at a stationary point). Column by column, so that a coordinate whose
+/// column is huge does not hide one that can still reduce Ψ; each factor
+/// scaled first, so that nothing overflows or underflows.
+fn relative_gradient<const M: usize>(psi_u: &SMatrix<f64, M, M>, psi: &SVector<f64, M>) -> f64 {
+    let size = psi.amax();
+    let nonzero = size > 0.0; // false for NaN too
+    if !nonzero {
+        return 0.0;
+    }
+    let psi = psi / size;
+    let mut worst: f64 = 0.0;
+    for j in 0..M {
+        let column = psi_u.column(j);
+        let scale = column.amax();
+        if scale > 0.0 {
+            let c = column / scale;
+            worst = worst.max(c.dot(&psi).abs() / c.norm() / psi.norm());
+        }
+    }
+    worst
 }
 
 fn factor<const M: usize>(

@@ -67,6 +67,33 @@ pub struct SweepOptions {
     pub max_move: f64,
 }
 
+impl SweepOptions {
+    /// That every setting is in its range.
+    pub fn check(&self) -> Result<(), Error> {
+        self.options.check()?;
+        let invalid = |argument, value, why| {
+            Err(Error::InvalidInput {
+                argument,
+                value,
+                why,
+            })
+        };
+        if !self.speed.is_finite() {
+            return invalid("speed", self.speed, "the driver's speed must be finite");
+        }
+        for (argument, value) in [
+            ("continuity", self.continuity),
+            ("locate_tolerance", self.locate_tolerance),
+            ("max_move", self.max_move),
+        ] {
+            if !(value > 0.0 && value.is_finite()) {
+                return invalid(argument, value, "must be positive and finite");
+            }
+        }
+        Ok(())
+    }
+}
+
 impl Default for SweepOptions {
     fn default() -> Self {
         SweepOptions {
@@ -516,9 +543,9 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         carries: bool,
         trig: &mut TrigCarrier<M, F>,
         on_pose: &mut P,
-    ) {
+    ) -> Result<(), Error> {
         if !self.fused() || at.track.state.rcond < REGULAR_RCOND {
-            return;
+            return Ok(());
         }
         let options = &self.options;
         let min_rcond = self
@@ -607,7 +634,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             taken += 1;
             at.index = index;
             at.step += 1;
-            on_pose(&self.pose(&state, at.step, direction));
+            on_pose(&self.pose(&state, at.step, direction)?);
             at.recorded += 1;
             if stop == Some(index) {
                 break;
@@ -618,6 +645,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             at.last_grid = state;
             at.previous_grid = previous;
         }
+        Ok(())
     }
 
     fn attempt(&self, from: &State<M, F>, t: f64) -> Result<State<M, F>, Rejection> {
@@ -990,18 +1018,40 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         .is_ok()
     }
 
-    fn pose(&self, state: &State<M, F>, step: usize, direction: f64) -> SweepPose<M, F> {
+    /// The pose at the sweep's speed; an error if scaling to that speed
+    /// overflows (an absurd speed for the step).
+    #[inline]
+    fn pose(
+        &self,
+        state: &State<M, F>,
+        step: usize,
+        direction: f64,
+    ) -> Result<SweepPose<M, F>, Error> {
         let rate = self.rate * direction;
-        SweepPose {
+        let pose = SweepPose {
             step,
             v: self.v(state.t),
             u: state.u,
             vdot: self.dir * rate,
             udot: state.du * rate,
-            uddot: state.ddu * (rate * rate),
+            uddot: state.ddu * rate * rate,
             det: state.det,
             rcond: state.rcond,
             iterations: state.iterations,
+        };
+        let sum = pose.v.sum() + pose.vdot.sum() + pose.udot.sum() + pose.uddot.sum();
+        if sum.is_finite() {
+            Ok(pose)
+        } else {
+            let finite = |x: &SVector<f64, M>| x.iter().all(|v| v.is_finite());
+            Err(Error::NonFiniteValue {
+                stage: if finite(&pose.udot) {
+                    Stage::Acceleration
+                } else {
+                    Stage::Velocity
+                },
+                quantity: "the sweep's velocities and accelerations at its speed",
+            })
         }
     }
 }
@@ -1078,6 +1128,15 @@ where
     };
     check_input("from", base.as_slice())?;
     check_input("step", dir.as_slice())?;
+    options.check()?;
+    let moves = dir.norm() > 0.0; // false for NaN too
+    if !moves {
+        return Err(Error::InvalidInput {
+            argument: "drive",
+            value: dir.norm(),
+            why: "the drive does not move (from = to, or a zero step): no direction to follow",
+        });
+    }
     let tracker = Tracker {
         model,
         options: *options,
@@ -1097,7 +1156,7 @@ where
             min_rcond,
         });
     }
-    on_pose(&tracker.pose(&state, 0, 1.0));
+    on_pose(&tracker.pose(&state, 0, 1.0)?);
     let mut at = Progress {
         track: Track::new(state),
         index: 0,
@@ -1118,7 +1177,7 @@ where
     let closes = |reversals: usize, direction: f64| rocking && reversals >= 2 && direction > 0.0;
     while at.step < steps {
         let stop = closes(reversals, direction).then_some(0);
-        tracker.run_fast(&mut at, direction, steps, stop, carries, &mut trig, on_pose);
+        tracker.run_fast(&mut at, direction, steps, stop, carries, &mut trig, on_pose)?;
         if closes(reversals, direction) && at.index == 0 && at.step > 0 {
             return Ok(SweepSummary {
                 events,
@@ -1196,7 +1255,7 @@ where
         }
         let state = at.track.state;
         if tracker.keeps_accuracy(&state) {
-            on_pose(&tracker.pose(&state, at.step, direction));
+            on_pose(&tracker.pose(&state, at.step, direction)?);
             at.recorded += 1;
         }
         at.previous_grid = at.last_grid;

@@ -1,0 +1,603 @@
+//! Reliability: random worlds and garbage, and the library never lies.
+//!
+//! Random four-bars, slider-cranks and six-bars — link lengths over six
+//! orders of magnitude, zero-length links, coincident pivots, equal
+//! lengths, negative and non-finite ones — at random driver values,
+//! velocities and accelerations (NaN, ±∞, huge and subnormal included),
+//! from random initial guesses, through every entry point of the runtime.
+//! The properties:
+//!
+//! - nothing panics;
+//! - no NaN or ∞ inside an `Ok`;
+//! - an `Ok` is right: ‖Ψ‖∞ meets the tolerance, Ψ_u u̇ + Ψ_v v̇ = 0 and
+//!   method A = method B to the accuracy promised, and a four-bar or
+//!   slider-crank the law of cosines says cannot be assembled is never
+//!   `Ok`;
+//! - an `Err` is of the right kind: `NonFiniteInput` exactly when an input
+//!   is not finite, `CannotAssemble` never where the closed form says the
+//!   mechanism assembles.
+//!
+//! The number of cases per mechanism is `LINKAGE_CASES` (default 2000, what
+//! CI runs); the long run, 10⁶ per mechanism:
+//!
+//!     LINKAGE_CASES=1000000 cargo test --release --test reliability -- --nocapture
+//!
+//! A failure is shrunk by proptest to the smallest world that shows it.
+
+mod common;
+
+use common::{FourBar, SixBar, SliderCrank};
+use linkage::prelude::*;
+use proptest::prelude::*;
+use proptest::test_runner::{Config, RngSeed, TestCaseError, TestRunner};
+use std::cell::RefCell;
+use std::collections::BTreeMap;
+use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::time::Instant;
+
+fn cases() -> u32 {
+    std::env::var("LINKAGE_CASES")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(2000)
+}
+
+fn runner() -> TestRunner {
+    let mut config = Config::with_cases(cases());
+    config.failure_persistence = None;
+    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
+        config.rng_seed = RngSeed::Fixed(0x7265_6c69_6162_6c65);
+    }
+    TestRunner::new(config)
+}
+
+/// Awkward numbers: NaN, ±∞, the extremes, subnormals, negative, and
+/// arbitrary bit patterns.
+fn special() -> BoxedStrategy<f64> {
+    prop_oneof![
+        Just(f64::NAN),
+        Just(f64::INFINITY),
+        Just(f64::NEG_INFINITY),
+        Just(f64::MAX),
+        Just(-f64::MAX),
+        Just(f64::MIN_POSITIVE),
+        Just(5e-324),
+        Just(1e300),
+        Just(-1e-300),
+        Just(0.0),
+        Just(-0.0),
+        any::<u64>().prop_map(f64::from_bits),
+    ]
+    .boxed()
+}
+
+/// A link length: mostly 1e-3 … 1e3, sometimes zero, one, negative or
+/// special.
+fn length() -> BoxedStrategy<f64> {
+    prop_oneof![
+        12 => (-3.0f64..3.0).prop_map(|e| 10f64.powf(e)),
+        1 => Just(0.0),
+        1 => Just(1.0),
+        1 => (-3.0f64..3.0).prop_map(|e| -(10f64.powf(e))),
+        1 => special(),
+    ]
+    .boxed()
+}
+
+/// A driver value, velocity or acceleration: mostly moderate, sometimes
+/// huge or special.
+fn number(range: f64) -> BoxedStrategy<f64> {
+    prop_oneof![
+        14 => -range..range,
+        1 => -1e12f64..1e12,
+        1 => special(),
+    ]
+    .boxed()
+}
+
+/// What happened, by kind.
+#[derive(Default, Debug)]
+struct Tally {
+    cases: usize,
+    ok: usize,
+    errors: BTreeMap<&'static str, usize>,
+    checked_closed_form: usize,
+}
+
+impl Tally {
+    fn error(&mut self, e: &Error) {
+        let kind = match e {
+            Error::NonFiniteInput { .. } => "NonFiniteInput",
+            Error::NotConverged { .. } => "NotConverged",
+            Error::Singular { .. } => "Singular",
+            Error::CannotAssemble { .. } => "CannotAssemble",
+            Error::NonFiniteValue { .. } => "NonFiniteValue",
+            Error::Underflow { .. } => "Underflow",
+            Error::InvalidInput { .. } => "InvalidInput",
+            _ => "other",
+        };
+        *self.errors.entry(kind).or_default() += 1;
+    }
+}
+
+/// What the closed form says of an assembly: the distance to close, and the
+/// interval it must fall in.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Truth {
+    Assembles,
+    Cannot,
+    /// Too close to the edge (or not finite) to say.
+    Unknown,
+}
+
+fn four_bar_truth(l: [f64; 4], theta2: f64) -> Truth {
+    if !l.iter().all(|x| x.is_finite()) || !theta2.is_finite() || theta2.abs() > 1e6 {
+        return Truth::Unknown;
+    }
+    let b = Vector2::new(l[1] * theta2.cos(), l[1] * theta2.sin());
+    // hypot: no overflow for lengths near f64::MAX.
+    let bd = (l[0] - b.x).hypot(b.y);
+    let (l3, l4) = (l[2].abs(), l[3].abs());
+    let scale = l.iter().map(|x| x.abs()).sum::<f64>();
+    // Residual tolerance 1e-9 absolute: a gap below that is "assembled".
+    let margin = (1e-6 * scale).max(1e-7);
+    if bd > (l3 - l4).abs() + margin && bd < l3 + l4 - margin {
+        Truth::Assembles
+    } else if bd > l3 + l4 + margin || bd < (l3 - l4).abs() - margin {
+        Truth::Cannot
+    } else {
+        Truth::Unknown
+    }
+}
+
+fn slider_truth(r: f64, l: f64, e: f64, theta2: f64) -> Truth {
+    if ![r, l, e, theta2].iter().all(|x| x.is_finite()) || theta2.abs() > 1e6 {
+        return Truth::Unknown;
+    }
+    let gap = (r * theta2.sin() - e).abs();
+    let margin = (1e-6 * (r.abs() + l.abs() + e.abs())).max(1e-7);
+    if gap < l.abs() - margin {
+        Truth::Assembles
+    } else if gap > l.abs() + margin {
+        Truth::Cannot
+    } else {
+        Truth::Unknown
+    }
+}
+
+fn all_finite(xs: impl IntoIterator<Item = f64>) -> bool {
+    xs.into_iter().all(f64::is_finite)
+}
+
+/// The properties of one analysis of one world.
+#[allow(clippy::too_many_arguments)]
+fn check<L: Linkage<M, 1>, const M: usize>(
+    model: &L,
+    guess: SVector<f64, M>,
+    v: f64,
+    vdot: f64,
+    vddot: f64,
+    damped: bool,
+    truth: Truth,
+    tally: &RefCell<Tally>,
+) -> Result<(), TestCaseError> {
+    let options = Options {
+        damped,
+        ..Options::default()
+    };
+    let (v, vdot, vddot) = (vector![v], vector![vdot], vector![vddot]);
+    let inputs_finite = all_finite(guess.iter().chain(&v).chain(&vdot).chain(&vddot).copied());
+    let result = catch_unwind(AssertUnwindSafe(|| {
+        model.analyze(&guess, &v, &vdot, &vddot, &options)
+    }))
+    .map_err(|_| TestCaseError::fail("analyze panicked"))?;
+    let mut t = tally.borrow_mut();
+    t.cases += 1;
+    if truth != Truth::Unknown {
+        t.checked_closed_form += 1;
+    }
+    match result {
+        Ok(a) => {
+            t.ok += 1;
+            drop(t);
+            prop_assert!(inputs_finite, "Ok from non-finite input");
+            prop_assert!(
+                truth != Truth::Cannot,
+                "Ok where the mechanism cannot be assembled: {a:?}"
+            );
+            let values =
+                a.u.iter()
+                    .chain(&a.udot)
+                    .chain(&a.uddot)
+                    .chain(a.ratios.iter())
+                    .copied()
+                    .chain(
+                        a.points
+                            .as_ref()
+                            .iter()
+                            .chain(a.point_velocities.as_ref())
+                            .chain(a.point_accelerations.as_ref())
+                            .flat_map(|p| [p.x, p.y]),
+                    )
+                    .chain([a.residual, a.rcond]);
+            prop_assert!(all_finite(values), "NaN or ∞ inside Ok: {a:?}");
+            // The pose closes.
+            let psi = catch_unwind(AssertUnwindSafe(|| model.psi(&a.u, &v)))
+                .map_err(|_| TestCaseError::fail("psi panicked"))?;
+            prop_assert!(
+                psi.amax() <= options.residual_tol,
+                "‖Ψ‖∞ = {} above the tolerance",
+                psi.amax()
+            );
+            // The velocities solve their equation.
+            let (psi_u, psi_v) = (model.psi_u(&a.u, &v), model.psi_v(&a.u, &v));
+            let residual = (psi_u * a.udot + psi_v * vdot).amax();
+            let scale = psi_u.amax() * a.udot.amax() + psi_v.amax() * vdot.amax();
+            prop_assert!(
+                residual <= options.accuracy * scale + 1e-300,
+                "Ψ_u u̇ + Ψ_v v̇ = {residual} against {scale}"
+            );
+            // Method A = method B (and the fused γ).
+            let with = |method| Options { method, ..options };
+            let a_acc = model.acceleration(
+                &a.u,
+                &v,
+                &a.udot,
+                &vdot,
+                &vddot,
+                &with(AccelerationMethod::A),
+            );
+            let b_acc = model.acceleration(
+                &a.u,
+                &v,
+                &a.udot,
+                &vdot,
+                &vddot,
+                &with(AccelerationMethod::B),
+            );
+            // The size of the terms ü is made of, Ψ_u⁻¹(Ψ_v v̈ + γ), before
+            // they cancel: γ's terms are method B's blocks times the
+            // velocities (l·cos θ·θ̇² and the like), which may cancel to
+            // much less than each.
+            let (ud, vd) = (a.udot.amax(), vdot.amax());
+            let gamma_terms = model.psi_u_udot_u(&a.u, &v, &a.udot).amax() * ud
+                + model.psi_u_udot_v(&a.u, &v, &a.udot).amax() * vd
+                + model.psi_v_vdot_u(&a.u, &v, &vdot).amax() * ud
+                + model.psi_v_vdot_v(&a.u, &v, &vdot).amax() * vd;
+            let inverse = linkage::invert(&psi_u).inverse;
+            let terms = (M as f64) * inverse.amax() * ((psi_v * vddot).amax() + gamma_terms);
+            match (a_acc, b_acc) {
+                (Ok(x), Ok(y)) => {
+                    let size = x.amax().max(y.amax()).max(a.uddot.amax()).max(terms);
+                    prop_assert!(
+                        (x - y).amax() <= options.accuracy * size + 1e-300,
+                        "method A {x:?} ≠ method B {y:?}"
+                    );
+                    prop_assert!((x - a.uddot).amax() <= options.accuracy * size + 1e-300);
+                }
+                (x, y) => prop_assert!(false, "the methods disagree on success: {x:?} vs {y:?}"),
+            }
+        }
+        Err(e) => {
+            t.error(&e);
+            drop(t);
+            match &e {
+                Error::NonFiniteInput { .. } => {
+                    prop_assert!(!inputs_finite, "NonFiniteInput for finite input: {e}")
+                }
+                _ => prop_assert!(inputs_finite, "non-finite input reported as {e}"),
+            }
+            if let Error::CannotAssemble { residual, .. } = &e {
+                prop_assert!(
+                    truth != Truth::Assembles,
+                    "CannotAssemble where the mechanism assembles: {e}"
+                );
+                prop_assert!(residual.is_finite() && *residual > 0.0);
+            }
+        }
+    }
+    // Every other entry point on the same world: no panic, no NaN in Ok.
+    let u = guess;
+    let entry = catch_unwind(AssertUnwindSafe(|| {
+        let mut fine = true;
+        if let Ok(p) = model.solve_position(&u, &v, &options) {
+            fine &= all_finite(p.u.iter().copied()) && p.residual <= options.residual_tol;
+        }
+        if let Ok(vel) = model.velocity(&u, &v, &vdot, &options) {
+            fine &= all_finite(vel.udot.iter().chain(vel.ratios.iter()).copied())
+                && vel.rcond.is_finite();
+        }
+        let udot = SVector::<f64, M>::repeat(0.5);
+        if let Ok(acc) = model.acceleration(&u, &v, &udot, &vdot, &vddot, &options) {
+            fine &= all_finite(acc.iter().copied());
+        }
+        fine
+    }))
+    .map_err(|_| TestCaseError::fail("an entry point panicked"))?;
+    prop_assert!(
+        entry,
+        "NaN or ∞ inside an Ok of solve_position, velocity or acceleration"
+    );
+    Ok(())
+}
+
+fn report(name: &str, tally: &Tally, seconds: f64) {
+    eprintln!(
+        "{name}: {} cases in {seconds:.1} s, {} Ok, errors {:?}, {} checked against the closed form; panics 0, NaN in Ok 0, wrong Ok 0, wrong Err 0",
+        tally.cases, tally.ok, tally.errors, tally.checked_closed_form
+    );
+}
+
+#[test]
+fn four_bars_never_lie() {
+    let tally = RefCell::new(Tally::default());
+    let start = Instant::now();
+    // Mode 0: independent lengths; 1: a parallelogram (l3 = l1, l4 = l2);
+    // 2: coincident pivots (l1 = 0); 3: all equal; 4–7: built around a pose
+    // (C anywhere), guessed from near or far.
+    let world = (
+        0..8usize,
+        [length(), length(), length(), length()],
+        [number(10.0), number(10.0)],
+        number(10.0),
+        number(100.0),
+        number(1e4),
+        any::<bool>(),
+        (-3.0f64..3.0, -3.0f64..3.0, -4.0f64..0.5),
+    );
+    runner()
+        .run(
+            &world,
+            |(mode, mut l, [mut g3, mut g4], theta2, omega, alpha, damped, (cx, cy, noise))| {
+                match mode {
+                    1 => {
+                        l[2] = l[0];
+                        l[3] = l[1];
+                    }
+                    2 => l[0] = 0.0,
+                    3 => l = [l[0]; 4],
+                    4..=7 if l[0].is_finite() && l[1].is_finite() && theta2.is_finite() => {
+                        // C at (cx, cy) in units of the frame: the pose exists.
+                        let unit = l[0].abs().max(l[1].abs()).max(1e-3);
+                        let b = Vector2::new(l[1] * theta2.cos(), l[1] * theta2.sin());
+                        let c = Vector2::new(cx, cy) * unit;
+                        let d = Vector2::new(l[0], 0.0);
+                        l[2] = (c - b).norm();
+                        l[3] = (d - c).norm();
+                        let exact = [(c - b).y.atan2((c - b).x), (d - c).y.atan2((d - c).x)];
+                        let off = 10f64.powf(noise);
+                        g3 = exact[0] + off * (g3.is_finite() as u8 as f64) * g3.signum();
+                        g4 = exact[1] - off * (g4.is_finite() as u8 as f64) * g4.signum();
+                    }
+                    _ => {}
+                }
+                let bar = FourBar {
+                    l1: l[0],
+                    l2: l[1],
+                    l3: l[2],
+                    l4: l[3],
+                };
+                check(
+                    &bar,
+                    vector![g3, g4],
+                    theta2,
+                    omega,
+                    alpha,
+                    damped,
+                    four_bar_truth(l, theta2),
+                    &tally,
+                )
+            },
+        )
+        .unwrap();
+    let tally = tally.into_inner();
+    report("four-bars", &tally, start.elapsed().as_secs_f64());
+    assert!(tally.ok > 0 && tally.errors.contains_key("CannotAssemble"));
+}
+
+#[test]
+fn slider_cranks_never_lie() {
+    let tally = RefCell::new(Tally::default());
+    let start = Instant::now();
+    let world = (
+        [
+            length(),
+            length(),
+            prop_oneof![3 => Just(0.0), 7 => length()].boxed(),
+        ],
+        [number(10.0), number(1e3)],
+        number(10.0),
+        number(100.0),
+        number(1e4),
+        any::<bool>(),
+        (any::<bool>(), -1.5f64..1.5, -4.0f64..0.5),
+    );
+    runner()
+        .run(
+            &world,
+            |(
+                [r, l, mut e],
+                [mut g3, mut gs],
+                theta2,
+                omega,
+                alpha,
+                damped,
+                (built, theta3, noise),
+            )| {
+                if built && [r, l, theta2].iter().all(|x| x.is_finite()) {
+                    // The rod at θ3: the offset that puts the slider there.
+                    e = r * theta2.sin() + l * theta3.sin();
+                    let s = r * theta2.cos() + l * theta3.cos();
+                    let off = 10f64.powf(noise);
+                    g3 = theta3 + off;
+                    gs = s + off * l.abs();
+                }
+                let crank = SliderCrank { r, l, e };
+                check(
+                    &crank,
+                    vector![g3, gs],
+                    theta2,
+                    omega,
+                    alpha,
+                    damped,
+                    slider_truth(r, l, e, theta2),
+                    &tally,
+                )
+            },
+        )
+        .unwrap();
+    let tally = tally.into_inner();
+    report("slider-cranks", &tally, start.elapsed().as_secs_f64());
+    assert!(tally.ok > 0);
+}
+
+#[test]
+fn six_bars_never_lie() {
+    let tally = RefCell::new(Tally::default());
+    let start = Instant::now();
+    let world = (
+        [length(), length(), length(), length(), length(), length()],
+        [number(3.0), number(100.0), number(100.0)],
+        [number(10.0), number(10.0), number(10.0), number(10.0)],
+        number(10.0),
+        number(100.0),
+        number(1e4),
+        any::<bool>(),
+        (
+            any::<bool>(),
+            [-3.0f64..3.0, -3.0f64..3.0, -3.0f64..3.0, -3.0f64..3.0],
+            -4.0f64..0.5,
+        ),
+    );
+    runner()
+        .run(
+            &world,
+            |(
+                [mut l1, l2, mut l3, mut l4, mut l5, mut l6],
+                [beta, mut gx, mut gy],
+                [mut g3, mut g4, mut g5, mut g6],
+                theta2,
+                omega,
+                alpha,
+                damped,
+                (built, [cx, cy, fx, fy], noise),
+            )| {
+                if built && [l1, l2, beta, theta2].iter().all(|x| x.is_finite()) {
+                    // Both loops closed around a pose: C and F anywhere,
+                    // the ground pivot G from F by the angle of (fy, fx).
+                    let unit = l1.abs().max(l2.abs()).max(1e-3);
+                    let b = Vector2::new(l2 * theta2.cos(), l2 * theta2.sin());
+                    let c = Vector2::new(cx, cy) * unit;
+                    l1 = l1.abs();
+                    let d = Vector2::new(l1, 0.0);
+                    l3 = (c - b).norm();
+                    l4 = (d - c).norm();
+                    let t3 = (c - b).y.atan2((c - b).x);
+                    let t4 = (d - c).y.atan2((d - c).x);
+                    let e = 0.8 * l3;
+                    let e_point = b + Vector2::new((t3 + beta).cos(), (t3 + beta).sin()) * e;
+                    let f = e_point + Vector2::new(fx, fy) * unit;
+                    l5 = (f - e_point).norm();
+                    let t5 = (f - e_point).y.atan2((f - e_point).x);
+                    l6 = unit * (1.0 + fx.abs());
+                    let t6 = fy;
+                    let g = f - Vector2::new(t6.cos(), t6.sin()) * l6;
+                    (gx, gy) = (g.x, g.y);
+                    let off = 10f64.powf(noise);
+                    (g3, g4, g5, g6) = (t3 + off, t4 - off, t5 + off, t6 - off);
+                }
+                let six = SixBar {
+                    l1,
+                    l2,
+                    l3,
+                    l4,
+                    e: 0.8 * l3,
+                    beta,
+                    l5,
+                    l6,
+                    gx,
+                    gy,
+                };
+                check(
+                    &six,
+                    vector![g3, g4, g5, g6],
+                    theta2,
+                    omega,
+                    alpha,
+                    damped,
+                    Truth::Unknown,
+                    &tally,
+                )
+            },
+        )
+        .unwrap();
+    let tally = tally.into_inner();
+    report("six-bars", &tally, start.elapsed().as_secs_f64());
+    assert!(tally.ok > 0);
+}
+
+/// Fuzzing the runtime's public entry points with arbitrary f64 bit
+/// patterns: every argument, every parameter, and sweeps over random
+/// drives. No panic, and no NaN or ∞ in any `Ok`.
+#[test]
+fn arbitrary_bit_patterns_never_panic() {
+    let start = Instant::now();
+    let bits = || any::<u64>().prop_map(f64::from_bits);
+    let world = (
+        [bits(), bits(), bits(), bits()],
+        [bits(), bits()],
+        [bits(), bits(), bits(), bits()],
+        0..64usize,
+    );
+    let count = RefCell::new((0usize, 0usize));
+    runner()
+        .run(
+            &world,
+            |([l1, l2, l3, l4], [g3, g4], [v, vdot, vddot, to], steps)| {
+                let bar = FourBar { l1, l2, l3, l4 };
+                let options = Options::default();
+                let (u, v1, vd, vdd) = (vector![g3, g4], vector![v], vector![vdot], vector![vddot]);
+                let fine = catch_unwind(AssertUnwindSafe(|| {
+                    let mut fine = true;
+                    if let Ok(a) = bar.analyze(&u, &v1, &vd, &vdd, &options) {
+                        fine &= all_finite(a.u.iter().chain(&a.udot).chain(&a.uddot).copied());
+                    }
+                    if let Ok(p) = bar.solve_position(
+                        &u,
+                        &v1,
+                        &Options {
+                            damped: true,
+                            ..options
+                        },
+                    ) {
+                        fine &= all_finite(p.u.iter().copied());
+                    }
+                    let k = bar.kinematics(&u, &v1, &vd, &vdd);
+                    let _ = linkage::invert(&k.psi_u);
+                    let drive = Drive::Line {
+                        from: v1,
+                        to: vector![to],
+                        steps,
+                    };
+                    if let Ok(sweep) = bar.sweep(&u, &drive, &SweepOptions::default()) {
+                        for p in &sweep.poses {
+                            fine &= all_finite(p.u.iter().chain(&p.udot).chain(&p.uddot).copied());
+                        }
+                    }
+                    fine
+                }))
+                .map_err(|_| TestCaseError::fail("panicked"))?;
+                let mut c = count.borrow_mut();
+                c.0 += 1;
+                c.1 += usize::from(fine);
+                prop_assert!(fine, "NaN or ∞ inside an Ok");
+                Ok(())
+            },
+        )
+        .unwrap();
+    let (cases, _) = count.into_inner();
+    eprintln!(
+        "bit patterns: {cases} cases in {:.1} s; panics 0, NaN in Ok 0",
+        start.elapsed().as_secs_f64()
+    );
+}
