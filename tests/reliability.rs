@@ -114,6 +114,7 @@ impl Tally {
             Error::NonFiniteValue { .. } => "NonFiniteValue",
             Error::Underflow { .. } => "Underflow",
             Error::InvalidInput { .. } => "InvalidInput",
+            Error::SubstepLimit { .. } => "SubstepLimit",
             _ => "other",
         };
         *self.errors.entry(kind).or_default() += 1;
@@ -600,4 +601,68 @@ fn arbitrary_bit_patterns_never_panic() {
         "bit patterns: {cases} cases in {:.1} s; panics 0, NaN in Ok 0",
         start.elapsed().as_secs_f64()
     );
+}
+
+/// Failures the long campaigns found, kept as fixed cases.
+#[test]
+fn regressions() {
+    // All links 1, θ₂ = 187°: the pivots B and D are 1.9963 apart, just
+    // inside the dyad's reach of 2. From θ₃ = θ₄ = 0 the iterates stay
+    // symmetric and stall at the stretched dyad, a saddle of ½‖Ψ‖² with
+    // ‖Ψ‖∞ = 3.7e-3; it was once reported as CannotAssemble.
+    let bar = FourBar {
+        l1: 1.0,
+        l2: 1.0,
+        l3: 1.0,
+        l4: 1.0,
+    };
+    let options = Options {
+        damped: true,
+        ..Options::default()
+    };
+    let theta2 = -9.303165937741154;
+    let pose = bar
+        .solve_position(&vector![-1e-300, -1e-300], &vector![theta2], &options)
+        .expect("the four-bar assembles");
+    assert!(pose.residual <= options.residual_tol);
+    assert_eq!(four_bar_truth([1.0; 4], theta2), Truth::Assembles);
+}
+
+/// A frame of 3e23 with a crank of 1.27 driven at θ̇₂ = −1e-300: the true
+/// u̇ is about 1e-323, a subnormal number with no relative precision left.
+/// It was once returned as `Ok` with u̇ = 0; now it is an `Underflow`.
+#[test]
+fn subnormal_velocities_are_underflow() {
+    let (l1, l2, theta2): (f64, f64, f64) =
+        (2.9847149370108802e23, 1.2736528197825383, 9.527996370732259);
+    let b = Vector2::new(l2 * theta2.cos(), l2 * theta2.sin());
+    let c = Vector2::new(2.9748600056257435, 0.2004409639425302) * l1;
+    let d = Vector2::new(l1, 0.0);
+    let bar = FourBar {
+        l1,
+        l2,
+        l3: (c - b).norm(),
+        l4: (d - c).norm(),
+    };
+    let guess = vector![(c - b).y.atan2((c - b).x), (d - c).y.atan2((d - c).x)];
+    let options = Options::default();
+    let result = bar.analyze(
+        &guess,
+        &vector![theta2],
+        &vector![-1e-300],
+        &vector![0.0],
+        &options,
+    );
+    assert!(matches!(result, Err(Error::Underflow { .. })), "{result:?}");
+    // The same mechanism at an ordinary speed is fine.
+    let a = bar
+        .analyze(
+            &guess,
+            &vector![theta2],
+            &vector![-1.0],
+            &vector![0.0],
+            &options,
+        )
+        .expect("an ordinary speed");
+    assert!(a.udot.amax() > 0.0);
 }

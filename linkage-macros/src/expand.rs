@@ -13,14 +13,10 @@ use quote::{format_ident, quote};
 /// or, if the attribute has mistakes, every error plus a stub implementation
 /// so that the rest of the user's code still type-checks.
 pub fn expand(attr: TokenStream, item: TokenStream) -> TokenStream {
-    let mut errors = Errors::default();
-    let input = Input::parse(attr, item.clone(), &mut errors);
-    let generated = input
-        .as_ref()
-        .and_then(|input| generate(input, &mut errors));
-    match (errors.combined(), generated) {
-        (None, Some(tokens)) => tokens,
-        (Some(error), _) => {
+    let (input, result) = run(attr, item.clone());
+    match result {
+        Ok(tokens) => tokens,
+        Err(error) => {
             let compile_errors = error.to_compile_error();
             // The struct with stub items, or the item as written.
             let item = input.as_ref().map(stub).unwrap_or(item);
@@ -29,8 +25,32 @@ pub fn expand(attr: TokenStream, item: TokenStream) -> TokenStream {
                 #compile_errors
             }
         }
-        (None, None) => item,
     }
+}
+
+/// The pipeline's verdict: the parsed input, if the item is a struct, and
+/// the generated items or every error found — always one or the other.
+pub fn run(
+    attr: TokenStream,
+    item: TokenStream,
+) -> (Option<Input>, Result<TokenStream, syn::Error>) {
+    let mut errors = Errors::default();
+    let input = Input::parse(attr, item, &mut errors);
+    let generated = input
+        .as_ref()
+        .and_then(|input| generate(input, &mut errors));
+    let result = match (errors.combined(), generated) {
+        (None, Some(tokens)) => Ok(tokens),
+        (Some(error), _) => Err(error),
+        // Every path that gives up records why; should one not, the user
+        // still gets an error rather than a struct without its methods.
+        (None, None) => Err(syn::Error::new(
+            proc_macro2::Span::call_site(),
+            "#[linkage::linkage(...)] could not read this attribute (an internal \
+             error: please report it with the attribute)",
+        )),
+    };
+    (input, result)
 }
 
 fn generate(input: &Input, errors: &mut Errors) -> Option<TokenStream> {

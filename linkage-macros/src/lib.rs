@@ -14,6 +14,8 @@
 //!
 //! Use it through the `linkage` crate, which documents the attribute.
 
+#![forbid(unsafe_code)]
+
 mod ast;
 mod dag;
 mod diff;
@@ -21,6 +23,8 @@ mod display;
 mod emit;
 mod errors;
 mod expand;
+#[cfg(test)]
+mod fuzz;
 #[cfg(test)]
 mod interp;
 mod lower;

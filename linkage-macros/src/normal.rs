@@ -75,26 +75,13 @@ fn terms(dag: &mut Dag, id: Id, memo: &mut HashMap<Id, Vec<(f64, Id)>>) -> Optio
         Node::Prod(factors) => {
             let mut acc = vec![(1.0, Dag::ONE)];
             for (f, e) in factors {
-                let tf = if e > 0 {
-                    terms(dag, f, memo)?
+                let factor = if e > 0 {
+                    let base = terms(dag, f, memo)?;
+                    power(dag, &base, e)?
                 } else {
-                    let atom = dag.powi(f, e);
-                    vec![(1.0, atom)]
+                    vec![(1.0, dag.powi(f, e))]
                 };
-                for _ in 0..e.max(1) {
-                    if acc.len() * tf.len() > LIMIT {
-                        return None;
-                    }
-                    let mut next = Vec::with_capacity(acc.len() * tf.len());
-                    for &(ca, ma) in &acc {
-                        for &(cb, mb) in &tf {
-                            let product = dag.mul(ma, mb);
-                            let (c, m) = dag.split_coefficient(product);
-                            next.push((ca * cb * c, m));
-                        }
-                    }
-                    acc = collect(next).into_iter().map(|(m, c)| (c, m)).collect();
-                }
+                acc = multiply(dag, &acc, &factor)?;
             }
             acc
         }
@@ -104,6 +91,48 @@ fn terms(dag: &mut Dag, id: Id, memo: &mut HashMap<Id, Vec<(f64, Id)>>) -> Optio
     }
     memo.insert(id, out.clone());
     Some(out)
+}
+
+/// The product of two expanded polynomials, collected, or `None` past the
+/// size limit.
+fn multiply(dag: &mut Dag, a: &[(f64, Id)], b: &[(f64, Id)]) -> Option<Vec<(f64, Id)>> {
+    if a.len() * b.len() > LIMIT {
+        return None;
+    }
+    let mut next = Vec::with_capacity(a.len() * b.len());
+    for &(ca, ma) in a {
+        for &(cb, mb) in b {
+            let product = dag.mul(ma, mb);
+            let (c, m) = dag.split_coefficient(product);
+            next.push((ca * cb * c, m));
+        }
+    }
+    Some(collect(next).into_iter().map(|(m, c)| (c, m)).collect())
+}
+
+/// `base^e` for `e ≥ 1`, expanded: a monomial directly (`(c·m)^e =
+/// c^e·m^e`, abandoned if `c^e` is not a finite nonzero number), a sum by
+/// repeated multiplication — abandoned at once if `e` exceeds the size
+/// limit, since a sum of two or more terms to the `e`-th power has at
+/// least `e + 1` of them.
+fn power(dag: &mut Dag, base: &[(f64, Id)], e: i32) -> Option<Vec<(f64, Id)>> {
+    if let [(c, m)] = base {
+        let coefficient = c.powi(e);
+        if !coefficient.is_normal() {
+            return None;
+        }
+        let raised = dag.powi(*m, e);
+        let (k, monomial) = dag.split_coefficient(raised);
+        return Some(vec![(coefficient * k, monomial)]);
+    }
+    if usize::try_from(e).ok()? > LIMIT {
+        return None;
+    }
+    let mut acc = base.to_vec();
+    for _ in 1..e {
+        acc = multiply(dag, &acc, base)?;
+    }
+    Some(acc)
 }
 
 #[cfg(test)]
@@ -127,6 +156,29 @@ mod tests {
         let b = expand(&mut dag, poly).unwrap();
         assert!(same(&a, &b));
         assert_ne!(sq, poly);
+    }
+
+    #[test]
+    fn huge_powers_are_immediate_or_abandoned() {
+        let mut dag = Dag::new();
+        let x = dag.sym(Symbol::Coord(0));
+        let y = dag.sym(Symbol::Coord(1));
+        // (x^65536)^65536: the exponents overflow i32, the factor stays
+        // nested, and its normal form is one monomial, found at once.
+        let big = dag.powi(x, 65536);
+        let bigger = dag.powi(big, 65536);
+        let p = expand(&mut dag, bigger).unwrap();
+        assert_eq!(p.len(), 1);
+        // (x + y)^65536 has 65537 terms: past the limit, abandoned at once.
+        let s = dag.add(x, y);
+        let sp = dag.powi(s, 65536);
+        assert!(expand(&mut dag, sp).is_none());
+        // (x + y)^3 still multiplies out: x³ + 3x²y + 3xy² + y³.
+        let cube = dag.powi(s, 3);
+        let p = expand(&mut dag, cube).unwrap();
+        let mut coefficients: Vec<f64> = p.iter().map(|&(_, c)| c).collect();
+        coefficients.sort_by(f64::total_cmp);
+        assert_eq!(coefficients, [1.0, 1.0, 3.0, 3.0]);
     }
 
     #[test]

@@ -67,9 +67,13 @@ pub enum Error {
         min_rcond: f64,
     },
     /// The equations have no solution at this driver value: damped Newton
-    /// reached a least-squares minimum of ‖Ψ‖ (Ψ_uᵀΨ ≈ 0) that is not a
-    /// root. The mechanism cannot be assembled here; `residual` says by how
-    /// much it fails to close, `closest` is the pose that comes closest.
+    /// reached a least-squares minimum of ‖Ψ‖ (Ψ_uᵀΨ ≈ 0, and no
+    /// second-order step along the null vector of Ψ_u descends, so not a
+    /// saddle) that is not a root. The mechanism cannot be assembled here;
+    /// `residual` says by how much it fails to close, `closest` is the pose
+    /// that comes closest. For one loop (a four-bar, a slider-crank) every
+    /// such minimum is global; a mechanism of several loops can have local
+    /// ones, which another initial guess may avoid.
     #[error(
         "the mechanism cannot be assembled here: the closest pose leaves ‖Ψ‖∞ = {residual:.6e} \
          (a least-squares minimum, relative gradient {gradient:.1e})"
@@ -82,10 +86,12 @@ pub enum Error {
         /// ‖Ψ_uᵀΨ‖∞ / (‖Ψ_u‖∞‖Ψ‖∞) there.
         gradient: f64,
     },
-    /// The equations' coefficients are so small that f64 holds them only
-    /// as subnormal numbers, whose relative precision is lost: a column or a
-    /// row of [Ψ_u Ψ_v] has no entry above 2⁻⁹⁷⁰ ≈ 1e-292. No result could
-    /// keep the requested accuracy; express the mechanism in larger units.
+    /// The numbers are so small that f64 holds them only as subnormal
+    /// numbers, whose relative precision is lost: a column or a row of
+    /// [Ψ_u Ψ_v] has no entry above 2⁻⁹⁷⁰ ≈ 1e-292, or a velocity or
+    /// acceleration solve has a nonzero right-hand side or a solution
+    /// below it. No result could keep the requested accuracy; express the
+    /// mechanism in other units.
     #[error(
         "{quantity} underflows in the {stage} stage: its scale {scale:.3e} is below the normal range of f64 that keeps relative precision (express the mechanism in larger units)"
     )]
@@ -94,6 +100,15 @@ pub enum Error {
         quantity: &'static str,
         scale: f64,
     },
+    /// A sweep's step needed more sub-steps than
+    /// [`crate::SweepOptions::max_substeps`]: the drive moves too far per
+    /// step for the predictor's largest move (a crank turned through many
+    /// revolutions between two recorded poses). Take more steps, or a
+    /// shorter drive.
+    #[error(
+        "the sweep's step after pose {step} needs more than {limit} sub-steps: the drive moves too far per step (take more steps or a shorter drive)"
+    )]
+    SubstepLimit { step: usize, limit: usize },
     /// A setting or an argument is out of its range (other than not being
     /// finite): a negative tolerance, a drive that does not move.
     #[error("{argument} = {value} is out of range: {why}")]
@@ -166,6 +181,45 @@ pub(crate) fn check_scale<const M: usize, const F: usize>(
         })
     } else {
         Ok(())
+    }
+}
+
+/// Checks that a linear solve A·x = b kept relative precision: where b is
+/// not zero (`b_nonzero`, decided on scaled data so that it cannot
+/// underflow), neither b nor x may lie below 2⁻⁹⁷⁰ (see
+/// [`Error::Underflow`]).
+pub(crate) fn check_solution(
+    stage: Stage,
+    quantity: &'static str,
+    b_nonzero: bool,
+    b_max: f64,
+    x_max: f64,
+) -> Result<(), Error> {
+    let scale = b_max.min(x_max);
+    if b_nonzero && scale < NORMAL_SCALE {
+        Err(Error::Underflow {
+            stage,
+            quantity,
+            scale,
+        })
+    } else {
+        Ok(())
+    }
+}
+
+/// The power of two that brings velocities of largest magnitude `max` near
+/// 1, if they lie outside [2⁻⁴⁰⁰, 2⁴⁰⁰] (where γ, quadratic in them, would
+/// under- or overflow); 1 otherwise, so that ordinary inputs give
+/// bit-identical results. Scaling by a power of two is exact.
+pub(crate) fn velocity_scale(max: f64) -> f64 {
+    const LOW: f64 = f64::from_bits(((1023 - 400) as u64) << 52);
+    const HIGH: f64 = f64::from_bits(((1023 + 400) as u64) << 52);
+    if max > 0.0 && max.is_finite() && !(LOW..=HIGH).contains(&max) {
+        // 2^floor(log2 max), exact for normal and subnormal max.
+        let exponent = max.log2().floor() as i32;
+        2f64.powi(exponent.clamp(-1074, 1023))
+    } else {
+        1.0
     }
 }
 

@@ -482,10 +482,20 @@ pub trait Linkage<const M: usize, const F: usize> {
         check_input("vddot", vddot.as_slice())?;
         let position = self.solve_position(u_guess, v, options)?;
         let u = position.u;
-        let (velocity, uddot) = if options.jacobian == JacobianSource::Generated
+        // The fused kernel where its numbers are ordinary; the separate
+        // solves, which scale γ and check for underflow, at the extremes.
+        let ordinary = |x: f64| x == 0.0 || (1e-100..=1e100).contains(&x);
+        let fused = if options.jacobian == JacobianSource::Generated
             && options.method == AccelerationMethod::Fused
+            && ordinary(vdot.amax())
+            && ordinary(vddot.amax())
         {
             fused_kinematics(self, &u, v, vdot, vddot, options)?
+        } else {
+            None
+        };
+        let (velocity, uddot) = if let Some(fused) = fused {
+            fused
         } else {
             let velocity = velocity_with(self, &position.psi_u, &u, v, vdot, options)?;
             let uddot = acceleration_with(
@@ -566,6 +576,15 @@ fn velocity_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     let ratios = inv.inverse * psi_v;
     let udot = -(ratios * vdot);
     check_value(Stage::Velocity, "u̇", udot.as_slice())?;
+    let vdot_max = vdot.amax();
+    let rhs_nonzero = vdot_max > 0.0 && (psi_v * (vdot / vdot_max)).amax() > 0.0;
+    crate::error::check_solution(
+        Stage::Velocity,
+        "u̇",
+        rhs_nonzero,
+        (psi_v * vdot).amax(),
+        udot.amax(),
+    )?;
     Ok(Velocity {
         udot,
         ratios,
@@ -574,7 +593,9 @@ fn velocity_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
 }
 
 /// Velocities and accelerations from one fused generated evaluation, with
-/// the same conditioning checks as the separate solves.
+/// the same conditioning checks as the separate solves; `None` where the
+/// results are extreme (nonzero and outside 10^±100), which the separate
+/// solves handle with their scaling and underflow checks.
 fn fused_kinematics<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     model: &L,
     u: &SVector<f64, M>,
@@ -582,7 +603,7 @@ fn fused_kinematics<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     vdot: &SVector<f64, F>,
     vddot: &SVector<f64, F>,
     options: &Options,
-) -> Result<(Velocity<M, F>, SVector<f64, M>), Error> {
+) -> Result<Option<(Velocity<M, F>, SVector<f64, M>)>, Error> {
     let k = model.kinematics(u, v, vdot, vddot);
     check_value(Stage::Velocity, "Ψ_v", k.psi_v.as_slice())?;
     crate::error::check_scale(Stage::Velocity, &k.psi_u, &k.psi_v)?;
@@ -597,12 +618,16 @@ fn fused_kinematics<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     check_value(Stage::Velocity, "u̇", k.udot.as_slice())?;
     acceleration_conditioning(&k.psi_u, &k.psi_v, k.rcond, options)?;
     check_value(Stage::Acceleration, "ü", k.uddot.as_slice())?;
+    let ordinary = |x: f64| x == 0.0 || (1e-100..=1e100).contains(&x);
+    if !(ordinary(k.udot.amax()) && ordinary(k.uddot.amax())) {
+        return Ok(None);
+    }
     let velocity = Velocity {
         udot: k.udot,
         ratios: k.inverse * k.psi_v,
         rcond: k.rcond,
     };
-    Ok((velocity, k.uddot))
+    Ok(Some((velocity, k.uddot)))
 }
 
 #[allow(clippy::too_many_arguments)]
@@ -621,12 +646,29 @@ fn acceleration_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     check_value(Stage::Acceleration, "Ψ_v", psi_v.as_slice())?;
     crate::error::check_scale(Stage::Acceleration, psi_u, &psi_v)?;
     acceleration_conditioning(psi_u, &psi_v, inv.rcond, options)?;
-    let generated = || model.gamma_by(options.method, u, v, udot, vdot);
-    let gamma = sources::gamma(model, options.jacobian, generated, u, v, udot, vdot);
+    // γ is quadratic in the velocities: evaluated at velocities scaled
+    // near 1 when they are extreme, then scaled back, so that it neither
+    // underflows nor overflows on the way.
+    let s = crate::error::velocity_scale(udot.amax().max(vdot.amax()));
+    let (udot, vdot) = (udot / s, vdot / s);
+    let generated = || model.gamma_by(options.method, u, v, &udot, &vdot);
+    let gamma_unit = sources::gamma(model, options.jacobian, generated, u, v, &udot, &vdot);
+    check_value(Stage::Acceleration, "γ", gamma_unit.as_slice())?;
+    let gamma = gamma_unit * s * s;
     check_value(Stage::Acceleration, "γ", gamma.as_slice())?;
     let rhs = -(psi_v * vddot + gamma);
     let uddot = inv.inverse * rhs;
     check_value(Stage::Acceleration, "ü", uddot.as_slice())?;
+    let vddot_max = vddot.amax();
+    let rhs_nonzero =
+        gamma_unit.amax() > 0.0 || (vddot_max > 0.0 && (psi_v * (vddot / vddot_max)).amax() > 0.0);
+    crate::error::check_solution(
+        Stage::Acceleration,
+        "ü",
+        rhs_nonzero,
+        rhs.amax(),
+        uddot.amax(),
+    )?;
     Ok(uddot)
 }
 

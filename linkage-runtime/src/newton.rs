@@ -5,7 +5,9 @@
 //! and where Ψ_u is singular or the Newton step does not descend it takes a
 //! Levenberg–Marquardt step −(Ψ_uᵀΨ_u + μI)⁻¹Ψ_uᵀΨ instead. It therefore
 //! ends either at a root or at a least-squares minimum of ‖Ψ‖ with
-//! Ψ_uᵀΨ ≈ 0 and ‖Ψ‖ > 0: there the mechanism cannot be assembled, and the
+//! Ψ_uᵀΨ ≈ 0 and ‖Ψ‖ > 0. A stationary point that is a saddle (a dyad
+//! stretched straight where it could bend to close) is left along the null
+//! vector of Ψ_u; at a minimum the mechanism cannot be assembled, and the
 //! error says how far it is from closing.
 
 use crate::error::{Error, Stage, check_input, check_value};
@@ -20,6 +22,9 @@ const STATIONARY: f64 = 1e-9;
 /// value, so a minimum is located only to about √ε), a relative gradient
 /// below this is a minimum.
 const STATIONARY_AT_ROUNDING: f64 = 1e-6;
+/// Saddles of ½‖Ψ‖² left by second-order steps before a stationary point
+/// is taken for a minimum.
+const MAX_ESCAPES: usize = 4;
 /// The Armijo constant of the line search.
 const ARMIJO: f64 = 1e-4;
 
@@ -55,28 +60,43 @@ pub(crate) fn solve<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     let mut previous_step = f64::INFINITY;
     // The Levenberg–Marquardt parameter, relative to ‖Ψ_uᵀΨ_u‖.
     let mut mu = 1e-3;
+    let mut escapes = 0;
     for iteration in 1..=options.max_iterations {
         let delta = if options.damped {
             let gradient = relative_gradient(&psi_u, &psi);
-            let cannot_assemble = || Error::CannotAssemble {
-                residual,
-                closest: u.as_slice().to_vec(),
-                gradient,
+            // A stationary point of ½‖Ψ‖² that is not a root: a saddle if a
+            // second-order step descends (left, at most MAX_ESCAPES times),
+            // else a minimum, and the mechanism cannot be assembled.
+            let stationary = |escapes: &mut usize| -> Result<SVector<f64, M>, Error> {
+                if *escapes < MAX_ESCAPES {
+                    if let Some(d) = escape_saddle(&evaluate, &u, &psi, &psi_u)? {
+                        *escapes += 1;
+                        return Ok(d);
+                    }
+                }
+                Err(Error::CannotAssemble {
+                    residual,
+                    closest: u.as_slice().to_vec(),
+                    gradient,
+                })
             };
             if residual > options.residual_tol && gradient <= STATIONARY {
-                return Err(cannot_assemble());
-            }
-            match damped_step(&evaluate, &u, &psi, &psi_u, options, &mut mu)? {
-                Some(delta) => delta,
-                None if residual > options.residual_tol && gradient <= STATIONARY_AT_ROUNDING => {
-                    return Err(cannot_assemble());
-                }
-                None => {
-                    return Err(Error::NotConverged {
-                        iterations: iteration - 1,
-                        residual,
-                        step: 0.0,
-                    });
+                stationary(&mut escapes)?
+            } else {
+                match damped_step(&evaluate, &u, &psi, &psi_u, options, &mut mu)? {
+                    Some(delta) => delta,
+                    None if residual > options.residual_tol
+                        && gradient <= STATIONARY_AT_ROUNDING =>
+                    {
+                        stationary(&mut escapes)?
+                    }
+                    None => {
+                        return Err(Error::NotConverged {
+                            iterations: iteration - 1,
+                            residual,
+                            step: 0.0,
+                        });
+                    }
                 }
             }
         } else {
@@ -154,6 +174,77 @@ fn factor<const M: usize>(
             min_rcond,
         })
     }
+}
+
+/// A step off a stationary point of ½‖Ψ‖² that is not a root, if it is a
+/// saddle. There Ψ_uᵀΨ = 0 with Ψ ≠ 0, so Ψ_u is singular and Ψ is
+/// orthogonal to its range; along the null vector n of Ψ_u the first-order
+/// change vanishes and only the curvature of Ψ decides. The trial steps
+/// ±t·n, t from 10⁻⁶ to 1 of the pose's scale, are evaluated and the one
+/// with the smallest ½‖Ψ‖² taken if it is below the current value. (A
+/// four-bar's dyad stretched straight while the pivots are a little closer
+/// than its length is such a saddle: bending it either way closes the loop.)
+fn escape_saddle<const M: usize>(
+    evaluate: &dyn Fn(&SVector<f64, M>) -> Result<Evaluation<M>, Error>,
+    u: &SVector<f64, M>,
+    psi: &SVector<f64, M>,
+    psi_u: &SMatrix<f64, M, M>,
+) -> Result<Option<SVector<f64, M>>, Error> {
+    let Some(n) = null_vector(psi_u) else {
+        return Ok(None);
+    };
+    let merit = |r: &SVector<f64, M>| 0.5 * r.norm_squared();
+    let mut best = (merit(psi), None);
+    let scale = u.amax().max(1.0);
+    for decade in -6..=0 {
+        let t = scale * 10f64.powi(decade);
+        for sign in [1.0, -1.0] {
+            let d = n * (sign * t);
+            let trial = u + d;
+            if !trial.iter().all(|x| x.is_finite()) {
+                continue;
+            }
+            // Outside the domain of Ψ is simply not a way out.
+            let Ok((r, _)) = evaluate(&trial) else {
+                continue;
+            };
+            let value = merit(&r);
+            if value < best.0 {
+                best = (value, Some(d));
+            }
+        }
+    }
+    Ok(best.1)
+}
+
+/// The unit right singular vector of the smallest singular value of A, by
+/// inverse iteration on AᵀA + δI: the largest column of (AᵀA + δI)⁻¹ (where
+/// the null direction dominates) refined three times.
+fn null_vector<const M: usize>(a: &SMatrix<f64, M, M>) -> Option<SVector<f64, M>> {
+    let scale = a.amax();
+    if !(scale.is_finite() && scale > 0.0) {
+        return None;
+    }
+    let b = a / scale;
+    let shifted = b.transpose() * b + SMatrix::<f64, M, M>::identity() * 1e-10;
+    let inv = invert(&shifted);
+    if inv.rcond <= 0.0 {
+        return None;
+    }
+    let mut x = inv
+        .inverse
+        .column_iter()
+        .max_by(|p, q| p.norm().total_cmp(&q.norm()))?
+        .into_owned();
+    for _ in 0..3 {
+        let norm = x.norm();
+        if !(norm.is_finite() && norm > 0.0) {
+            return None;
+        }
+        x = inv.inverse * (x / norm);
+    }
+    let norm = x.norm();
+    (norm.is_finite() && norm > 0.0).then(|| x / norm)
 }
 
 /// One damped step: the Newton step shortened until ½‖Ψ‖² decreases enough,

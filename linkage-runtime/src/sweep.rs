@@ -65,6 +65,11 @@ pub struct SweepOptions {
     /// max(1, ‖u‖∞): near a singular pose the velocity ratios blow up, and
     /// this keeps the predictor from throwing Newton onto a far branch.
     pub max_move: f64,
+    /// The most sub-steps one step of the drive may take (halvings at
+    /// singular poses included): a drive too long for its number of steps
+    /// (a crank turned through 10⁹ revolutions in ten steps) is an
+    /// [`Error::SubstepLimit`] rather than an endless loop.
+    pub max_substeps: usize,
 }
 
 impl SweepOptions {
@@ -90,6 +95,9 @@ impl SweepOptions {
                 return invalid(argument, value, "must be positive and finite");
             }
         }
+        if self.max_substeps == 0 {
+            return invalid("max_substeps", 0.0, "a step needs at least one sub-step");
+        }
         Ok(())
     }
 }
@@ -103,6 +111,7 @@ impl Default for SweepOptions {
             continuity: 0.5,
             locate_tolerance: 1e-12,
             max_move: 0.1,
+            max_substeps: 100_000,
         }
     }
 }
@@ -694,7 +703,15 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         let mut track = from;
         let mut delta = target - track.state.t;
         let min_delta = self.options.locate_tolerance * (target - from.state.t).abs().max(1e-300);
+        let mut substeps = 0;
         while track.state.t != target {
+            substeps += 1;
+            if substeps > self.options.max_substeps {
+                return Err(Error::SubstepLimit {
+                    step: recorded,
+                    limit: self.options.max_substeps,
+                });
+            }
             let t_try = if (target - track.state.t).abs() <= delta.abs() {
                 target
             } else {
