@@ -45,22 +45,36 @@ pub enum Kind {
 }
 
 /// What went wrong drawing the diagrams.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum DiagramError {
     /// The sweep has fewer than two poses.
-    #[error("motion diagrams need a sweep of at least two poses, got {poses}")]
     TooFewPoses { poses: usize },
     /// A value to plot is NaN or infinite.
-    #[error("the {what} of `{name}` is not finite at pose {pose}")]
     NonFinite {
         what: &'static str,
         name: String,
         pose: usize,
     },
     /// plotters could not draw.
-    #[error("drawing failed: {0}")]
     Drawing(String),
 }
+
+impl std::fmt::Display for DiagramError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::TooFewPoses { poses, .. } => write!(
+                f,
+                "motion diagrams need a sweep of at least two poses, got {poses}"
+            ),
+            Self::NonFinite {
+                name, pose, what, ..
+            } => write!(f, "the {what} of `{name}` is not finite at pose {pose}"),
+            Self::Drawing(inner) => write!(f, "drawing failed: {inner}"),
+        }
+    }
+}
+
+impl std::error::Error for DiagramError {}
 
 /// How to draw the motion diagrams of a sweep.
 #[derive(Clone, Debug, PartialEq)]

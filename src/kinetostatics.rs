@@ -27,46 +27,107 @@ use linkage_runtime::Linkage;
 use nalgebra::{DMatrix, DVector, Vector2};
 
 /// What went wrong building or solving the force analysis.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum KinetostaticsError {
-    #[error("`{owner}` names the body `{name}`, which is not in the table (bodies: {known})")]
     UnknownBody {
         owner: String,
         name: String,
         known: String,
     },
-    #[error(
-        "`{owner}` names the point `{name}`, neither a point of the model nor a ground point (points: {known})"
-    )]
     UnknownPoint {
         owner: String,
         name: String,
         known: String,
     },
-    #[error("`{owner}` names the coordinate `{name}`, which the model does not have")]
-    UnknownCoordinate { owner: String, name: String },
-    #[error("the load `{load}` is not assigned to a body (use `load_on`)")]
-    UnassignedLoad { load: String },
-    #[error("no driver: say which body carries the balancing moment (`driver`)")]
+    UnknownCoordinate {
+        owner: String,
+        name: String,
+    },
+    UnassignedLoad {
+        load: String,
+    },
     NoDriver,
     /// Unknowns ≠ equations.
-    #[error(
-        "the table gives {unknowns} unknowns (2 per revolute joint, 3 per prismatic, 1 balancing moment) but {equations} equations (3 per body, 1 per prismatic joint): {why}"
-    )]
     NotSquare {
         unknowns: usize,
         equations: usize,
         why: &'static str,
     },
     /// The equations do not determine these joints' reactions.
-    #[error(
-        "the reactions of the joints {joints:?} are not determined (reciprocal condition {rcond:.1e}): the structure is statically indeterminate there, or can move by itself"
-    )]
-    Indeterminate { joints: Vec<String>, rcond: f64 },
-    #[error("machine: {0}")]
-    Machine(#[from] MachineError),
-    #[error("kinematics: {0}")]
-    Kinematics(#[from] linkage_runtime::Error),
+    Indeterminate {
+        joints: Vec<String>,
+        rcond: f64,
+    },
+    Machine(MachineError),
+    Kinematics(linkage_runtime::Error),
+}
+
+impl std::fmt::Display for KinetostaticsError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::UnknownBody {
+                known, name, owner, ..
+            } => write!(
+                f,
+                "`{owner}` names the body `{name}`, which is not in the table (bodies: {known})"
+            ),
+            Self::UnknownPoint {
+                known, name, owner, ..
+            } => write!(
+                f,
+                "`{owner}` names the point `{name}`, neither a point of the model nor a ground point (points: {known})"
+            ),
+            Self::UnknownCoordinate { name, owner, .. } => write!(
+                f,
+                "`{owner}` names the coordinate `{name}`, which the model does not have"
+            ),
+            Self::UnassignedLoad { load, .. } => write!(
+                f,
+                "the load `{load}` is not assigned to a body (use `load_on`)"
+            ),
+            Self::NoDriver => write!(
+                f,
+                "no driver: say which body carries the balancing moment (`driver`)"
+            ),
+            Self::NotSquare {
+                equations,
+                unknowns,
+                why,
+                ..
+            } => write!(
+                f,
+                "the table gives {unknowns} unknowns (2 per revolute joint, 3 per prismatic, 1 balancing moment) but {equations} equations (3 per body, 1 per prismatic joint): {why}"
+            ),
+            Self::Indeterminate { joints, rcond, .. } => write!(
+                f,
+                "the reactions of the joints {joints:?} are not determined (reciprocal condition {rcond:.1e}): the structure is statically indeterminate there, or can move by itself"
+            ),
+            Self::Machine(inner) => write!(f, "machine: {inner}"),
+            Self::Kinematics(inner) => write!(f, "kinematics: {inner}"),
+        }
+    }
+}
+
+impl std::error::Error for KinetostaticsError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            Self::Machine(e) => Some(e),
+            Self::Kinematics(e) => Some(e),
+            _ => None,
+        }
+    }
+}
+
+impl From<MachineError> for KinetostaticsError {
+    fn from(e: MachineError) -> Self {
+        Self::Machine(e)
+    }
+}
+
+impl From<linkage_runtime::Error> for KinetostaticsError {
+    fn from(e: linkage_runtime::Error) -> Self {
+        Self::Kinematics(e)
+    }
 }
 
 /// How a prismatic joint's guide is directed.

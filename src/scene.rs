@@ -55,26 +55,45 @@ use nalgebra::{SVector, Vector2};
 use std::fmt::Write as _;
 
 /// What went wrong drawing a scene.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum SceneError {
     /// The scene names a point that neither the frame nor the scene's
     /// ground pivots define.
-    #[error("the scene names the point `{name}`, which is not among the frame's points ({known})")]
     UnknownPoint { name: String, known: String },
     /// Arrows were asked for, but the frame has no velocities or
     /// accelerations.
-    #[error("the scene draws {what} arrows but the frame has no {what}")]
     MissingKinematics { what: &'static str },
     /// A coordinate to draw is NaN or infinite.
-    #[error("the {what} of `{name}` is not finite")]
     NonFinite { what: &'static str, name: String },
     /// An animation needs at least two frames.
-    #[error("an animation needs at least two frames, got {frames}")]
     TooFewFrames { frames: usize },
     /// A scale or a size is zero, negative or not finite.
-    #[error("{what} must be positive and finite, got {value}")]
     BadSetting { what: &'static str, value: f64 },
 }
+
+impl std::fmt::Display for SceneError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::UnknownPoint { known, name, .. } => write!(
+                f,
+                "the scene names the point `{name}`, which is not among the frame's points ({known})"
+            ),
+            Self::MissingKinematics { what, .. } => write!(
+                f,
+                "the scene draws {what} arrows but the frame has no {what}"
+            ),
+            Self::NonFinite { name, what, .. } => write!(f, "the {what} of `{name}` is not finite"),
+            Self::TooFewFrames { frames, .. } => {
+                write!(f, "an animation needs at least two frames, got {frames}")
+            }
+            Self::BadSetting { value, what, .. } => {
+                write!(f, "{what} must be positive and finite, got {value}")
+            }
+        }
+    }
+}
+
+impl std::error::Error for SceneError {}
 
 /// The named points of one pose: positions, and, where known, velocities
 /// and accelerations (in the model's length and time units).

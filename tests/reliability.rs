@@ -666,3 +666,42 @@ fn subnormal_velocities_are_underflow() {
         .expect("an ordinary speed");
     assert!(a.udot.amax() > 0.0);
 }
+
+/// A rhombus of unit links (all equal) at θ̇₂ = 88.75, θ̈₂ = 2.2e-308: γ's
+/// terms, of size θ̇₂², cancel, and ü is tiny; that is no underflow (the
+/// error is relative to the terms), and methods A and B must agree. Once
+/// one said `Underflow` while the other said `Ok`.
+#[test]
+fn cancellation_is_not_underflow() {
+    let bar = FourBar {
+        l1: 1.0,
+        l2: 1.0,
+        l3: 1.0,
+        l4: 1.0,
+    };
+    let options = Options {
+        damped: true,
+        ..Options::default()
+    };
+    let (v, vdot, vddot) = (
+        vector![-6.793924208014447],
+        vector![88.75085585176765],
+        vector![2.2250738585072014e-308],
+    );
+    let a = bar
+        .analyze(
+            &vector![5.66924140171174, -1.3335562559465945],
+            &v,
+            &vdot,
+            &vddot,
+            &options,
+        )
+        .expect("the rhombus assembles");
+    for method in [AccelerationMethod::A, AccelerationMethod::B] {
+        let with = Options { method, ..options };
+        let uddot = bar
+            .acceleration(&a.u, &v, &a.udot, &vdot, &vddot, &with)
+            .expect("no underflow");
+        assert!((uddot - a.uddot).amax() <= 1e-9 * vdot[0] * vdot[0]);
+    }
+}

@@ -28,11 +28,10 @@ impl fmt::Display for Stage {
 }
 
 /// Why an analysis failed.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum Error {
     /// An argument holds a NaN or an infinity.
-    #[error("non-finite input: {argument}[{index}] = {value}")]
     NonFiniteInput {
         /// The argument (`"u"`, `"v"`, `"vdot"`, ...).
         argument: &'static str,
@@ -40,10 +39,6 @@ pub enum Error {
         value: f64,
     },
     /// Newton–Raphson used its iterations without meeting the tolerances.
-    #[error(
-        "Newton–Raphson did not converge in {iterations} iterations: \
-         ‖Ψ‖∞ = {residual:.3e}, last step ‖Δu‖∞ = {step:.3e}"
-    )]
     NotConverged {
         iterations: usize,
         /// ‖Ψ‖∞ at the last iterate.
@@ -54,11 +49,6 @@ pub enum Error {
     /// Ψ_u is singular or so ill-conditioned that a solve with it would be
     /// garbage: the mechanism is at (or next to) a dead-centre, limit or
     /// change-point pose, or the equations do not determine u.
-    #[error(
-        "Ψ_u is singular in the {stage} solve: reciprocal condition number {rcond:.3e} \
-         is below {min_rcond:.3e}, the least that keeps the requested accuracy (the pose \
-         is at or near a singular configuration: dead centre, limit position or branch point)"
-    )]
     Singular {
         stage: Stage,
         /// 1/(‖Ψ_u‖₁‖Ψ_u⁻¹‖₁), 0 for an exactly singular matrix.
@@ -74,10 +64,6 @@ pub enum Error {
     /// that comes closest. For one loop (a four-bar, a slider-crank) every
     /// such minimum is global; a mechanism of several loops can have local
     /// ones, which another initial guess may avoid.
-    #[error(
-        "the mechanism cannot be assembled here: the closest pose leaves ‖Ψ‖∞ = {residual:.6e} \
-         (a least-squares minimum, relative gradient {gradient:.1e})"
-    )]
     CannotAssemble {
         /// ‖Ψ‖∞ at the closest pose.
         residual: f64,
@@ -92,9 +78,6 @@ pub enum Error {
     /// acceleration solve has a nonzero right-hand side or a solution
     /// below it. No result could keep the requested accuracy; express the
     /// mechanism in other units.
-    #[error(
-        "{quantity} underflows in the {stage} stage: its scale {scale:.3e} is below the normal range of f64 that keeps relative precision (express the mechanism in larger units)"
-    )]
     Underflow {
         stage: Stage,
         quantity: &'static str,
@@ -105,13 +88,9 @@ pub enum Error {
     /// step for the predictor's largest move (a crank turned through many
     /// revolutions between two recorded poses). Take more steps, or a
     /// shorter drive.
-    #[error(
-        "the sweep's step after pose {step} needs more than {limit} sub-steps: the drive moves too far per step (take more steps or a shorter drive)"
-    )]
     SubstepLimit { step: usize, limit: usize },
     /// A setting or an argument is out of its range (other than not being
     /// finite): a negative tolerance, a drive that does not move.
-    #[error("{argument} = {value} is out of range: {why}")]
     InvalidInput {
         argument: &'static str,
         value: f64,
@@ -120,15 +99,80 @@ pub enum Error {
     /// A generated quantity is NaN or infinite although the inputs are
     /// finite: the pose or the parameters are outside the domain of the
     /// equations (e.g. `sqrt` of a negative number), or a value overflows.
-    #[error(
-        "{quantity} is not finite in the {stage} stage: the pose or the parameters are outside the equations' domain"
-    )]
     NonFiniteValue {
         stage: Stage,
         /// The quantity, e.g. `"Ψ"` or `"ü"`.
         quantity: &'static str,
     },
 }
+
+impl std::fmt::Display for Error {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::NonFiniteInput {
+                argument,
+                index,
+                value,
+                ..
+            } => write!(f, "non-finite input: {argument}[{index}] = {value}"),
+            Self::NotConverged {
+                iterations,
+                residual,
+                step,
+                ..
+            } => write!(
+                f,
+                "Newton–Raphson did not converge in {iterations} iterations: \
+         ‖Ψ‖∞ = {residual:.3e}, last step ‖Δu‖∞ = {step:.3e}"
+            ),
+            Self::Singular {
+                min_rcond,
+                rcond,
+                stage,
+                ..
+            } => write!(
+                f,
+                "Ψ_u is singular in the {stage} solve: reciprocal condition number {rcond:.3e} \
+         is below {min_rcond:.3e}, the least that keeps the requested accuracy (the pose \
+         is at or near a singular configuration: dead centre, limit position or branch point)"
+            ),
+            Self::CannotAssemble {
+                gradient, residual, ..
+            } => write!(
+                f,
+                "the mechanism cannot be assembled here: the closest pose leaves ‖Ψ‖∞ = {residual:.6e} \
+         (a least-squares minimum, relative gradient {gradient:.1e})"
+            ),
+            Self::Underflow {
+                quantity,
+                scale,
+                stage,
+                ..
+            } => write!(
+                f,
+                "{quantity} underflows in the {stage} stage: its scale {scale:.3e} is below the normal range of f64 that keeps relative precision (express the mechanism in larger units)"
+            ),
+            Self::SubstepLimit { limit, step, .. } => write!(
+                f,
+                "the sweep's step after pose {step} needs more than {limit} sub-steps: the drive moves too far per step (take more steps or a shorter drive)"
+            ),
+            Self::InvalidInput {
+                argument,
+                value,
+                why,
+                ..
+            } => write!(f, "{argument} = {value} is out of range: {why}"),
+            Self::NonFiniteValue {
+                quantity, stage, ..
+            } => write!(
+                f,
+                "{quantity} is not finite in the {stage} stage: the pose or the parameters are outside the equations' domain"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for Error {}
 
 /// Checks that every entry of `values` is finite.
 pub(crate) fn check_input(argument: &'static str, values: &[f64]) -> Result<(), Error> {
@@ -184,27 +228,37 @@ pub(crate) fn check_scale<const M: usize, const F: usize>(
     }
 }
 
-/// Checks that a linear solve A·x = b kept relative precision: where b is
-/// not zero (`b_nonzero`, decided on scaled data so that it cannot
-/// underflow), neither b nor x may lie below 2⁻⁹⁷⁰ (see
-/// [`Error::Underflow`]).
+/// Checks that a solve x = A⁻¹·b kept relative precision, judged on the
+/// size of the terms b and x are made of (before any cancellation, which
+/// costs nothing here: the error is relative to the terms): where b is not
+/// zero (`b_nonzero`, decided on scaled data so that it cannot underflow),
+/// neither the terms of b, of size 2^`terms_log2`, nor those of x, about
+/// ‖A⁻¹‖ times larger, may lie below 2⁻⁹⁷⁰ (see [`Error::Underflow`]).
+/// Sizes are compared as logarithms, which cannot underflow.
 pub(crate) fn check_solution(
     stage: Stage,
     quantity: &'static str,
     b_nonzero: bool,
-    b_max: f64,
-    x_max: f64,
+    terms_log2: f64,
+    inverse_max: f64,
 ) -> Result<(), Error> {
-    let scale = b_max.min(x_max);
-    if b_nonzero && scale < NORMAL_SCALE {
+    let x_log2 = terms_log2 + inverse_max.log2();
+    let smallest = terms_log2.min(x_log2);
+    if b_nonzero && smallest < -970.0 {
         Err(Error::Underflow {
             stage,
             quantity,
-            scale,
+            scale: smallest.exp2(),
         })
     } else {
         Ok(())
     }
+}
+
+/// log₂ of the size of a product of matrix and vector terms, ‖A‖·‖x‖, from
+/// their largest entries (−∞ if either is zero).
+pub(crate) fn product_log2(a_max: f64, x_max: f64) -> f64 {
+    a_max.log2() + x_max.log2()
 }
 
 /// The power of two that brings velocities of largest magnitude `max` near

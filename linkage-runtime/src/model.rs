@@ -582,8 +582,8 @@ fn velocity_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
         Stage::Velocity,
         "u̇",
         rhs_nonzero,
-        (psi_v * vdot).amax(),
-        udot.amax(),
+        crate::error::product_log2(psi_v.amax(), vdot_max),
+        inv.inverse.amax(),
     )?;
     Ok(Velocity {
         udot,
@@ -662,12 +662,23 @@ fn acceleration_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     let vddot_max = vddot.amax();
     let rhs_nonzero =
         gamma_unit.amax() > 0.0 || (vddot_max > 0.0 && (psi_v * (vddot / vddot_max)).amax() > 0.0);
+    // The terms: Ψ_v v̈, and γ's, which are second derivatives of Ψ times
+    // two velocities and may cancel in γ (a parallelogram's do, exactly):
+    // sized by max(‖Ψ_u‖, ‖Ψ_v‖, ‖γ(q̇/s)‖)·‖q̇‖², not by γ itself.
+    let qdot_max = udot.amax().max(vdot.amax()) * s;
+    let gamma_terms_log2 = if qdot_max > 0.0 {
+        (2.0 * qdot_max.log2() + psi_u.amax().max(psi_v.amax()).log2())
+            .max(2.0 * s.log2() + gamma_unit.amax().log2())
+    } else {
+        f64::NEG_INFINITY
+    };
+    let terms_log2 = crate::error::product_log2(psi_v.amax(), vddot_max).max(gamma_terms_log2);
     crate::error::check_solution(
         Stage::Acceleration,
         "ü",
         rhs_nonzero,
-        rhs.amax(),
-        uddot.amax(),
+        terms_log2,
+        inv.inverse.amax(),
     )?;
     Ok(uddot)
 }

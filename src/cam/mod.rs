@@ -21,29 +21,51 @@ use nalgebra::Vector2;
 use std::f64::consts::{PI, TAU};
 
 /// What went wrong designing a cam.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum CamError {
-    #[error("{what} must be {must}, got {value}")]
     BadSetting {
         what: &'static str,
         must: &'static str,
         value: f64,
     },
-    #[error("the program's segments take {total}° of the cam's 360°")]
-    TooLong { total: f64 },
+    TooLong {
+        total: f64,
+    },
     /// The profile's radius of curvature falls below zero: the roller
     /// cannot follow the pitch curve there.
-    #[error(
-        "undercut: the pitch curve's radius of curvature is below the roller's radius {roller} for cam angles {ranges:?} (degrees)"
-    )]
     Undercut {
         roller: f64,
         /// (from, to) in degrees.
         ranges: Vec<(f64, f64)>,
     },
-    #[error("no cam up to a base radius of {limit} keeps the pressure angle within {angle}°")]
-    NoSize { limit: f64, angle: f64 },
+    NoSize {
+        limit: f64,
+        angle: f64,
+    },
 }
+
+impl std::fmt::Display for CamError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::BadSetting {
+                must, value, what, ..
+            } => write!(f, "{what} must be {must}, got {value}"),
+            Self::TooLong { total, .. } => {
+                write!(f, "the program's segments take {total}° of the cam's 360°")
+            }
+            Self::Undercut { ranges, roller, .. } => write!(
+                f,
+                "undercut: the pitch curve's radius of curvature is below the roller's radius {roller} for cam angles {ranges:?} (degrees)"
+            ),
+            Self::NoSize { angle, limit, .. } => write!(
+                f,
+                "no cam up to a base radius of {limit} keeps the pressure angle within {angle}°"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for CamError {}
 
 /// One segment of the follower's program.
 #[derive(Clone, Copy, Debug, PartialEq)]

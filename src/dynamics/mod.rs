@@ -37,31 +37,23 @@ use std::sync::Arc;
 pub use table::Table;
 
 /// What went wrong setting up or analysing a machine.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum MachineError {
     /// A body or load names a point the model does not have.
-    #[error(
-        "`{owner}` names the point `{name}`, which the model does not define (its points: {known})"
-    )]
     UnknownPoint {
         owner: String,
         name: String,
         known: String,
     },
     /// A body or load names a coordinate the model does not have.
-    #[error(
-        "`{owner}` names the coordinate `{name}`, which is neither in u nor v (coordinates: {known})"
-    )]
     UnknownCoordinate {
         owner: String,
         name: String,
         known: String,
     },
     /// A force table is not usable.
-    #[error("the table is not usable: {why}")]
     BadTable { why: String },
     /// A number given is out of its range.
-    #[error("{what} must be {must}, got {value}")]
     BadSetting {
         what: &'static str,
         must: &'static str,
@@ -69,17 +61,63 @@ pub enum MachineError {
     },
     /// The kinematics failed (the mechanism cannot be assembled, or meets a
     /// singular pose on its cycle).
-    #[error("kinematics: {0}")]
-    Kinematics(#[from] Error),
+    Kinematics(Error),
     /// The machine does not run a whole cycle.
-    #[error("the mechanism does not complete its cycle: it stops at φ = {phi} ({why})")]
     Incomplete { phi: f64, why: &'static str },
     /// The real motion stops: the kinetic energy would become negative.
-    #[error("the machine stalls at φ = {phi}: its kinetic energy runs out")]
     Stalls { phi: f64 },
     /// No periodic motion was found.
-    #[error("no periodic steady state near ω = {omega}: {why}")]
     NoSteadyState { omega: f64, why: &'static str },
+}
+
+impl std::fmt::Display for MachineError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::UnknownPoint {
+                known, name, owner, ..
+            } => write!(
+                f,
+                "`{owner}` names the point `{name}`, which the model does not define (its points: {known})"
+            ),
+            Self::UnknownCoordinate {
+                known, name, owner, ..
+            } => write!(
+                f,
+                "`{owner}` names the coordinate `{name}`, which is neither in u nor v (coordinates: {known})"
+            ),
+            Self::BadTable { why, .. } => write!(f, "the table is not usable: {why}"),
+            Self::BadSetting {
+                must, value, what, ..
+            } => write!(f, "{what} must be {must}, got {value}"),
+            Self::Kinematics(inner) => write!(f, "kinematics: {inner}"),
+            Self::Incomplete { phi, why, .. } => write!(
+                f,
+                "the mechanism does not complete its cycle: it stops at φ = {phi} ({why})"
+            ),
+            Self::Stalls { phi, .. } => write!(
+                f,
+                "the machine stalls at φ = {phi}: its kinetic energy runs out"
+            ),
+            Self::NoSteadyState { omega, why, .. } => {
+                write!(f, "no periodic steady state near ω = {omega}: {why}")
+            }
+        }
+    }
+}
+
+impl std::error::Error for MachineError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            Self::Kinematics(e) => Some(e),
+            _ => None,
+        }
+    }
+}
+
+impl From<Error> for MachineError {
+    fn from(e: Error) -> Self {
+        Self::Kinematics(e)
+    }
 }
 
 /// A body that carries mass.
