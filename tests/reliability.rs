@@ -125,7 +125,12 @@ impl Tally {
 /// interval it must fall in.
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Truth {
-    Assembles,
+    /// `clear`: at least 10⁻³ of the mechanism's size from either edge of
+    /// the interval, so far from any singular pose (det Ψ_u ∝ sin of the
+    /// angle between the links, or cos θ₃ for the slider-crank).
+    Assembles {
+        clear: bool,
+    },
     Cannot,
     /// Too close to the edge (or not finite) to say.
     Unknown,
@@ -143,7 +148,10 @@ fn four_bar_truth(l: [f64; 4], theta2: f64) -> Truth {
     // Residual tolerance 1e-9 absolute: a gap below that is "assembled".
     let margin = (1e-6 * scale).max(1e-7);
     if bd > (l3 - l4).abs() + margin && bd < l3 + l4 - margin {
-        Truth::Assembles
+        let clearance = 1e-3 * scale;
+        Truth::Assembles {
+            clear: bd > (l3 - l4).abs() + clearance && bd < l3 + l4 - clearance,
+        }
     } else if bd > l3 + l4 + margin || bd < (l3 - l4).abs() - margin {
         Truth::Cannot
     } else {
@@ -158,7 +166,9 @@ fn slider_truth(r: f64, l: f64, e: f64, theta2: f64) -> Truth {
     let gap = (r * theta2.sin() - e).abs();
     let margin = (1e-6 * (r.abs() + l.abs() + e.abs())).max(1e-7);
     if gap < l.abs() - margin {
-        Truth::Assembles
+        Truth::Assembles {
+            clear: gap < l.abs() - 1e-3 * (r.abs() + l.abs() + e.abs()),
+        }
     } else if gap > l.abs() + margin {
         Truth::Cannot
     } else {
@@ -288,9 +298,17 @@ fn check<L: Linkage<M, 1>, const M: usize>(
                 }
                 _ => prop_assert!(inputs_finite, "non-finite input reported as {e}"),
             }
+            // Once the pose is found, a singular velocity or acceleration
+            // solve means a pose near a singular one.
+            if let Error::Singular { stage, .. } = &e {
+                prop_assert!(
+                    *stage == Stage::Position || !matches!(truth, Truth::Assembles { clear: true }),
+                    "Singular far from any singular pose: {e}"
+                );
+            }
             if let Error::CannotAssemble { residual, .. } = &e {
                 prop_assert!(
-                    truth != Truth::Assembles,
+                    !matches!(truth, Truth::Assembles { .. }),
                     "CannotAssemble where the mechanism assembles: {e}"
                 );
                 prop_assert!(residual.is_finite() && *residual > 0.0);
@@ -573,6 +591,15 @@ fn arbitrary_bit_patterns_never_panic() {
                     ) {
                         fine &= all_finite(p.u.iter().copied());
                     }
+                    if let Ok(vel) = bar.velocity(&u, &v1, &vd, &options) {
+                        fine &= all_finite(vel.udot.iter().chain(vel.ratios.iter()).copied());
+                    }
+                    for method in [AccelerationMethod::A, AccelerationMethod::B] {
+                        let with = Options { method, ..options };
+                        if let Ok(acc) = bar.acceleration(&u, &v1, &u, &vd, &vdd, &with) {
+                            fine &= all_finite(acc.iter().copied());
+                        }
+                    }
                     let k = bar.kinematics(&u, &v1, &vd, &vdd);
                     let _ = linkage::invert(&k.psi_u);
                     let drive = Drive::Line {
@@ -625,7 +652,10 @@ fn regressions() {
         .solve_position(&vector![-1e-300, -1e-300], &vector![theta2], &options)
         .expect("the four-bar assembles");
     assert!(pose.residual <= options.residual_tol);
-    assert_eq!(four_bar_truth([1.0; 4], theta2), Truth::Assembles);
+    assert!(matches!(
+        four_bar_truth([1.0; 4], theta2),
+        Truth::Assembles { .. }
+    ));
 }
 
 /// A frame of 3e23 with a crank of 1.27 driven at θ̇₂ = −1e-300: the true
