@@ -15,7 +15,7 @@ pub enum AccelerationMethod {
     /// Method A, the time derivative: γ = Ψ̇_u u̇ + Ψ̇_v v̇
     /// (the worksheet's H0 = H1 + H2 + H3).
     A,
-    /// Method B, the Jacobian of [Ψ_u]u̇: γ = (Ψ_u u̇)_u u̇ + (Ψ_u u̇)_v v̇ +
+    /// Method B, the Jacobian of \[Ψ_u\]u̇: γ = (Ψ_u u̇)_u u̇ + (Ψ_u u̇)_v v̇ +
     /// (Ψ_v v̇)_u u̇ + (Ψ_v v̇)_v v̇ (the worksheet's γ0).
     B,
     /// γ = (Ψ_q q̇)_q q̇ in one fused generated expression: the fastest.
@@ -225,28 +225,28 @@ pub trait Linkage<const M: usize, const F: usize> {
         u: &SVector<f64, M>,
         v: &SVector<f64, F>,
     ) -> (SVector<f64, M>, SMatrix<f64, M, M>);
-    /// ([Ψ_u]u̇)_u
+    /// (\[Ψ_u\]u̇)_u
     fn psi_u_udot_u(
         &self,
         u: &SVector<f64, M>,
         v: &SVector<f64, F>,
         udot: &SVector<f64, M>,
     ) -> SMatrix<f64, M, M>;
-    /// ([Ψ_u]u̇)_v
+    /// (\[Ψ_u\]u̇)_v
     fn psi_u_udot_v(
         &self,
         u: &SVector<f64, M>,
         v: &SVector<f64, F>,
         udot: &SVector<f64, M>,
     ) -> SMatrix<f64, M, F>;
-    /// ([Ψ_v]v̇)_u
+    /// (\[Ψ_v\]v̇)_u
     fn psi_v_vdot_u(
         &self,
         u: &SVector<f64, M>,
         v: &SVector<f64, F>,
         vdot: &SVector<f64, F>,
     ) -> SMatrix<f64, M, M>;
-    /// ([Ψ_v]v̇)_v
+    /// (\[Ψ_v\]v̇)_v
     fn psi_v_vdot_v(
         &self,
         u: &SVector<f64, M>,
