@@ -26,7 +26,7 @@
 
 mod common;
 
-use common::{FourBar, SixBar, SliderCrank};
+use common::{FourBar, SEED, SixBar, SliderCrank};
 use linkage::prelude::*;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed, TestCaseError, TestRunner};
@@ -102,6 +102,8 @@ struct Tally {
     ok: usize,
     errors: BTreeMap<&'static str, usize>,
     checked_closed_form: usize,
+    /// Cases where the closed form and a near guess demand an `Ok`.
+    expected_ok: usize,
 }
 
 impl Tally {
@@ -190,6 +192,7 @@ fn check<L: Linkage<M, 1>, const M: usize>(
     vddot: f64,
     damped: bool,
     truth: Truth,
+    expect_ok: bool,
     tally: &RefCell<Tally>,
 ) -> Result<(), TestCaseError> {
     let options = Options {
@@ -207,6 +210,7 @@ fn check<L: Linkage<M, 1>, const M: usize>(
     if truth != Truth::Unknown {
         t.checked_closed_form += 1;
     }
+    t.expected_ok += usize::from(expect_ok);
     match result {
         Ok(a) => {
             t.ok += 1;
@@ -292,6 +296,10 @@ fn check<L: Linkage<M, 1>, const M: usize>(
         Err(e) => {
             t.error(&e);
             drop(t);
+            prop_assert!(
+                !expect_ok,
+                "Err for a pose clear of every singular one, guessed within 0.01 rad: {e}"
+            );
             match &e {
                 Error::NonFiniteInput { .. } => {
                     prop_assert!(!inputs_finite, "NonFiniteInput for finite input: {e}")
@@ -342,8 +350,8 @@ fn check<L: Linkage<M, 1>, const M: usize>(
 
 fn report(name: &str, tally: &Tally, seconds: f64) {
     eprintln!(
-        "{name}: {} cases in {seconds:.1} s, {} Ok, errors {:?}, {} checked against the closed form; panics 0, NaN in Ok 0, wrong Ok 0, wrong Err 0",
-        tally.cases, tally.ok, tally.errors, tally.checked_closed_form
+        "{name}: {} cases in {seconds:.1} s, {} Ok, errors {:?}, {} checked against the closed form, {} of them clear and guessed near so that only Ok will do; panics 0, NaN in Ok 0, wrong Ok 0, wrong Err 0",
+        tally.cases, tally.ok, tally.errors, tally.checked_closed_form, tally.expected_ok
     );
 }
 
@@ -390,6 +398,16 @@ fn four_bars_never_lie() {
                     }
                     _ => {}
                 }
+                // Damped Newton from within 0.01 rad of a pose clear of
+                // every singular one, at moderate numbers, must succeed.
+                let truth = four_bar_truth(l, theta2);
+                let moderate = |x: f64| x == 0.0 || (1e-6..=1e6).contains(&x.abs());
+                let expect_ok = (4..=7).contains(&mode)
+                    && noise < -2.0
+                    && damped
+                    && matches!(truth, Truth::Assembles { clear: true })
+                    && l.iter().all(|&x| (1e-6..=1e6).contains(&x.abs()))
+                    && [g3, g4, theta2, omega, alpha].iter().all(|&x| moderate(x));
                 let bar = FourBar {
                     l1: l[0],
                     l2: l[1],
@@ -403,7 +421,8 @@ fn four_bars_never_lie() {
                     omega,
                     alpha,
                     damped,
-                    four_bar_truth(l, theta2),
+                    truth,
+                    expect_ok,
                     &tally,
                 )
             },
@@ -451,6 +470,16 @@ fn slider_cranks_never_lie() {
                     g3 = theta3 + off;
                     gs = s + off * l.abs();
                 }
+                let truth = slider_truth(r, l, e, theta2);
+                let moderate = |x: f64| x == 0.0 || (1e-6..=1e6).contains(&x.abs());
+                let expect_ok = built
+                    && noise < -2.0
+                    && damped
+                    && matches!(truth, Truth::Assembles { clear: true })
+                    && [r, l].iter().all(|&x| (1e-6..=1e6).contains(&x.abs()))
+                    && [e, g3, gs, theta2, omega, alpha]
+                        .iter()
+                        .all(|&x| moderate(x));
                 let crank = SliderCrank { r, l, e };
                 check(
                     &crank,
@@ -459,7 +488,8 @@ fn slider_cranks_never_lie() {
                     omega,
                     alpha,
                     damped,
-                    slider_truth(r, l, e, theta2),
+                    truth,
+                    expect_ok,
                     &tally,
                 )
             },
@@ -545,6 +575,7 @@ fn six_bars_never_lie() {
                     alpha,
                     damped,
                     Truth::Unknown,
+                    false,
                     &tally,
                 )
             },
@@ -734,4 +765,41 @@ fn cancellation_is_not_underflow() {
             .expect("no underflow");
         assert!((uddot - a.uddot).amax() <= 1e-9 * vdot[0] * vdot[0]);
     }
+}
+
+/// The worksheet's crank-rocker turned through 10⁴ rad in two steps: with
+/// at most 0.1 rad per sub-step that needs 5·10⁴ sub-steps a step. Once a
+/// drive of 1e300 rad sub-stepped forever; now the budget stops it.
+#[test]
+fn endless_drives_hit_the_substep_limit() {
+    let options = SweepOptions {
+        max_substeps: 1000,
+        ..SweepOptions::default()
+    };
+    let guess = vector![0.3, 1.5];
+    let far = Drive::Line {
+        from: vector![0.0],
+        to: vector![1e4],
+        steps: 2,
+    };
+    let result = SEED.sweep(&guess, &far, &options);
+    assert!(
+        matches!(
+            result,
+            Err(Error::SubstepLimit {
+                step: 1,
+                limit: 1000
+            })
+        ),
+        "{:?}",
+        result.map(|s| s.poses.len())
+    );
+    // One turn in 36 steps stays well within the same budget.
+    let turn = Drive::Line {
+        from: vector![0.0],
+        to: vector![std::f64::consts::TAU],
+        steps: 36,
+    };
+    let sweep = SEED.sweep(&guess, &turn, &options).expect("one turn");
+    assert!(sweep.complete && sweep.poses.len() == 37);
 }
