@@ -696,7 +696,7 @@ fn random_equations_never_panic() {
 
 /// Deep nesting: the recursive parts (parser, lowering, differentiation,
 /// emission) on equations nested far deeper than anyone writes — a chain
-/// of functions and products 32 deep (its second derivatives grow with the
+/// of functions and products 32 deep (the time to expand it grows with the
 /// cube of the depth, which is what bounds it here), and a sum of 1000
 /// terms and 200 nested parentheses, on a thread with the 8 MiB stack of
 /// rustc's main thread.
