@@ -803,3 +803,108 @@ fn endless_drives_hit_the_substep_limit() {
     let sweep = SEED.sweep(&guess, &turn, &options).expect("one turn");
     assert!(sweep.complete && sweep.poses.len() == 37);
 }
+
+/// Angles do not care about units: a mechanism scaled by k (and its
+/// residual tolerance with it) has the same angles, angular velocities and
+/// angular accelerations, whatever k. The
+/// runtime must give them (or say `Underflow`, never a wrong `Ok`) for k
+/// from 1e-250 to 1e250, at speeds from 1e-40 to 1e3, on the fused and the
+/// separate paths and from the stretched-dyad saddle. A review found each
+/// of these broken once: a tiny mechanism's γ underflowed inside `Ok`, the
+/// fused kernel returned ü = 0, and the merit ½‖Ψ‖² underflowed so that a
+/// saddle looked like a minimum.
+#[test]
+fn angles_are_scale_invariant() {
+    let base = [1.0, 1.0, 1.0, 1.0];
+    let theta2 = -9.303165937741154;
+    let near = vector![0.9, -0.8];
+    let saddle = vector![-1e-300, -1e-300];
+    for k in [1e-250, 1e-170, 1e-60, 1.0, 1e60, 1e170, 1e250] {
+        let bar = |l: [f64; 4]| FourBar {
+            l1: l[0] * k,
+            l2: l[1] * k,
+            l3: l[2] * k,
+            l4: l[3] * k,
+        };
+        let (unit, scaled) = (bar(base.map(|x| x / k)), bar(base));
+        for omega in [1e-40, 1e-3, 1.0, 1e3] {
+            for method in [
+                AccelerationMethod::Fused,
+                AccelerationMethod::A,
+                AccelerationMethod::B,
+            ] {
+                for guess in [near, saddle] {
+                    let options = Options {
+                        damped: true,
+                        method,
+                        ..Options::default()
+                    };
+                    let (v, vdot, vddot) = (vector![theta2], vector![omega], vector![0.5 * omega]);
+                    let truth = unit
+                        .analyze(&guess, &v, &vdot, &vddot, &options)
+                        .expect("the unit rhombus");
+                    // The residual tolerance is in the mechanism's units.
+                    let options = Options {
+                        residual_tol: options.residual_tol * k,
+                        ..options
+                    };
+                    match scaled.analyze(&guess, &v, &vdot, &vddot, &options) {
+                        Ok(a) => {
+                            let close = |x: &SVector<f64, 2>, y: &SVector<f64, 2>| {
+                                (x - y).amax() <= 1e-9 * y.amax()
+                            };
+                            assert!(
+                                close(&a.u, &truth.u)
+                                    && close(&a.udot, &truth.udot)
+                                    && close(&a.uddot, &truth.uddot),
+                                "k = {k:e}, ω = {omega:e}, {method:?}: {:?} against {:?}",
+                                (a.u, a.udot, a.uddot),
+                                (truth.u, truth.udot, truth.uddot)
+                            );
+                        }
+                        Err(Error::Underflow { .. }) => {}
+                        Err(e) => panic!("k = {k:e}, ω = {omega:e}, {method:?}: {e}"),
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Velocities below the normal range (1e-309) with an ordinary v̈: ü is
+/// Ψ_u⁻¹Ψ_v v̈ to full precision, the vanishing γ notwithstanding. Once the
+/// scaling of the velocities divided by zero here.
+#[test]
+fn subnormal_velocities_with_an_ordinary_acceleration() {
+    let options = Options::default();
+    let v = vector![20f64.to_radians()];
+    let pose = SEED
+        .solve_position(
+            &vector![70f64.to_radians(), -50f64.to_radians()],
+            &v,
+            &options,
+        )
+        .expect("the worksheet's pose");
+    let rest = SEED
+        .acceleration(
+            &pose.u,
+            &v,
+            &vector![0.0, 0.0],
+            &vector![0.0],
+            &vector![1.0],
+            &options,
+        )
+        .expect("at rest");
+    for method in [
+        AccelerationMethod::A,
+        AccelerationMethod::B,
+        AccelerationMethod::Fused,
+    ] {
+        let with = Options { method, ..options };
+        let udot = vector![1e-309, -2e-309];
+        let uddot = SEED
+            .acceleration(&pose.u, &v, &udot, &vector![1e-309], &vector![1.0], &with)
+            .expect("γ ≈ 1e-618 is nothing beside Ψ_v v̈");
+        assert!((uddot - rest).amax() <= 1e-15 * rest.amax(), "{method:?}");
+    }
+}

@@ -18,7 +18,7 @@ pub type Polynomial = Vec<(Id, f64)>;
 pub fn expand(dag: &mut Dag, id: Id) -> Option<Polynomial> {
     let mut memo = HashMap::new();
     let terms = terms(dag, id, &mut memo)?;
-    Some(collect(terms))
+    collect(terms)
 }
 
 /// `expand`, rebuilt into a node (the canonical sum of its monomials).
@@ -42,18 +42,28 @@ pub fn same(a: &Polynomial, b: &Polynomial) -> bool {
         .all(|&(x, y)| (x - y).abs() <= 1e-12 * x.abs().max(y.abs()))
 }
 
-fn collect(terms: Vec<(f64, Id)>) -> Polynomial {
-    let mut map: HashMap<Id, f64> = HashMap::new();
+/// Like terms added up. A sum that cancels to within rounding of the
+/// largest term that went into it (1e-14 of it) is dropped; a small
+/// coefficient that did not cancel is kept, however small beside the
+/// others. `None` if a sum overflows.
+fn collect(terms: Vec<(f64, Id)>) -> Option<Polynomial> {
+    let mut map: HashMap<Id, (f64, f64)> = HashMap::new();
     for (c, m) in terms {
-        *map.entry(m).or_default() += c;
+        let entry = map.entry(m).or_default();
+        entry.0 += c;
+        entry.1 = entry.1.max(c.abs());
     }
-    let scale = map.values().fold(0.0_f64, |a, c| a.max(c.abs()));
-    let mut out: Polynomial = map
-        .into_iter()
-        .filter(|&(_, c)| c.abs() > 1e-14 * scale)
-        .collect();
+    let mut out: Polynomial = Vec::with_capacity(map.len());
+    for (m, (sum, largest)) in map {
+        if !sum.is_finite() {
+            return None;
+        }
+        if sum.abs() > 1e-14 * largest {
+            out.push((m, sum));
+        }
+    }
     out.sort_by_key(|&(m, _)| m);
-    out
+    Some(out)
 }
 
 fn terms(dag: &mut Dag, id: Id, memo: &mut HashMap<Id, Vec<(f64, Id)>>) -> Option<Vec<(f64, Id)>> {
@@ -61,13 +71,14 @@ fn terms(dag: &mut Dag, id: Id, memo: &mut HashMap<Id, Vec<(f64, Id)>>) -> Optio
         return Some(t.clone());
     }
     let out = match dag.node(id).clone() {
-        Node::Const(c) => vec![(c.get(), Dag::ONE)],
+        Node::Const(c) if c.get() == 0.0 => Vec::new(),
+        Node::Const(c) => vec![(finite_coefficient(c.get())?, Dag::ONE)],
         Node::Sym(_) | Node::Call(..) | Node::Call2(..) => vec![(1.0, id)],
         Node::Sum(ts) => {
             let mut out = Vec::new();
             for (c, t) in ts {
                 for (ci, mi) in terms(dag, t, memo)? {
-                    out.push((c.get() * ci, mi));
+                    out.push((finite_coefficient(c.get() * ci)?, mi));
                 }
             }
             out
@@ -104,10 +115,17 @@ fn multiply(dag: &mut Dag, a: &[(f64, Id)], b: &[(f64, Id)]) -> Option<Vec<(f64,
         for &(cb, mb) in b {
             let product = dag.mul(ma, mb);
             let (c, m) = dag.split_coefficient(product);
-            next.push((ca * cb * c, m));
+            next.push((finite_coefficient(ca * cb * c)?, m));
         }
     }
-    Some(collect(next).into_iter().map(|(m, c)| (c, m)).collect())
+    Some(collect(next)?.into_iter().map(|(m, c)| (c, m)).collect())
+}
+
+/// A coefficient that is a finite, nonzero and normal number; anything else
+/// (an overflow, or an underflow of nonzero factors) abandons the expansion,
+/// which must never claim two different expressions equal.
+fn finite_coefficient(c: f64) -> Option<f64> {
+    c.is_normal().then_some(c)
 }
 
 /// `base^e` for `e ≥ 1`, expanded: a monomial directly (`(c·m)^e =
@@ -116,6 +134,9 @@ fn multiply(dag: &mut Dag, a: &[(f64, Id)], b: &[(f64, Id)]) -> Option<Vec<(f64,
 /// limit, since a sum of two or more terms to the `e`-th power has at
 /// least `e + 1` of them.
 fn power(dag: &mut Dag, base: &[(f64, Id)], e: i32) -> Option<Vec<(f64, Id)>> {
+    if e < 1 {
+        return None;
+    }
     if let [(c, m)] = base {
         let coefficient = c.powi(e);
         if !coefficient.is_normal() {
@@ -179,6 +200,46 @@ mod tests {
         let mut coefficients: Vec<f64> = p.iter().map(|&(_, c)| c).collect();
         coefficients.sort_by(f64::total_cmp);
         assert_eq!(coefficients, [1.0, 1.0, 3.0, 3.0]);
+    }
+
+    #[test]
+    fn overflowing_coefficients_abandon_instead_of_vanishing() {
+        let mut dag = Dag::new();
+        let x = dag.sym(Symbol::Coord(0));
+        let y = dag.sym(Symbol::Coord(1));
+        let z = dag.sym(Symbol::Coord(2));
+        // (x + y)^2000: binomial coefficients overflow f64.
+        let s = dag.add(x, y);
+        let big = dag.powi(s, 2000);
+        assert!(expand(&mut dag, big).is_none());
+        // (1e200·x + 1e200·y)² and (1e200·x + 1e200·z)² are not the same:
+        // their coefficients overflow, and neither may expand to the zero
+        // polynomial (which would call them equal); both are abandoned.
+        let c = dag.num(1e200);
+        let cx = dag.mul(c, x);
+        let cy = dag.mul(c, y);
+        let cz = dag.mul(c, z);
+        let a = dag.add(cx, cy);
+        let b = dag.add(cx, cz);
+        let ab = dag.mul(a, a);
+        let bb = dag.mul(b, b);
+        assert!(expand(&mut dag, ab).is_none());
+        assert!(expand(&mut dag, bb).is_none());
+    }
+
+    #[test]
+    fn small_coefficients_that_did_not_cancel_stay() {
+        let mut dag = Dag::new();
+        let x = dag.sym(Symbol::Coord(0));
+        let y = dag.sym(Symbol::Coord(1));
+        // (x + y)^50: x⁵⁰ has coefficient 1 beside C(50, 25) ≈ 1.3e14.
+        let s = dag.add(x, y);
+        let p50 = dag.powi(s, 50);
+        let p = expand(&mut dag, p50).unwrap();
+        assert_eq!(p.len(), 51);
+        let x50 = dag.powi(x, 50);
+        let ends = p.iter().find(|&&(m, _)| m == x50).map(|&(_, c)| c);
+        assert_eq!(ends, Some(1.0));
     }
 
     #[test]

@@ -74,10 +74,10 @@ pub enum Error {
     },
     /// The numbers are so small that f64 holds them only as subnormal
     /// numbers, whose relative precision is lost: a column or a row of
-    /// [Ψ_u Ψ_v] has no entry above 2⁻⁹⁷⁰ ≈ 1e-292, or a velocity or
-    /// acceleration solve has a nonzero right-hand side or a solution
-    /// below it. No result could keep the requested accuracy; express the
-    /// mechanism in other units.
+    /// [Ψ_u Ψ_v] has no entry above 2⁻⁹⁷⁰ ≈ 1e-292, or a velocity or an
+    /// acceleration (u̇, ü, or a sweep's at its speed) is nonzero but below
+    /// 2⁻¹⁰²² ≈ 2.2e-308. No result could keep the requested accuracy;
+    /// express the mechanism in other units.
     Underflow {
         stage: Stage,
         quantity: &'static str,
@@ -88,7 +88,12 @@ pub enum Error {
     /// step for the predictor's largest move (a crank turned through many
     /// revolutions between two recorded poses). Take more steps, or a
     /// shorter drive.
-    SubstepLimit { step: usize, limit: usize },
+    SubstepLimit {
+        /// The poses recorded before the step.
+        step: usize,
+        /// [`crate::SweepOptions::max_substeps`].
+        limit: usize,
+    },
     /// A setting or an argument is out of its range (other than not being
     /// finite): a negative tolerance, a drive that does not move.
     InvalidInput {
@@ -154,7 +159,7 @@ impl std::fmt::Display for Error {
             ),
             Self::SubstepLimit { limit, step, .. } => write!(
                 f,
-                "the sweep's step after pose {step} needs more than {limit} sub-steps: the drive moves too far per step (take more steps or a shorter drive)"
+                "a step of the sweep, after {step} recorded poses, needs more than {limit} sub-steps: the drive moves too far per step (take more steps or a shorter drive)"
             ),
             Self::InvalidInput {
                 argument,
@@ -228,50 +233,33 @@ pub(crate) fn check_scale<const M: usize, const F: usize>(
     }
 }
 
-/// Checks that a solve x = A⁻¹·b kept relative precision, judged on the
-/// size of the terms b and x are made of (before any cancellation, which
-/// costs nothing here: the error is relative to the terms): where b is not
-/// zero (`b_nonzero`, decided on scaled data so that it cannot underflow),
-/// neither the terms of b, of size 2^`terms_log2`, nor those of x, about
-/// ‖A⁻¹‖ times larger, may lie below 2⁻⁹⁷⁰ (see [`Error::Underflow`]).
-/// Sizes are compared as logarithms, which cannot underflow.
-pub(crate) fn check_solution(
+/// Checks that a computed result of size 2^`size_log2` (its largest
+/// entry, found at unit scale and so without underflow) is a normal
+/// number, which f64 holds to full relative precision; −∞ (an exactly
+/// zero result) passes. Below 2⁻¹⁰²² it is an [`Error::Underflow`].
+pub(crate) fn check_result(
     stage: Stage,
     quantity: &'static str,
-    b_nonzero: bool,
-    terms_log2: f64,
-    inverse_max: f64,
+    size_log2: f64,
 ) -> Result<(), Error> {
-    let x_log2 = terms_log2 + inverse_max.log2();
-    let smallest = terms_log2.min(x_log2);
-    if b_nonzero && smallest < -970.0 {
+    if size_log2 > f64::NEG_INFINITY && size_log2 < f64::MIN_POSITIVE.log2() {
         Err(Error::Underflow {
             stage,
             quantity,
-            scale: smallest.exp2(),
+            scale: size_log2.exp2(),
         })
     } else {
         Ok(())
     }
 }
 
-/// log₂ of the size of a product of matrix and vector terms, ‖A‖·‖x‖, from
-/// their largest entries (−∞ if either is zero).
-pub(crate) fn product_log2(a_max: f64, x_max: f64) -> f64 {
-    a_max.log2() + x_max.log2()
-}
-
-/// The power of two that brings velocities of largest magnitude `max` near
-/// 1, if they lie outside [2⁻⁴⁰⁰, 2⁴⁰⁰] (where γ, quadratic in them, would
-/// under- or overflow); 1 otherwise, so that ordinary inputs give
-/// bit-identical results. Scaling by a power of two is exact.
-pub(crate) fn velocity_scale(max: f64) -> f64 {
-    const LOW: f64 = f64::from_bits(((1023 - 400) as u64) << 52);
-    const HIGH: f64 = f64::from_bits(((1023 + 400) as u64) << 52);
-    if max > 0.0 && max.is_finite() && !(LOW..=HIGH).contains(&max) {
-        // 2^floor(log2 max), exact for normal and subnormal max.
-        let exponent = max.log2().floor() as i32;
-        2f64.powi(exponent.clamp(-1074, 1023))
+/// The power of two nearest below `max` (1 for zero or a non-finite
+/// `max`), at least 2⁻¹⁰²² so that it is normal: dividing by it brings
+/// numbers of largest magnitude `max` near 1, exactly.
+pub(crate) fn power_of_two_near(max: f64) -> f64 {
+    if max > 0.0 && max.is_finite() {
+        let exponent = (max.log2().floor() as i64).clamp(-1022, 1023);
+        f64::from_bits(((exponent + 1023) as u64) << 52)
     } else {
         1.0
     }

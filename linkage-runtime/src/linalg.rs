@@ -21,8 +21,49 @@ pub struct Inverse<const M: usize> {
 /// m ≤ 3: the adjugate, whose norms give rcond = |det A| / ‖D_c adj A‖₁
 /// without a second division, and A⁻¹ = adj A / det A. Gauss–Jordan
 /// elimination with partial pivoting above.
+///
+/// A matrix whose largest entry lies outside [2⁻³⁰⁰, 2³⁰⁰] (a mechanism
+/// measured in units far too small or large for it) is scaled by a power
+/// of two first, exactly, so that the determinant and the adjugate neither
+/// underflow nor overflow; det A is then scaled back, and keeps its sign
+/// even where its magnitude leaves the range of f64.
 #[inline(always)]
 pub fn invert<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
+    const LOW: f64 = f64::from_bits(((1023 - 300) as u64) << 52);
+    const HIGH: f64 = f64::from_bits(((1023 + 300) as u64) << 52);
+    let scale = a.amax();
+    let ordinary = (LOW..=HIGH).contains(&scale);
+    if ordinary || !(scale > 0.0 && scale.is_finite()) {
+        invert_at_scale(a)
+    } else {
+        invert_scaled(a, scale)
+    }
+}
+
+/// [`invert`] for a matrix of extreme scale: A = p·A₁ with p a power of two,
+/// A⁻¹ = A₁⁻¹/p, det A = pᴹ·det A₁, rcond unchanged.
+#[cold]
+#[inline(never)]
+fn invert_scaled<const M: usize>(a: &SMatrix<f64, M, M>, scale: f64) -> Inverse<M> {
+    let exponent = (scale.log2().floor() as i64).clamp(-1022, 1023);
+    let p = f64::from_bits(((exponent + 1023) as u64) << 52);
+    let inner = invert_at_scale(&(a / p));
+    let mut det = inner.det;
+    for _ in 0..M {
+        det *= p;
+    }
+    if det == 0.0 && inner.det != 0.0 {
+        det = f64::from_bits(1).copysign(inner.det);
+    }
+    Inverse {
+        inverse: inner.inverse / p,
+        rcond: inner.rcond,
+        det,
+    }
+}
+
+#[inline(always)]
+fn invert_at_scale<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
     let singular = |det: f64| Inverse {
         inverse: SMatrix::zeros(),
         rcond: 0.0,

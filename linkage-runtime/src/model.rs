@@ -484,11 +484,10 @@ pub trait Linkage<const M: usize, const F: usize> {
         let u = position.u;
         // The fused kernel where its numbers are ordinary; the separate
         // solves, which scale γ and check for underflow, at the extremes.
-        let ordinary = |x: f64| x == 0.0 || (1e-100..=1e100).contains(&x);
         let fused = if options.jacobian == JacobianSource::Generated
             && options.method == AccelerationMethod::Fused
-            && ordinary(vdot.amax())
-            && ordinary(vddot.amax())
+            && ordinary(vdot.amax(), true)
+            && ordinary(vddot.amax(), true)
         {
             fused_kinematics(self, &u, v, vdot, vddot, options)?
         } else {
@@ -576,20 +575,21 @@ fn velocity_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     let ratios = inv.inverse * psi_v;
     let udot = -(ratios * vdot);
     check_value(Stage::Velocity, "u̇", udot.as_slice())?;
-    let vdot_max = vdot.amax();
-    let rhs_nonzero = vdot_max > 0.0 && (psi_v * (vdot / vdot_max)).amax() > 0.0;
-    crate::error::check_solution(
-        Stage::Velocity,
-        "u̇",
-        rhs_nonzero,
-        crate::error::product_log2(psi_v.amax(), vdot_max),
-        inv.inverse.amax(),
-    )?;
+    // u̇ = −R v̇ at unit scale: its size, as log₂, must be a normal number.
+    let t = crate::error::power_of_two_near(vdot.amax());
+    let size_log2 = (ratios * (vdot / t)).amax().log2() + t.log2();
+    crate::error::check_result(Stage::Velocity, "u̇", size_log2)?;
     Ok(Velocity {
         udot,
         ratios,
         rcond: inv.rcond,
     })
+}
+
+/// A magnitude the fused kernel handles with full precision: within
+/// 10^±60, or zero where `zero_ok`.
+fn ordinary(x: f64, zero_ok: bool) -> bool {
+    (zero_ok && x == 0.0) || (1e-60..=1e60).contains(&x)
 }
 
 /// Velocities and accelerations from one fused generated evaluation, with
@@ -618,8 +618,23 @@ fn fused_kinematics<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     check_value(Stage::Velocity, "u̇", k.udot.as_slice())?;
     acceleration_conditioning(&k.psi_u, &k.psi_v, k.rcond, options)?;
     check_value(Stage::Acceleration, "ü", k.uddot.as_slice())?;
-    let ordinary = |x: f64| x == 0.0 || (1e-100..=1e100).contains(&x);
-    if !(ordinary(k.udot.amax()) && ordinary(k.uddot.amax())) {
+    // Every row and column of [Ψ_u Ψ_v], and u̇ and ü, within 10^±60 (zero
+    // only where the drivers are at rest): then no product in the kernel,
+    // of at most a few such factors, comes near the subnormal range, and
+    // the result keeps its precision. Anything else goes to the separate
+    // solves, which scale and check.
+    let at_rest = vdot.amax() == 0.0;
+    let geometry = (0..M + F).all(|j| {
+        let column = if j < M {
+            k.psi_u.column(j).amax()
+        } else {
+            k.psi_v.column(j - M).amax()
+        };
+        ordinary(column, true)
+    }) && (0..M)
+        .all(|i| ordinary(k.psi_u.row(i).amax().max(k.psi_v.row(i).amax()), false));
+    let still = at_rest && vddot.amax() == 0.0;
+    if !(geometry && ordinary(k.udot.amax(), at_rest) && ordinary(k.uddot.amax(), still)) {
         return Ok(None);
     }
     let velocity = Velocity {
@@ -646,40 +661,30 @@ fn acceleration_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     check_value(Stage::Acceleration, "Ψ_v", psi_v.as_slice())?;
     crate::error::check_scale(Stage::Acceleration, psi_u, &psi_v)?;
     acceleration_conditioning(psi_u, &psi_v, inv.rcond, options)?;
-    // γ is quadratic in the velocities: evaluated at velocities scaled
-    // near 1 when they are extreme, then scaled back, so that it neither
-    // underflows nor overflows on the way.
-    let s = crate::error::velocity_scale(udot.amax().max(vdot.amax()));
+    // ü = −Ψ_u⁻¹Ψ_v v̈ − Ψ_u⁻¹γ, each part computed at unit scale and
+    // scaled back by powers of two (exact): γ is quadratic in the
+    // velocities, γ(q̇) = s²·γ(q̇/s), and the v̈ part linear in v̈, so that
+    // no intermediate underflows or overflows however small or large the
+    // velocities, the accelerations or the mechanism. In the normal range
+    // every scaling is exact and the result is the plain formula's, bit for
+    // bit up to the order of the sums.
+    let s = crate::error::power_of_two_near(udot.amax().max(vdot.amax()));
     let (udot, vdot) = (udot / s, vdot / s);
     let generated = || model.gamma_by(options.method, u, v, &udot, &vdot);
     let gamma_unit = sources::gamma(model, options.jacobian, generated, u, v, &udot, &vdot);
     check_value(Stage::Acceleration, "γ", gamma_unit.as_slice())?;
-    let gamma = gamma_unit * s * s;
-    check_value(Stage::Acceleration, "γ", gamma.as_slice())?;
-    let rhs = -(psi_v * vddot + gamma);
-    let uddot = inv.inverse * rhs;
+    let t = crate::error::power_of_two_near(vddot.amax());
+    let from_gamma = inv.inverse * gamma_unit;
+    let from_vddot = inv.inverse * (psi_v * (vddot / t));
+    check_value(Stage::Acceleration, "ü", from_gamma.as_slice())?;
+    check_value(Stage::Acceleration, "ü", from_vddot.as_slice())?;
+    // The size of each part, as log₂ (no underflow): the larger must be a
+    // normal number, or ü has lost its precision.
+    let size_log2 =
+        (from_gamma.amax().log2() + 2.0 * s.log2()).max(from_vddot.amax().log2() + t.log2());
+    crate::error::check_result(Stage::Acceleration, "ü", size_log2)?;
+    let uddot = -(from_vddot * t + from_gamma * s * s);
     check_value(Stage::Acceleration, "ü", uddot.as_slice())?;
-    let vddot_max = vddot.amax();
-    let rhs_nonzero =
-        gamma_unit.amax() > 0.0 || (vddot_max > 0.0 && (psi_v * (vddot / vddot_max)).amax() > 0.0);
-    // The terms: Ψ_v v̈, and γ's, which are second derivatives of Ψ times
-    // two velocities and may cancel in γ (a parallelogram's do, exactly):
-    // sized by max(‖Ψ_u‖, ‖Ψ_v‖, ‖γ(q̇/s)‖)·‖q̇‖², not by γ itself.
-    let qdot_max = udot.amax().max(vdot.amax()) * s;
-    let gamma_terms_log2 = if qdot_max > 0.0 {
-        (2.0 * qdot_max.log2() + psi_u.amax().max(psi_v.amax()).log2())
-            .max(2.0 * s.log2() + gamma_unit.amax().log2())
-    } else {
-        f64::NEG_INFINITY
-    };
-    let terms_log2 = crate::error::product_log2(psi_v.amax(), vddot_max).max(gamma_terms_log2);
-    crate::error::check_solution(
-        Stage::Acceleration,
-        "ü",
-        rhs_nonzero,
-        terms_log2,
-        inv.inverse.amax(),
-    )?;
     Ok(uddot)
 }
 

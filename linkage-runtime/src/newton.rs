@@ -193,7 +193,10 @@ fn escape_saddle<const M: usize>(
     let Some(n) = null_vector(psi_u) else {
         return Ok(None);
     };
-    let merit = |r: &SVector<f64, M>| 0.5 * r.norm_squared();
+    // ½‖Ψ/σ‖², σ = ‖Ψ(u)‖∞: the merit at unit scale, so that it neither
+    // underflows for a tiny mechanism nor overflows for a huge one.
+    let sigma = psi.amax();
+    let merit = |r: &SVector<f64, M>| 0.5 * (r / sigma).norm_squared();
     let mut best = (merit(psi), None);
     let scale = u.amax().max(1.0);
     for decade in -6..=0 {
@@ -217,34 +220,54 @@ fn escape_saddle<const M: usize>(
     Ok(best.1)
 }
 
-/// The unit right singular vector of the smallest singular value of A, by
-/// inverse iteration on AᵀA + δI: the largest column of (AᵀA + δI)⁻¹ (where
-/// the null direction dominates) refined three times.
+/// A unit vector x with A·x ≈ 0: with the columns of A equilibrated
+/// (B = A·D, each column of B of largest entry 1, so that coordinates in
+/// different units weigh alike), the right singular vector y of B's
+/// smallest singular value by inverse iteration on BᵀB + 10⁻¹⁰·I — the
+/// largest column of the inverse, where the null direction dominates,
+/// refined three times — and x = D·y normalised. A zero column is its own
+/// null vector.
 fn null_vector<const M: usize>(a: &SMatrix<f64, M, M>) -> Option<SVector<f64, M>> {
-    let scale = a.amax();
-    if !(scale.is_finite() && scale > 0.0) {
-        return None;
+    let mut scales = SVector::<f64, M>::zeros();
+    for j in 0..M {
+        let scale = a.column(j).amax();
+        if !scale.is_finite() {
+            return None;
+        }
+        if scale == 0.0 {
+            return Some(SVector::<f64, M>::from_fn(|i, _| {
+                f64::from(u8::from(i == j))
+            }));
+        }
+        scales[j] = scale;
     }
-    let b = a / scale;
+    let b = SMatrix::<f64, M, M>::from_fn(|i, j| a[(i, j)] / scales[j]);
     let shifted = b.transpose() * b + SMatrix::<f64, M, M>::identity() * 1e-10;
     let inv = invert(&shifted);
     if inv.rcond <= 0.0 {
         return None;
     }
-    let mut x = inv
+    let mut y = inv
         .inverse
         .column_iter()
         .max_by(|p, q| p.norm().total_cmp(&q.norm()))?
         .into_owned();
     for _ in 0..3 {
-        let norm = x.norm();
+        let norm = y.norm();
         if !(norm.is_finite() && norm > 0.0) {
             return None;
         }
-        x = inv.inverse * (x / norm);
+        y = inv.inverse * (y / norm);
     }
-    let norm = x.norm();
-    (norm.is_finite() && norm > 0.0).then(|| x / norm)
+    // D·y may be far from 1 (the columns' scales): brought near 1 by its
+    // largest entry first, so that the norm's squares stay in range.
+    let x = y.component_div(&scales);
+    let size = x.amax();
+    if !(size > 0.0 && size.is_finite()) {
+        return None;
+    }
+    let x = x / size;
+    Some(x / x.norm())
 }
 
 /// One damped step: the Newton step shortened until ½‖Ψ‖² decreases enough,
@@ -257,9 +280,14 @@ fn damped_step<const M: usize>(
     options: &Options,
     mu: &mut f64,
 ) -> Result<Option<SVector<f64, M>>, Error> {
-    let merit = |r: &SVector<f64, M>| 0.5 * r.norm_squared();
+    // ½‖Ψ/σ‖² with σ = ‖Ψ(u)‖∞ (σ > 0 here, or the residual would be
+    // within tolerance): the merit at unit scale, which neither underflows
+    // for a tiny mechanism nor overflows for a huge one; its gradient is
+    // Ψ_uᵀ(Ψ/σ)/σ, and a step d solving for Ψ/σ is scaled back by σ.
+    let sigma = psi.amax().max(f64::MIN_POSITIVE);
+    let unit = psi / sigma;
+    let merit = |r: &SVector<f64, M>| 0.5 * (r / sigma).norm_squared();
     let phi = merit(psi);
-    let gradient = psi_u.transpose() * psi;
     let trial = |d: &SVector<f64, M>| -> Result<f64, Error> { Ok(merit(&evaluate(&(u + d))?.0)) };
 
     // The Newton direction with backtracking; full steps once the residual
@@ -271,7 +299,8 @@ fn damped_step<const M: usize>(
         if psi.amax() <= options.residual_tol {
             return Ok(Some(newton));
         }
-        let slope = gradient.dot(&newton);
+        // ∇φ·d = (Ψ/σ)ᵀ(Ψ_u d)/σ, at unit scale.
+        let slope = unit.dot(&(psi_u * (newton / sigma)));
         let mut lambda = 1.0;
         while lambda >= 1e-4 {
             let d = newton * lambda;
@@ -282,14 +311,23 @@ fn damped_step<const M: usize>(
             lambda *= 0.5;
         }
     }
-    // Levenberg–Marquardt: (JᵀJ + μ·s·I) d = −Jᵀr, μ raised until it descends.
-    let jtj = psi_u.transpose() * psi_u;
+    // Levenberg–Marquardt: (JᵀJ + μ·s·I) d = −Jᵀr, μ raised until it
+    // descends; at unit scale, J = ρ·J₁ and r = σ·r₁ with ρ = ‖Ψ_u‖∞, so
+    // that JᵀJ neither underflows for a tiny mechanism nor overflows for a
+    // huge one: (J₁ᵀJ₁ + μ·s₁·I) d₁ = −J₁ᵀr₁ and d = d₁·σ/ρ, the same step.
+    let rho = psi_u.amax();
+    if !(rho > 0.0 && rho.is_finite()) {
+        return Ok(None);
+    }
+    let j1 = psi_u / rho;
+    let jtj = j1.transpose() * j1;
+    let gradient_1 = j1.transpose() * unit;
     let s = jtj.amax().max(f64::MIN_POSITIVE);
     for _ in 0..60 {
         let a = jtj + SMatrix::<f64, M, M>::identity() * (*mu * s);
         let inv = invert(&a);
         if inv.rcond > 0.0 {
-            let d = -(inv.inverse * gradient);
+            let d = -(inv.inverse * gradient_1) * (sigma / rho);
             if trial(&d)? < phi {
                 *mu = (*mu / 3.0).max(1e-12);
                 return Ok(Some(d));

@@ -1056,8 +1056,30 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             rcond: state.rcond,
             iterations: state.iterations,
         };
-        let sum = pose.v.sum() + pose.vdot.sum() + pose.udot.sum() + pose.uddot.sum();
-        if sum.is_finite() {
+        // x·0 is 0 for a finite x and NaN otherwise: one cheap test of every
+        // entry, which finite values far apart cannot fool (their sum could
+        // overflow).
+        let probe = |x: &[f64]| x.iter().fold(0.0, |acc, &x| acc + x * 0.0);
+        let probes = probe(pose.v.as_slice())
+            + probe(pose.vdot.as_slice())
+            + probe(pose.udot.as_slice())
+            + probe(pose.uddot.as_slice());
+        if probes == 0.0 {
+            // At a tiny speed the velocities and accelerations may fall
+            // below the normal range (only then is the careful test run).
+            if rate != 0.0 && rate.abs() < 1e-100 {
+                let log_rate = rate.abs().log2();
+                crate::error::check_result(
+                    Stage::Velocity,
+                    "the sweep's u̇ at its speed",
+                    state.du.amax().log2() + log_rate,
+                )?;
+                crate::error::check_result(
+                    Stage::Acceleration,
+                    "the sweep's ü at its speed",
+                    state.ddu.amax().log2() + 2.0 * log_rate,
+                )?;
+            }
             Ok(pose)
         } else {
             let finite = |x: &SVector<f64, M>| x.iter().all(|v| v.is_finite());
