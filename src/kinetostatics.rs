@@ -626,7 +626,13 @@ impl<'m, L: Linkage<M, 1>, const M: usize> Kinetostatics<'m, L, M> {
             b[n + r] = -fy;
             b[2 * n + r] = -m;
         }
-        let svd = a.clone().svd(true, true);
+        let not_finite = || {
+            KinetostaticsError::Kinematics(linkage_runtime::Error::NonFiniteValue {
+                stage: linkage_runtime::Stage::Points,
+                quantity: "the joint table",
+            })
+        };
+        let svd = linkage_runtime::scaled_svd(&a, true).ok_or_else(not_finite)?;
         let (smax, smin) = svd
             .singular_values
             .iter()

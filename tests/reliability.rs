@@ -589,6 +589,55 @@ fn six_bars_never_lie() {
 /// Fuzzing the runtime's public entry points with arbitrary f64 bit
 /// patterns: every argument, every parameter, and sweeps over random
 /// drives. No panic, and no NaN or ∞ in any `Ok`.
+/// Every entry point of the runtime on one world of arbitrary numbers:
+/// whether every `Ok` held only finite numbers (a panic propagates).
+fn every_entry_point(
+    [l1, l2, l3, l4]: [f64; 4],
+    [g3, g4]: [f64; 2],
+    [v, vdot, vddot, to]: [f64; 4],
+    steps: usize,
+) -> bool {
+    let bar = FourBar { l1, l2, l3, l4 };
+    let options = Options::default();
+    let (u, v1, vd, vdd) = (vector![g3, g4], vector![v], vector![vdot], vector![vddot]);
+    let mut fine = true;
+    if let Ok(a) = bar.analyze(&u, &v1, &vd, &vdd, &options) {
+        fine &= all_finite(a.u.iter().chain(&a.udot).chain(&a.uddot).copied());
+    }
+    if let Ok(p) = bar.solve_position(
+        &u,
+        &v1,
+        &Options {
+            damped: true,
+            ..options
+        },
+    ) {
+        fine &= all_finite(p.u.iter().copied());
+    }
+    if let Ok(vel) = bar.velocity(&u, &v1, &vd, &options) {
+        fine &= all_finite(vel.udot.iter().chain(vel.ratios.iter()).copied());
+    }
+    for method in [AccelerationMethod::A, AccelerationMethod::B] {
+        let with = Options { method, ..options };
+        if let Ok(acc) = bar.acceleration(&u, &v1, &u, &vd, &vdd, &with) {
+            fine &= all_finite(acc.iter().copied());
+        }
+    }
+    let k = bar.kinematics(&u, &v1, &vd, &vdd);
+    let _ = linkage::invert(&k.psi_u);
+    let drive = Drive::Line {
+        from: v1,
+        to: vector![to],
+        steps,
+    };
+    if let Ok(sweep) = bar.sweep(&u, &drive, &SweepOptions::default()) {
+        for p in &sweep.poses {
+            fine &= all_finite(p.u.iter().chain(&p.udot).chain(&p.uddot).copied());
+        }
+    }
+    fine
+}
+
 #[test]
 fn arbitrary_bit_patterns_never_panic() {
     let start = Instant::now();
@@ -604,46 +653,8 @@ fn arbitrary_bit_patterns_never_panic() {
         .run(
             &world,
             |([l1, l2, l3, l4], [g3, g4], [v, vdot, vddot, to], steps)| {
-                let bar = FourBar { l1, l2, l3, l4 };
-                let options = Options::default();
-                let (u, v1, vd, vdd) = (vector![g3, g4], vector![v], vector![vdot], vector![vddot]);
                 let fine = catch_unwind(AssertUnwindSafe(|| {
-                    let mut fine = true;
-                    if let Ok(a) = bar.analyze(&u, &v1, &vd, &vdd, &options) {
-                        fine &= all_finite(a.u.iter().chain(&a.udot).chain(&a.uddot).copied());
-                    }
-                    if let Ok(p) = bar.solve_position(
-                        &u,
-                        &v1,
-                        &Options {
-                            damped: true,
-                            ..options
-                        },
-                    ) {
-                        fine &= all_finite(p.u.iter().copied());
-                    }
-                    if let Ok(vel) = bar.velocity(&u, &v1, &vd, &options) {
-                        fine &= all_finite(vel.udot.iter().chain(vel.ratios.iter()).copied());
-                    }
-                    for method in [AccelerationMethod::A, AccelerationMethod::B] {
-                        let with = Options { method, ..options };
-                        if let Ok(acc) = bar.acceleration(&u, &v1, &u, &vd, &vdd, &with) {
-                            fine &= all_finite(acc.iter().copied());
-                        }
-                    }
-                    let k = bar.kinematics(&u, &v1, &vd, &vdd);
-                    let _ = linkage::invert(&k.psi_u);
-                    let drive = Drive::Line {
-                        from: v1,
-                        to: vector![to],
-                        steps,
-                    };
-                    if let Ok(sweep) = bar.sweep(&u, &drive, &SweepOptions::default()) {
-                        for p in &sweep.poses {
-                            fine &= all_finite(p.u.iter().chain(&p.udot).chain(&p.uddot).copied());
-                        }
-                    }
-                    fine
+                    every_entry_point([l1, l2, l3, l4], [g3, g4], [v, vdot, vddot, to], steps)
                 }))
                 .map_err(|_| TestCaseError::fail("panicked"))?;
                 let mut c = count.borrow_mut();
@@ -659,6 +670,24 @@ fn arbitrary_bit_patterns_never_panic() {
         "bit patterns: {cases} cases in {:.1} s; panics 0, NaN in Ok 0",
         start.elapsed().as_secs_f64()
     );
+}
+
+/// A world of extreme numbers whose sweep reached nalgebra's SVD with
+/// values it could not decompose; it panicked ("Singular value was NaN").
+/// Decompositions are now scaled and checked.
+#[test]
+fn extreme_sweeps_do_not_reach_a_panicking_svd() {
+    assert!(every_entry_point(
+        [
+            -0.0,
+            -6.239251926006511e-124,
+            1.5408458638653365e-308,
+            1.0282578114192783e-217
+        ],
+        [0.0, -6.060628366580756e236],
+        [0.0, 0.0, 0.0, -1.723164724210535e54],
+        53,
+    ));
 }
 
 /// Failures the long campaigns found, kept as fixed cases.
@@ -752,6 +781,37 @@ fn cancellation_is_not_underflow() {
     let a = bar
         .analyze(
             &vector![5.66924140171174, -1.3335562559465945],
+            &v,
+            &vdot,
+            &vddot,
+            &options,
+        )
+        .expect("the rhombus assembles");
+    for method in [AccelerationMethod::A, AccelerationMethod::B] {
+        let with = Options { method, ..options };
+        let uddot = bar
+            .acceleration(&a.u, &v, &a.udot, &vdot, &vddot, &with)
+            .expect("no underflow");
+        assert!((uddot - a.uddot).amax() <= 1e-9 * vdot[0] * vdot[0]);
+    }
+    // Rhombi of 26.4 at θ̇₂ = 20.6 and θ̈₂ = 5e-324: ü is subnormal, but the
+    // terms it is made of are not; methods A and B cancel γ exactly and
+    // once said `Underflow` where the fused γ said `Ok`.
+    let bar = FourBar {
+        l1: 26.382266724994903,
+        l2: 26.382266724994903,
+        l3: 26.382266724994903,
+        l4: 26.382266724994903,
+    };
+    let options = Options::default();
+    let (v, vdot, vddot) = (
+        vector![-0.9480644196028856],
+        vector![20.609772770627007],
+        vector![5e-324],
+    );
+    let a = bar
+        .analyze(
+            &vector![4.218873701362285, 2.2040557835185792],
             &v,
             &vdot,
             &vddot,

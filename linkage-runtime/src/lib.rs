@@ -19,7 +19,7 @@ mod sweep;
 mod symbolic;
 
 pub use error::{Error, Stage};
-pub use linalg::{Inverse, determinant, invert};
+pub use linalg::{Inverse, determinant, invert, scaled_svd};
 pub use model::{
     AccelerationMethod, Analysis, Iterate, Kinematics, Linkage, Options, Position, Velocity,
 };

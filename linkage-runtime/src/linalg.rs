@@ -233,6 +233,33 @@ fn gauss_jordan<const M: usize>(a: &SMatrix<f64, M, M>) -> (Option<SMatrix<f64, 
     (Some(inv), det)
 }
 
+/// The singular value decomposition of a small dynamic matrix, of the matrix
+/// scaled by a power of two near its largest entry (exact) so that the
+/// iteration neither overflows nor underflows: its singular values are
+/// those of `q` divided by that power, and its vectors are `q`'s. `None`
+/// for a matrix with a NaN or an infinity, or if the iteration does not
+/// converge. (nalgebra's plain `svd` panics on a NaN singular value.)
+pub fn scaled_svd(
+    q: &nalgebra::DMatrix<f64>,
+    compute_v: bool,
+) -> Option<nalgebra::linalg::SVD<f64, nalgebra::Dyn, nalgebra::Dyn>> {
+    if !q.iter().all(|x| x.is_finite()) {
+        return None;
+    }
+    let scale = q.amax();
+    let scaled = if scale > 0.0 {
+        let exponent = (scale.log2().floor() as i64).clamp(-1022, 1023);
+        q / f64::from_bits(((exponent + 1023) as u64) << 52)
+    } else {
+        q.clone()
+    };
+    let svd = scaled.try_svd(false, compute_v, f64::EPSILON, 10_000)?;
+    svd.singular_values
+        .iter()
+        .all(|s| s.is_finite())
+        .then_some(svd)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

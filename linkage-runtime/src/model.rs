@@ -575,10 +575,14 @@ fn velocity_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     let ratios = inv.inverse * psi_v;
     let udot = -(ratios * vdot);
     check_value(Stage::Velocity, "u̇", udot.as_slice())?;
-    // u̇ = −R v̇ at unit scale: its size, as log₂, must be a normal number.
-    let t = crate::error::power_of_two_near(vdot.amax());
-    let size_log2 = (ratios * (vdot / t)).amax().log2() + t.log2();
-    crate::error::check_result(Stage::Velocity, "u̇", size_log2)?;
+    // The size of the terms of u̇ = −R v̇, ‖R‖·|v̇| (as log₂, which cannot
+    // underflow), must be a normal number.
+    let terms = if ratios.amax() > 0.0 && vdot.amax() > 0.0 {
+        ratios.amax().log2() + vdot.amax().log2()
+    } else {
+        f64::NEG_INFINITY
+    };
+    crate::error::check_result(Stage::Velocity, "u̇", terms)?;
     Ok(Velocity {
         udot,
         ratios,
@@ -678,11 +682,26 @@ fn acceleration_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     let from_vddot = inv.inverse * (psi_v * (vddot / t));
     check_value(Stage::Acceleration, "ü", from_gamma.as_slice())?;
     check_value(Stage::Acceleration, "ü", from_vddot.as_slice())?;
-    // The size of each part, as log₂ (no underflow): the larger must be a
-    // normal number, or ü has lost its precision.
-    let size_log2 =
-        (from_gamma.amax().log2() + 2.0 * s.log2()).max(from_vddot.amax().log2() + t.log2());
-    crate::error::check_result(Stage::Acceleration, "ü", size_log2)?;
+    // The size of the terms ü is made of, as log₂ (no underflow): ‖Ψ_u⁻¹‖
+    // times ‖Ψ_v‖·|v̈| and times γ's terms, second derivatives of Ψ (sized
+    // by its first, ‖[Ψ_u Ψ_v]‖) times |q̇|². Not ü's own size: γ's terms
+    // may cancel (a rhombus's do, exactly), and ü with them, to far less
+    // than the precision they leave; what must be a normal number is the
+    // scale of that precision.
+    let inverse_log2 = inv.inverse.amax().log2();
+    let vddot_terms = if from_vddot.amax() > 0.0 {
+        inverse_log2 + psi_v.amax().log2() + vddot.amax().log2()
+    } else {
+        f64::NEG_INFINITY
+    };
+    let gamma_terms = if udot.amax().max(vdot.amax()) > 0.0 {
+        inverse_log2
+            + psi_u.amax().max(psi_v.amax()).log2()
+            + 2.0 * (udot.amax().max(vdot.amax()).log2() + s.log2())
+    } else {
+        f64::NEG_INFINITY
+    };
+    crate::error::check_result(Stage::Acceleration, "ü", vddot_terms.max(gamma_terms))?;
     let uddot = -(from_vddot * t + from_gamma * s * s);
     check_value(Stage::Acceleration, "ü", uddot.as_slice())?;
     Ok(uddot)
@@ -761,8 +780,13 @@ fn augmented_condition<const M: usize, const F: usize>(
             }
         }
     }
-    let s = q.singular_values();
-    let (max, min) = s
+    // A decomposition that fails (only for extreme numbers) counts as
+    // ill-conditioned: the cautious reading.
+    let Some(svd) = crate::linalg::scaled_svd(&q, false) else {
+        return f64::INFINITY;
+    };
+    let (max, min) = svd
+        .singular_values
         .iter()
         .fold((0.0_f64, f64::INFINITY), |(a, b), &x| (a.max(x), b.min(x)));
     if min > 0.0 { max / min } else { f64::INFINITY }

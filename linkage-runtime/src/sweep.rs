@@ -875,8 +875,13 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             }
             q[(i, M)] = psi_t[i];
         }
-        let s = q.singular_values();
-        let (max, min) = s
+        // A decomposition that fails (only for extreme numbers) is taken
+        // for rank-deficient: the cautious reading.
+        let Some(svd) = crate::linalg::scaled_svd(&q, false) else {
+            return 0.0;
+        };
+        let (max, min) = svd
+            .singular_values
             .iter()
             .fold((0.0_f64, f64::INFINITY), |(a, b), &x| (a.max(x), b.min(x)));
         if max > 0.0 { min / max } else { 0.0 }
@@ -963,7 +968,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         let psi_u =
             sources::psi_and_psi_u(self.model, self.options.options.jacobian, limit_u, &v).1;
         let dyn_u = DMatrix::<f64>::from_fn(M, M, |i, j| psi_u[(i, j)]);
-        let svd = dyn_u.svd(false, true);
+        let svd = crate::linalg::scaled_svd(&dyn_u, true)?;
         let v_t = svd.v_t?;
         let k = svd
             .singular_values
