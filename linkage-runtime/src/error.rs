@@ -196,30 +196,42 @@ pub(crate) fn check_input(argument: &'static str, values: &[f64]) -> Result<(), 
 const NORMAL_SCALE: f64 = f64::from_bits(((1023 - 970) as u64) << 52);
 
 /// Checks that no nonzero row or column of [Ψ_u Ψ_v] lives in the
-/// subnormal range (see [`Error::Underflow`]).
+/// subnormal range (see [`Error::Underflow`]), and returns the smallest
+/// nonzero and the largest of the row and column scales (each the largest
+/// |entry| of its row or column), found in one pass over the entries.
+#[inline]
 pub(crate) fn check_scale<const M: usize, const F: usize>(
     stage: Stage,
     psi_u: &nalgebra::SMatrix<f64, M, M>,
     psi_v: &nalgebra::SMatrix<f64, M, F>,
-) -> Result<(), Error> {
-    let entry = |i: usize, j: usize| {
-        if j < M {
-            psi_u[(i, j)]
-        } else {
-            psi_v[(i, j - M)]
-        }
-    };
+) -> Result<(f64, f64), Error> {
+    // Plain comparisons (the entries are finite here): this runs in every
+    // analysis, and f64::max's NaN handling costs more than the rest.
+    let pick = |a: f64, b: f64| if b > a { b } else { a };
+    let mut rows = [0.0_f64; M];
     let mut smallest = f64::INFINITY;
-    for j in 0..M + F {
-        let scale = (0..M).map(|i| entry(i, j).abs()).fold(0.0, f64::max);
-        if scale > 0.0 {
-            smallest = smallest.min(scale);
+    let mut largest = 0.0_f64;
+    let mut column = |entries: &[f64]| {
+        let mut scale = 0.0_f64;
+        for (row, x) in rows.iter_mut().zip(entries) {
+            let x = x.abs();
+            scale = pick(scale, x);
+            *row = pick(*row, x);
         }
+        if scale > 0.0 && scale < smallest {
+            smallest = scale;
+        }
+        largest = pick(largest, scale);
+    };
+    for j in 0..M {
+        column(psi_u.column(j).as_slice());
     }
-    for i in 0..M {
-        let scale = (0..M + F).map(|j| entry(i, j).abs()).fold(0.0, f64::max);
-        if scale > 0.0 {
-            smallest = smallest.min(scale);
+    for j in 0..F {
+        column(psi_v.column(j).as_slice());
+    }
+    for &scale in &rows {
+        if scale > 0.0 && scale < smallest {
+            smallest = scale;
         }
     }
     if smallest < NORMAL_SCALE {
@@ -229,7 +241,7 @@ pub(crate) fn check_scale<const M: usize, const F: usize>(
             scale: smallest,
         })
     } else {
-        Ok(())
+        Ok((smallest, largest))
     }
 }
 

@@ -31,7 +31,15 @@ pub struct Inverse<const M: usize> {
 pub fn invert<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
     const LOW: f64 = f64::from_bits(((1023 - 300) as u64) << 52);
     const HIGH: f64 = f64::from_bits(((1023 + 300) as u64) << 52);
-    let scale = a.amax();
+    // Plain comparisons (a NaN entry is skipped here and caught below):
+    // this runs at every evaluation of a sweep.
+    let mut scale = 0.0_f64;
+    for x in a.iter() {
+        let x = x.abs();
+        if x > scale {
+            scale = x;
+        }
+    }
     let ordinary = (LOW..=HIGH).contains(&scale);
     if ordinary || !(scale > 0.0 && scale.is_finite()) {
         invert_at_scale(a)

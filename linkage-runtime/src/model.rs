@@ -610,7 +610,7 @@ fn fused_kinematics<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
 ) -> Result<Option<(Velocity<M, F>, SVector<f64, M>)>, Error> {
     let k = model.kinematics(u, v, vdot, vddot);
     check_value(Stage::Velocity, "Ψ_v", k.psi_v.as_slice())?;
-    crate::error::check_scale(Stage::Velocity, &k.psi_u, &k.psi_v)?;
+    let (smallest, largest) = crate::error::check_scale(Stage::Velocity, &k.psi_u, &k.psi_v)?;
     let min_rcond = options.min_rcond(Stage::Velocity);
     if !(k.rcond > 0.0 && k.rcond >= min_rcond) {
         return Err(Error::Singular {
@@ -628,15 +628,7 @@ fn fused_kinematics<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     // the result keeps its precision. Anything else goes to the separate
     // solves, which scale and check.
     let at_rest = vdot.amax() == 0.0;
-    let geometry = (0..M + F).all(|j| {
-        let column = if j < M {
-            k.psi_u.column(j).amax()
-        } else {
-            k.psi_v.column(j - M).amax()
-        };
-        ordinary(column, true)
-    }) && (0..M)
-        .all(|i| ordinary(k.psi_u.row(i).amax().max(k.psi_v.row(i).amax()), false));
+    let geometry = ordinary(smallest, false) && ordinary(largest, false);
     let still = at_rest && vddot.amax() == 0.0;
     if !(geometry && ordinary(k.udot.amax(), at_rest) && ordinary(k.uddot.amax(), still)) {
         return Ok(None);

@@ -1042,7 +1042,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
 
     /// The pose at the sweep's speed; an error if scaling to that speed
     /// overflows (an absurd speed for the step).
-    #[inline]
+    #[inline(always)]
     fn pose(
         &self,
         state: &State<M, F>,
@@ -1069,34 +1069,47 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             + probe(pose.vdot.as_slice())
             + probe(pose.udot.as_slice())
             + probe(pose.uddot.as_slice());
-        if probes == 0.0 {
-            // At a tiny speed the velocities and accelerations may fall
-            // below the normal range (only then is the careful test run).
-            if rate != 0.0 && rate.abs() < 1e-100 {
-                let log_rate = rate.abs().log2();
-                crate::error::check_result(
-                    Stage::Velocity,
-                    "the sweep's u̇ at its speed",
-                    state.du.amax().log2() + log_rate,
-                )?;
-                crate::error::check_result(
-                    Stage::Acceleration,
-                    "the sweep's ü at its speed",
-                    state.ddu.amax().log2() + 2.0 * log_rate,
-                )?;
-            }
-            Ok(pose)
-        } else {
-            let finite = |x: &SVector<f64, M>| x.iter().all(|v| v.is_finite());
-            Err(Error::NonFiniteValue {
-                stage: if finite(&pose.udot) {
+        // A non-finite entry, or a tiny speed at which the velocities and
+        // accelerations may fall below the normal range: the careful tests,
+        // out of line.
+        let unusual = (probes != 0.0) | ((rate != 0.0) & (rate.abs() < 1e-100));
+        if unusual {
+            Self::unusual_pose(state, rate, &pose)?;
+        }
+        Ok(pose)
+    }
+
+    /// The careful tests of [`Self::pose`], for a pose with a non-finite
+    /// entry or at a tiny speed.
+    #[cold]
+    #[inline(never)]
+    fn unusual_pose(state: &State<M, F>, rate: f64, pose: &SweepPose<M, F>) -> Result<(), Error> {
+        let finite = |x: &[f64]| x.iter().all(|v| v.is_finite());
+        if !(finite(pose.v.as_slice())
+            && finite(pose.vdot.as_slice())
+            && finite(pose.udot.as_slice())
+            && finite(pose.uddot.as_slice()))
+        {
+            return Err(Error::NonFiniteValue {
+                stage: if finite(pose.udot.as_slice()) {
                     Stage::Acceleration
                 } else {
                     Stage::Velocity
                 },
                 quantity: "the sweep's velocities and accelerations at its speed",
-            })
+            });
         }
+        let log_rate = rate.abs().log2();
+        crate::error::check_result(
+            Stage::Velocity,
+            "the sweep's u̇ at its speed",
+            state.du.amax().log2() + log_rate,
+        )?;
+        crate::error::check_result(
+            Stage::Acceleration,
+            "the sweep's ü at its speed",
+            state.ddu.amax().log2() + 2.0 * log_rate,
+        )
     }
 }
 
