@@ -62,13 +62,13 @@ pub enum DiagramError {
 impl std::fmt::Display for DiagramError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            Self::TooFewPoses { poses, .. } => write!(
+            Self::TooFewPoses { poses } => write!(
                 f,
                 "motion diagrams need a sweep of at least two poses, got {poses}"
             ),
-            Self::NonFinite {
-                name, pose, what, ..
-            } => write!(f, "the {what} of `{name}` is not finite at pose {pose}"),
+            Self::NonFinite { name, pose, what } => {
+                write!(f, "the {what} of `{name}` is not finite at pose {pose}")
+            }
             Self::Drawing(inner) => write!(f, "drawing failed: {inner}"),
         }
     }

@@ -65,23 +65,19 @@ pub enum KinetostaticsError {
 impl std::fmt::Display for KinetostaticsError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            Self::UnknownBody {
-                known, name, owner, ..
-            } => write!(
+            Self::UnknownBody { known, name, owner } => write!(
                 f,
                 "`{owner}` names the body `{name}`, which is not in the table (bodies: {known})"
             ),
-            Self::UnknownPoint {
-                known, name, owner, ..
-            } => write!(
+            Self::UnknownPoint { known, name, owner } => write!(
                 f,
                 "`{owner}` names the point `{name}`, neither a point of the model nor a ground point (points: {known})"
             ),
-            Self::UnknownCoordinate { name, owner, .. } => write!(
+            Self::UnknownCoordinate { name, owner } => write!(
                 f,
                 "`{owner}` names the coordinate `{name}`, which the model does not have"
             ),
-            Self::UnassignedLoad { load, .. } => write!(
+            Self::UnassignedLoad { load } => write!(
                 f,
                 "the load `{load}` is not assigned to a body (use `load_on`)"
             ),
@@ -93,12 +89,11 @@ impl std::fmt::Display for KinetostaticsError {
                 equations,
                 unknowns,
                 why,
-                ..
             } => write!(
                 f,
                 "the table gives {unknowns} unknowns (2 per revolute joint, 3 per prismatic, 1 balancing moment) but {equations} equations (3 per body, 1 per prismatic joint): {why}"
             ),
-            Self::Indeterminate { joints, rcond, .. } => write!(
+            Self::Indeterminate { joints, rcond } => write!(
                 f,
                 "the reactions of the joints {joints:?} are not determined (reciprocal condition {rcond:.1e}): the structure is statically indeterminate there, or can move by itself"
             ),

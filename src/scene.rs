@@ -74,19 +74,19 @@ pub enum SceneError {
 impl std::fmt::Display for SceneError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            Self::UnknownPoint { known, name, .. } => write!(
+            Self::UnknownPoint { known, name } => write!(
                 f,
                 "the scene names the point `{name}`, which is not among the frame's points ({known})"
             ),
-            Self::MissingKinematics { what, .. } => write!(
+            Self::MissingKinematics { what } => write!(
                 f,
                 "the scene draws {what} arrows but the frame has no {what}"
             ),
-            Self::NonFinite { name, what, .. } => write!(f, "the {what} of `{name}` is not finite"),
-            Self::TooFewFrames { frames, .. } => {
+            Self::NonFinite { name, what } => write!(f, "the {what} of `{name}` is not finite"),
+            Self::TooFewFrames { frames } => {
                 write!(f, "an animation needs at least two frames, got {frames}")
             }
-            Self::BadSetting { value, what, .. } => {
+            Self::BadSetting { value, what } => {
                 write!(f, "{what} must be positive and finite, got {value}")
             }
         }

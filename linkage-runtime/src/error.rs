@@ -118,13 +118,11 @@ impl std::fmt::Display for Error {
                 argument,
                 index,
                 value,
-                ..
             } => write!(f, "non-finite input: {argument}[{index}] = {value}"),
             Self::NotConverged {
                 iterations,
                 residual,
                 step,
-                ..
             } => write!(
                 f,
                 "Newton–Raphson did not converge in {iterations} iterations: \
@@ -134,7 +132,6 @@ impl std::fmt::Display for Error {
                 min_rcond,
                 rcond,
                 stage,
-                ..
             } => write!(
                 f,
                 "Ψ_u is singular in the {stage} solve: reciprocal condition number {rcond:.3e} \
@@ -152,12 +149,11 @@ impl std::fmt::Display for Error {
                 quantity,
                 scale,
                 stage,
-                ..
             } => write!(
                 f,
                 "{quantity} underflows in the {stage} stage: its scale {scale:.3e} is below the normal range of f64 that keeps relative precision (express the mechanism in larger units)"
             ),
-            Self::SubstepLimit { limit, step, .. } => write!(
+            Self::SubstepLimit { limit, step } => write!(
                 f,
                 "a step of the sweep, after {step} recorded poses, needs more than {limit} sub-steps: the drive moves too far per step (take more steps or a shorter drive)"
             ),
@@ -165,11 +161,8 @@ impl std::fmt::Display for Error {
                 argument,
                 value,
                 why,
-                ..
             } => write!(f, "{argument} = {value} is out of range: {why}"),
-            Self::NonFiniteValue {
-                quantity, stage, ..
-            } => write!(
+            Self::NonFiniteValue { quantity, stage } => write!(
                 f,
                 "{quantity} is not finite in the {stage} stage: the pose or the parameters are outside the equations' domain"
             ),
@@ -193,7 +186,7 @@ pub(crate) fn check_input(argument: &'static str, values: &[f64]) -> Result<(), 
 
 /// The smallest scale of a nonzero column or row that keeps relative
 /// precision: 2⁻⁹⁷⁰, 52 binary orders above the subnormal range.
-const NORMAL_SCALE: f64 = f64::from_bits(((1023 - 970) as u64) << 52);
+const NORMAL_SCALE: f64 = crate::linalg::pow2(-970);
 
 /// Checks that no nonzero row or column of [Ψ_u Ψ_v] lives in the
 /// subnormal range (see [`Error::Underflow`]), and returns the smallest
@@ -262,18 +255,6 @@ pub(crate) fn check_result(
         })
     } else {
         Ok(())
-    }
-}
-
-/// The power of two nearest below `max` (1 for zero or a non-finite
-/// `max`), at least 2⁻¹⁰²² so that it is normal: dividing by it brings
-/// numbers of largest magnitude `max` near 1, exactly.
-pub(crate) fn power_of_two_near(max: f64) -> f64 {
-    if max > 0.0 && max.is_finite() {
-        let exponent = (max.log2().floor() as i64).clamp(-1022, 1023);
-        f64::from_bits(((exponent + 1023) as u64) << 52)
-    } else {
-        1.0
     }
 }
 

@@ -29,8 +29,8 @@ pub struct Inverse<const M: usize> {
 /// even where its magnitude leaves the range of f64.
 #[inline(always)]
 pub fn invert<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
-    const LOW: f64 = f64::from_bits(((1023 - 300) as u64) << 52);
-    const HIGH: f64 = f64::from_bits(((1023 + 300) as u64) << 52);
+    const LOW: f64 = pow2(-300);
+    const HIGH: f64 = pow2(300);
     // Plain comparisons (a NaN entry is skipped here and caught below):
     // this runs at every evaluation of a sweep.
     let mut scale = 0.0_f64;
@@ -53,8 +53,7 @@ pub fn invert<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
 #[cold]
 #[inline(never)]
 fn invert_scaled<const M: usize>(a: &SMatrix<f64, M, M>, scale: f64) -> Inverse<M> {
-    let exponent = (scale.log2().floor() as i64).clamp(-1022, 1023);
-    let p = f64::from_bits(((exponent + 1023) as u64) << 52);
+    let p = power_of_two_near(scale);
     let inner = invert_at_scale(&(a / p));
     let mut det = inner.det;
     for _ in 0..M {
@@ -254,18 +253,28 @@ pub fn scaled_svd(
     if !q.iter().all(|x| x.is_finite()) {
         return None;
     }
-    let scale = q.amax();
-    let scaled = if scale > 0.0 {
-        let exponent = (scale.log2().floor() as i64).clamp(-1022, 1023);
-        q / f64::from_bits(((exponent + 1023) as u64) << 52)
-    } else {
-        q.clone()
-    };
+    let scaled = q / power_of_two_near(q.amax());
     let svd = scaled.try_svd(false, compute_v, f64::EPSILON, 10_000)?;
     svd.singular_values
         .iter()
         .all(|s| s.is_finite())
         .then_some(svd)
+}
+
+/// 2^`exponent`, exactly, for a normal exponent (−1022 ≤ `exponent` ≤ 1023).
+pub(crate) const fn pow2(exponent: i32) -> f64 {
+    f64::from_bits(((exponent + 1023) as u64) << 52)
+}
+
+/// The power of two nearest below `max` (1 for zero or a non-finite
+/// `max`), at least 2⁻¹⁰²² so that it is normal: dividing by it brings
+/// numbers of largest magnitude `max` near 1, exactly.
+pub(crate) fn power_of_two_near(max: f64) -> f64 {
+    if max > 0.0 && max.is_finite() {
+        pow2((max.log2().floor() as i32).clamp(-1022, 1023))
+    } else {
+        1.0
+    }
 }
 
 #[cfg(test)]

@@ -664,12 +664,12 @@ fn acceleration_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     // velocities, the accelerations or the mechanism. In the normal range
     // every scaling is exact and the result is the plain formula's, bit for
     // bit up to the order of the sums.
-    let s = crate::error::power_of_two_near(udot.amax().max(vdot.amax()));
+    let s = crate::linalg::power_of_two_near(udot.amax().max(vdot.amax()));
     let (udot, vdot) = (udot / s, vdot / s);
     let generated = || model.gamma_by(options.method, u, v, &udot, &vdot);
     let gamma_unit = sources::gamma(model, options.jacobian, generated, u, v, &udot, &vdot);
     check_value(Stage::Acceleration, "γ", gamma_unit.as_slice())?;
-    let t = crate::error::power_of_two_near(vddot.amax());
+    let t = crate::linalg::power_of_two_near(vddot.amax());
     let from_gamma = inv.inverse * gamma_unit;
     let from_vddot = inv.inverse * (psi_v * (vddot / t));
     check_value(Stage::Acceleration, "ü", from_gamma.as_slice())?;

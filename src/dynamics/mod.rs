@@ -73,32 +73,28 @@ pub enum MachineError {
 impl std::fmt::Display for MachineError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            Self::UnknownPoint {
-                known, name, owner, ..
-            } => write!(
+            Self::UnknownPoint { known, name, owner } => write!(
                 f,
                 "`{owner}` names the point `{name}`, which the model does not define (its points: {known})"
             ),
-            Self::UnknownCoordinate {
-                known, name, owner, ..
-            } => write!(
+            Self::UnknownCoordinate { known, name, owner } => write!(
                 f,
                 "`{owner}` names the coordinate `{name}`, which is neither in u nor v (coordinates: {known})"
             ),
-            Self::BadTable { why, .. } => write!(f, "the table is not usable: {why}"),
-            Self::BadSetting {
-                must, value, what, ..
-            } => write!(f, "{what} must be {must}, got {value}"),
+            Self::BadTable { why } => write!(f, "the table is not usable: {why}"),
+            Self::BadSetting { must, value, what } => {
+                write!(f, "{what} must be {must}, got {value}")
+            }
             Self::Kinematics(inner) => write!(f, "kinematics: {inner}"),
-            Self::Incomplete { phi, why, .. } => write!(
+            Self::Incomplete { phi, why } => write!(
                 f,
                 "the mechanism does not complete its cycle: it stops at φ = {phi} ({why})"
             ),
-            Self::Stalls { phi, .. } => write!(
+            Self::Stalls { phi } => write!(
                 f,
                 "the machine stalls at φ = {phi}: its kinetic energy runs out"
             ),
-            Self::NoSteadyState { omega, why, .. } => {
+            Self::NoSteadyState { omega, why } => {
                 write!(f, "no periodic steady state near ω = {omega}: {why}")
             }
         }
