@@ -246,29 +246,15 @@ impl Diagrams {
             .collect();
         let title_height = 36;
         let height = title_height + 3 * self.row_height + 10;
-        let mut out = String::new();
-        {
-            let root = SVGBackend::with_string(&mut out, (self.width, height)).into_drawing_area();
-            self.draw(
-                &root,
-                title_height,
-                &columns,
-                &curves,
-                &xs,
-                &x_desc,
-                &events,
-            )
-            .map_err(|e| DiagramError::Drawing(e.to_string()))?;
-            root.present()
-                .map_err(|e| DiagramError::Drawing(e.to_string()))?;
-        }
-        Ok(out)
+        page((self.width, height), |root| {
+            self.draw(root, title_height, &columns, &curves, &xs, &x_desc, &events)
+        })
     }
 
     #[allow(clippy::too_many_arguments)]
     fn draw(
         &self,
-        root: &DrawingArea<SVGBackend<'_>, plotters::coord::Shift>,
+        root: &Page<'_>,
         title_height: u32,
         columns: &[Kind],
         curves: &[Curve],
@@ -276,14 +262,9 @@ impl Diagrams {
         x_desc: &str,
         events: &[(f64, &'static str)],
     ) -> Result<(), Box<dyn std::error::Error>> {
-        root.fill(&WHITE)?;
         let (top, body) = root.split_vertically(title_height);
         if let Some(title) = &self.title {
-            top.draw(&Text::new(
-                title.clone(),
-                (16, 10),
-                ("serif", 19).into_font().color(&BLACK),
-            ))?;
+            top.draw(&title_text(title.clone(), 10))?;
         }
         // One legend for every panel, at the top right.
         let mut x = self.width as i32 - 16 - 70 * curves.len() as i32;
@@ -552,30 +533,19 @@ impl Chart {
         let rows = self.panels.len().div_ceil(self.columns).max(1);
         let title_height = 40;
         let height = title_height + rows as u32 * self.panel_height + 10;
-        let mut out = String::new();
-        {
-            let root = SVGBackend::with_string(&mut out, (self.width, height)).into_drawing_area();
-            self.draw(&root, title_height, rows)
-                .map_err(|e| DiagramError::Drawing(e.to_string()))?;
-            root.present()
-                .map_err(|e| DiagramError::Drawing(e.to_string()))?;
-        }
-        Ok(out)
+        page((self.width, height), |root| {
+            self.draw(root, title_height, rows)
+        })
     }
 
     fn draw(
         &self,
-        root: &DrawingArea<SVGBackend<'_>, plotters::coord::Shift>,
+        root: &Page<'_>,
         title_height: u32,
         rows: usize,
     ) -> Result<(), Box<dyn std::error::Error>> {
-        root.fill(&WHITE)?;
         let (top, body) = root.split_vertically(title_height);
-        top.draw(&Text::new(
-            self.title.clone(),
-            (16, 11),
-            ("serif", 19).into_font().color(&BLACK),
-        ))?;
+        top.draw(&title_text(self.title.clone(), 11))?;
         let areas = body.split_evenly((rows, self.columns));
         for (panel, area) in self.panels.iter().zip(areas.iter()) {
             let points = || panel.series.iter().flat_map(|s| s.points.iter());
@@ -752,30 +722,17 @@ impl Hodographs {
             self.columns as u32 * self.size,
             title_height + rows as u32 * self.size,
         );
-        let mut out = String::new();
-        {
-            let root = SVGBackend::with_string(&mut out, (width, height)).into_drawing_area();
-            self.draw(&root, title_height, rows)
-                .map_err(|e| DiagramError::Drawing(e.to_string()))?;
-            root.present()
-                .map_err(|e| DiagramError::Drawing(e.to_string()))?;
-        }
-        Ok(out)
+        page((width, height), |root| self.draw(root, title_height, rows))
     }
 
     fn draw(
         &self,
-        root: &DrawingArea<SVGBackend<'_>, plotters::coord::Shift>,
+        root: &Page<'_>,
         title_height: u32,
         rows: usize,
     ) -> Result<(), Box<dyn std::error::Error>> {
-        root.fill(&WHITE)?;
         let (top, body) = root.split_vertically(title_height);
-        top.draw(&Text::new(
-            self.title.clone(),
-            (16, 11),
-            ("serif", 19).into_font().color(&BLACK),
-        ))?;
+        top.draw(&title_text(self.title.clone(), 11))?;
         let areas = body.split_evenly((rows, self.columns));
         let unit = &self.unit;
         for ((name, points, mark), area) in self.panels.iter().zip(areas.iter()) {
@@ -830,4 +787,28 @@ impl Hodographs {
         }
         Ok(())
     }
+}
+/// The drawing area of an SVG page.
+type Page<'a> = DrawingArea<SVGBackend<'a>, plotters::coord::Shift>;
+
+/// An SVG page of `size`, white, on which `draw` draws; plotters' errors
+/// become [`DiagramError::Drawing`].
+fn page(
+    size: (u32, u32),
+    draw: impl FnOnce(&Page<'_>) -> Result<(), Box<dyn std::error::Error>>,
+) -> Result<String, DiagramError> {
+    let mut out = String::new();
+    {
+        let root = SVGBackend::with_string(&mut out, size).into_drawing_area();
+        let drawing = |e: &dyn std::fmt::Display| DiagramError::Drawing(e.to_string());
+        root.fill(&WHITE).map_err(|e| drawing(&e))?;
+        draw(&root).map_err(|e| drawing(&e))?;
+        root.present().map_err(|e| drawing(&e))?;
+    }
+    Ok(out)
+}
+
+/// A page's title, at the left of its band, `y` pixels down.
+fn title_text(title: String, y: i32) -> Text<'static, (i32, i32), String> {
+    Text::new(title, (16, y), ("serif", 19).into_font().color(&BLACK))
 }
