@@ -416,6 +416,13 @@ impl Cam {
         self.pitch(0.0).k.norm()
     }
 
+    /// The worst excess of |θ| over `limit` in a turn (negative when the
+    /// pressure angle stays within it everywhere).
+    pub fn pressure_excess(&self, limit: f64) -> f64 {
+        let ((_, hi), (_, lo)) = self.pressure_extremes();
+        (hi - limit).max(-lo - limit)
+    }
+
     /// The extremes of the pressure angle over a turn: ((φ, θ) at the
     /// maximum, (φ, θ) at the minimum), located to 1e-10 rad.
     pub fn pressure_extremes(&self) -> ((f64, f64), (f64, f64)) {
@@ -595,11 +602,7 @@ pub fn smallest_rocker(
             rotation,
         })
     };
-    // The worst excess of |θ| over the limit, for a cam.
-    let excess = |cam: &Cam| {
-        let ((_, hi), (_, lo)) = cam.pressure_extremes();
-        (hi - limit).max(-lo - limit)
-    };
+    let excess = |cam: &Cam| cam.pressure_excess(limit);
     // For a base radius: the best initial angle, and its excess.
     let best = |r0: f64| -> (f64, f64) {
         let upper = (r0 / arm).clamp(-1.0, 1.0).asin().min(PI / 2.0 - 1e-9);
@@ -673,10 +676,7 @@ pub fn smallest_translating(
         },
         rotation,
     };
-    let excess = |cam: &Cam| {
-        let ((_, hi), (_, lo)) = cam.pressure_extremes();
-        (hi - limit).max(-lo - limit)
-    };
+    let excess = |cam: &Cam| cam.pressure_excess(limit);
     let best = |base: f64| -> (f64, f64) {
         let mut f = |e: f64| Ok::<f64, std::convert::Infallible>(excess(&make(base, e)));
         let n = 24;
