@@ -840,6 +840,22 @@ impl<'a> Generator<'a> {
             }
         };
         let (u_arg, v_arg) = (arg(reads.u, "u"), arg(reads.v, "v"));
+        // The body, the same with computed or carried sines and cosines
+        // (the prologue reads them from wherever they come from).
+        let body = quote! {
+            #(#prologue)*
+            #(#first_statements)*
+            #psi_bind
+            #psi_u_bind
+            #psi_v_bind
+            let ::linkage::Inverse { #inverse_pattern } = ::linkage::invert(&#psi_u);
+            let #udot = -(#inverse * (#psi_v * vdot));
+            #velocity_bind
+            #(#second_statements)*
+            #gamma_bind
+            let #uddot = -(#inverse * (#psi_v * vddot + #gamma));
+            ::linkage::Kinematics { #(#fields),* }
+        };
         if with_trig {
             let (trig_u, trig_v) = (&source.u, &source.v);
             let mask = |range: std::ops::Range<usize>| {
@@ -872,18 +888,7 @@ impl<'a> Generator<'a> {
                     vdot: &SVector<f64, #fl>,
                     vddot: &SVector<f64, #fl>,
                 ) -> ::linkage::Kinematics<#ml, #fl> {
-                    #(#prologue)*
-                    #(#first_statements)*
-                    #psi_bind
-                    #psi_u_bind
-                    #psi_v_bind
-                    let ::linkage::Inverse { #inverse_pattern } = ::linkage::invert(&#psi_u);
-                    let #udot = -(#inverse * (#psi_v * vdot));
-                    #velocity_bind
-                    #(#second_statements)*
-                    #gamma_bind
-                    let #uddot = -(#inverse * (#psi_v * vddot + #gamma));
-                    ::linkage::Kinematics { #(#fields),* }
+                    #body
                 }
             };
         }
@@ -902,18 +907,7 @@ impl<'a> Generator<'a> {
                 vdot: &SVector<f64, #fl>,
                 vddot: &SVector<f64, #fl>,
             ) -> ::linkage::Kinematics<#ml, #fl> {
-                #(#prologue)*
-                #(#first_statements)*
-                #psi_bind
-                #psi_u_bind
-                #psi_v_bind
-                let ::linkage::Inverse { #inverse_pattern } = ::linkage::invert(&#psi_u);
-                let #udot = -(#inverse * (#psi_v * vdot));
-                #velocity_bind
-                #(#second_statements)*
-                #gamma_bind
-                let #uddot = -(#inverse * (#psi_v * vddot + #gamma));
-                ::linkage::Kinematics { #(#fields),* }
+                #body
             }
         }
     }
