@@ -1,0 +1,191 @@
+//! Continuation sweeps: the mechanism driven along a path, pose after pose,
+//! without ever jumping silently to another assembly branch, and with every
+//! singular pose on the way located and classified.
+//!
+//! Between two requested driver values the sweep takes as many sub-steps as
+//! it needs. Each sub-step predicts the next pose from the velocity ratios
+//! (first order, u + u′Δt) and, by default, the second-order analog
+//! (+ ½u″Δt²), then corrects it with Newton. A corrected pose is accepted
+//! only if it lies close to the prediction (the continuity of u), and a
+//! change of sign of det Ψ_u between accepted poses is examined: where the
+//! branch truly passes through a singular pose (a *branch point*, e.g. the
+//! change-point four-bar at its collinear pose) the crossing is located and
+//! reported; a jump to the mirror branch is refused and the step halved.
+//!
+//! Where the driver cannot advance any further, the pose is a *limit
+//! position*: it is located exactly as the solution of Ψ = 0, det Ψ_u = 0,
+//! and, when the drive rocks, the sweep passes onto the other branch and
+//! reverses the driver — the full rocking motion of a non-Grashof four-bar.
+
+mod driver;
+mod singular;
+mod tracker;
+mod trig;
+
+pub(crate) use driver::sweep;
+
+use crate::error::Error;
+use crate::model::Options;
+use nalgebra::SVector;
+
+/// How the driver moves.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Drive<const F: usize> {
+    /// From `from` to `to` along a straight line of driver space, in `steps`
+    /// equal steps. A limit position on the way ends the sweep (the path
+    /// cannot be followed further).
+    Line {
+        from: SVector<f64, F>,
+        to: SVector<f64, F>,
+        steps: usize,
+    },
+    /// Steps of `step` from `from`, reversing at every limit position, until
+    /// the mechanism is back at `from` moving the way it started after two
+    /// reversals (one full rocking cycle), or after `max_steps` steps.
+    Rocking {
+        from: SVector<f64, F>,
+        step: SVector<f64, F>,
+        max_steps: usize,
+    },
+}
+
+/// The choices of a sweep.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SweepOptions {
+    /// Newton's tolerances and the other solver choices.
+    pub options: Options,
+    /// The driver's speed along the path (driver units per second): the
+    /// poses' velocities and accelerations are for this speed with no
+    /// driver acceleration. 1 gives the kinematic analogs du/dv, d²u/dv².
+    pub speed: f64,
+    /// Predict with the second-order analog as well as the first.
+    pub second_order: bool,
+    /// A corrected pose farther from its prediction than this fraction of
+    /// the predicted step is taken for a jump to another branch.
+    pub continuity: f64,
+    /// Singular poses are located to this precision in the path parameter
+    /// (the driver, for f = 1).
+    pub locate_tolerance: f64,
+    /// The largest predicted change of u in one sub-step, relative to
+    /// max(1, ‖u‖∞): near a singular pose the velocity ratios blow up, and
+    /// this keeps the predictor from throwing Newton onto a far branch.
+    pub max_move: f64,
+    /// The most sub-steps one step of the drive may take (halvings at
+    /// singular poses included): a drive too long for its number of steps
+    /// (a crank turned through 10⁹ revolutions in ten steps) is an
+    /// [`Error::SubstepLimit`] rather than an endless loop.
+    pub max_substeps: usize,
+}
+
+impl SweepOptions {
+    /// That every setting is in its range.
+    pub fn check(&self) -> Result<(), Error> {
+        self.options.check()?;
+        let invalid = |argument, value, why| {
+            Err(Error::InvalidInput {
+                argument,
+                value,
+                why,
+            })
+        };
+        if !self.speed.is_finite() {
+            return invalid("speed", self.speed, "the driver's speed must be finite");
+        }
+        for (argument, value) in [
+            ("continuity", self.continuity),
+            ("locate_tolerance", self.locate_tolerance),
+            ("max_move", self.max_move),
+        ] {
+            if !(value > 0.0 && value.is_finite()) {
+                return invalid(argument, value, "must be positive and finite");
+            }
+        }
+        if self.max_substeps == 0 {
+            return invalid("max_substeps", 0.0, "a step needs at least one sub-step");
+        }
+        Ok(())
+    }
+}
+
+impl Default for SweepOptions {
+    fn default() -> Self {
+        SweepOptions {
+            options: Options::default(),
+            speed: 1.0,
+            second_order: true,
+            continuity: 0.5,
+            locate_tolerance: 1e-12,
+            max_move: 0.1,
+            max_substeps: 100_000,
+        }
+    }
+}
+
+/// One pose of a sweep.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SweepPose<const M: usize, const F: usize> {
+    /// The sequence number of the driver step that reached this pose (0 for
+    /// the start).
+    pub step: usize,
+    pub v: SVector<f64, F>,
+    pub u: SVector<f64, M>,
+    /// Velocities for the driver moving at `speed` in its current direction.
+    pub vdot: SVector<f64, F>,
+    pub udot: SVector<f64, M>,
+    pub uddot: SVector<f64, M>,
+    /// det Ψ_u: its sign is the assembly branch.
+    pub det: f64,
+    /// The reciprocal condition number of Ψ_u.
+    pub rcond: f64,
+    /// Newton iterations of the last corrector.
+    pub iterations: usize,
+}
+
+/// What kind of singular pose the sweep met.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EventKind {
+    /// The driver cannot go further: det Ψ_u = 0 with [Ψ_u Ψ_v] of full
+    /// rank; the mechanism must reverse (a dead centre for this driver).
+    LimitPosition,
+    /// Two branches cross: det Ψ_u = 0 and [Ψ_u Ψ_v] rank-deficient (the
+    /// change-point linkage's collinear pose); the sweep went straight on.
+    BranchPoint,
+}
+
+/// A singular pose met by a sweep.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Event<const M: usize, const F: usize> {
+    pub kind: EventKind,
+    pub v: SVector<f64, F>,
+    pub u: SVector<f64, M>,
+    /// The path parameter t of the event (v = from + t·direction).
+    pub t: f64,
+    /// The number of poses recorded before the event.
+    pub after: usize,
+    /// The smallest singular value of [Ψ_u Ψ_v] relative to the largest:
+    /// about 0 at a branch point.
+    pub rank_measure: f64,
+}
+
+/// The poses and events of a sweep.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sweep<const M: usize, const F: usize> {
+    /// One pose per driver step, except where the velocities and
+    /// accelerations would not keep [`Options::accuracy`] (at or next to a
+    /// singular pose, which the events report): `step` numbers them.
+    pub poses: Vec<SweepPose<M, F>>,
+    pub events: Vec<Event<M, F>>,
+    /// Whether the whole drive was followed (false: a limit position ended
+    /// a line, or `max_steps` ended a rocking drive before it closed).
+    pub complete: bool,
+}
+
+/// The outcome of a streamed sweep ([`crate::Linkage::sweep_each`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SweepSummary<const M: usize, const F: usize> {
+    pub events: Vec<Event<M, F>>,
+    /// As [`Sweep::complete`].
+    pub complete: bool,
+    /// The number of poses passed on.
+    pub poses: usize,
+}

@@ -1,0 +1,615 @@
+//! The tracker: one sub-step of the continuation (predict, correct, accept
+//! only if continuous), the fast run over a regular stretch, and the
+//! sub-stepping between two driver values.
+
+use super::trig::TrigCarrier;
+use super::{Event, SweepOptions, SweepPose};
+use crate::error::{Error, Stage};
+use crate::linalg::invert;
+use crate::model::{AccelerationMethod, Linkage, Options};
+use crate::sources;
+use nalgebra::{SMatrix, SVector};
+
+/// A solved state on the path: t is the path parameter.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct State<const M: usize, const F: usize> {
+    pub(super) t: f64,
+    pub(super) u: SVector<f64, M>,
+    /// du/dt and d²u/dt² (zero where they cannot be computed).
+    pub(super) du: SVector<f64, M>,
+    pub(super) ddu: SVector<f64, M>,
+    pub(super) det: f64,
+    pub(super) rcond: f64,
+    pub(super) iterations: usize,
+}
+
+/// A Newton correction below this (relative to max(1, ‖u‖∞)) at the
+/// prediction is accepted without a second evaluation: the pose is then
+/// exact to rounding, and the analogs evaluated at the prediction differ from
+/// those at the pose by about this much.
+const FAST_ACCEPT: f64 = 1e-14;
+
+/// The most Newton iterations a step of the fast run may take before the
+/// general machinery takes over.
+const FAST_ITERATIONS: usize = 4;
+
+/// Whether every |xᵢ| ≤ bound (false if any is NaN), without branches.
+#[inline(always)]
+fn within<const N: usize>(x: &SVector<f64, N>, bound: f64) -> bool {
+    x.iter().fold(true, |ok, xi| ok & (xi.abs() <= bound))
+}
+
+/// Why a sub-step failed.
+pub(super) enum Rejection {
+    /// No acceptable pose: halve the step.
+    Retry,
+    /// A hard error (non-finite values).
+    Fatal(Error),
+}
+
+pub(super) struct Tracker<'a, L: ?Sized, const M: usize, const F: usize> {
+    pub(super) model: &'a L,
+    pub(super) options: SweepOptions,
+    pub(super) base: SVector<f64, F>,
+    pub(super) dir: SVector<f64, F>,
+    /// The conditioning the velocities and the accelerations need.
+    pub(super) min_rcond_velocity: f64,
+    pub(super) min_rcond_acceleration: f64,
+    /// dt/dτ at the sweep's speed (one unit of t is one step of length |dir|).
+    pub(super) rate: f64,
+}
+
+impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
+    pub(super) fn v(&self, t: f64) -> SVector<f64, F> {
+        self.base + self.dir * t
+    }
+
+    /// Ψ_t = Ψ_v · direction
+    pub(super) fn psi_t(&self, u: &SVector<f64, M>, t: f64) -> SVector<f64, M> {
+        sources::psi_v(self.model, self.options.options.jacobian, u, &self.v(t)) * self.dir
+    }
+
+    /// Newton at t from `guess`, without the conditioning threshold (the
+    /// continuity test and the event logic judge the result).
+    pub(super) fn correct(
+        &self,
+        guess: &SVector<f64, M>,
+        t: f64,
+    ) -> Result<(SVector<f64, M>, usize), Error> {
+        let options = Options {
+            accuracy: f64::INFINITY,
+            damped: false,
+            ..self.options.options
+        };
+        let p = self.model.solve_position(guess, &self.v(t), &options)?;
+        Ok((p.u, p.iterations))
+    }
+
+    /// The state at (u, t): det, conditioning and the analogs along the path.
+    /// Whether the fused generated kernel can serve (generated Jacobians,
+    /// fused γ).
+    pub(super) fn fused(&self) -> bool {
+        let o = &self.options.options;
+        o.jacobian == sources::JacobianSource::Generated && o.method == AccelerationMethod::Fused
+    }
+
+    /// The state at (u, t): det, conditioning and the analogs along the path.
+    pub(super) fn state(&self, u: SVector<f64, M>, t: f64, iterations: usize) -> State<M, F> {
+        let v = self.v(t);
+        if self.fused() {
+            let k = self.model.kinematics(&u, &v, &self.dir, &SVector::zeros());
+            return self.state_from(u, t, iterations, &k);
+        }
+        let jacobian = self.options.options.jacobian;
+        let psi_u = sources::psi_and_psi_u(self.model, jacobian, &u, &v).1;
+        let psi_v = sources::psi_v(self.model, jacobian, &u, &v);
+        let inv = invert(&psi_u);
+        let det = inv.det;
+        let (mut du, mut ddu) = (SVector::zeros(), SVector::zeros());
+        if inv.rcond > 0.0 {
+            du = -(inv.inverse * (psi_v * self.dir));
+            let generated = || {
+                self.model
+                    .gamma_by(self.options.options.method, &u, &v, &du, &self.dir)
+            };
+            let gamma = sources::gamma(self.model, jacobian, generated, &u, &v, &du, &self.dir);
+            ddu = -(inv.inverse * gamma);
+            if !du.iter().chain(ddu.iter()).all(|x| x.is_finite()) {
+                du = SVector::zeros();
+                ddu = SVector::zeros();
+            }
+        }
+        State {
+            t,
+            u,
+            du,
+            ddu,
+            det,
+            rcond: inv.rcond,
+            iterations,
+        }
+    }
+
+    /// The state from a fused evaluation (du/dt = u̇ for v̇ = dir, v̈ = 0).
+    pub(super) fn state_from(
+        &self,
+        u: SVector<f64, M>,
+        t: f64,
+        iterations: usize,
+        k: &crate::model::Kinematics<M, F>,
+    ) -> State<M, F> {
+        let finite = k.rcond > 0.0 && k.udot.iter().chain(k.uddot.iter()).all(|x| x.is_finite());
+        State {
+            t,
+            u,
+            du: if finite { k.udot } else { SVector::zeros() },
+            ddu: if finite { k.uddot } else { SVector::zeros() },
+            det: k.det,
+            rcond: k.rcond,
+            iterations,
+        }
+    }
+
+    pub(super) fn predict(&self, from: &State<M, F>, t: f64) -> SVector<f64, M> {
+        let h = t - from.t;
+        let mut u = from.u + from.du * h;
+        if self.options.second_order {
+            u += from.ddu * (0.5 * h * h);
+        }
+        u
+    }
+
+    /// One sub-step from `from` to t: predicted, corrected, and accepted
+    /// only if continuous with the prediction.
+    /// The fast path: one fused evaluation at the prediction gives Ψ and
+    /// the Newton correction, and, when that correction is at rounding level,
+    /// the velocities and accelerations too. `None` if it does not apply.
+    #[inline]
+    pub(super) fn attempt_fast(&self, from: &State<M, F>, t: f64) -> Option<State<M, F>> {
+        if !self.fused() {
+            return None;
+        }
+        let predicted = self.predict(from, t);
+        let scale = from.u.amax().max(1.0);
+        let moved = (predicted - from.u).amax();
+        if moved.is_nan() || moved > self.options.max_move * scale {
+            return None;
+        }
+        let k = self
+            .model
+            .kinematics(&predicted, &self.v(t), &self.dir, &SVector::zeros());
+        let residual = k.psi.amax();
+        if k.rcond <= 0.0 || residual.is_nan() || residual > self.options.options.residual_tol {
+            return None;
+        }
+        let delta = -(k.inverse * k.psi);
+        (delta.amax() <= FAST_ACCEPT * scale).then(|| self.state_from(predicted + delta, t, 1, &k))
+    }
+
+    /// The fused kernel at (x, v), with the sines and cosines carried by
+    /// `trig` when the model reads them.
+    #[inline(always)]
+    pub(super) fn evaluate(
+        &self,
+        x: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        carries: bool,
+        trig: &mut TrigCarrier<M, F>,
+    ) -> crate::model::Kinematics<M, F> {
+        let zero = SVector::<f64, F>::zeros();
+        if carries {
+            let (trig_u, trig_v) = trig.at(&L::TRIG_U, &L::TRIG_V, x, v);
+            self.model
+                .kinematics_with_trig(x, v, &trig_u, &trig_v, &self.dir, &zero)
+        } else {
+            self.model.kinematics(x, v, &self.dir, &zero)
+        }
+    }
+
+    /// The common case, as a tight loop: grid steps each taken by fused
+    /// evaluations only (one at the prediction on a dense grid, up to
+    /// [`FAST_ITERATIONS`] Newton steps on a coarse one), for as long as
+    /// every pose is regular, on the branch, continuous with its prediction,
+    /// converged to rounding level, and keeps the requested accuracy. Each pose goes to `on_pose`. Stops before the
+    /// first step that does not qualify (the general machinery takes that
+    /// one), after `steps`, or on reaching the grid index `stop`.
+    ///
+    /// Within a run the predictor uses the analogs one step back,
+    /// u + (u′ₖ₋₁ + 1.5·u″ₖ₋₁·h)·h (the same second order, as u′ₖ ≈ u′ₖ₋₁ +
+    /// u″ₖ₋₁·h), and Newton the previous pose's Ψ_u⁻¹ (a chord step): both
+    /// take the inversion of Ψ_u off the chain from one pose to the next,
+    /// which is what bounds the speed of a sweep.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    pub(super) fn run_fast<P: FnMut(&SweepPose<M, F>)>(
+        &self,
+        at: &mut Progress<M, F>,
+        direction: f64,
+        steps: usize,
+        stop: Option<i64>,
+        carries: bool,
+        trig: &mut TrigCarrier<M, F>,
+        on_pose: &mut P,
+    ) -> Result<(), Error> {
+        if !self.fused() || at.track.state.rcond < REGULAR_RCOND {
+            return Ok(());
+        }
+        let options = &self.options;
+        let min_rcond = self
+            .min_rcond_acceleration
+            .max(self.min_rcond_velocity)
+            .max(REGULAR_RCOND);
+        let sign = at.track.sign;
+        let (h, stride) = (direction, direction as i64);
+        let (mut state, mut previous) = (at.track.state, at.previous_grid);
+        // Ψ_u⁻¹ one step back, once the run has taken a step (`previous` then
+        // holds the analogs one step back).
+        let mut lag: Option<SMatrix<f64, M, M>> = None;
+        let mut taken = 0;
+        while at.step < steps {
+            let index = at.index + stride;
+            let t = index as f64;
+            let predicted = if lag.is_some() && options.second_order {
+                state.u + (previous.du + previous.ddu * (1.5 * h)) * h
+            } else {
+                self.predict(&state, t)
+            };
+            // The tests below are branch-free folds, and NaN fails each.
+            let scale = state
+                .u
+                .iter()
+                .fold(1.0, |m: f64, x| if x.abs() > m { x.abs() } else { m });
+            if !within(&(predicted - state.u), options.max_move * scale) {
+                break;
+            }
+            let v = self.v(t);
+            // Newton from the prediction: usually one evaluation, whose
+            // correction is at rounding level already; a few more where the
+            // steps are coarse.
+            let mut x = predicted;
+            let mut k = self.evaluate(&x, &v, carries, trig);
+            let mut inverse = lag.unwrap_or(k.inverse);
+            let mut iterations = 1;
+            let converged = loop {
+                let regular = (k.rcond >= min_rcond)
+                    & (k.det * sign > 0.0)
+                    & ((k.udot.sum() + k.uddot.sum()).abs() <= f64::MAX);
+                if !regular {
+                    break false;
+                }
+                let newton = inverse * k.psi;
+                x -= newton;
+                if within(&newton, FAST_ACCEPT * scale) {
+                    break within(&k.psi, options.options.residual_tol);
+                }
+                if iterations == FAST_ITERATIONS {
+                    break false;
+                }
+                k = self.evaluate(&x, &v, carries, trig);
+                inverse = k.inverse;
+                iterations += 1;
+            };
+            if !converged {
+                break;
+            }
+            if iterations > 1 {
+                // Continuous with the prediction, as in `attempt`.
+                let step = (predicted - state.u).amax();
+                let floor = 1e-9 * scale;
+                if !within(
+                    &(x - predicted),
+                    options.continuity * step.max(floor) + floor,
+                ) {
+                    break;
+                }
+            }
+            let next = State {
+                t,
+                u: x,
+                du: k.udot,
+                ddu: k.uddot,
+                det: k.det,
+                rcond: k.rcond,
+                iterations,
+            };
+            // Where one evaluation was not enough (a coarse grid), the next
+            // step starts with a fresh inverse and the current analogs: a
+            // chord step would only cost another evaluation there.
+            lag = (iterations == 1).then_some(k.inverse);
+            previous = state;
+            state = next;
+            taken += 1;
+            at.index = index;
+            at.step += 1;
+            on_pose(&self.pose(&state, at.step, direction)?);
+            at.recorded += 1;
+            if stop == Some(index) {
+                break;
+            }
+        }
+        if taken > 0 {
+            at.track = Track::new(state);
+            at.last_grid = state;
+            at.previous_grid = previous;
+        }
+        Ok(())
+    }
+
+    pub(super) fn attempt(&self, from: &State<M, F>, t: f64) -> Result<State<M, F>, Rejection> {
+        if let Some(state) = self.attempt_fast(from, t) {
+            return Ok(state);
+        }
+        let predicted = self.predict(from, t);
+        let scale = from.u.amax().max(1.0);
+        let moved = (predicted - from.u).amax();
+        if moved.is_nan() || moved > self.options.max_move * scale {
+            return Err(Rejection::Retry);
+        }
+        let (u, iterations) = match self.correct(&predicted, t) {
+            Ok(x) => x,
+            Err(Error::NonFiniteInput { .. }) | Err(Error::NonFiniteValue { .. }) => {
+                return Err(Rejection::Retry);
+            }
+            Err(_) => return Err(Rejection::Retry),
+        };
+        let step = (predicted - from.u).amax();
+        let correction = (u - predicted).amax();
+        let floor = 1e-9 * from.u.amax().max(1.0);
+        if correction > self.options.continuity * step.max(floor) + floor {
+            return Err(Rejection::Retry);
+        }
+        let state = self.state(u, t, iterations);
+        if !state.det.is_finite() {
+            return Err(Rejection::Fatal(Error::NonFiniteValue {
+                stage: Stage::Position,
+                quantity: "det Ψ_u",
+            }));
+        }
+        Ok(state)
+    }
+
+    /// Advances from `from` to the path parameter `target`, sub-stepping as
+    /// needed; returns the reached track, or the last one before a limit the
+    /// driver cannot pass, with the events met on the way.
+    pub(super) fn advance(
+        &self,
+        from: Track<M, F>,
+        target: f64,
+        events: &mut Vec<Event<M, F>>,
+        recorded: usize,
+    ) -> Result<Advance<M, F>, Error> {
+        let mut track = from;
+        let mut delta = target - track.state.t;
+        let min_delta = self.options.locate_tolerance * (target - from.state.t).abs().max(1e-300);
+        let mut substeps = 0;
+        while track.state.t != target {
+            substeps += 1;
+            if substeps > self.options.max_substeps {
+                return Err(Error::SubstepLimit {
+                    step: recorded,
+                    limit: self.options.max_substeps,
+                });
+            }
+            let t_try = if (target - track.state.t).abs() <= delta.abs() {
+                target
+            } else {
+                track.state.t + delta
+            };
+            // Predict from a well-conditioned state: at a singular pose the
+            // tangent is undefined.
+            let source = track.source();
+            match self.attempt(&source, t_try) {
+                Ok(next) => {
+                    let regular = track.regular;
+                    if next.det != 0.0 && next.det.signum() != track.sign {
+                        match self.locate_crossing(&regular, &next) {
+                            Some(event) => {
+                                events.push(Event {
+                                    after: recorded,
+                                    ..event
+                                });
+                                // Crossed: the branch goes on with the other
+                                // sign, even if `next` is too singular to
+                                // show it.
+                                track.sign = -track.sign;
+                            }
+                            None => {
+                                // A jump to the mirror branch, not a crossing.
+                                delta *= 0.5;
+                                if delta.abs() < min_delta {
+                                    return Ok(Advance::Blocked(track));
+                                }
+                                continue;
+                            }
+                        }
+                    }
+                    track.accept(next);
+                    // Grow back towards the full step after a success.
+                    let remaining = target - track.state.t;
+                    delta = (delta * 2.0).abs().min(remaining.abs()) * remaining.signum();
+                }
+                Err(Rejection::Fatal(e)) => return Err(e),
+                Err(Rejection::Retry) => {
+                    delta *= 0.5;
+                    if delta.abs() < min_delta {
+                        // Try to jump over a branch point before calling it
+                        // a limit.
+                        if let Some((next, event)) = self.jump_branch_point(&track, target) {
+                            events.push(Event {
+                                after: recorded,
+                                ..event
+                            });
+                            track.sign = -track.sign;
+                            track.accept(next);
+                            delta = target - track.state.t;
+                            continue;
+                        }
+                        return Ok(Advance::Blocked(track));
+                    }
+                }
+            }
+        }
+        Ok(Advance::Reached(track))
+    }
+
+    /// Whether the pose's velocities and accelerations keep the requested
+    /// accuracy (see [`Options::accuracy`]).
+    pub(super) fn keeps_accuracy(&self, state: &State<M, F>) -> bool {
+        let options = &self.options.options;
+        if state.rcond < self.min_rcond_velocity {
+            return false;
+        }
+        if state.rcond >= self.min_rcond_acceleration {
+            return true;
+        }
+        // Near a singular pose: the finer test needs Ψ_u and Ψ_v.
+        let (jacobian, v) = (options.jacobian, self.v(state.t));
+        let psi_u = sources::psi_and_psi_u(self.model, jacobian, &state.u, &v).1;
+        let psi_v = sources::psi_v(self.model, jacobian, &state.u, &v);
+        crate::model::acceleration_conditioning_with(
+            &psi_u,
+            &psi_v,
+            state.rcond,
+            self.min_rcond_acceleration,
+            options,
+        )
+        .is_ok()
+    }
+
+    /// The pose at the sweep's speed; an error if scaling to that speed
+    /// overflows (an absurd speed for the step).
+    #[inline(always)]
+    pub(super) fn pose(
+        &self,
+        state: &State<M, F>,
+        step: usize,
+        direction: f64,
+    ) -> Result<SweepPose<M, F>, Error> {
+        let rate = self.rate * direction;
+        let pose = SweepPose {
+            step,
+            v: self.v(state.t),
+            u: state.u,
+            vdot: self.dir * rate,
+            udot: state.du * rate,
+            uddot: state.ddu * rate * rate,
+            det: state.det,
+            rcond: state.rcond,
+            iterations: state.iterations,
+        };
+        // x·0 is 0 for a finite x and NaN otherwise: one cheap test of every
+        // entry, which finite values far apart cannot fool (their sum could
+        // overflow).
+        let probe = |x: &[f64]| x.iter().fold(0.0, |acc, &x| acc + x * 0.0);
+        let probes = probe(pose.v.as_slice())
+            + probe(pose.vdot.as_slice())
+            + probe(pose.udot.as_slice())
+            + probe(pose.uddot.as_slice());
+        // A non-finite entry, or a tiny speed at which the velocities and
+        // accelerations may fall below the normal range: the careful tests,
+        // out of line.
+        let unusual = (probes != 0.0) | ((rate != 0.0) & (rate.abs() < 1e-100));
+        if unusual {
+            Self::unusual_pose(state, rate, &pose)?;
+        }
+        Ok(pose)
+    }
+
+    /// The careful tests of [`Self::pose`], for a pose with a non-finite
+    /// entry or at a tiny speed.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn unusual_pose(
+        state: &State<M, F>,
+        rate: f64,
+        pose: &SweepPose<M, F>,
+    ) -> Result<(), Error> {
+        let finite = |x: &[f64]| x.iter().all(|v| v.is_finite());
+        if !(finite(pose.v.as_slice())
+            && finite(pose.vdot.as_slice())
+            && finite(pose.udot.as_slice())
+            && finite(pose.uddot.as_slice()))
+        {
+            return Err(Error::NonFiniteValue {
+                stage: if finite(pose.udot.as_slice()) {
+                    Stage::Acceleration
+                } else {
+                    Stage::Velocity
+                },
+                quantity: "the sweep's velocities and accelerations at its speed",
+            });
+        }
+        let log_rate = rate.abs().log2();
+        crate::error::check_result(
+            Stage::Velocity,
+            "the sweep's u̇ at its speed",
+            state.du.amax().log2() + log_rate,
+        )?;
+        crate::error::check_result(
+            Stage::Acceleration,
+            "the sweep's ü at its speed",
+            state.ddu.amax().log2() + 2.0 * log_rate,
+        )
+    }
+}
+
+/// Below this reciprocal condition number a state's tangent is not trusted
+/// for prediction, nor its det's sign for the branch.
+pub(super) const REGULAR_RCOND: f64 = 1e-8;
+
+/// The current state, the last well-conditioned one (the predictor near
+/// singular poses) and the sign of det Ψ_u on the branch: that of the last
+/// well-conditioned state, flipped at each located branch-point crossing.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Track<const M: usize, const F: usize> {
+    pub(super) state: State<M, F>,
+    pub(super) regular: State<M, F>,
+    pub(super) sign: f64,
+}
+
+impl<const M: usize, const F: usize> Track<M, F> {
+    pub(super) fn new(state: State<M, F>) -> Track<M, F> {
+        Track {
+            state,
+            regular: state,
+            sign: state.det.signum(),
+        }
+    }
+
+    pub(super) fn accept(&mut self, next: State<M, F>) {
+        self.state = next;
+        if next.rcond >= REGULAR_RCOND {
+            self.regular = next;
+            self.sign = next.det.signum();
+        }
+    }
+
+    /// Where to predict from.
+    pub(super) fn source(&self) -> State<M, F> {
+        if self.state.rcond >= REGULAR_RCOND {
+            self.state
+        } else {
+            self.regular
+        }
+    }
+}
+
+pub(super) enum Advance<const M: usize, const F: usize> {
+    Reached(Track<M, F>),
+    /// The driver cannot pass beyond this track.
+    Blocked(Track<M, F>),
+}
+
+/// Where a sweep stands.
+pub(super) struct Progress<const M: usize, const F: usize> {
+    pub(super) track: Track<M, F>,
+    /// The grid index of the current state.
+    pub(super) index: i64,
+    /// The driver steps taken.
+    pub(super) step: usize,
+    /// The poses passed on.
+    pub(super) recorded: usize,
+    /// The states at the last two grid indices (the source of a mirror).
+    pub(super) last_grid: State<M, F>,
+    pub(super) previous_grid: State<M, F>,
+}
