@@ -2,7 +2,7 @@
 //! applies and the general machinery elsewhere, limit positions and the
 //! reversal of a rocking drive.
 
-use super::singular::BRANCH_RANK;
+use super::branch_point::BRANCH_RANK;
 use super::tracker::{Advance, Progress, Track, Tracker};
 use super::trig::TrigCarrier;
 use super::{Drive, Event, EventKind, SweepOptions, SweepPose, SweepSummary};

@@ -6,19 +6,38 @@
 //! it needs. Each sub-step predicts the next pose from the velocity ratios
 //! (first order, u + u′Δt) and, by default, the second-order analog
 //! (+ ½u″Δt²), then corrects it with Newton. A corrected pose is accepted
-//! only if it lies close to the prediction (the continuity of u), and a
-//! change of sign of det Ψ_u between accepted poses is examined: where the
-//! branch truly passes through a singular pose (a *branch point*, e.g. the
-//! change-point four-bar at its collinear pose) the crossing is located and
-//! reported; a jump to the mirror branch is refused and the step halved.
+//! only if it lies close to the prediction (the continuity of u) and, when
+//! it is regular, if det Ψ_u keeps the branch's sign and its velocity ratios
+//! continue the last regular pose's (the continuity of u′). A pose next to a
+//! singular one (rcond below 1e-6) is kept for its position only: within
+//! about √ε of a branch point rounding alone decides which of the crossing
+//! solutions Newton finds, so such a pose never decides the branch or
+//! predicts the next one.
+//!
+//! Where the branch passes through a *branch point* (two branches cross,
+//! [Ψ_u Ψ_v] loses rank: the change-point four-bar at its collinear pose),
+//! det Ψ_u changes sign along it, and Newton near it may fall onto the
+//! other branch, whose velocity ratios differ. Either mark sends the sweep
+//! to locate the branch point to rounding, as the regular solution of an
+//! extended system (`branch_point.rs`), to work out the tangents of the two
+//! branches there, and to leave it along the smooth continuation of the
+//! branch it arrived on — whether or not a grid pose falls on the branch
+//! point or within a few ulps of it. A sign change with no branch point
+//! between is a jump to the mirror branch: refused, the step halved.
 //!
 //! Where the driver cannot advance any further, the pose is a *limit
 //! position*: it is located exactly as the solution of Ψ = 0, det Ψ_u = 0,
 //! and, when the drive rocks, the sweep passes onto the other branch and
 //! reverses the driver — the full rocking motion of a non-Grashof four-bar.
+//!
+//! Both kinds are located to rounding: within 1e-12·max(1, |v|) of the
+//! exact driver value (the worst of the targeted campaign in
+//! `tests/singular_grid.rs`, every step count from 50 to 5000 with a grid
+//! pose on the singular one or a few ulps off, is 1.7e-15).
 
+mod branch_point;
 mod driver;
-mod singular;
+mod limit;
 mod tracker;
 mod trig;
 
@@ -32,14 +51,16 @@ use nalgebra::SVector;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Drive<const F: usize> {
     /// From `from` to `to` along a straight line of driver space, in `steps`
-    /// equal steps. A limit position on the way ends the sweep (the path
-    /// cannot be followed further).
+    /// equal steps: the k-th pose is at `from + k·((to − from)/steps)`,
+    /// evaluated in that order. A limit position on the way ends the sweep
+    /// (the path cannot be followed further).
     Line {
         from: SVector<f64, F>,
         to: SVector<f64, F>,
         steps: usize,
     },
-    /// Steps of `step` from `from`, reversing at every limit position, until
+    /// Steps of `step` from `from` (poses at `from + k·step` for integer k),
+    /// reversing at every limit position, until
     /// the mechanism is back at `from` moving the way it started after two
     /// reversals (one full rocking cycle), or after `max_steps` steps.
     Rocking {
@@ -63,9 +84,12 @@ pub struct SweepOptions {
     /// A corrected pose farther from its prediction than this fraction of
     /// the predicted step is taken for a jump to another branch.
     pub continuity: f64,
-    /// Singular poses are located to this precision in the path parameter
-    /// (the driver, for f = 1).
-    pub locate_tolerance: f64,
+    /// The smallest sub-step, as a fraction of a driver step: where halving
+    /// the sub-step below this still finds no acceptable pose, the sweep
+    /// looks for the singular pose that stops it (a branch point to step
+    /// over, or a limit position). The singular poses themselves are located
+    /// to rounding whatever this is.
+    pub min_substep: f64,
     /// The largest predicted change of u in one sub-step, relative to
     /// max(1, ‖u‖∞): near a singular pose the velocity ratios blow up, and
     /// this keeps the predictor from throwing Newton onto a far branch.
@@ -93,7 +117,7 @@ impl SweepOptions {
         }
         for (argument, value) in [
             ("continuity", self.continuity),
-            ("locate_tolerance", self.locate_tolerance),
+            ("min_substep", self.min_substep),
             ("max_move", self.max_move),
         ] {
             if !(value > 0.0 && value.is_finite()) {
@@ -114,7 +138,7 @@ impl Default for SweepOptions {
             speed: 1.0,
             second_order: true,
             continuity: 0.5,
-            locate_tolerance: 1e-12,
+            min_substep: 1e-12,
             max_move: 0.1,
             max_substeps: 100_000,
         }
@@ -148,7 +172,8 @@ pub enum EventKind {
     /// rank; the mechanism must reverse (a dead centre for this driver).
     LimitPosition,
     /// Two branches cross: det Ψ_u = 0 and [Ψ_u Ψ_v] rank-deficient (the
-    /// change-point linkage's collinear pose); the sweep went straight on.
+    /// change-point linkage's collinear pose); the sweep went on along the smooth
+    /// continuation of the branch it arrived on.
     BranchPoint,
 }
 
@@ -156,6 +181,7 @@ pub enum EventKind {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Event<const M: usize, const F: usize> {
     pub kind: EventKind,
+    /// The driver value, located to rounding (within 1e-12·max(1, |v|)).
     pub v: SVector<f64, F>,
     pub u: SVector<f64, M>,
     /// The path parameter t of the event (v = from + t·direction).
@@ -172,7 +198,9 @@ pub struct Event<const M: usize, const F: usize> {
 pub struct Sweep<const M: usize, const F: usize> {
     /// One pose per driver step, except where the velocities and
     /// accelerations would not keep [`Options::accuracy`] (at or next to a
-    /// singular pose, which the events report): `step` numbers them.
+    /// singular pose, which the events report) and, whatever the accuracy,
+    /// a step that falls within rounding of a branch point, where the
+    /// crossing branches cannot be told apart: `step` numbers them.
     pub poses: Vec<SweepPose<M, F>>,
     pub events: Vec<Event<M, F>>,
     /// Whether the whole drive was followed (false: a limit position ended

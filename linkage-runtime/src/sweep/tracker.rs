@@ -2,6 +2,7 @@
 //! only if continuous), the fast run over a regular stretch, and the
 //! sub-stepping between two driver values.
 
+use super::branch_point::Passage;
 use super::trig::TrigCarrier;
 use super::{Event, SweepOptions, SweepPose};
 use crate::error::{Error, Stage};
@@ -21,6 +22,51 @@ pub(super) struct State<const M: usize, const F: usize> {
     pub(super) det: f64,
     pub(super) rcond: f64,
     pub(super) iterations: usize,
+    /// False for a pose that Newton could not resolve because it lies within
+    /// rounding of a branch point (its u is the smooth continuation's
+    /// prediction): never recorded.
+    pub(super) solved: bool,
+}
+
+impl<const M: usize, const F: usize> State<M, F> {
+    /// A pose at a branch point that Newton cannot resolve, taken from the
+    /// prediction `u`: no tangent, no conditioning.
+    pub(super) fn unresolved(u: SVector<f64, M>, t: f64) -> State<M, F> {
+        State {
+            t,
+            u,
+            du: SVector::zeros(),
+            ddu: SVector::zeros(),
+            det: 0.0,
+            rcond: 0.0,
+            iterations: 0,
+            solved: false,
+        }
+    }
+}
+
+/// Whether the analogs at b continue those at a, h further along the path:
+/// |u′_b − u′_a| no more than u″ allows over h (twice the larger end's, a
+/// margin over the mean value theorem), plus the rounding of u′ near a
+/// singular pose (ε·κ² relative, κ = 1/rcond). A jump beyond that is the
+/// mark of a pose on another branch that crosses this one: at a branch point
+/// the tangent of each branch is continuous, and the two differ.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub(super) fn tangent_continues<const M: usize>(
+    du_a: &SVector<f64, M>,
+    ddu_a: &SVector<f64, M>,
+    rcond_a: f64,
+    du_b: &SVector<f64, M>,
+    ddu_b: &SVector<f64, M>,
+    rcond_b: f64,
+    h: f64,
+) -> bool {
+    let jump = (du_b - du_a).amax();
+    let curvature = ddu_a.amax().max(ddu_b.amax());
+    let size = du_a.amax().max(du_b.amax());
+    let rounding = 1e-9 + 4.0 * f64::EPSILON / (rcond_a * rcond_b);
+    jump <= 2.0 * curvature * h.abs() + rounding * size
 }
 
 /// A Newton correction below this (relative to max(1, ‖u‖∞)) at the
@@ -127,6 +173,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             det,
             rcond: inv.rcond,
             iterations,
+            solved: true,
         }
     }
 
@@ -147,6 +194,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             det: k.det,
             rcond: k.rcond,
             iterations,
+            solved: true,
         }
     }
 
@@ -303,6 +351,19 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
                     break;
                 }
             }
+            // The tangent continuous with the last pose's: not a pose on a
+            // branch that crosses this one.
+            if !tangent_continues(
+                &state.du,
+                &state.ddu,
+                state.rcond,
+                &k.udot,
+                &k.uddot,
+                k.rcond,
+                h,
+            ) {
+                break;
+            }
             let next = State {
                 t,
                 u: x,
@@ -311,6 +372,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
                 det: k.det,
                 rcond: k.rcond,
                 iterations,
+                solved: true,
             };
             // Where one evaluation was not enough (a coarse grid), the next
             // step starts with a fresh inverse and the current analogs: a
@@ -380,7 +442,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
     ) -> Result<Advance<M, F>, Error> {
         let mut track = from;
         let mut delta = target - track.state.t;
-        let min_delta = self.options.locate_tolerance * (target - from.state.t).abs().max(1e-300);
+        let min_delta = self.options.min_substep * (target - from.state.t).abs().max(1e-300);
         let mut substeps = 0;
         while track.state.t != target {
             substeps += 1;
@@ -397,54 +459,43 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             };
             // Predict from a well-conditioned state: at a singular pose the
             // tangent is undefined.
-            let source = track.source();
-            match self.attempt(&source, t_try) {
-                Ok(next) => {
-                    let regular = track.regular;
-                    if next.det != 0.0 && next.det.signum() != track.sign {
-                        match self.locate_crossing(&regular, &next) {
-                            Some(event) => {
-                                events.push(Event {
-                                    after: recorded,
-                                    ..event
-                                });
-                                // Crossed: the branch goes on with the other
-                                // sign, even if `next` is too singular to
-                                // show it.
-                                track.sign = -track.sign;
-                            }
-                            None => {
-                                // A jump to the mirror branch, not a crossing.
-                                delta *= 0.5;
-                                if delta.abs() < min_delta {
-                                    return Ok(Advance::Blocked(track));
-                                }
-                                continue;
-                            }
-                        }
-                    }
+            let step = match self.attempt(&track.source(), t_try) {
+                Ok(next) => self.judge(&track, next, t_try),
+                Err(Rejection::Fatal(e)) => return Err(e),
+                Err(Rejection::Retry) => Step::Retry,
+            };
+            match step {
+                Step::Accept(next) => {
                     track.accept(next);
                     // Grow back towards the full step after a success.
                     let remaining = target - track.state.t;
                     delta = (delta * 2.0).abs().min(remaining.abs()) * remaining.signum();
                 }
-                Err(Rejection::Fatal(e)) => return Err(e),
-                Err(Rejection::Retry) => {
+                Step::Pass(passage) => {
+                    events.push(Event {
+                        after: recorded,
+                        ..passage.event
+                    });
+                    track.pass(&passage);
+                    delta = target - track.state.t;
+                }
+                Step::Retry => {
                     delta *= 0.5;
                     if delta.abs() < min_delta {
-                        // Try to jump over a branch point before calling it
-                        // a limit.
-                        if let Some((next, event)) = self.jump_branch_point(&track, target) {
-                            events.push(Event {
-                                after: recorded,
-                                ..event
-                            });
-                            track.sign = -track.sign;
-                            track.accept(next);
-                            delta = target - track.state.t;
-                            continue;
-                        }
-                        return Ok(Advance::Blocked(track));
+                        // The sub-steps cannot get on: a branch point to step
+                        // over, or a limit the driver cannot pass.
+                        let near = track.state;
+                        let Some(passage) =
+                            self.pass_branch_point(&track.regular, &near.u, near.t, target)
+                        else {
+                            return Ok(Advance::Blocked(track));
+                        };
+                        events.push(Event {
+                            after: recorded,
+                            ..passage.event
+                        });
+                        track.pass(&passage);
+                        delta = target - track.state.t;
                     }
                 }
             }
@@ -452,11 +503,67 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         Ok(Advance::Reached(track))
     }
 
+    /// What to do with a pose the corrector reached at `t_try`.
+    ///
+    /// A pose next to a singular one is taken for its position only: neither
+    /// its det's sign nor its tangent is trusted. A regular pose continues
+    /// the tracked branch if its det has the branch's sign and its tangent
+    /// continues the last regular pose's. Otherwise the sweep has passed a
+    /// branch point — its det flipped on the smooth continuation, or the
+    /// corrector fell onto the other branch, whose tangent differs — or the
+    /// corrector jumped to another branch: a branch point between the two is
+    /// located and passed on the smooth continuation; failing that, the step
+    /// is halved. One exception: after a stretch of poses next to a singular
+    /// one with no branch point in it (the branches come close and turn
+    /// sharply, but do not cross), a tangent that turned is the branch's own.
+    fn judge(&self, track: &Track<M, F>, next: State<M, F>, t_try: f64) -> Step<M, F> {
+        if next.rcond < REGULAR_RCOND {
+            return Step::Accept(next);
+        }
+        let before = &track.regular;
+        let flipped = next.det.signum() != track.sign;
+        let continuous = tangent_continues(
+            &before.du,
+            &before.ddu,
+            before.rcond,
+            &next.du,
+            &next.ddu,
+            next.rcond,
+            next.t - before.t,
+        );
+        if !flipped && continuous {
+            return Step::Accept(next);
+        }
+        // The poses since `before` were next to a singular one.
+        let through_singular = track.state.rcond < REGULAR_RCOND;
+        if flipped || through_singular {
+            // Where to look for the branch point: the pose nearest the
+            // singular one, or where det Ψ_u, linear through a transversal
+            // crossing, vanishes between the two.
+            let (guess_u, guess_t) = if through_singular {
+                (track.state.u, track.state.t)
+            } else {
+                let w = before.det / (before.det - next.det);
+                (
+                    before.u + (next.u - before.u) * w,
+                    before.t + (next.t - before.t) * w,
+                )
+            };
+            if let Some(passage) = self.pass_branch_point(before, &guess_u, guess_t, t_try) {
+                return Step::Pass(passage);
+            }
+            if !flipped {
+                return Step::Accept(next);
+            }
+        }
+        Step::Retry
+    }
+
     /// Whether the pose's velocities and accelerations keep the requested
     /// accuracy (see [`Options::accuracy`]).
     pub(super) fn keeps_accuracy(&self, state: &State<M, F>) -> bool {
         let options = &self.options.options;
-        if state.rcond < self.min_rcond_velocity {
+        if !state.solved || state.rcond < self.min_rcond_velocity {
             return false;
         }
         if state.rcond >= self.min_rcond_acceleration {
@@ -554,8 +661,12 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
 }
 
 /// Below this reciprocal condition number a state's tangent is not trusted
-/// for prediction, nor its det's sign for the branch.
-pub(super) const REGULAR_RCOND: f64 = 1e-8;
+/// for prediction, nor its det's sign for the branch. Within about √ε of a
+/// branch point rounding alone decides which of the crossing solutions
+/// Newton finds, and rcond there is about 1e-8; a tangent computed at rcond
+/// r is off by about ε/r² relative (2e-4 at this threshold), still a fine
+/// predictor.
+pub(super) const REGULAR_RCOND: f64 = 1e-6;
 
 /// The current state, the last well-conditioned one (the predictor near
 /// singular poses) and the sign of det Ψ_u on the branch: that of the last
@@ -584,6 +695,15 @@ impl<const M: usize, const F: usize> Track<M, F> {
         }
     }
 
+    /// Past a branch point: on the smooth continuation, the sign of the
+    /// regular pose beyond it (which may lie ahead of the pose at the
+    /// target, when the target is next to the branch point).
+    pub(super) fn pass(&mut self, passage: &Passage<M, F>) {
+        self.state = passage.at_target.unwrap_or(passage.beyond);
+        self.regular = passage.beyond;
+        self.sign = passage.beyond.det.signum();
+    }
+
     /// Where to predict from.
     pub(super) fn source(&self) -> State<M, F> {
         if self.state.rcond >= REGULAR_RCOND {
@@ -592,6 +712,17 @@ impl<const M: usize, const F: usize> Track<M, F> {
             self.regular
         }
     }
+}
+
+/// The verdict on a sub-step.
+pub(super) enum Step<const M: usize, const F: usize> {
+    /// The pose continues the tracked branch (or stands next to a singular
+    /// pose).
+    Accept(State<M, F>),
+    /// A branch point was passed.
+    Pass(Passage<M, F>),
+    /// No acceptable pose: halve the step.
+    Retry,
 }
 
 pub(super) enum Advance<const M: usize, const F: usize> {

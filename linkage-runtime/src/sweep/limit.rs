@@ -1,131 +1,14 @@
-//! Singular poses met by a sweep: branch-point crossings located and
-//! stepped over, limit positions located, and the mirror pose on the other
-//! branch from which a rocking drive goes back.
+//! Limit positions: where the driver cannot go on (det Ψ_u = 0 with
+//! [Ψ_u Ψ_v] of full rank), located exactly, and the mirror pose on the
+//! other branch from which a rocking drive goes back.
 
-use super::tracker::{State, Track, Tracker};
-use super::{Event, EventKind};
+use super::tracker::{State, Tracker};
 use crate::linalg::determinant;
 use crate::model::Linkage;
 use crate::sources;
 use nalgebra::{DMatrix, DVector, SVector};
 
-/// Below this, [Ψ_u Ψ_v] is rank-deficient: a branch point.
-pub(super) const BRANCH_RANK: f64 = 1e-6;
-
 impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
-    /// Where det Ψ_u changed sign between two accepted states, finds the
-    /// crossing by bisection on the tracked branch; `None` if the branch
-    /// does not continue through it (the second state was on another branch).
-    pub(super) fn locate_crossing(&self, a: &State<M, F>, b: &State<M, F>) -> Option<Event<M, F>> {
-        let (mut lo, mut hi) = (*a, *b);
-        for _ in 0..200 {
-            if (hi.t - lo.t).abs() <= self.options.locate_tolerance * hi.t.abs().max(1.0) {
-                break;
-            }
-            let mid = 0.5 * (lo.t + hi.t);
-            if mid == lo.t || mid == hi.t {
-                break;
-            }
-            // The secant through the bracket predicts well on both sides of a
-            // transversal crossing, where the tangent is ill-conditioned.
-            let guess = lo.u + (hi.u - lo.u) * ((mid - lo.t) / (hi.t - lo.t));
-            let Ok((u, iterations)) = self.correct(&guess, mid) else {
-                break;
-            };
-            let span = (hi.u - lo.u).amax();
-            if (u - guess).amax() > self.options.continuity * span + 1e-12 * u.amax().max(1.0) {
-                // Newton left the bracket's branch: not a crossing.
-                return None;
-            }
-            let m = self.state(u, mid, iterations);
-            if m.det == 0.0 {
-                lo = m;
-                hi = m;
-                break;
-            }
-            if m.det.signum() == lo.det.signum() {
-                lo = m;
-            } else {
-                hi = m;
-            }
-        }
-        // det is linear through a transversal crossing.
-        let w = if lo.t == hi.t {
-            0.0
-        } else {
-            lo.det / (lo.det - hi.det)
-        };
-        if !(0.0..=1.0).contains(&w) {
-            return None;
-        }
-        let t = lo.t + w * (hi.t - lo.t);
-        let u = lo.u + (hi.u - lo.u) * w;
-        // Two branches cross only where [Ψ_u Ψ_v] loses rank; elsewhere the
-        // sign change was a jump across a limit position's fold.
-        let rank_measure = self.rank_measure(&u, t);
-        (rank_measure < BRANCH_RANK).then(|| Event {
-            kind: EventKind::BranchPoint,
-            v: self.v(t),
-            u,
-            t,
-            after: 0,
-            rank_measure,
-        })
-    }
-
-    /// Near a pose where Newton fails, tries to step over a branch point
-    /// with the tangent predictor: success with det of the other sign means
-    /// the branch crosses another one there.
-    pub(super) fn jump_branch_point(
-        &self,
-        track: &Track<M, F>,
-        target: f64,
-    ) -> Option<(State<M, F>, Event<M, F>)> {
-        let (from, regular) = (track.source(), track.regular);
-        let direction = (target - track.state.t).signum();
-        let mut h = self.options.locate_tolerance * track.state.t.abs().max(1.0) * 4.0;
-        let limit = (target - track.state.t).abs();
-        while h <= limit {
-            let t = track.state.t + direction * h;
-            if let Ok(next) = self.attempt(&from, t) {
-                if next.det != 0.0 && next.det.signum() != track.sign {
-                    return self
-                        .locate_crossing(&regular, &next)
-                        .map(|event| (next, event));
-                }
-                return None;
-            }
-            h *= 4.0;
-        }
-        None
-    }
-
-    /// σ_min/σ_max of [Ψ_u Ψ_t].
-    pub(super) fn rank_measure(&self, u: &SVector<f64, M>, t: f64) -> f64 {
-        let v = self.v(t);
-        let psi_u = sources::psi_and_psi_u(self.model, self.options.options.jacobian, u, &v).1;
-        // Ψ_v along the unit direction of the path: the measure must not
-        // depend on the step length.
-        let psi_t = self.psi_t(u, t) / self.dir.norm().max(f64::MIN_POSITIVE);
-        let mut q = DMatrix::<f64>::zeros(M, M + 1);
-        for i in 0..M {
-            for j in 0..M {
-                q[(i, j)] = psi_u[(i, j)];
-            }
-            q[(i, M)] = psi_t[i];
-        }
-        // A decomposition that fails (only for extreme numbers) is taken
-        // for rank-deficient: the cautious reading.
-        let Some(svd) = crate::linalg::scaled_svd(&q, false) else {
-            return 0.0;
-        };
-        let (max, min) = svd
-            .singular_values
-            .iter()
-            .fold((0.0_f64, f64::INFINITY), |(a, b), &x| (a.max(x), b.min(x)));
-        if max > 0.0 { min / max } else { 0.0 }
-    }
-
     /// det Ψ_u relative to the product of its column norms (|·| ≤ 1).
     pub(super) fn normalized_det(&self, u: &SVector<f64, M>, t: f64) -> f64 {
         let psi_u =
