@@ -331,13 +331,7 @@ fn check<L: Linkage<M, 1>, const M: usize>(
         if reversed {
             continue;
         }
-        let jump = (b.udot - a.udot).amax();
-        let curvature = a.uddot.amax().max(b.uddot.amax());
-        let rounding = 1e-9 + 8.0 * f64::EPSILON / (a.rcond * b.rcond);
-        let allowed =
-            3.0 * curvature * (b.v[0] - a.v[0]).abs() + rounding * a.udot.amax().max(b.udot.amax());
-        let continuous = jump <= allowed; // false for NaN too
-        if !continuous {
+        if let Some((jump, allowed)) = common::ratio_jump(a, b) {
             tally.branch_jumps += 1;
             tally.fail(format!(
                 "{}: velocity ratios jump by {jump:e} (allowed {allowed:e}) between v = {} and {}",

@@ -1,7 +1,7 @@
 //! Small dense linear algebra without allocation: the inverse of Ψ_u with its
 //! reciprocal condition number, in closed form for m ≤ 3.
 
-use nalgebra::SMatrix;
+use nalgebra::{SMatrix, SVector};
 
 /// An inverted square matrix, its determinant and its conditioning.
 #[derive(Clone, Copy, Debug)]
@@ -259,6 +259,17 @@ pub fn scaled_svd(
         .iter()
         .all(|s| s.is_finite())
         .then_some(svd)
+}
+
+/// The Euclidean norm of x without overflow or underflow on the way (x
+/// scaled by its largest entry first): finite for every finite x.
+pub(crate) fn scaled_norm<const N: usize>(x: &SVector<f64, N>) -> f64 {
+    let max = x.amax();
+    if max > 0.0 && max.is_finite() {
+        max * (x / max).norm()
+    } else {
+        max
+    }
 }
 
 /// 2^`exponent`, exactly, for a normal exponent (−1022 ≤ `exponent` ≤ 1023).

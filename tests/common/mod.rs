@@ -391,3 +391,33 @@ pub fn check_invariants<L: Linkage<M, F>, const M: usize, const F: usize>(
     }
     (u, [psi_rel, vel, methods, jac, gamma, points])
 }
+
+/// The branch-continuity check on two consecutive poses of a sweep that no
+/// limit position separates: whether their velocity ratios jump farther
+/// than the step and the second-order analogs allow, |Δu′| > 3·max‖u″‖·|Δv|
+/// plus rounding (1e-9, and ε·κ² near a singular pose, κ = 1/rcond, relative
+/// to u′). On a smooth branch — through a branch point too — u′ changes by
+/// about u″·Δv; a pose on another branch crossing this one jumps by the
+/// difference of their tangents. The ends' u″ bound the change only where
+/// the step is fine against the scale on which u′ varies: a step with
+/// max‖u″‖·|Δv| > 0.1·max‖u′‖ is not judged. Returns (jump, allowed) where
+/// it jumps.
+pub fn ratio_jump<const M: usize, const F: usize>(
+    a: &SweepPose<M, F>,
+    b: &SweepPose<M, F>,
+) -> Option<(f64, f64)> {
+    let jump = (b.udot - a.udot).amax();
+    let size = a.udot.amax().max(b.udot.amax());
+    let step = (b.v - a.v)
+        .iter()
+        .fold(0.0, |length: f64, x| length.hypot(*x));
+    let change = a.uddot.amax().max(b.uddot.amax()) * step;
+    let judged = change <= 0.1 * size; // false for NaN (0·∞) too
+    if !judged {
+        return None;
+    }
+    let rounding = 1e-9 + 8.0 * f64::EPSILON / (a.rcond * b.rcond);
+    let allowed = 3.0 * change + rounding * size;
+    let continuous = jump <= allowed; // false for NaN too
+    (!continuous).then_some((jump, allowed))
+}

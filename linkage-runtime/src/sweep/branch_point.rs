@@ -64,18 +64,13 @@ pub(super) struct Passage<const M: usize, const F: usize> {
 }
 
 impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
-    /// The length of one unit of the path parameter, in driver units.
-    fn step_length(&self) -> f64 {
-        self.dir.norm()
-    }
-
     /// J = [Ψ_u Ψ_τ] at (u, t), Ψ_τ the derivative along the unit direction
     /// of the path: m × (m + 1).
     fn path_jacobian(&self, u: &SVector<f64, M>, t: f64) -> DMatrix<f64> {
         let v = self.v(t);
         let jacobian = self.options.options.jacobian;
         let psi_u = sources::psi_and_psi_u(self.model, jacobian, u, &v).1;
-        let psi_tau = self.psi_t(u, t) / self.step_length();
+        let psi_tau = self.psi_t(u, t) / self.step_length;
         DMatrix::from_fn(
             M,
             M + 1,
@@ -104,7 +99,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
     fn contracted_hessian(&self, u: &SVector<f64, M>, t: f64, psi: &DVector<f64>) -> DMatrix<f64> {
         let n = M + 1;
         let v = self.v(t);
-        let along = self.dir / self.step_length();
+        let along = self.dir / self.step_length;
         let mut hessian = DMatrix::zeros(n, n);
         for j in 0..n {
             for k in j..n {
@@ -139,7 +134,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         guess_u: &SVector<f64, M>,
         guess_t: f64,
     ) -> Option<BranchPoint<M>> {
-        let length = self.step_length();
+        let length = self.step_length;
         let n = M + 1;
         let size = 2 * M + 2;
         let (mut u, mut t) = (*guess_u, guess_t);
@@ -255,7 +250,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             let phi = 0.5 * twice_phi;
             let xi = &basis * nalgebra::Vector2::new(phi.cos(), phi.sin());
             // du/dτ = ξ_u/ξ_τ, and dτ/dt = |dir|.
-            SVector::<f64, M>::from_fn(|i, _| xi[i] / xi[M] * self.step_length())
+            SVector::<f64, M>::from_fn(|i, _| xi[i] / xi[M] * self.step_length)
         };
         Some([slope(phase + opening), slope(phase - opening)])
     }

@@ -7,6 +7,7 @@ use super::tracker::{Advance, Progress, Track, Tracker};
 use super::trig::TrigCarrier;
 use super::{Drive, Event, EventKind, SweepOptions, SweepPose, SweepSummary};
 use crate::error::{Error, Stage, check_input};
+use crate::linalg::scaled_norm;
 use crate::model::Linkage;
 use nalgebra::SVector;
 
@@ -36,11 +37,12 @@ where
     check_input("from", base.as_slice())?;
     check_input("step", dir.as_slice())?;
     options.check()?;
-    let moves = dir.norm() > 0.0; // false for NaN too
+    let length = scaled_norm(&dir);
+    let moves = length > 0.0; // false for NaN too
     if !moves {
         return Err(Error::InvalidInput {
             argument: "drive",
-            value: dir.norm(),
+            value: length,
             why: "the drive does not move (from = to, or a zero step): no direction to follow",
         });
     }
@@ -49,9 +51,10 @@ where
         options: *options,
         base,
         dir,
+        step_length: length,
         min_rcond_velocity: options.options.min_rcond(Stage::Velocity),
         min_rcond_acceleration: options.options.min_rcond(Stage::Acceleration),
-        rate: options.speed / dir.norm(),
+        rate: options.speed / length,
     };
     let start = model.solve_position(u0, &base, &options.options)?;
     let state = tracker.state(start.u, 0.0, start.iterations);

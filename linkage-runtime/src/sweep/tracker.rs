@@ -26,6 +26,10 @@ pub(super) struct State<const M: usize, const F: usize> {
     /// rounding of a branch point (its u is the smooth continuation's
     /// prediction): never recorded.
     pub(super) solved: bool,
+    /// Whether `du` and `ddu` hold the analogs (zero where they could not
+    /// be computed per unit of t: Ψ_u singular, or so long a step that
+    /// they overflow).
+    pub(super) analogs: bool,
 }
 
 impl<const M: usize, const F: usize> State<M, F> {
@@ -41,9 +45,13 @@ impl<const M: usize, const F: usize> State<M, F> {
             rcond: 0.0,
             iterations: 0,
             solved: false,
+            analogs: false,
         }
     }
 }
+
+/// u̇ and ü.
+type Motion<const M: usize> = (SVector<f64, M>, SVector<f64, M>);
 
 /// Whether the analogs at b continue those at a, h further along the path:
 /// |u′_b − u′_a| no more than u″ allows over h (twice the larger end's, a
@@ -98,6 +106,8 @@ pub(super) struct Tracker<'a, L: ?Sized, const M: usize, const F: usize> {
     pub(super) options: SweepOptions,
     pub(super) base: SVector<f64, F>,
     pub(super) dir: SVector<f64, F>,
+    /// |dir|: the length of one unit of the path parameter, in driver units.
+    pub(super) step_length: f64,
     /// The conditioning the velocities and the accelerations need.
     pub(super) min_rcond_velocity: f64,
     pub(super) min_rcond_acceleration: f64,
@@ -131,7 +141,6 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         Ok((p.u, p.iterations))
     }
 
-    /// The state at (u, t): det, conditioning and the analogs along the path.
     /// Whether the fused generated kernel can serve (generated Jacobians,
     /// fused γ).
     pub(super) fn fused(&self) -> bool {
@@ -139,41 +148,56 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         o.jacobian == sources::JacobianSource::Generated && o.method == AccelerationMethod::Fused
     }
 
-    /// The state at (u, t): det, conditioning and the analogs along the path.
-    pub(super) fn state(&self, u: SVector<f64, M>, t: f64, iterations: usize) -> State<M, F> {
-        let v = self.v(t);
+    /// u̇ and ü for the driver moving at `vdot` (no driver acceleration) at
+    /// (u, v), with det Ψ_u and its rcond, by the options' Jacobians and γ;
+    /// u̇, ü `None` where they cannot be computed (Ψ_u singular, or not
+    /// finite).
+    fn motion(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        vdot: &SVector<f64, F>,
+    ) -> (Option<Motion<M>>, f64, f64) {
+        let finite = |a: &SVector<f64, M>, b: &SVector<f64, M>| {
+            a.iter().chain(b.iter()).all(|x| x.is_finite())
+        };
         if self.fused() {
-            let k = self.model.kinematics(&u, &v, &self.dir, &SVector::zeros());
-            return self.state_from(u, t, iterations, &k);
+            let k = self.model.kinematics(u, v, vdot, &SVector::zeros());
+            let known = k.rcond > 0.0 && finite(&k.udot, &k.uddot);
+            return (known.then_some((k.udot, k.uddot)), k.det, k.rcond);
         }
         let jacobian = self.options.options.jacobian;
-        let psi_u = sources::psi_and_psi_u(self.model, jacobian, &u, &v).1;
-        let psi_v = sources::psi_v(self.model, jacobian, &u, &v);
+        let psi_u = sources::psi_and_psi_u(self.model, jacobian, u, v).1;
+        let psi_v = sources::psi_v(self.model, jacobian, u, v);
         let inv = invert(&psi_u);
-        let det = inv.det;
-        let (mut du, mut ddu) = (SVector::zeros(), SVector::zeros());
-        if inv.rcond > 0.0 {
-            du = -(inv.inverse * (psi_v * self.dir));
-            let generated = || {
-                self.model
-                    .gamma_by(self.options.options.method, &u, &v, &du, &self.dir)
-            };
-            let gamma = sources::gamma(self.model, jacobian, generated, &u, &v, &du, &self.dir);
-            ddu = -(inv.inverse * gamma);
-            if !du.iter().chain(ddu.iter()).all(|x| x.is_finite()) {
-                du = SVector::zeros();
-                ddu = SVector::zeros();
-            }
+        if inv.rcond <= 0.0 {
+            return (None, inv.det, inv.rcond);
         }
+        let udot = -(inv.inverse * (psi_v * vdot));
+        let generated = || {
+            self.model
+                .gamma_by(self.options.options.method, u, v, &udot, vdot)
+        };
+        let gamma = sources::gamma(self.model, jacobian, generated, u, v, &udot, vdot);
+        let uddot = -(inv.inverse * gamma);
+        let known = finite(&udot, &uddot);
+        (known.then_some((udot, uddot)), inv.det, inv.rcond)
+    }
+
+    /// The state at (u, t): det, conditioning and the analogs along the path.
+    pub(super) fn state(&self, u: SVector<f64, M>, t: f64, iterations: usize) -> State<M, F> {
+        let (analogs, det, rcond) = self.motion(&u, &self.v(t), &self.dir);
+        let (du, ddu) = analogs.unwrap_or((SVector::zeros(), SVector::zeros()));
         State {
             t,
             u,
             du,
             ddu,
             det,
-            rcond: inv.rcond,
+            rcond,
             iterations,
             solved: true,
+            analogs: analogs.is_some(),
         }
     }
 
@@ -195,6 +219,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             rcond: k.rcond,
             iterations,
             solved: true,
+            analogs: finite,
         }
     }
 
@@ -373,6 +398,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
                 rcond: k.rcond,
                 iterations,
                 solved: true,
+                analogs: true,
             };
             // Where one evaluation was not enough (a coarse grid), the next
             // step starts with a fresh inverse and the current analogs: a
@@ -563,7 +589,8 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
     /// accuracy (see [`Options::accuracy`]).
     pub(super) fn keeps_accuracy(&self, state: &State<M, F>) -> bool {
         let options = &self.options.options;
-        if !state.solved || state.rcond < self.min_rcond_velocity {
+        // An exactly singular pose has no velocities, whatever the accuracy.
+        if !state.solved || state.rcond <= 0.0 || state.rcond < self.min_rcond_velocity {
             return false;
         }
         if state.rcond >= self.min_rcond_acceleration {
@@ -592,6 +619,9 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         step: usize,
         direction: f64,
     ) -> Result<SweepPose<M, F>, Error> {
+        if !state.analogs {
+            return self.pose_at_unit_scale(state, step, direction);
+        }
         let rate = self.rate * direction;
         let pose = SweepPose {
             step,
@@ -618,6 +648,44 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         let unusual = (probes != 0.0) | ((rate != 0.0) & (rate.abs() < 1e-100));
         if unusual {
             Self::unusual_pose(state, rate, &pose)?;
+        }
+        Ok(pose)
+    }
+
+    /// [`Self::pose`] for a state whose analogs per unit of t could not be
+    /// computed (they overflow for a step of 1e160): the analogs per unit
+    /// of driver length instead, at the sweep's speed.
+    #[cold]
+    #[inline(never)]
+    fn pose_at_unit_scale(
+        &self,
+        state: &State<M, F>,
+        step: usize,
+        direction: f64,
+    ) -> Result<SweepPose<M, F>, Error> {
+        let along = self.dir / self.step_length;
+        let v = self.v(state.t);
+        let (Some((du, ddu)), _, _) = self.motion(&state.u, &v, &along) else {
+            return Err(Error::NonFiniteValue {
+                stage: Stage::Velocity,
+                quantity: "the sweep's analogs along its path",
+            });
+        };
+        let speed = self.options.speed * direction;
+        let pose = SweepPose {
+            step,
+            v,
+            u: state.u,
+            vdot: along * speed,
+            udot: du * speed,
+            uddot: ddu * (speed * speed),
+            det: state.det,
+            rcond: state.rcond,
+            iterations: state.iterations,
+        };
+        let unit = State { du, ddu, ..*state };
+        if speed != 0.0 {
+            Self::unusual_pose(&unit, speed, &pose)?;
         }
         Ok(pose)
     }
