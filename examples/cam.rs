@@ -15,7 +15,7 @@
 #[path = "shaper/machine.rs"]
 mod machine;
 
-use linkage::cam::{Cam, Follower, Law, Program, Rotation, Segment, smallest_rocker};
+use linkage::cam::{Cam, CamError, Follower, Law, Program, Rotation, Segment, smallest_rocker};
 use linkage::diagrams::{Chart, Panel};
 use std::collections::HashMap;
 use std::f64::consts::{FRAC_PI_2, PI};
@@ -144,25 +144,25 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     row(
         "a_q1 = 2(k+1)h/φ_y² [m/rad²]",
         "a_q1",
-        program.at(0.5 * phi_y / (k + 1.0)).0[2],
+        program.at(0.5 * phi_y / (k + 1.0))?.0[2],
         "",
     );
     row(
         "a_q4 [m/rad²]",
         "a_q4",
-        program.at(phi_y + phi_ds + phi_s - 1e-9).0[2],
+        program.at(phi_y + phi_ds + phi_s - 1e-9)?.0[2],
         "",
     );
     row(
         "v_q max on the rise [m/rad]",
         "v_q_max_rise",
-        program.at(phi_y / (k + 1.0)).0[1],
+        program.at(phi_y / (k + 1.0))?.0[1],
         "",
     );
     row(
         "v_q min on the return [m/rad]",
         "v_q_max_return",
-        program.at(phi_y + phi_ds + phi_s * k / (k + 1.0)).0[1],
+        program.at(phi_y + phi_ds + phi_s * k / (k + 1.0))?.0[1],
         "",
     );
     row("ψ_max = h/l_BN [°]", "psi_max_deg", deg(h / arm), "");
@@ -171,17 +171,20 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     );
 
     // 3. The seed's design, read off its drawing.
-    let seed_cam = Cam {
-        program: program.clone(),
-        follower: Follower::Rocker {
-            arm,
-            centre_distance: 0.2973,
-            initial_angle: rad(54.0),
-            pivot_angle: -FRAC_PI_2,
-        },
-        rotation: Rotation::CounterClockwise,
+    let seed_rocker = |initial_angle: f64| {
+        Cam::new(
+            program.clone(),
+            Follower::Rocker {
+                arm,
+                centre_distance: 0.2973,
+                initial_angle,
+                pivot_angle: -FRAC_PI_2,
+            },
+            Rotation::CounterClockwise,
+        )
     };
-    let ((at_max, theta_max), (at_min, theta_min)) = seed_cam.pressure_extremes();
+    let seed_cam = seed_rocker(rad(54.0))?;
+    let ((at_max, theta_max), (at_min, theta_min)) = seed_cam.pressure_extremes()?;
     heading("3. The seed's design: a_w = 0.2973 m, φ20 = 54°, l_BN = 0.15 m");
     row(
         "r0 = |OK0| [m]",
@@ -189,24 +192,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         seed_cam.base_radius(),
         "the seed reads 0.2413 off its drawing",
     );
-    let k0 = seed_cam.pitch(0.0).k;
+    let k0 = seed_cam.pitch(0.0)?.k;
     row("K0.x [m]", "K0.x", k0.x, "");
     row("K0.y [m]", "K0.y", k0.y, "");
     // The φ20 that would give the graphical r0 with a_w = 0.2973.
     let implied = bisect(
-        |psi0| {
-            Cam {
-                follower: Follower::Rocker {
-                    arm,
-                    centre_distance: 0.2973,
-                    initial_angle: psi0,
-                    pivot_angle: -FRAC_PI_2,
-                },
-                ..seed_cam.clone()
-            }
-            .base_radius()
-                - 0.2413
-        },
+        |psi0| seed_rocker(psi0).map_or(f64::NAN, |cam| cam.base_radius() - 0.2413),
         rad(45.0),
         rad(60.0),
     );
@@ -219,7 +210,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     row(
         "r at the far dwell [m]",
         "r_far_dwell",
-        seed_cam.pitch(phi_y + 0.5 * phi_ds).k.norm(),
+        seed_cam.pitch(phi_y + 0.5 * phi_ds)?.k.norm(),
         "",
     );
     row(
@@ -246,11 +237,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         centre_distance,
         initial_angle,
         ..
-    } = best.follower
+    } = *best.follower()
     else {
         unreachable!("a rocker was asked for")
     };
-    let ((best_at_max, best_max), (best_at_min, best_min)) = best.pressure_extremes();
+    let ((best_at_max, best_max), (best_at_min, best_min)) = best.pressure_extremes()?;
     heading("4. The smallest cam with |θ| ≤ 35° on both strokes (solved, not drawn)");
     row("r0 [m]", "opt.r0_min", best.base_radius(), "");
     row("a_w [m]", "opt.a_w", centre_distance, "");
@@ -263,7 +254,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         deg(best_at_min)
     );
 
-    let (at_sharpest, largest) = best.largest_roller();
+    let (at_sharpest, largest) = best.largest_roller()?;
     println!(
         "the seed allows rollers of 0.25…0.4·r0 = {:.1}…{:.1} mm, but this cam's pitch curve bends with a radius of only {:.1} mm\n\
          at φ = {:.2}°: a roller above that undercuts (the profile would loop)",
@@ -276,11 +267,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     // 5. The profile for a roller of 0.25·r0.
     let roller = 0.25 * best.base_radius();
     let profile = best.profile(roller, 720)?;
-    let convex = profile
-        .iter()
-        .map(|p| p.radius)
-        .filter(|r| *r > 0.0)
-        .fold(f64::INFINITY, f64::min);
+    let convex = 1.0
+        / profile
+            .iter()
+            .map(|p| p.curvature)
+            .fold(f64::NEG_INFINITY, f64::max);
     println!(
         "\n5. The profile for a roller of r_R = {:.1} mm: no undercut; its smallest convex radius of curvature is {:.1} mm",
         roller * 1000.0,
@@ -302,7 +293,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             1000.0 * p.profile.y,
             1000.0 * p.pitch.x,
             1000.0 * p.pitch.y,
-            1000.0 * p.radius
+            1000.0 / p.curvature
         );
     }
     let csv_path = folder.join("profile.csv");
@@ -322,27 +313,27 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     )?;
     // The active part of the turn (the rest is the dwell at the base circle).
     let phis: Vec<f64> = (0..=500).map(|i| i as f64 * rad(100.0) / 500.0).collect();
-    let curve = |f: &dyn Fn(f64) -> f64| -> Vec<(f64, f64)> {
-        phis.iter().map(|&p| (deg(p), f(p))).collect()
+    let curve = |f: &dyn Fn(f64) -> Result<f64, CamError>| -> Result<Vec<(f64, f64)>, CamError> {
+        phis.iter().map(|&p| Ok((deg(p), f(p)?))).collect()
     };
     let motion = Chart::new(
         "The follower's program over φ = 0…100° (the rest of the turn a dwell)",
         "φ [°]",
     )
     .size(900, 200)
-    .panel(Panel::new("S_B [mm]").line("S_B", curve(&|p| 1000.0 * program.at(p).0[0])))
-    .panel(Panel::new("v_q [mm/rad]").line("v_q", curve(&|p| 1000.0 * program.at(p).0[1])))
-    .panel(Panel::new("a_q [mm/rad²]").line("a_q", curve(&|p| 1000.0 * program.at(p).0[2])));
+    .panel(Panel::new("S_B [mm]").line("S_B", curve(&|p| Ok(1000.0 * program.at(p)?.0[0]))?))
+    .panel(Panel::new("v_q [mm/rad]").line("v_q", curve(&|p| Ok(1000.0 * program.at(p)?.0[1]))?))
+    .panel(Panel::new("a_q [mm/rad²]").line("a_q", curve(&|p| Ok(1000.0 * program.at(p)?.0[2]))?));
     let motion_path = folder.join("motion.svg");
     std::fs::write(&motion_path, motion.render()?)?;
     let pressure = Chart::new("Pressure angle: the seed's design and the smallest cam within ±35° (φ = 0…100°, then a dwell)", "φ [°]")
         .size(900, 320)
         .panel(
             Panel::new("θ [°]")
-                .line("the seed's (a_w 0.2973, φ20 54°)", curve(&|p| deg(seed_cam.pressure_angle(p))))
-                .line("the smallest within the limit", curve(&|p| deg(best.pressure_angle(p))))
-                .dashed("+35°", curve(&|_| 35.0))
-                .dashed("−35°", curve(&|_| -35.0)),
+                .line("the seed's (a_w 0.2973, φ20 54°)", curve(&|p| Ok(deg(seed_cam.pressure_angle(p)?)))?)
+                .line("the smallest within the limit", curve(&|p| Ok(deg(best.pressure_angle(p)?)))?)
+                .dashed("+35°", curve(&|_| Ok(35.0))?)
+                .dashed("−35°", curve(&|_| Ok(-35.0))?),
         );
     let pressure_path = folder.join("pressure.svg");
     std::fs::write(&pressure_path, pressure.render()?)?;

@@ -51,16 +51,17 @@ fn seed_program() -> Program {
 }
 
 fn rocker(program: &Program, a_w: f64, phi20_deg: f64) -> Cam {
-    Cam {
-        program: program.clone(),
-        follower: Follower::Rocker {
+    Cam::new(
+        program.clone(),
+        Follower::Rocker {
             arm: ARM,
             centre_distance: a_w,
             initial_angle: phi20_deg.to_radians(),
             pivot_angle: -FRAC_PI_2,
         },
-        rotation: Rotation::CounterClockwise,
-    }
+        Rotation::CounterClockwise,
+    )
+    .unwrap()
 }
 
 /// The root of g in [a, b] by bisection.
@@ -101,30 +102,36 @@ fn ours() -> HashMap<&'static str, f64> {
     out.insert("cam.k_used", 1.0);
     let program = seed_program();
     let phi_y = 28f64.to_radians();
-    out.insert("cam.a_q1", program.at(0.25 * phi_y).0[2]);
-    out.insert("cam.a_q4", program.at(71f64.to_radians() - 1e-9).0[2]);
-    out.insert("cam.v_q_max_rise", program.at(0.5 * phi_y).0[1]);
+    out.insert("cam.a_q1", program.at(0.25 * phi_y).unwrap().0[2]);
+    out.insert(
+        "cam.a_q4",
+        program.at(71f64.to_radians() - 1e-9).unwrap().0[2],
+    );
+    out.insert("cam.v_q_max_rise", program.at(0.5 * phi_y).unwrap().0[1]);
     out.insert(
         "cam.v_q_max_return",
-        program.at((43.0f64 + 14.0).to_radians()).0[1],
+        program.at((43.0f64 + 14.0).to_radians()).unwrap().0[1],
     );
-    out.insert("cam.psi_max_rad", program.at(35f64.to_radians()).0[0] / ARM);
+    out.insert(
+        "cam.psi_max_rad",
+        program.at(35f64.to_radians()).unwrap().0[0] / ARM,
+    );
     out.insert(
         "cam.psi_max_deg",
-        (program.at(35f64.to_radians()).0[0] / ARM).to_degrees(),
+        (program.at(35f64.to_radians()).unwrap().0[0] / ARM).to_degrees(),
     );
     out.insert(
         "cam.check.SB_correct_at_phi_y_over_2",
-        program.at(0.5 * phi_y).0[0],
+        program.at(0.5 * phi_y).unwrap().0[0],
     );
     let seed = rocker(&program, 0.2973, 54.0);
-    let ((at_max, max), (at_min, min)) = seed.pressure_extremes();
+    let ((at_max, max), (at_min, min)) = seed.pressure_extremes().unwrap();
     out.insert("cam.theta_max_rise_deg", max.to_degrees());
     out.insert("cam.theta_max_rise_at_deg", at_max.to_degrees());
     out.insert("cam.theta_min_return_deg", min.to_degrees());
     out.insert("cam.theta_min_return_at_deg", at_min.to_degrees());
     out.insert("cam.r0", seed.base_radius());
-    let k0 = seed.pitch(0.0).k;
+    let k0 = seed.pitch(0.0).unwrap().k;
     out.insert("cam.K0.x", k0.x);
     out.insert("cam.K0.y", k0.y);
     out.insert(
@@ -137,7 +144,10 @@ fn ours() -> HashMap<&'static str, f64> {
     );
     out.insert("cam.r_R_min", 0.25 * 0.2413);
     out.insert("cam.r_R_max", 0.4 * 0.2413);
-    out.insert("cam.r_far_dwell", seed.pitch(35f64.to_radians()).k.norm());
+    out.insert(
+        "cam.r_far_dwell",
+        seed.pitch(35f64.to_radians()).unwrap().k.norm(),
+    );
     let best = smallest_rocker(
         &program,
         ARM,
@@ -150,7 +160,7 @@ fn ours() -> HashMap<&'static str, f64> {
         centre_distance,
         initial_angle,
         ..
-    } = best.follower
+    } = *best.follower()
     else {
         panic!("a rocker")
     };
@@ -206,12 +216,12 @@ fn the_pressure_angle_is_the_seeds_formula() {
     let cam = rocker(&program, 0.2973, 54.0);
     for i in 0..720 {
         let phi = TAU * i as f64 / 720.0;
-        let (s, _) = program.at(phi);
+        let (s, _) = program.at(phi).unwrap();
         let psi = s[0] / ARM;
         let angle = 54f64.to_radians() + psi;
         let formula = ((s[1] + 0.2973 * angle.cos() - ARM) / (0.2973 * angle.sin())).atan();
         assert!(
-            (cam.pressure_angle(phi) - formula).abs() < 1e-13,
+            (cam.pressure_angle(phi).unwrap() - formula).abs() < 1e-13,
             "φ = {phi}"
         );
     }
@@ -245,7 +255,7 @@ fn laws_join_at_the_segment_ends() {
             (5.0, 0.0),
         ] {
             for side in [-1e-12, 1e-12] {
-                let (d, _) = program.at(phi + side);
+                let (d, _) = program.at(phi + side).unwrap();
                 assert!((d[0] - s).abs() < 1e-12, "{law:?} at {phi}: s = {}", d[0]);
                 assert!(d[1].abs() < 1e-9, "{law:?} at {phi}: s′ = {}", d[1]);
             }
@@ -258,15 +268,18 @@ fn laws_join_at_the_segment_ends() {
         ) {
             for phi in [0.0, rise, rise + dwell, rise + dwell + ret] {
                 for side in [-1e-12, 1e-12] {
-                    assert!(program.at(phi + side).0[2].abs() < 1e-8, "{law:?} at {phi}");
+                    assert!(
+                        program.at(phi + side).unwrap().0[2].abs() < 1e-8,
+                        "{law:?} at {phi}"
+                    );
                 }
             }
         }
         // The return is the rise run backwards.
         for i in 1..10 {
             let x = i as f64 / 10.0;
-            let up = program.at(x * rise).0;
-            let down = program.at(rise + dwell + (1.0 - x) * ret).0;
+            let up = program.at(x * rise).unwrap().0;
+            let down = program.at(rise + dwell + (1.0 - x) * ret).unwrap().0;
             assert!((up[0] - down[0]).abs() < 1e-12);
         }
     }
@@ -276,7 +289,7 @@ fn laws_join_at_the_segment_ends() {
 /// then refined near the closest sample.
 fn distance_to_pitch(cam: &Cam, p: nalgebra::Vector2<f64>) -> f64 {
     let n = 2880;
-    let d = |phi: f64| (cam.pitch(phi).k - p).norm();
+    let d = |phi: f64| (cam.pitch(phi).unwrap().k - p).norm();
     let k = (0..n)
         .min_by(|&a, &b| d(TAU * a as f64 / n as f64).total_cmp(&d(TAU * b as f64 / n as f64)))
         .unwrap();
@@ -311,7 +324,7 @@ fn the_profile_keeps_the_roller_radius_from_the_pitch_curve() {
     // The seed allows rollers up to 0.4·r0, but this cam's pitch curve has
     // a convex radius of only 76.6 mm on its flanks: a roller that large
     // undercuts.
-    let (at, largest) = best.largest_roller();
+    let (at, largest) = best.largest_roller().unwrap();
     assert!(
         (largest - 0.0766).abs() < 5e-4,
         "{largest} at {}",
@@ -337,7 +350,7 @@ fn the_smallest_cams_reach_the_limit_exactly() {
     let limit = 35f64.to_radians();
     let best =
         smallest_rocker(&program, ARM, -FRAC_PI_2, Rotation::CounterClockwise, limit).unwrap();
-    let ((_, max), (_, min)) = best.pressure_extremes();
+    let ((_, max), (_, min)) = best.pressure_extremes().unwrap();
     assert!(
         (max.max(-min) - limit).abs() < 1e-6 * limit,
         "{} {}",
@@ -364,7 +377,7 @@ fn the_smallest_cams_reach_the_limit_exactly() {
     for rotation in [Rotation::CounterClockwise, Rotation::Clockwise] {
         let best =
             smallest_translating(&cycloidal, FRAC_PI_2, rotation, 30f64.to_radians()).unwrap();
-        let ((_, max), (_, min)) = best.pressure_extremes();
+        let ((_, max), (_, min)) = best.pressure_extremes().unwrap();
         assert!(
             (max.max(-min) - 30f64.to_radians()).abs() < 1e-6,
             "{rotation:?}: {} {}",
@@ -372,25 +385,27 @@ fn the_smallest_cams_reach_the_limit_exactly() {
             min.to_degrees()
         );
         // Without offset, tan θ = s′/(r0 + s) (the textbook's formula).
-        let Follower::Translating { base, .. } = best.follower else {
+        let Follower::Translating { base, .. } = *best.follower() else {
             panic!()
         };
-        let centred = Cam {
-            follower: Follower::Translating {
+        let centred = Cam::new(
+            best.program().clone(),
+            Follower::Translating {
                 offset: 0.0,
                 base,
                 axis_angle: FRAC_PI_2,
             },
-            ..best.clone()
-        };
+            best.rotation(),
+        )
+        .unwrap();
         for i in 0..100 {
             let phi = 3.3 * i as f64 / 100.0;
-            let (s, _) = cycloidal.at(phi);
+            let (s, _) = cycloidal.at(phi).unwrap();
             let textbook = (s[1] / (base + s[0])).atan();
             assert!(
-                (centred.pressure_angle(phi).abs() - textbook.abs()).abs() < 1e-12,
+                (centred.pressure_angle(phi).unwrap().abs() - textbook.abs()).abs() < 1e-12,
                 "φ = {phi}: {} vs {textbook}",
-                centred.pressure_angle(phi)
+                centred.pressure_angle(phi).unwrap()
             );
         }
     }
@@ -417,4 +432,113 @@ fn an_undercut_is_an_error_naming_the_angles() {
         Program::new(0.01, vec![Segment::Dwell { angle: 7.0 }]),
         Err(CamError::TooLong { .. })
     ));
+}
+
+/// Settings out of their range are typed errors, never a hang or a
+/// meaningless cam: a rocker arm of 0 once widened its bracket from 0 to 0
+/// forever, a negative one gave a base radius of −11, a NaN limit or one of
+/// 90° or more returned a cam of 0.055 m or 1.4e-6 m.
+#[test]
+fn bad_settings_are_typed_errors() {
+    let program = seed_program();
+    let limit = 35f64.to_radians();
+    let bad = |result: Result<Cam, CamError>, what: &str| {
+        assert!(
+            matches!(result, Err(CamError::BadSetting { .. })),
+            "{what}: {result:?}"
+        );
+    };
+    for arm in [0.0, -0.15, f64::NAN, f64::INFINITY, -0.0] {
+        bad(
+            smallest_rocker(&program, arm, -FRAC_PI_2, Rotation::CounterClockwise, limit),
+            &format!("arm {arm}"),
+        );
+    }
+    for limit in [
+        f64::NAN,
+        0.0,
+        -0.1,
+        FRAC_PI_2,
+        100f64.to_radians(),
+        f64::INFINITY,
+    ] {
+        bad(
+            smallest_rocker(&program, ARM, -FRAC_PI_2, Rotation::CounterClockwise, limit),
+            &format!("rocker, limit {limit}"),
+        );
+        bad(
+            smallest_translating(&program, FRAC_PI_2, Rotation::CounterClockwise, limit),
+            &format!("translating, limit {limit}"),
+        );
+    }
+    bad(
+        smallest_rocker(&program, ARM, f64::NAN, Rotation::CounterClockwise, limit),
+        "pivot angle NaN",
+    );
+    let rocker = |arm, centre_distance, initial_angle, pivot_angle| Follower::Rocker {
+        arm,
+        centre_distance,
+        initial_angle,
+        pivot_angle,
+    };
+    for follower in [
+        rocker(0.0, 0.3, 1.0, 0.0),
+        rocker(0.15, -0.3, 1.0, 0.0),
+        rocker(0.15, 0.3, f64::NAN, 0.0),
+        rocker(0.15, 0.3, 1.0, f64::INFINITY),
+        Follower::Translating {
+            offset: 0.2,
+            base: 0.1,
+            axis_angle: 0.0,
+        },
+        Follower::Translating {
+            offset: 0.0,
+            base: 0.0,
+            axis_angle: 0.0,
+        },
+    ] {
+        bad(
+            Cam::new(program.clone(), follower, Rotation::Clockwise),
+            &format!("{follower:?}"),
+        );
+    }
+    let cam = rocker_cam(&program);
+    assert!(matches!(
+        cam.pitch(f64::NAN),
+        Err(CamError::BadSetting { .. })
+    ));
+    assert!(matches!(
+        program.at(f64::INFINITY),
+        Err(CamError::BadSetting { .. })
+    ));
+    assert!(matches!(
+        cam.profile(0.01, 0),
+        Err(CamError::BadSetting { .. })
+    ));
+    assert!(matches!(
+        cam.profile(0.01, usize::MAX),
+        Err(CamError::BadSetting { .. })
+    ));
+    assert!(matches!(
+        cam.drawing(0.01, 0.0, "", f64::NAN),
+        Err(CamError::BadSetting { .. })
+    ));
+    assert!(matches!(
+        cam.pressure_excess(f64::NAN),
+        Err(CamError::BadSetting { .. })
+    ));
+    assert!(matches!(
+        Program::new(
+            0.04,
+            vec![Segment::Rise {
+                angle: 1.0,
+                law: Law::ConstantAcceleration { k: -1.0 }
+            }]
+        ),
+        Err(CamError::BadSetting { .. })
+    ));
+}
+
+fn rocker_cam(program: &Program) -> Cam {
+    rocker(program, 0.2973, 54.0)
 }

@@ -15,7 +15,8 @@ const MOTION: &str = "#2e7d32";
 
 impl Cam {
     /// An SVG drawing of the cam turned to `phi`, with a roller of radius
-    /// `roller`, `width` pixels wide. The profile must not undercut.
+    /// `roller`, `width` pixels wide (200 to 10⁵). The profile must not
+    /// undercut.
     pub fn drawing(
         &self,
         roller: f64,
@@ -23,11 +24,19 @@ impl Cam {
         title: &str,
         width: f64,
     ) -> Result<String, CamError> {
+        if !(200.0..=1e5).contains(&width) {
+            return Err(CamError::BadSetting {
+                what: "the drawing's width",
+                must: "from 200 to 10⁵ pixels",
+                value: width,
+            });
+        }
         let profile = self.profile(roller, 720)?;
+        let pitch = self.pitch(phi)?;
+        let theta = self.pressure_angle(phi)?.to_degrees();
         let turn = self.rotation.sign() * phi;
         // The absolute frame: the cam turned by σφ.
         let at = |v: Vector2<f64>| rotate(v, turn);
-        let pitch = self.pitch(phi);
         let k = at(pitch.k);
         let (pivot, arm_end) = match self.follower {
             Follower::Rocker {
@@ -213,7 +222,6 @@ impl Cam {
             );
         }
         // The legend.
-        let theta = self.pressure_angle(phi).to_degrees();
         let lines = [
             (
                 PITCH,

@@ -31,7 +31,11 @@ pub type Derivatives = [f64; 4];
 impl Law {
     /// S and its first three derivatives at x (clamped to [0, 1]). Where
     /// the jerk is a Dirac impulse (an acceleration jump), it is 0 here.
+    /// NaN for a NaN x, and for a law that is not [valid](Law::is_valid).
     pub fn at(&self, x: f64) -> Derivatives {
+        if x.is_nan() || !self.is_valid() {
+            return [f64::NAN; 4];
+        }
         let x = x.clamp(0.0, 1.0);
         match *self {
             Law::ConstantAcceleration { k } => {
@@ -70,11 +74,21 @@ impl Law {
         }
     }
 
+    /// Whether the law's parameter is in its range: the asymmetry k of the
+    /// constant-acceleration law positive and finite. [`super::Program::new`]
+    /// accepts only valid laws.
+    pub fn is_valid(&self) -> bool {
+        match *self {
+            Law::ConstantAcceleration { k } => k.is_finite() && k > 0.0,
+            _ => true,
+        }
+    }
+
     /// Where the acceleration jumps, as fractions of the segment (the ends
-    /// excluded).
+    /// excluded; none for a law that is not valid).
     pub fn breakpoints(&self) -> Vec<f64> {
         match *self {
-            Law::ConstantAcceleration { k } => vec![1.0 / (k + 1.0)],
+            Law::ConstantAcceleration { k } if self.is_valid() => vec![1.0 / (k + 1.0)],
             Law::ModifiedTrapezoid => vec![0.125, 0.375, 0.625, 0.875],
             _ => Vec::new(),
         }

@@ -22,14 +22,26 @@ use std::f64::consts::{PI, TAU};
 
 /// What went wrong designing a cam.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum CamError {
+    /// A number given is out of its range (a NaN or an infinity among them).
     BadSetting {
         what: &'static str,
         must: &'static str,
         value: f64,
     },
+    /// The program's segments take more than a turn.
     TooLong {
         total: f64,
+    },
+    /// The cam's geometry breaks down at a cam angle: the pitch curve stops
+    /// (the roller centre does not move in the cam's frame) or leaves the
+    /// range of f64, so that its normal, the pressure angle or the
+    /// curvature is not defined there.
+    Degenerate {
+        /// The cam angle, rad.
+        phi: f64,
+        why: &'static str,
     },
     /// The profile's radius of curvature falls below zero: the roller
     /// cannot follow the pitch curve there.
@@ -61,6 +73,11 @@ impl std::fmt::Display for CamError {
                 f,
                 "no cam up to a base radius of {limit} keeps the pressure angle within {angle}°"
             ),
+            Self::Degenerate { phi, why } => write!(
+                f,
+                "the cam is degenerate at φ = {}°: {why}",
+                phi.to_degrees()
+            ),
         }
     }
 }
@@ -90,11 +107,12 @@ impl Segment {
 }
 
 /// The follower's program over a turn of the cam: segments from φ = 0, the
-/// rest of the turn a dwell at the start.
+/// rest of the turn a dwell at the start. Made by [`Program::new`], which
+/// checks it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Program {
-    pub lift: f64,
-    pub segments: Vec<Segment>,
+    lift: f64,
+    segments: Vec<Segment>,
 }
 
 /// Which part of the program a cam angle falls in.
@@ -105,7 +123,22 @@ pub enum Stroke {
     Return,
 }
 
+/// A cam angle, checked: finite.
+fn cam_angle(phi: f64) -> Result<f64, CamError> {
+    if phi.is_finite() {
+        Ok(phi)
+    } else {
+        Err(CamError::BadSetting {
+            what: "the cam angle",
+            must: "finite",
+            value: phi,
+        })
+    }
+}
+
 impl Program {
+    /// The program of `segments`, each of a finite angle ≥ 0 and a valid
+    /// law, taking at most a turn, for a `lift` > 0.
     pub fn new(lift: f64, segments: Vec<Segment>) -> Result<Program, CamError> {
         if !(lift.is_finite() && lift > 0.0) {
             return Err(CamError::BadSetting {
@@ -124,6 +157,17 @@ impl Program {
                     value: a,
                 });
             }
+            if let Segment::Rise { law, .. } | Segment::Return { law, .. } = s {
+                if let Law::ConstantAcceleration { k } = *law {
+                    if !law.is_valid() {
+                        return Err(CamError::BadSetting {
+                            what: "the asymmetry k of a constant-acceleration law",
+                            must: "positive and finite",
+                            value: k,
+                        });
+                    }
+                }
+            }
             total += a;
         }
         if total > TAU * (1.0 + 1e-12) {
@@ -134,9 +178,25 @@ impl Program {
         Ok(Program { lift, segments })
     }
 
+    /// The follower's lift.
+    pub fn lift(&self) -> f64 {
+        self.lift
+    }
+
+    /// The segments, from φ = 0.
+    pub fn segments(&self) -> &[Segment] {
+        &self.segments
+    }
+
     /// s(φ) and its derivatives s′, s″, s‴ with respect to φ (the cam
-    /// angle, wrapped to one turn), and the stroke.
-    pub fn at(&self, phi: f64) -> (Derivatives, Stroke) {
+    /// angle, any finite one: the program repeats every turn), and the
+    /// stroke.
+    pub fn at(&self, phi: f64) -> Result<(Derivatives, Stroke), CamError> {
+        Ok(self.motion(cam_angle(phi)?))
+    }
+
+    /// [`Program::at`] for a finite φ.
+    fn motion(&self, phi: f64) -> (Derivatives, Stroke) {
         let phi = phi.rem_euclid(TAU);
         let mut start = 0.0;
         let mut level = 0.0;
@@ -259,11 +319,12 @@ pub enum Follower {
 }
 
 /// A cam mechanism: a program, a follower and the cam's sense of rotation.
+/// Made by [`Cam::new`], which checks the follower.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Cam {
-    pub program: Program,
-    pub follower: Follower,
-    pub rotation: Rotation,
+    program: Program,
+    follower: Follower,
+    rotation: Rotation,
 }
 
 /// The roller centre K in the cam's frame at one cam angle, with its
@@ -288,21 +349,22 @@ pub struct ProfilePoint {
     /// The roller centre (pitch curve) and the contact point (profile).
     pub pitch: Vector2<f64>,
     pub profile: Vector2<f64>,
-    /// The profile's radius of curvature: positive where convex.
-    pub radius: f64,
+    /// The profile's curvature, 1/ρ: positive where convex, negative where
+    /// concave, 0 where straight (an inflection).
+    pub curvature: f64,
 }
 
-/// Brent's minimum of a function that cannot fail.
+/// (φ, value): a value at a cam angle.
+pub type AngleAt = (f64, f64);
+
+/// Brent's minimum of f on [a, b] to `tolerance`.
 fn minimize(
-    f: &mut impl FnMut(f64) -> Result<f64, std::convert::Infallible>,
+    f: &mut impl FnMut(f64) -> Result<f64, CamError>,
     a: f64,
     b: f64,
     tolerance: f64,
-) -> (f64, f64) {
-    match crate::dynamics::numerics::minimize(f, a, b, tolerance) {
-        Ok(x) => x,
-        Err(never) => match never {},
-    }
+) -> Result<(f64, f64), CamError> {
+    crate::dynamics::numerics::minimize(f, a, b, tolerance)
 }
 
 fn rotate(v: Vector2<f64>, angle: f64) -> Vector2<f64> {
@@ -318,11 +380,108 @@ fn cross(a: Vector2<f64>, b: Vector2<f64>) -> f64 {
     a.x * b.y - a.y * b.x
 }
 
+/// A number of a follower, checked.
+fn setting(what: &'static str, must: &'static str, value: f64, ok: bool) -> Result<(), CamError> {
+    if ok && value.is_finite() {
+        Ok(())
+    } else {
+        Err(CamError::BadSetting { what, must, value })
+    }
+}
+
+/// A limit on the pressure angle, checked: in (0, 90°).
+fn pressure_limit(limit: f64) -> Result<f64, CamError> {
+    setting(
+        "the pressure angle's limit",
+        "between 0 and 90° (π/2 rad), exclusive",
+        limit,
+        limit > 0.0 && limit < PI / 2.0,
+    )?;
+    Ok(limit)
+}
+
 impl Cam {
-    /// The pitch curve at φ, by inversion: the follower turned by −φ about
-    /// the cam's centre (for a counter-clockwise cam).
-    pub fn pitch(&self, phi: f64) -> Pitch {
-        let (s, stroke) = self.program.at(phi);
+    /// A cam of `program` driving `follower`, turning in `rotation`. A
+    /// rocker needs an arm and a centre distance positive and finite and
+    /// finite angles; a translating follower a finite axis angle and an
+    /// offset smaller than its base distance, which must be positive.
+    pub fn new(program: Program, follower: Follower, rotation: Rotation) -> Result<Cam, CamError> {
+        match follower {
+            Follower::Rocker {
+                arm,
+                centre_distance,
+                initial_angle,
+                pivot_angle,
+            } => {
+                setting("the rocker's arm", "positive and finite", arm, arm > 0.0)?;
+                setting(
+                    "the distance from the cam's centre to the rocker's pivot",
+                    "positive and finite",
+                    centre_distance,
+                    centre_distance > 0.0,
+                )?;
+                setting("the rocker's initial angle", "finite", initial_angle, true)?;
+                setting("the rocker's pivot angle", "finite", pivot_angle, true)?;
+            }
+            Follower::Translating {
+                offset,
+                base,
+                axis_angle,
+            } => {
+                setting(
+                    "the follower's base distance",
+                    "positive and finite",
+                    base,
+                    base > 0.0,
+                )?;
+                setting(
+                    "the follower's offset",
+                    "finite and smaller than its base distance",
+                    offset,
+                    offset.abs() < base,
+                )?;
+                setting("the follower's axis angle", "finite", axis_angle, true)?;
+            }
+        }
+        Ok(Cam {
+            program,
+            follower,
+            rotation,
+        })
+    }
+
+    pub fn program(&self) -> &Program {
+        &self.program
+    }
+
+    pub fn follower(&self) -> &Follower {
+        &self.follower
+    }
+
+    pub fn rotation(&self) -> Rotation {
+        self.rotation
+    }
+
+    /// The pitch curve at φ (any finite cam angle), by inversion: the
+    /// follower turned by −φ about the cam's centre (for a counter-clockwise
+    /// cam).
+    pub fn pitch(&self, phi: f64) -> Result<Pitch, CamError> {
+        let p = self.pitch_at(cam_angle(phi)?);
+        let finite = [p.k, p.dk, p.ddk, p.motion]
+            .iter()
+            .all(|v| v.iter().all(|x| x.is_finite()));
+        if !finite {
+            return Err(CamError::Degenerate {
+                phi,
+                why: "the pitch curve leaves the range of f64",
+            });
+        }
+        Ok(p)
+    }
+
+    /// [`Cam::pitch`] for a finite φ, unchecked.
+    fn pitch_at(&self, phi: f64) -> Pitch {
+        let (s, stroke) = self.program.motion(phi);
         let sigma = self.rotation.sign();
         match self.follower {
             Follower::Rocker {
@@ -383,14 +542,27 @@ impl Cam {
         }
     }
 
+    /// The pitch curve at φ with its unit tangent, or why there is none.
+    fn tangent(&self, phi: f64) -> Result<(Pitch, Vector2<f64>), CamError> {
+        let p = self.pitch(phi)?;
+        let speed = p.dk.norm();
+        if !(speed > 0.0 && speed.is_finite()) {
+            return Err(CamError::Degenerate {
+                phi,
+                why: "the pitch curve stops there (K′ = 0): it has no normal",
+            });
+        }
+        Ok((p, p.dk / speed))
+    }
+
     /// The pressure angle at φ: between the common normal at the contact
     /// (the pitch curve's normal) and the direction the follower moves the
     /// roller centre, signed as the course project (positive on the rise
     /// of its rocker), in radians.
-    pub fn pressure_angle(&self, phi: f64) -> f64 {
-        let p = self.pitch(phi);
+    pub fn pressure_angle(&self, phi: f64) -> Result<f64, CamError> {
+        let (p, tangent) = self.tangent(phi)?;
         // The normal to the pitch curve, towards the cam's centre side.
-        let mut normal = perp(p.dk);
+        let mut normal = perp(tangent);
         if normal.dot(&p.k) > 0.0 {
             normal = -normal;
         }
@@ -407,25 +579,26 @@ impl Cam {
         } else {
             theta
         };
-        self.rotation.sign() * folded
+        Ok(self.rotation.sign() * folded)
     }
 
     /// The base radius r0 = |OK| at φ = 0 (the roller centre's distance at
     /// the start of the rise).
     pub fn base_radius(&self) -> f64 {
-        self.pitch(0.0).k.norm()
+        self.pitch_at(0.0).k.norm()
     }
 
-    /// The worst excess of |θ| over `limit` in a turn (negative when the
-    /// pressure angle stays within it everywhere).
-    pub fn pressure_excess(&self, limit: f64) -> f64 {
-        let ((_, hi), (_, lo)) = self.pressure_extremes();
-        (hi - limit).max(-lo - limit)
+    /// The worst excess of |θ| over `limit` (rad, in (0, π/2)) in a turn
+    /// (negative when the pressure angle stays within it everywhere).
+    pub fn pressure_excess(&self, limit: f64) -> Result<f64, CamError> {
+        let limit = pressure_limit(limit)?;
+        let ((_, hi), (_, lo)) = self.pressure_extremes()?;
+        Ok((hi - limit).max(-lo - limit))
     }
 
     /// The extremes of the pressure angle over a turn: ((φ, θ) at the
     /// maximum, (φ, θ) at the minimum), located to 1e-10 rad.
-    pub fn pressure_extremes(&self) -> ((f64, f64), (f64, f64)) {
+    pub fn pressure_extremes(&self) -> Result<(AngleAt, AngleAt), CamError> {
         let mut breaks = self.program.breakpoints();
         breaks.push(TAU);
         let mut best_max = (0.0, f64::NEG_INFINITY);
@@ -440,20 +613,22 @@ impl Cam {
             let xs: Vec<f64> = (0..=n)
                 .map(|i| a + inset + (b - a - 2.0 * inset) * i as f64 / n as f64)
                 .collect();
-            let ys: Vec<f64> = xs.iter().map(|&x| self.pressure_angle(x)).collect();
+            let ys: Vec<f64> = xs
+                .iter()
+                .map(|&x| self.pressure_angle(x))
+                .collect::<Result<_, _>>()?;
             for (sign, best) in [(1.0, &mut best_max), (-1.0, &mut best_min)] {
                 let k = (0..ys.len())
                     .max_by(|&p, &q| (sign * ys[p]).total_cmp(&(sign * ys[q])))
                     .unwrap_or(0);
                 let (lo, hi) = (xs[k.saturating_sub(1)], xs[(k + 1).min(n)]);
-                let mut f =
-                    |x: f64| Ok::<f64, std::convert::Infallible>(-sign * self.pressure_angle(x));
-                let (x, fx) = minimize(&mut f, lo, hi, 1e-11);
+                let mut f = |x: f64| self.pressure_angle(x).map(|theta| -sign * theta);
+                let (x, fx) = minimize(&mut f, lo, hi, 1e-11)?;
                 // The segment's ends too (an extreme at a law's joint).
                 for (x, value) in [
                     (x, -sign * fx),
-                    (a, self.pressure_angle(a)),
-                    (b, self.pressure_angle(b)),
+                    (a, self.pressure_angle(a)?),
+                    (b, self.pressure_angle(b)?),
                 ] {
                     if sign * value > sign * best.1 {
                         *best = (x, value);
@@ -461,61 +636,71 @@ impl Cam {
                 }
             }
         }
-        (best_max, best_min)
+        Ok((best_max, best_min))
     }
 
-    /// The pitch curve's radius of curvature at φ, positive where it bends
-    /// towards the cam's centre (convex), negative where concave.
-    pub fn pitch_radius(&self, phi: f64) -> f64 {
-        let p = self.pitch(phi);
-        let speed = p.dk.norm();
-        let mut outward = perp(p.dk) / speed;
+    /// The pitch curve's curvature at φ, 1/ρ: positive where it bends
+    /// towards the cam's centre (convex), negative where concave, 0 at an
+    /// inflection.
+    pub fn pitch_curvature(&self, phi: f64) -> Result<f64, CamError> {
+        let (p, tangent) = self.tangent(phi)?;
+        let mut outward = perp(tangent);
         if outward.dot(&p.k) < 0.0 {
             outward = -outward;
         }
-        let kappa = cross(p.dk, p.ddk) / speed.powi(3) * (perp(p.dk) / speed).dot(&(-outward));
-        1.0 / kappa
+        let speed = p.dk.norm();
+        Ok(cross(p.dk, p.ddk) / speed.powi(3) * perp(tangent).dot(&(-outward)))
     }
 
     /// The largest roller that does not undercut: the smallest convex
-    /// radius of the pitch curve, and the cam angle where it is.
-    pub fn largest_roller(&self) -> (f64, f64) {
+    /// radius of the pitch curve, 1/κ at its largest curvature, and the cam
+    /// angle where it is.
+    pub fn largest_roller(&self) -> Result<(f64, f64), CamError> {
         let mut breaks = self.program.breakpoints();
         breaks.push(TAU);
-        let mut best = (0.0, f64::INFINITY);
+        // The largest curvature (the smallest convex radius).
+        let mut best = (0.0, 0.0);
         for w in breaks.windows(2) {
             let (a, b) = (w[0], w[1]);
             if b - a <= 0.0 {
                 continue;
             }
-            let convex = |phi: f64| {
-                let r = self.pitch_radius(phi);
-                if r > 0.0 { r } else { f64::INFINITY }
-            };
             let n = 48;
             let inset = 1e-10;
             let xs: Vec<f64> = (0..=n)
                 .map(|i| a + inset + (b - a - 2.0 * inset) * i as f64 / n as f64)
                 .collect();
+            let ys: Vec<f64> = xs
+                .iter()
+                .map(|&x| self.pitch_curvature(x))
+                .collect::<Result<_, _>>()?;
             let k = (0..xs.len())
-                .min_by(|&p, &q| convex(xs[p]).total_cmp(&convex(xs[q])))
+                .max_by(|&p, &q| ys[p].total_cmp(&ys[q]))
                 .unwrap_or(0);
             let (lo, hi) = (xs[k.saturating_sub(1)], xs[(k + 1).min(n)]);
-            let mut f = |x: f64| Ok::<f64, std::convert::Infallible>(convex(x));
-            let (x, r) = minimize(&mut f, lo, hi, 1e-11);
-            for (x, r) in [(x, r), (xs[k], convex(xs[k]))] {
-                if r < best.1 {
-                    best = (x, r);
+            let mut f = |x: f64| self.pitch_curvature(x).map(|kappa| -kappa);
+            let (x, minus_kappa) = minimize(&mut f, lo, hi, 1e-11)?;
+            for (x, kappa) in [(x, -minus_kappa), (xs[k], ys[k])] {
+                if kappa > best.1 {
+                    best = (x, kappa);
                 }
             }
         }
-        best
+        let (phi, kappa) = best;
+        let convex = kappa > 0.0; // false for NaN too
+        if !convex {
+            return Err(CamError::Degenerate {
+                phi,
+                why: "the pitch curve is nowhere convex",
+            });
+        }
+        Ok((phi, 1.0 / kappa))
     }
 
     /// The profile for a roller of radius `roller` at `points` cam angles
-    /// over a turn: the inner envelope of the roller's circles, K − r·n
-    /// (n the pitch curve's unit normal away from the cam's centre), with
-    /// its radius of curvature ρ_pitch − r. An undercut (ρ_pitch < r where
+    /// (8 to 10⁶) over a turn: the inner envelope of the roller's circles,
+    /// K − r·n (n the pitch curve's unit normal away from the cam's
+    /// centre), with its curvature κ/(1 − κr). An undercut (1/κ < r where
     /// the pitch curve is convex) is an error naming the cam angles.
     pub fn profile(&self, roller: f64, points: usize) -> Result<Vec<ProfilePoint>, CamError> {
         if !(roller.is_finite() && roller >= 0.0) {
@@ -525,27 +710,24 @@ impl Cam {
                 value: roller,
             });
         }
-        let n = points.max(8);
+        if !(8..=1_000_000).contains(&points) {
+            return Err(CamError::BadSetting {
+                what: "the number of profile points",
+                must: "from 8 to 10⁶",
+                value: points as f64,
+            });
+        }
+        let n = points;
         let mut out = Vec::with_capacity(n + 1);
         let mut bad: Vec<f64> = Vec::new();
         for i in 0..=n {
             let phi = TAU * i as f64 / n as f64;
-            let p = self.pitch(phi);
-            let speed = p.dk.norm();
-            let mut normal = perp(p.dk) / speed;
+            let (p, tangent) = self.tangent(phi)?;
+            let mut normal = perp(tangent);
             if normal.dot(&p.k) < 0.0 {
                 normal = -normal;
             }
-            // The curvature, positive where the curve bends towards the
-            // cam's centre (convex): the curvature vector is
-            // κ_s·⟂T̂, κ_s = (K′ × K″)/|K′|³.
-            let signed = cross(p.dk, p.ddk) / speed.powi(3);
-            let kappa = signed * (perp(p.dk) / speed).dot(&(-normal));
-            let radius = if kappa != 0.0 {
-                1.0 / kappa - roller
-            } else {
-                f64::INFINITY
-            };
+            let kappa = self.pitch_curvature(phi)?;
             if kappa > 0.0 && kappa * roller >= 1.0 {
                 bad.push(phi.to_degrees());
             }
@@ -553,7 +735,7 @@ impl Cam {
                 phi,
                 pitch: p.k,
                 profile: p.k - normal * roller,
-                radius,
+                curvature: kappa / (1.0 - kappa * roller),
             });
         }
         if !bad.is_empty() {
@@ -572,12 +754,57 @@ impl Cam {
     }
 }
 
-/// The smallest rocker cam whose pressure angle stays within ±`limit` (rad)
-/// over the turn, for a given program, arm, pivot direction and rotation:
-/// the base radius by bisection, and for each candidate base radius the
-/// initial arm angle (with the centre distance it implies by the law of
-/// cosines, r0² = a² + l² − 2al·cos ψ0) that best balances the rise's and
-/// the return's extremes. Returns the cam.
+/// The worst excess of a candidate cam's pressure angle over `limit`;
+/// +∞ for a candidate that is no cam (degenerate somewhere): infeasible.
+fn candidate_excess(cam: Option<Cam>, limit: f64) -> f64 {
+    cam.and_then(|c| c.pressure_excess(limit).ok())
+        .filter(|e| !e.is_nan())
+        .unwrap_or(f64::INFINITY)
+}
+
+/// The x in `xs` where f is least (the first of equals), then Brent's
+/// minimum between its neighbours: (x, f(x)).
+fn coarse_then_brent(f: &mut impl FnMut(f64) -> f64, xs: &[f64], tolerance: f64) -> (f64, f64) {
+    let ys: Vec<f64> = xs.iter().map(|&x| f(x)).collect();
+    let k = (0..xs.len())
+        .min_by(|&p, &q| ys[p].total_cmp(&ys[q]))
+        .unwrap_or(0);
+    let (lo, hi) = (xs[k.saturating_sub(1)], xs[(k + 1).min(xs.len() - 1)]);
+    let mut g = |x: f64| Ok::<f64, std::convert::Infallible>(f(x));
+    let (x, fx) = match crate::dynamics::numerics::minimize(&mut g, lo, hi, tolerance) {
+        Ok(found) => found,
+        Err(never) => match never {},
+    };
+    if fx <= ys[k] { (x, fx) } else { (xs[k], ys[k]) }
+}
+
+/// The smallest size in [lo, hi] at which `feasible` holds, by bisection
+/// (at most 60 halvings, to 1e-13 relative), `hi` feasible.
+fn bisect_size(feasible: &mut impl FnMut(f64) -> bool, mut lo: f64, mut hi: f64) -> f64 {
+    if feasible(lo) {
+        return lo;
+    }
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if feasible(mid) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+        if hi - lo <= 1e-13 * hi {
+            break;
+        }
+    }
+    hi
+}
+
+/// The smallest rocker cam whose pressure angle stays within ±`limit` (rad,
+/// in (0, π/2)) over the turn, for a given program, arm (positive and
+/// finite), pivot direction and rotation: the base radius by bisection, and
+/// for each candidate base radius the initial arm angle (with the centre
+/// distance it implies by the law of cosines, r0² = a² + l² − 2al·cos ψ0)
+/// that best balances the rise's and the return's extremes. Base radii up
+/// to 100 arms are tried.
 pub fn smallest_rocker(
     program: &Program,
     arm: f64,
@@ -585,46 +812,39 @@ pub fn smallest_rocker(
     rotation: Rotation,
     limit: f64,
 ) -> Result<Cam, CamError> {
+    setting("the rocker's arm", "positive and finite", arm, arm > 0.0)?;
+    setting("the rocker's pivot angle", "finite", pivot_angle, true)?;
+    let limit = pressure_limit(limit)?;
     let make = |r0: f64, psi0: f64| -> Option<Cam> {
         let disc = r0 * r0 - arm * arm * psi0.sin().powi(2);
         if disc < 0.0 {
             return None;
         }
         let a = arm * psi0.cos() + disc.sqrt();
-        (a > arm * 1e-6).then(|| Cam {
-            program: program.clone(),
-            follower: Follower::Rocker {
-                arm,
-                centre_distance: a,
-                initial_angle: psi0,
-                pivot_angle,
-            },
-            rotation,
-        })
+        let clear_of_the_centre = a > arm * 1e-6; // false for NaN too
+        if !clear_of_the_centre {
+            return None;
+        }
+        let follower = Follower::Rocker {
+            arm,
+            centre_distance: a,
+            initial_angle: psi0,
+            pivot_angle,
+        };
+        Cam::new(program.clone(), follower, rotation).ok()
     };
-    let excess = |cam: &Cam| cam.pressure_excess(limit);
     // For a base radius: the best initial angle, and its excess.
     let best = |r0: f64| -> (f64, f64) {
         let upper = (r0 / arm).clamp(-1.0, 1.0).asin().min(PI / 2.0 - 1e-9);
-        let mut f = |psi0: f64| {
-            Ok::<f64, std::convert::Infallible>(
-                make(r0, psi0).map_or(f64::INFINITY, |c| excess(&c)),
-            )
-        };
-        // Coarse, then Brent around the best.
         let n = 24;
         let xs: Vec<f64> = (0..=n)
             .map(|i| 1e-3 + (upper - 2e-3) * i as f64 / n as f64)
             .collect();
-        let k = (0..xs.len())
-            .min_by(|&p, &q| {
-                f(xs[p])
-                    .unwrap_or(f64::INFINITY)
-                    .total_cmp(&f(xs[q]).unwrap_or(f64::INFINITY))
-            })
-            .unwrap_or(0);
-        let (lo, hi) = (xs[k.saturating_sub(1)], xs[(k + 1).min(n)]);
-        minimize(&mut f, lo, hi, 1e-12)
+        coarse_then_brent(
+            &mut |psi0| candidate_excess(make(r0, psi0), limit),
+            &xs,
+            1e-12,
+        )
     };
     let (mut lo, mut hi) = (arm * 0.05, arm * 0.5);
     let limit_radius = 100.0 * arm;
@@ -638,60 +858,44 @@ pub fn smallest_rocker(
             });
         }
     }
-    if best(lo).1 <= 0.0 {
-        lo = 0.0;
-    }
-    for _ in 0..60 {
-        let mid = 0.5 * (lo + hi);
-        if best(mid).1 <= 0.0 {
-            hi = mid;
-        } else {
-            lo = mid;
-        }
-        if hi - lo <= 1e-13 * hi {
-            break;
-        }
-    }
-    let (psi0, _) = best(hi);
-    make(hi, psi0).ok_or(CamError::NoSize {
-        limit: hi,
+    let r0 = bisect_size(&mut |r0| best(r0).1 <= 0.0, lo, hi);
+    let (psi0, _) = best(r0);
+    make(r0, psi0).ok_or(CamError::NoSize {
+        limit: r0,
         angle: limit.to_degrees(),
     })
 }
 
 /// The smallest translating cam (base radius, with the offset that best
-/// balances the strokes) whose pressure angle stays within ±`limit`.
+/// balances the strokes) whose pressure angle stays within ±`limit` (rad,
+/// in (0, π/2)), for a finite axis angle. Base radii up to 10⁴ lifts are
+/// tried.
 pub fn smallest_translating(
     program: &Program,
     axis_angle: f64,
     rotation: Rotation,
     limit: f64,
 ) -> Result<Cam, CamError> {
-    let make = |base: f64, offset: f64| Cam {
-        program: program.clone(),
-        follower: Follower::Translating {
+    setting("the follower's axis angle", "finite", axis_angle, true)?;
+    let limit = pressure_limit(limit)?;
+    let make = |base: f64, offset: f64| {
+        let follower = Follower::Translating {
             offset,
             base,
             axis_angle,
-        },
-        rotation,
+        };
+        Cam::new(program.clone(), follower, rotation).ok()
     };
-    let excess = |cam: &Cam| cam.pressure_excess(limit);
     let best = |base: f64| -> (f64, f64) {
-        let mut f = |e: f64| Ok::<f64, std::convert::Infallible>(excess(&make(base, e)));
         let n = 24;
         let xs: Vec<f64> = (0..=n)
             .map(|i| -0.95 * base + 1.9 * base * i as f64 / n as f64)
             .collect();
-        let k = (0..xs.len())
-            .min_by(|&p, &q| {
-                f(xs[p])
-                    .unwrap_or(f64::INFINITY)
-                    .total_cmp(&f(xs[q]).unwrap_or(f64::INFINITY))
-            })
-            .unwrap_or(0);
-        let (lo, hi) = (xs[k.saturating_sub(1)], xs[(k + 1).min(n)]);
-        minimize(&mut f, lo, hi, 1e-13 * base)
+        coarse_then_brent(
+            &mut |e| candidate_excess(make(base, e), limit),
+            &xs,
+            1e-13 * base,
+        )
     };
     let lift = program.lift;
     let (mut lo, mut hi) = (0.0, lift);
@@ -705,17 +909,10 @@ pub fn smallest_translating(
             });
         }
     }
-    for _ in 0..60 {
-        let mid = 0.5 * (lo + hi);
-        if best(mid).1 <= 0.0 {
-            hi = mid;
-        } else {
-            lo = mid;
-        }
-        if hi - lo <= 1e-13 * hi {
-            break;
-        }
-    }
-    let (offset, _) = best(hi);
-    Ok(make(hi, offset))
+    let base = bisect_size(&mut |b| b > 0.0 && best(b).1 <= 0.0, lo, hi);
+    let (offset, _) = best(base);
+    make(base, offset).ok_or(CamError::NoSize {
+        limit: base,
+        angle: limit.to_degrees(),
+    })
 }
