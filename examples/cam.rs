@@ -83,7 +83,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 
     // 1. The phases, from the shaper's motion.
     let data = machine::SEED;
-    let shaper = machine::synthesize(&data);
+    let shaper = machine::synthesize(&data)?;
     let m = machine::machine(&shaper, &data)?;
     let x0 = m.analysis(0.0)?.u[2];
     let travel = |phi: f64| {

@@ -28,7 +28,17 @@ use nalgebra::{DMatrix, DVector, Vector2};
 
 /// What went wrong building or solving the force analysis.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum KinetostaticsError {
+    /// A number given is out of its range (a NaN or an infinity among them).
+    BadSetting {
+        what: &'static str,
+        must: &'static str,
+        value: f64,
+    },
+    /// The reactions came out NaN or infinite (numbers so large that the
+    /// equilibrium overflows).
+    NonFinite,
     UnknownBody {
         owner: String,
         name: String,
@@ -65,6 +75,13 @@ pub enum KinetostaticsError {
 impl std::fmt::Display for KinetostaticsError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
+            Self::BadSetting { what, must, value } => {
+                write!(f, "{what} must be {must}, got {value}")
+            }
+            Self::NonFinite => write!(
+                f,
+                "the reactions are not finite: the loads and speeds overflow the equilibrium"
+            ),
             Self::UnknownBody { known, name, owner } => write!(
                 f,
                 "`{owner}` names the body `{name}`, which is not in the table (bodies: {known})"
@@ -223,9 +240,45 @@ impl<'m, L: Linkage<M, 1>, const M: usize> KinetostaticsBuilder<'m, L, M> {
         self
     }
 
-    /// Resolves every name, and checks that the system is square and
-    /// regular at a pose of the cycle.
+    /// Resolves every name, checks every number (finite ground points and
+    /// guide angles, rotors of finite inertia ≥ 0 and finite factor, a
+    /// driver factor finite and nonzero), and checks that the system is
+    /// square and regular at a pose of the cycle.
     pub fn build(self) -> Result<Kinetostatics<'m, L, M>, KinetostaticsError> {
+        let setting = |what, must, value: f64, ok: bool| {
+            if ok && value.is_finite() {
+                Ok(())
+            } else {
+                Err(KinetostaticsError::BadSetting { what, must, value })
+            }
+        };
+        for (_, at) in &self.ground_points {
+            for x in [at.x, at.y] {
+                setting("a ground point's coordinate", "finite", x, true)?;
+            }
+        }
+        for joint in &self.joints {
+            if let Kind::Prismatic(Guide::Fixed(angle)) = joint.kind {
+                setting("a fixed guide's angle", "finite", angle, true)?;
+            }
+        }
+        for &(_, inertia, factor) in &self.rotors {
+            setting(
+                "a rotor's inertia",
+                "finite and ≥ 0",
+                inertia,
+                inertia >= 0.0,
+            )?;
+            setting("a rotor's speed factor", "finite", factor, true)?;
+        }
+        if let Some((_, factor)) = self.driver {
+            setting(
+                "the driver's factor",
+                "finite and nonzero",
+                factor,
+                factor != 0.0,
+            )?;
+        }
         let body_index = |owner: &str, name: &str| -> Result<usize, KinetostaticsError> {
             if name == "ground" {
                 return Ok(0);
@@ -482,7 +535,12 @@ impl<'m, L: Linkage<M, 1>, const M: usize> Kinetostatics<'m, L, M> {
     /// weights, −m·a_S and −I·ε_body, rotors' −J·ε. Also each body's
     /// angular velocity, and the velocities of the forces' points, for the
     /// power balance.
-    fn body_loads(&self, pose: &Pose, omega: f64, epsilon: f64) -> Vec<LoadsAndPower> {
+    fn body_loads(
+        &self,
+        pose: &Pose,
+        omega: f64,
+        epsilon: f64,
+    ) -> Result<Vec<LoadsAndPower>, MachineError> {
         let n = self.bodies.len();
         let mut out: Vec<LoadsAndPower> = self
             .bodies
@@ -537,7 +595,7 @@ impl<'m, L: Linkage<M, 1>, const M: usize> Kinetostatics<'m, L, M> {
             }
         }
         // The machine's other loads, on their bodies.
-        for (load, applied) in self.machine.applied(pose) {
+        for (load, applied) in self.machine.applied(pose)? {
             let Some(Some(body)) = self.load_bodies.get(load) else {
                 continue;
             };
@@ -556,17 +614,18 @@ impl<'m, L: Linkage<M, 1>, const M: usize> Kinetostatics<'m, L, M> {
                 }
             }
         }
-        out
+        Ok(out)
     }
 
     /// The reactions and the balancing moment at φ, with the machine
-    /// moving at ω = φ̇ and ε = φ̈.
+    /// moving at ω = φ̇ and ε = φ̈ (finite).
     pub fn solve(
         &self,
         phi: f64,
         omega: f64,
         epsilon: f64,
     ) -> Result<Reactions, KinetostaticsError> {
+        speeds(omega, epsilon, false)?;
         let pose = self.machine.pose(phi)?;
         let n = self.bodies.len();
         let joints = self.joints.len();
@@ -609,7 +668,7 @@ impl<'m, L: Linkage<M, 1>, const M: usize> Kinetostatics<'m, L, M> {
             a[(3 * n + p, col_x(j))] = d.x;
             a[(3 * n + p, col_y(j))] = d.y;
         }
-        let loads = self.body_loads(&pose, omega, epsilon);
+        let loads = self.body_loads(&pose, omega, epsilon)?;
         for (r, (body, _, _)) in loads.iter().enumerate() {
             let (mut fx, mut fy, mut m) = (0.0, 0.0, body.couple);
             for (p, f) in &body.forces {
@@ -673,6 +732,9 @@ impl<'m, L: Linkage<M, 1>, const M: usize> Kinetostatics<'m, L, M> {
                 joints: self.joints.iter().map(|j| j.name.clone()).collect(),
                 rcond,
             })?;
+        if !x.iter().chain(b.iter()).all(|v| v.is_finite()) {
+            return Err(KinetostaticsError::NonFinite);
+        }
         let reactions = self
             .joints
             .iter()
@@ -695,21 +757,51 @@ impl<'m, L: Linkage<M, 1>, const M: usize> Kinetostatics<'m, L, M> {
     }
 
     /// The balancing moment from the power balance alone: M_b·ω_driver +
-    /// Σ F·v + Σ M·ω = 0 over every load, weight and inertia load.
+    /// Σ F·v + Σ M·ω = 0 over every load, weight and inertia load (ω finite
+    /// and nonzero: at rest the power balance says nothing of M_b).
     pub fn power_balance(
         &self,
         phi: f64,
         omega: f64,
         epsilon: f64,
     ) -> Result<f64, KinetostaticsError> {
+        speeds(omega, epsilon, true)?;
         let pose = self.machine.pose(phi)?;
         let mut power = 0.0;
-        for (body, velocities, couple_power) in self.body_loads(&pose, omega, epsilon) {
+        for (body, velocities, couple_power) in self.body_loads(&pose, omega, epsilon)? {
             for ((_, f), v) in body.forces.iter().zip(&velocities) {
                 power += f.dot(v);
             }
             power += couple_power;
         }
-        Ok(-power / (self.driver_factor * omega))
+        let moment = -power / (self.driver_factor * omega);
+        if !moment.is_finite() {
+            return Err(KinetostaticsError::NonFinite);
+        }
+        Ok(moment)
     }
+}
+
+/// ω and ε, checked: finite, and ω nonzero where `moving`.
+fn speeds(omega: f64, epsilon: f64, moving: bool) -> Result<(), KinetostaticsError> {
+    let omega_ok = omega.is_finite() && (!moving || omega != 0.0);
+    if !omega_ok {
+        return Err(KinetostaticsError::BadSetting {
+            what: "ω",
+            must: if moving {
+                "finite and nonzero"
+            } else {
+                "finite"
+            },
+            value: omega,
+        });
+    }
+    if !epsilon.is_finite() {
+        return Err(KinetostaticsError::BadSetting {
+            what: "ε",
+            must: "finite",
+            value: epsilon,
+        });
+    }
+    Ok(())
 }

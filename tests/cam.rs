@@ -81,7 +81,7 @@ fn bisect(g: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
 fn ours() -> HashMap<&'static str, f64> {
     let mut out = HashMap::new();
     let data = machine::SEED;
-    let shaper = machine::synthesize(&data);
+    let shaper = machine::synthesize(&data).unwrap();
     let m = machine::machine(&shaper, &data).unwrap();
     let x0 = m.analysis(0.0).unwrap().u[2];
     let travel = |phi: f64| m.analysis(phi).unwrap().u[2] - x0 - 0.05 * data.stroke;

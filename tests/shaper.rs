@@ -7,7 +7,7 @@
 #[path = "../examples/shaper/machine.rs"]
 mod machine;
 
-use linkage::dynamics::{Machine, Motor, flywheel};
+use linkage::dynamics::{Machine, MachineError, Motor, flywheel};
 use linkage::prelude::*;
 use machine::{Data, SEED, Shaper, machine, synthesize};
 use std::collections::HashMap;
@@ -29,7 +29,7 @@ fn reference() -> HashMap<String, (f64, Option<String>)> {
 
 /// Everything the first half of the course project computes, by linkage.
 fn ours(data: &Data) -> HashMap<&'static str, f64> {
-    let shaper = synthesize(data);
+    let shaper = synthesize(data).unwrap();
     let m = machine(&shaper, data).expect("the shaper runs its cycle");
     let f = shaper.seed_position();
     let omega = TAU * data.n1;
@@ -89,6 +89,7 @@ fn ours(data: &Data) -> HashMap<&'static str, f64> {
     let pose = m.pose(f).unwrap();
     let cutting = m
         .applied(&pose)
+        .unwrap()
         .into_iter()
         .find_map(|(load, applied)| match applied {
             linkage::dynamics::Applied::Force { force, .. } if load == 0 => Some(force.x),
@@ -127,9 +128,10 @@ fn ours(data: &Data) -> HashMap<&'static str, f64> {
     let j_m = flywheel::on_motor_shaft(
         e.flywheel,
         ratio,
-        flywheel::from_md2(data.md2_motor),
-        flywheel::from_md2(data.md2_gears),
-    );
+        flywheel::from_md2(data.md2_motor).unwrap(),
+        flywheel::from_md2(data.md2_gears).unwrap(),
+    )
+    .unwrap();
     put("shaper.J_m", j_m);
     put("shaper.omega1_f", e.omega(f).unwrap());
     put("shaper.eps1_f", e.epsilon(f).unwrap());
@@ -147,7 +149,7 @@ fn ours(data: &Data) -> HashMap<&'static str, f64> {
     );
     put("shaper.phi_max2", eps_max.0);
     put("shaper.eps1_max", eps_max.1);
-    let rim = flywheel::Rim::course_rule(j_m);
+    let rim = flywheel::Rim::course_rule(j_m).unwrap();
     put("shaper.D2", rim.outer);
     put("shaper.D1", rim.inner);
     put("shaper.b", rim.width);
@@ -158,7 +160,7 @@ fn ours(data: &Data) -> HashMap<&'static str, f64> {
 /// The force analysis at f: accelerations, inertia loads, the right-hand
 /// side, the 18 unknowns, magnitudes and directions.
 fn ours_kinetostatics(data: &Data) -> HashMap<String, f64> {
-    let shaper = synthesize(data);
+    let shaper = synthesize(data).unwrap();
     let m = machine(&shaper, data).unwrap();
     let f = shaper.seed_position();
     let omega = TAU * data.n1;
@@ -267,7 +269,7 @@ fn the_reaction_table_matches_the_50_digit_reference() {
 
 #[test]
 fn the_balancing_moment_three_ways_over_a_cycle() {
-    let shaper = synthesize(&SEED);
+    let shaper = synthesize(&SEED).unwrap();
     let m = machine(&shaper, &SEED).unwrap();
     let omega = TAU * SEED.n1;
     let e = m.energy_method(omega, SEED.delta).unwrap();
@@ -387,7 +389,7 @@ fn the_seeds_printed_numbers_agree_to_their_digits_or_by_the_known_quadrature_er
 
 #[test]
 fn the_seeds_closed_form_is_what_newton_finds() {
-    let shaper = synthesize(&SEED);
+    let shaper = synthesize(&SEED).unwrap();
     let m = machine(&shaper, &SEED).unwrap();
     for k in 0..360 {
         let phi = (k as f64).to_radians();
@@ -415,7 +417,7 @@ fn other_inputs_keep_the_methods_invariants() {
         m5: 80.0,
         ..SEED
     };
-    let shaper = synthesize(&data);
+    let shaper = synthesize(&data).unwrap();
     let m = machine(&shaper, &data).unwrap();
     // The stroke is H and the time ratio K_V: the ram's extremes at the
     // dead positions φ = 0 and π + β.
@@ -463,6 +465,7 @@ fn other_inputs_keep_the_methods_invariants() {
                 moment: e.driving_moment,
             },
             omega,
+            4000,
         )
         .unwrap();
     assert!(
@@ -474,7 +477,7 @@ fn other_inputs_keep_the_methods_invariants() {
 
 #[test]
 fn the_real_motion_is_periodic_and_conserves_energy() {
-    let shaper = synthesize(&SEED);
+    let shaper = synthesize(&SEED).unwrap();
     let m = machine(&shaper, &SEED).unwrap();
     let omega = TAU * SEED.n1;
     let e = m.energy_method(omega, SEED.delta).unwrap();
@@ -485,6 +488,7 @@ fn the_real_motion_is_periodic_and_conserves_energy() {
                 moment: e.driving_moment,
             },
             omega,
+            4000,
         )
         .unwrap();
     // With the mean driving moment, T(φ) = T(0) + A(φ) + M_D·φ exactly:
@@ -513,15 +517,204 @@ fn the_real_motion_is_periodic_and_conserves_energy() {
         speed: omega,
         slope: 50.0,
     };
-    let settled = m.steady_motion(e.flywheel, motor, omega).unwrap();
+    let settled = m.steady_motion(e.flywheel, motor, omega, 4000).unwrap();
     let n = settled.omega.len();
     assert!((settled.omega[n - 1] - settled.omega[0]).abs() < 1e-9);
     assert!(settled.delta < SEED.delta);
 }
 
+/// The real motion's extremes of ω are located between the nodes (ε = 0
+/// there), not read off the grid: they bound every node, and agree between
+/// a coarse and a fine grid far better than the grid's spacing would allow.
+#[test]
+fn the_real_motion_locates_its_extremes() {
+    let shaper = synthesize(&SEED).unwrap();
+    let m = machine(&shaper, &SEED).unwrap();
+    let omega = TAU * SEED.n1;
+    let e = m.energy_method(omega, SEED.delta).unwrap();
+    let motor = Motor::Constant {
+        moment: e.driving_moment,
+    };
+    let coarse = m.steady_motion(e.flywheel, motor, omega, 500).unwrap();
+    let fine = m.steady_motion(e.flywheel, motor, omega, 8000).unwrap();
+    for run in [&coarse, &fine] {
+        assert!(
+            run.omega
+                .iter()
+                .all(|&w| w >= run.omega_min.1 && w <= run.omega_max.1)
+        );
+    }
+    let spacing = TAU / 500.0;
+    for (a, b) in [
+        (coarse.omega_min, fine.omega_min),
+        (coarse.omega_max, fine.omega_max),
+    ] {
+        assert!((a.0 - b.0).abs() < 1e-3 * spacing, "φ {} vs {}", a.0, b.0);
+        assert!((a.1 - b.1).abs() < 1e-9 * omega, "ω {} vs {}", a.1, b.1);
+    }
+    assert!(matches!(
+        m.steady_motion(e.flywheel, motor, omega, 5),
+        Err(MachineError::BadSetting { .. })
+    ));
+}
+
+/// A cutting force that starts and stops at full value: a table that
+/// jumps. The work integral splits at the jumps (they are kinks), so the
+/// energy balance holds exactly; and the work over several cycles, or
+/// backwards, is whole cycles of A(2π) plus the rest, as the pose repeats.
+#[test]
+fn a_force_that_jumps_and_work_over_any_angle() {
+    let force = 9000.0;
+    let data = Data {
+        cutting: [
+            (0.0, 0.0),
+            (0.05, 0.0),
+            (0.05, force),
+            (0.5, force),
+            (0.95, force),
+            (0.95, 0.0),
+            (1.0, 0.0),
+        ],
+        ..SEED
+    };
+    let shaper = synthesize(&data).unwrap();
+    let m = machine(&shaper, &data).unwrap();
+    let resistances = force * 0.9 * data.stroke + data.friction * 2.0 * data.stroke;
+    assert!(
+        (m.mean_driving_moment() * TAU - resistances).abs() <= 1e-11 * resistances,
+        "{} vs {resistances}",
+        m.mean_driving_moment() * TAU
+    );
+    let a = |phi: f64| m.work(phi).unwrap();
+    let cycle = m.cycle_work();
+    for phi in [0.3, 2.0, 5.9] {
+        for n in [-2.0, -1.0, 1.0, 3.0] {
+            let expected = a(phi) + n * cycle;
+            let got = a(phi + n * TAU);
+            assert!(
+                (got - expected).abs() <= 1e-9 * cycle.abs(),
+                "A({phi} + {n}·2π) = {got}, expected {expected}"
+            );
+        }
+    }
+    assert!(matches!(
+        m.work(f64::NAN),
+        Err(MachineError::BadSetting { .. })
+    ));
+}
+
+/// Settings out of their range are typed errors: δ of 2 or more (ω_min
+/// would not be positive), a motor with NaN numbers, a grid of usize::MAX
+/// poses (it once meant a sweep of that many steps), a load direction of
+/// zero, a load that returns NaN.
+#[test]
+fn bad_settings_of_a_machine_are_typed_errors() {
+    use linkage::dynamics::{Body, Load, MachineError as E};
+    let shaper = synthesize(&SEED).unwrap();
+    let m = machine(&shaper, &SEED).unwrap();
+    let omega = TAU * SEED.n1;
+    for delta in [2.0, 3.0, 0.0, -0.1, f64::NAN] {
+        assert!(
+            matches!(m.energy_method(omega, delta), Err(E::BadSetting { .. })),
+            "δ = {delta}"
+        );
+    }
+    let e = m.energy_method(omega, SEED.delta).unwrap();
+    for motor in [
+        Motor::Constant { moment: f64::NAN },
+        Motor::Linear {
+            moment: 1.0,
+            speed: 0.0,
+            slope: 1.0,
+        },
+        Motor::Linear {
+            moment: 1.0,
+            speed: omega,
+            slope: f64::INFINITY,
+        },
+    ] {
+        assert!(
+            matches!(
+                m.steady_motion(e.flywheel, motor, omega, 100),
+                Err(E::BadSetting { .. })
+            ),
+            "{motor:?}"
+        );
+    }
+    let build = |load: Load| {
+        Machine::new(shaper, shaper.guess())
+            .body(Body::new("ram").mass(1.0).at("S5"))
+            .load(load)
+            .build()
+            .err()
+    };
+    assert!(matches!(
+        Machine::new(shaper, shaper.guess())
+            .grid(usize::MAX)
+            .build()
+            .err(),
+        Some(E::BadSetting { .. })
+    ));
+    assert!(matches!(
+        build(Load::friction("f", "F", nalgebra::Vector2::zeros(), 1.0)),
+        Some(E::BadSetting { .. })
+    ));
+    assert!(matches!(
+        build(Load::gravity("g", nalgebra::Vector2::new(0.0, f64::NAN))),
+        Some(E::BadSetting { .. })
+    ));
+    assert!(matches!(
+        build(Load::force("nan", "K", |_| nalgebra::Vector2::new(
+            f64::NAN,
+            0.0
+        ))),
+        Some(E::NonFiniteLoad { .. })
+    ));
+    assert!(matches!(
+        flywheel::from_md2(-1.0),
+        Err(E::BadSetting { .. })
+    ));
+    assert!(matches!(
+        flywheel::on_motor_shaft(1.0, 0.0, 0.1, 0.1),
+        Err(E::BadSetting { .. })
+    ));
+    assert!(matches!(
+        flywheel::Rim::course_rule(f64::NAN),
+        Err(E::BadSetting { .. })
+    ));
+}
+
+/// A time ratio of 1 or less would mirror the machine (K_V = 0.8 gave a
+/// swing of −20°): the synthesis says so instead.
+#[test]
+fn the_synthesis_rejects_a_time_ratio_of_one_or_less() {
+    for k_v in [0.8, 1.0, f64::NAN, f64::INFINITY] {
+        let data = Data { k_v, ..SEED };
+        let err = synthesize(&data).err();
+        assert!(
+            matches!(
+                err,
+                Some(MachineError::BadSetting {
+                    what: "the time ratio K_V",
+                    ..
+                })
+            ),
+            "K_V = {k_v}: {err:?}"
+        );
+        eprintln!("K_V = {k_v}: {}", err.unwrap());
+    }
+    assert!(
+        synthesize(&Data {
+            stroke: 0.0,
+            ..SEED
+        })
+        .is_err()
+    );
+}
+
 #[test]
 fn bad_machines_are_typed_errors() {
-    let shaper = synthesize(&SEED);
+    let shaper = synthesize(&SEED).unwrap();
     let err = Machine::new(shaper, shaper.guess())
         .body(linkage::dynamics::Body::new("ram").mass(1.0).at("Q"))
         .build()

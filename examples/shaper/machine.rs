@@ -129,12 +129,29 @@ pub const SEED: Data = Data {
 /// y_F  = y_C + l_CD − ½ l_CD (1 − cos(β/2))   the guide half-way down the sagitta of D's arc
 /// φ0   = π + β/2                       the crank's angle at the left dead position
 /// ```
-pub fn synthesize(data: &Data) -> Shaper {
+///
+/// K_V must exceed 1 (the working stroke slower than the return: K_V ≤ 1
+/// would give a swing β ≤ 0, a mirrored or collapsed machine), and the
+/// stroke H and the distance l_OC must be positive.
+pub fn synthesize(data: &Data) -> Result<Shaper, MachineError> {
+    let bad = |what, must, value| Err(MachineError::BadSetting { what, must, value });
+    if !(data.k_v > 1.0 && data.k_v.is_finite()) {
+        return bad(
+            "the time ratio K_V",
+            "above 1 (the working stroke slower than the return) and finite",
+            data.k_v,
+        );
+    }
+    for (what, value) in [("the stroke H", data.stroke), ("l_OC", data.l_oc)] {
+        if !(value > 0.0 && value.is_finite()) {
+            return bad(what, "positive and finite", value);
+        }
+    }
     let beta = std::f64::consts::PI * (data.k_v - 1.0) / (data.k_v + 1.0);
     let half = 0.5 * beta;
     let l_cd = data.stroke / (2.0 * half.sin());
     let y_c = -data.l_oc;
-    Shaper {
+    Ok(Shaper {
         l_oa: data.l_oc * half.sin(),
         l_cd,
         y_c,
@@ -143,7 +160,7 @@ pub fn synthesize(data: &Data) -> Shaper {
         lambda_s3: data.lambda_s3,
         l_s5: data.l_s5,
         l_p: data.l_p,
-    }
+    })
 }
 
 impl Shaper {

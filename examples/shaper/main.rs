@@ -117,7 +117,7 @@ impl Table {
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let data = SEED;
-    let shaper = synthesize(&data);
+    let shaper = synthesize(&data)?;
     let m = machine(&shaper, &data)?;
     let t = Table {
         reference: reference(),
@@ -178,7 +178,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 
     let pose = m.pose(f)?;
     let cutting = m
-        .applied(&pose)
+        .applied(&pose)?
         .into_iter()
         .find_map(|(load, applied)| match applied {
             Applied::Force { force, .. } if load == 0 => Some(force.x),
@@ -210,10 +210,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let j_m = flywheel::on_motor_shaft(
         e.flywheel,
         ratio,
-        flywheel::from_md2(data.md2_motor),
-        flywheel::from_md2(data.md2_gears),
-    );
-    let rim = flywheel::Rim::course_rule(j_m);
+        flywheel::from_md2(data.md2_motor)?,
+        flywheel::from_md2(data.md2_gears)?,
+    )?;
+    let rim = flywheel::Rim::course_rule(j_m)?;
     t.heading("7. Motor, gear and the flywheel's rim");
     t.row("u = n_d/n_1", "u_motor_to_crank", ratio);
     t.row("J_m (motor shaft) [kg·m²]", "J_m", j_m);
@@ -238,7 +238,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         e.epsilon(e.minimum.0)?
     );
 
-    let real = m.steady_motion(e.flywheel, Motor::Constant { moment: md }, omega)?;
+    let real = m.steady_motion(e.flywheel, Motor::Constant { moment: md }, omega, 4000)?;
     println!(
         "\n9. Beyond the seed: the real motion with J_PRI = {:.4} kg·m²",
         e.flywheel

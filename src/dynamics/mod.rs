@@ -38,6 +38,7 @@ pub use table::Table;
 
 /// What went wrong setting up or analysing a machine.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum MachineError {
     /// A body or load names a point the model does not have.
     UnknownPoint {
@@ -68,6 +69,9 @@ pub enum MachineError {
     Stalls { phi: f64 },
     /// No periodic motion was found.
     NoSteadyState { omega: f64, why: &'static str },
+    /// A load's value (a user's function of the pose, or a weight) is NaN
+    /// or infinite at φ.
+    NonFiniteLoad { load: String, phi: f64 },
 }
 
 impl std::fmt::Display for MachineError {
@@ -96,6 +100,9 @@ impl std::fmt::Display for MachineError {
             ),
             Self::NoSteadyState { omega, why } => {
                 write!(f, "no periodic steady state near ω = {omega}: {why}")
+            }
+            Self::NonFiniteLoad { load, phi } => {
+                write!(f, "the load `{load}` is not finite at φ = {phi}")
             }
         }
     }
@@ -330,15 +337,16 @@ impl Load {
     }
 
     /// A process force — cutting, pressing, pumping — against the motion of
-    /// `point` along the unit `direction`, while the point moves that way
-    /// as φ grows (the working stroke), of the magnitude `table` gives for
-    /// the point's displacement along `direction` since φ = 0.
+    /// `point` along `direction` (any finite nonzero vector: its unit vector
+    /// is taken), while the point moves that way as φ grows (the working
+    /// stroke), of the magnitude `table` gives for the point's displacement
+    /// along `direction` since φ = 0.
     pub fn process(name: &str, point: &str, direction: Vector2<f64>, table: Table) -> Load {
         Load {
             name: name.into(),
             kind: LoadKind::Process {
                 point: point.into(),
-                direction: direction.normalize(),
+                direction,
                 table,
             },
             kinks: None,
@@ -346,13 +354,13 @@ impl Load {
     }
 
     /// Coulomb friction of constant magnitude against the motion of `point`
-    /// along the unit `direction` (a guide), zero at rest.
+    /// along `direction` (a guide; any finite nonzero vector), zero at rest.
     pub fn friction(name: &str, point: &str, direction: Vector2<f64>, magnitude: f64) -> Load {
         Load {
             name: name.into(),
             kind: LoadKind::Friction {
                 point: point.into(),
-                direction: direction.normalize(),
+                direction,
                 magnitude,
             },
             kinks: None,
@@ -413,8 +421,8 @@ impl<L: Linkage<M, 1>, const M: usize> MachineBuilder<L, M> {
         self
     }
 
-    /// Poses precomputed over the cycle (default 720): they seed every
-    /// later position solve and bracket the loads' kinks.
+    /// Poses precomputed over the cycle (default 720, from 8 to 10⁶): they
+    /// seed every later position solve and bracket the loads' kinks.
     pub fn grid(mut self, poses: usize) -> Self {
         self.grid = poses;
         self
@@ -429,10 +437,10 @@ impl<L: Linkage<M, 1>, const M: usize> MachineBuilder<L, M> {
     /// Checks every name, follows the cycle φ ∈ [0, 2π] by continuation from
     /// the guess, and finds the loads' kinks.
     pub fn build(self) -> Result<Machine<L, M>, MachineError> {
-        if self.grid < 8 {
+        if !(8..=1_000_000).contains(&self.grid) {
             return Err(MachineError::BadSetting {
                 what: "the grid",
-                must: "at least 8 poses",
+                must: "from 8 to 10⁶ poses",
                 value: self.grid as f64,
             });
         }
@@ -494,6 +502,20 @@ impl<L: Linkage<M, 1>, const M: usize> MachineBuilder<L, M> {
         }
         let mut loads = Vec::new();
         for load in &self.loads {
+            let mut load = load.clone();
+            match &mut load.kind {
+                LoadKind::Process { direction, .. } | LoadKind::Friction { direction, .. } => {
+                    *direction = unit_direction(*direction)?;
+                }
+                LoadKind::Gravity { g } if !(g.x.is_finite() && g.y.is_finite()) => {
+                    return Err(MachineError::BadSetting {
+                        what: "the acceleration of gravity",
+                        must: "finite",
+                        value: if g.x.is_finite() { g.y } else { g.x },
+                    });
+                }
+                _ => {}
+            }
             let target = match &load.kind {
                 LoadKind::Force { point: p, .. }
                 | LoadKind::Process { point: p, .. }
@@ -511,7 +533,7 @@ impl<L: Linkage<M, 1>, const M: usize> MachineBuilder<L, M> {
                 }
             }
             loads.push(ResolvedLoad {
-                load: load.clone(),
+                load,
                 target,
                 origin: Vector2::zeros(),
             });
@@ -589,6 +611,21 @@ impl<L: Linkage<M, 1>, const M: usize> MachineBuilder<L, M> {
             .fold(f64::MIN_POSITIVE, f64::max);
         machine.work = machine.integrate_work()?;
         Ok(machine)
+    }
+}
+
+/// The unit vector of a process or friction load's direction, checked:
+/// finite and nonzero.
+fn unit_direction(direction: Vector2<f64>) -> Result<Vector2<f64>, MachineError> {
+    let length = direction.x.hypot(direction.y);
+    if length > 0.0 && length.is_finite() {
+        Ok(direction / length)
+    } else {
+        Err(MachineError::BadSetting {
+            what: "the direction of a process or friction load",
+            must: "finite and nonzero",
+            value: length,
+        })
     }
 }
 
@@ -693,8 +730,9 @@ impl<L: Linkage<M, 1>, const M: usize> Machine<L, M> {
         })
     }
 
-    /// The loads and weights acting at a pose.
-    pub fn applied(&self, pose: &Pose) -> Vec<(usize, Applied)> {
+    /// The loads and weights acting at a pose: a load whose value is not
+    /// finite there is an error naming it.
+    pub fn applied(&self, pose: &Pose) -> Result<Vec<(usize, Applied)>, MachineError> {
         let mut out = Vec::new();
         for (i, load) in self.loads.iter().enumerate() {
             match &load.load.kind {
@@ -762,16 +800,28 @@ impl<L: Linkage<M, 1>, const M: usize> Machine<L, M> {
                 }
             }
         }
-        out
+        for &(i, applied) in &out {
+            let finite = match applied {
+                Applied::Force { force, .. } => force.x.is_finite() && force.y.is_finite(),
+                Applied::Moment { moment, .. } => moment.is_finite(),
+            };
+            if !finite {
+                return Err(MachineError::NonFiniteLoad {
+                    load: self.loads[i].load.name.clone(),
+                    phi: pose.phi,
+                });
+            }
+        }
+        Ok(out)
     }
 
     /// J, J′ and M at φ, with each body's and each load's share.
-    pub fn reduced(&self, phi: f64) -> Result<Reduced, Error> {
+    pub fn reduced(&self, phi: f64) -> Result<Reduced, MachineError> {
         let pose = self.pose(phi)?;
-        Ok(self.reduced_at(&pose))
+        self.reduced_at(&pose)
     }
 
-    fn reduced_at(&self, pose: &Pose) -> Reduced {
+    fn reduced_at(&self, pose: &Pose) -> Result<Reduced, MachineError> {
         let mut bodies = Vec::with_capacity(self.bodies.len());
         for body in &self.bodies {
             let (rotation, rotation_d) = match body.angle {
@@ -792,20 +842,20 @@ impl<L: Linkage<M, 1>, const M: usize> Machine<L, M> {
             bodies.push([rotation, translation, rotation_d, translation_d]);
         }
         let mut loads = vec![0.0; self.loads.len()];
-        for (i, applied) in self.applied(pose) {
+        for (i, applied) in self.applied(pose)? {
             loads[i] += match applied {
                 Applied::Force { point, force } => force.dot(&pose.points_phi[point]),
                 Applied::Moment { coordinate, moment } => moment * pose.q_phi[coordinate],
             };
         }
-        Reduced {
+        Ok(Reduced {
             phi: pose.phi,
             inertia: bodies.iter().map(|b| b[0] + b[1]).sum(),
             inertia_derivative: bodies.iter().map(|b| b[2] + b[3]).sum(),
             moment: loads.iter().sum(),
             bodies,
             loads,
-        }
+        })
     }
 
     /// The functions whose sign changes mark the loads' kinks, at a pose.
@@ -834,7 +884,7 @@ impl<L: Linkage<M, 1>, const M: usize> Machine<L, M> {
 
     /// Every kink in (0, 2π): the sign changes of the kink functions over
     /// the grid, each refined to the precision of f64.
-    fn find_kinks(&self) -> Result<Vec<f64>, Error> {
+    fn find_kinks(&self) -> Result<Vec<f64>, MachineError> {
         let values: Vec<Vec<f64>> = self
             .grid
             .iter()
@@ -869,13 +919,13 @@ impl<L: Linkage<M, 1>, const M: usize> Machine<L, M> {
     }
 
     /// ∫ M over [a, b], smooth there.
-    fn integrate_smooth(&self, a: f64, b: f64) -> Result<f64, Error> {
+    fn integrate_smooth(&self, a: f64, b: f64) -> Result<f64, MachineError> {
         let mut f = |phi: f64| self.reduced(phi).map(|r| r.moment);
         numerics::integrate(&mut f, a, b, 1e-15 * self.moment_scale * (b - a).abs())
     }
 
     /// A at every grid pose and kink: the nodes of [`Machine::work`].
-    fn integrate_work(&self) -> Result<Vec<(f64, f64)>, Error> {
+    fn integrate_work(&self) -> Result<Vec<(f64, f64)>, MachineError> {
         let mut nodes: Vec<f64> = self
             .grid
             .iter()
@@ -898,13 +948,24 @@ impl<L: Linkage<M, 1>, const M: usize> Machine<L, M> {
         &self.kinks
     }
 
-    /// A(φ) = ∫₀^φ M dφ for φ ∈ [0, 2π]: the integral is kept at every
-    /// grid pose and kink, and completed from the nearest below.
-    pub fn work(&self, phi: f64) -> Result<f64, Error> {
-        let phi = phi.clamp(0.0, TAU);
-        let k = self.work.partition_point(|&(p, _)| p <= phi).max(1) - 1;
+    /// A(φ) = ∫₀^φ M dφ, the work of the loads since φ = 0, for any finite
+    /// φ: over whole cycles it adds A(2π) per cycle (negative φ runs the
+    /// cycle backwards), as [`Machine::analysis`] repeats the pose every
+    /// 2π. The integral over a cycle is kept at every grid pose and kink,
+    /// and completed from the nearest below.
+    pub fn work(&self, phi: f64) -> Result<f64, MachineError> {
+        if !phi.is_finite() {
+            return Err(MachineError::BadSetting {
+                what: "φ",
+                must: "finite",
+                value: phi,
+            });
+        }
+        let cycles = (phi / TAU).floor();
+        let within = (phi - cycles * TAU).clamp(0.0, TAU);
+        let k = self.work.partition_point(|&(p, _)| p <= within).max(1) - 1;
         let (start, value) = self.work[k];
-        Ok(value + self.integrate_smooth(start, phi)?)
+        Ok(cycles * self.cycle_work() + value + self.integrate_smooth(start, within)?)
     }
 
     /// A(2π): the work of the loads over a cycle.
@@ -918,8 +979,8 @@ impl<L: Linkage<M, 1>, const M: usize> Machine<L, M> {
         -self.cycle_work() / TAU
     }
 
-    /// A(φ) at many φ ∈ [0, 2π].
-    pub fn work_along(&self, phis: &[f64]) -> Result<Vec<f64>, Error> {
+    /// A(φ) at many φ.
+    pub fn work_along(&self, phis: &[f64]) -> Result<Vec<f64>, MachineError> {
         phis.iter().map(|&phi| self.work(phi)).collect()
     }
 
@@ -935,15 +996,18 @@ impl<L: Linkage<M, 1>, const M: usize> Machine<L, M> {
     }
 
     /// The real periodic motion with a constant reduced inertia `inertia`
-    /// (flywheel and rotors) besides J(φ), driven by `motor` (see
-    /// [`SteadyMotion`]).
+    /// (flywheel and rotors) besides J(φ), driven by `motor`, near the mean
+    /// speed `omega_mean`, integrated in about `steps` Runge–Kutta steps
+    /// over the cycle (10 to 10⁶; every kink is a node besides; 4000 keep
+    /// the shaping machine's ω to 1e-12 relative) — see [`SteadyMotion`].
     pub fn steady_motion(
         &self,
         inertia: f64,
         motor: Motor,
         omega_mean: f64,
+        steps: usize,
     ) -> Result<SteadyMotion, MachineError> {
-        SteadyMotion::find(self, inertia, motor, omega_mean)
+        SteadyMotion::find(self, inertia, motor, omega_mean, steps)
     }
 
     /// The grid's φ values.
@@ -980,14 +1044,20 @@ pub type Extremum = (f64, f64);
 
 impl<'m, L: Linkage<M, 1>, const M: usize> EnergyMethod<'m, L, M> {
     fn new(machine: &'m Machine<L, M>, omega_mean: f64, delta: f64) -> Result<Self, MachineError> {
-        for (what, value) in [("the mean speed", omega_mean), ("δ", delta)] {
-            if !(value.is_finite() && value > 0.0) {
-                return Err(MachineError::BadSetting {
-                    what,
-                    must: "positive",
-                    value,
-                });
-            }
+        if !(omega_mean.is_finite() && omega_mean > 0.0) {
+            return Err(MachineError::BadSetting {
+                what: "the mean speed",
+                must: "positive and finite",
+                value: omega_mean,
+            });
+        }
+        // ω_min = ω_m(1 − δ/2) must stay positive.
+        if !(delta > 0.0 && delta < 2.0) {
+            return Err(MachineError::BadSetting {
+                what: "the coefficient of speed fluctuation δ",
+                must: "between 0 and 2, exclusive",
+                value: delta,
+            });
         }
         let mut method = EnergyMethod {
             machine,
@@ -1045,20 +1115,20 @@ impl<'m, L: Linkage<M, 1>, const M: usize> EnergyMethod<'m, L, M> {
     }
 
     /// ΔT_I(φ) = A(φ) + M_D·φ − ½ J(φ) ω_m²
-    pub fn delta_t(&self, phi: f64) -> Result<f64, Error> {
+    pub fn delta_t(&self, phi: f64) -> Result<f64, MachineError> {
         let r = self.machine.reduced(phi)?;
         Ok(self.machine.work(phi)? + self.driving_moment * phi
             - 0.5 * r.inertia * self.omega_mean * self.omega_mean)
     }
 
     /// ω(φ) (see the type's documentation).
-    pub fn omega(&self, phi: f64) -> Result<f64, Error> {
+    pub fn omega(&self, phi: f64) -> Result<f64, MachineError> {
         let middle = 0.5 * (self.maximum.1 + self.minimum.1);
         Ok(self.omega_mean + (self.delta_t(phi)? - middle) / (self.flywheel * self.omega_mean))
     }
 
     /// ε(φ) (see the type's documentation).
-    pub fn epsilon(&self, phi: f64) -> Result<f64, Error> {
+    pub fn epsilon(&self, phi: f64) -> Result<f64, MachineError> {
         let r = self.machine.reduced(phi)?;
         let omega = self.omega(phi)?;
         let total = self.flywheel + r.inertia;
@@ -1120,6 +1190,26 @@ pub enum Motor {
 }
 
 impl Motor {
+    /// Every number finite, the working speed positive.
+    fn check(&self) -> Result<(), MachineError> {
+        let bad = |what, must, value| Err(MachineError::BadSetting { what, must, value });
+        match *self {
+            Motor::Constant { moment } if !moment.is_finite() => {
+                bad("the driving moment", "finite", moment)
+            }
+            Motor::Linear { moment, .. } if !moment.is_finite() => {
+                bad("the driving moment", "finite", moment)
+            }
+            Motor::Linear { speed, .. } if !(speed.is_finite() && speed > 0.0) => {
+                bad("the motor's working speed", "positive and finite", speed)
+            }
+            Motor::Linear { slope, .. } if !slope.is_finite() => {
+                bad("the motor characteristic's slope", "finite", slope)
+            }
+            _ => Ok(()),
+        }
+    }
+
     fn moment(&self, omega: f64) -> f64 {
         match *self {
             Motor::Constant { moment } => moment,
@@ -1137,12 +1227,17 @@ impl Motor {
 /// energy, restarted at every kink) and shot on ω(0) until ω(2π) = ω(0).
 /// With a constant driving moment every start is periodic (the energy
 /// balances over a cycle); the shooting then fixes the mean speed,
-/// ½(ω_max + ω_min) = ω_m, instead.
+/// ½(ω_max + ω_min) = ω_m, instead. The extremes of ω are located between
+/// the grid's nodes, where ε = 0, on the Runge–Kutta solution continued
+/// from the node before (or at a kink, where ε jumps through zero).
 #[derive(Clone, Debug, PartialEq)]
 pub struct SteadyMotion {
+    /// The integration grid: about the requested number of steps, every
+    /// kink a node.
     pub phi: Vec<f64>,
     pub omega: Vec<f64>,
     pub epsilon: Vec<f64>,
+    /// (φ, ω) at the smallest and the largest ω, located.
     pub omega_min: Extremum,
     pub omega_max: Extremum,
     /// (ω_max − ω_min)/ω_m, ω_m = ½(ω_max + ω_min): the fluctuation achieved.
@@ -1157,6 +1252,7 @@ impl SteadyMotion {
         inertia: f64,
         motor: Motor,
         omega_mean: f64,
+        steps: usize,
     ) -> Result<SteadyMotion, MachineError> {
         for (what, value) in [
             ("the constant inertia", inertia),
@@ -1165,15 +1261,23 @@ impl SteadyMotion {
             if !(value.is_finite() && value > 0.0) {
                 return Err(MachineError::BadSetting {
                     what,
-                    must: "positive",
+                    must: "positive and finite",
                     value,
                 });
             }
         }
-        // The integration grid: about 4000 steps, every kink a node.
+        motor.check()?;
+        if !(10..=1_000_000).contains(&steps) {
+            return Err(MachineError::BadSetting {
+                what: "the number of integration steps",
+                must: "from 10 to 10⁶",
+                value: steps as f64,
+            });
+        }
+        // The integration grid: about `steps` steps, every kink a node.
         let mut phis = Vec::new();
         for w in machine.breaks().windows(2) {
-            let n = ((w[1] - w[0]) / TAU * 4000.0).ceil().max(2.0) as usize;
+            let n = ((w[1] - w[0]) / TAU * steps as f64).ceil().max(2.0) as usize;
             for i in 0..n {
                 phis.push(w[0] + (w[1] - w[0]) * i as f64 / n as f64);
             }
@@ -1183,48 +1287,77 @@ impl SteadyMotion {
             .iter()
             .map(|&p| machine.reduced(p))
             .collect::<Result<_, _>>()?;
-        let steps = Step::along(machine, &phis)?;
-        let run = |omega0: f64| integrate_energy(&steps, &phis, inertia, motor, omega0);
+        let grid = Step::along(machine, &phis)?;
+        let accelerate = |r: &Reduced, w: f64| {
+            (r.moment + motor.moment(w) - 0.5 * r.inertia_derivative * w * w)
+                / (inertia + r.inertia)
+        };
+        // The motion from ω(0) = omega0: ω and ε at the nodes, and the
+        // located extremes of ω.
+        let run = |omega0: f64| -> Result<(Vec<f64>, Vec<f64>, Extremum, Extremum), MachineError> {
+            let omega = integrate_energy(&grid, &phis, inertia, motor, omega0)?;
+            let epsilon: Vec<f64> = reduced
+                .iter()
+                .zip(&omega)
+                .map(|(r, &w)| accelerate(r, w))
+                .collect();
+            // (ω, ε) at φ between the nodes k and k + 1: one Runge–Kutta
+            // step from node k, by the rule that made the grid.
+            let continued = |k: usize, phi: f64| -> Result<(f64, f64), MachineError> {
+                let h = phi - phis[k];
+                if h == 0.0 {
+                    return Ok((omega[k], epsilon[k]));
+                }
+                let at = |x: f64| machine.reduced(x).map(|r| (r.inertia, r.moment));
+                let step = Step {
+                    h,
+                    nodes: [grid[k].nodes[0], at(phis[k] + 0.5 * h)?, at(phi)?],
+                };
+                let w = integrate_energy(&[step], &phis[k..], inertia, motor, omega[k])?[1];
+                Ok((w, accelerate(&machine.reduced(phi)?, w)))
+            };
+            // An extreme of ω where ε changes sign next to the nodes'
+            // extreme (from + to − at a maximum: `sign` = 1); at the node
+            // itself if it does not (a kink, where ε jumps through zero).
+            let locate = |k: usize, sign: f64| -> Result<Extremum, MachineError> {
+                let before = k.checked_sub(1);
+                let after = (k + 1 < phis.len()).then_some(k);
+                for j in [before, after].into_iter().flatten() {
+                    if sign * epsilon[j] > 0.0 && sign * epsilon[j + 1] < 0.0 {
+                        let mut g = |phi: f64| continued(j, phi).map(|(_, e)| e);
+                        let root = numerics::root(&mut g, phis[j], phis[j + 1])?;
+                        return Ok((root, continued(j, root)?.0));
+                    }
+                }
+                Ok((phis[k], omega[k]))
+            };
+            let kmin = (0..omega.len())
+                .min_by(|&a, &b| omega[a].total_cmp(&omega[b]))
+                .unwrap_or(0);
+            let kmax = (0..omega.len())
+                .max_by(|&a, &b| omega[a].total_cmp(&omega[b]))
+                .unwrap_or(0);
+            let (lo, hi) = (locate(kmin, -1.0)?, locate(kmax, 1.0)?);
+            Ok((omega, epsilon, lo, hi))
+        };
         let omega0 = match motor {
             Motor::Constant { .. } => {
                 // ½(ω_max + ω_min) = ω_m.
                 let mut g = |w0: f64| -> Result<f64, MachineError> {
-                    let w = run(w0)?;
-                    let (lo, hi) = w
-                        .iter()
-                        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
-                            (a.min(x), b.max(x))
-                        });
-                    Ok(0.5 * (lo + hi) - omega_mean)
+                    let (_, _, lo, hi) = run(w0)?;
+                    Ok(0.5 * (lo.1 + hi.1) - omega_mean)
                 };
                 bracket_root(&mut g, omega_mean)?
             }
             Motor::Linear { .. } => {
                 let mut g = |w0: f64| -> Result<f64, MachineError> {
-                    let w = run(w0)?;
+                    let w = integrate_energy(&grid, &phis, inertia, motor, w0)?;
                     Ok(w[w.len() - 1] - w0)
                 };
                 bracket_root(&mut g, omega_mean)?
             }
         };
-        let omega = run(omega0)?;
-        let epsilon: Vec<f64> = reduced
-            .iter()
-            .zip(&omega)
-            .map(|(r, &w)| {
-                let total = inertia + r.inertia;
-                (r.moment + motor.moment(w) - 0.5 * r.inertia_derivative * w * w) / total
-            })
-            .collect();
-        let (kmin, kmax) = (
-            (0..omega.len())
-                .min_by(|&a, &b| omega[a].total_cmp(&omega[b]))
-                .unwrap_or(0),
-            (0..omega.len())
-                .max_by(|&a, &b| omega[a].total_cmp(&omega[b]))
-                .unwrap_or(0),
-        );
-        let (omega_min, omega_max) = ((phis[kmin], omega[kmin]), (phis[kmax], omega[kmax]));
+        let (omega, epsilon, omega_min, omega_max) = run(omega0)?;
         let mean = 0.5 * (omega_min.1 + omega_max.1);
         // t = ∫ dφ/ω, by the trapezoid rule on the fine grid.
         let period = phis
@@ -1256,7 +1389,7 @@ impl Step {
     fn along<L: Linkage<M, 1>, const M: usize>(
         machine: &Machine<L, M>,
         phis: &[f64],
-    ) -> Result<Vec<Step>, Error> {
+    ) -> Result<Vec<Step>, MachineError> {
         let is_kink = |x: f64| machine.kinks.contains(&x);
         let at = |phi: f64| machine.reduced(phi).map(|r| (r.inertia, r.moment));
         phis.windows(2)
@@ -1343,20 +1476,59 @@ fn bracket_root(
 }
 
 /// Reductions between shafts and the flywheel's rim, as in the course
-/// project.
+/// project. Each checks its numbers: finite, and of the sign the formula
+/// needs.
 pub mod flywheel {
-    /// J of a rotor from its mD² (kg·m²): J = mD²/4 (D its diameter).
-    pub fn from_md2(md2: f64) -> f64 {
-        md2 / 4.0
+    use super::MachineError;
+
+    fn check(
+        what: &'static str,
+        must: &'static str,
+        value: f64,
+        ok: bool,
+    ) -> Result<f64, MachineError> {
+        if ok && value.is_finite() {
+            Ok(value)
+        } else {
+            Err(MachineError::BadSetting { what, must, value })
+        }
+    }
+
+    /// J of a rotor from its mD² (kg·m², ≥ 0): J = mD²/4 (D its diameter).
+    pub fn from_md2(md2: f64) -> Result<f64, MachineError> {
+        Ok(check("mD²", "finite and ≥ 0", md2, md2 >= 0.0)? / 4.0)
     }
 
     /// The flywheel on the motor shaft for a constant reduced inertia
     /// `required` at the crank, a transmission ratio `ratio` (motor speed /
-    /// crank speed), the motor's rotor `motor` (at its shaft) and the gears
-    /// `gears` (already reduced to the crank):
-    /// J_fw = (J_required − J_motor·u² − J_gears)/u².
-    pub fn on_motor_shaft(required: f64, ratio: f64, motor: f64, gears: f64) -> f64 {
-        (required - motor * ratio * ratio - gears) / (ratio * ratio)
+    /// crank speed, nonzero), the motor's rotor `motor` (at its shaft) and
+    /// the gears `gears` (already reduced to the crank), inertias ≥ 0:
+    /// J_fw = (J_required − J_motor·u² − J_gears)/u². Negative when the
+    /// rotors already exceed what is required.
+    pub fn on_motor_shaft(
+        required: f64,
+        ratio: f64,
+        motor: f64,
+        gears: f64,
+    ) -> Result<f64, MachineError> {
+        let must = "finite and ≥ 0";
+        check("the required inertia", must, required, required >= 0.0)?;
+        check("the motor rotor's inertia", must, motor, motor >= 0.0)?;
+        check("the gears' inertia", must, gears, gears >= 0.0)?;
+        check(
+            "the transmission ratio",
+            "finite and nonzero",
+            ratio,
+            ratio != 0.0,
+        )?;
+        let u2 = ratio * ratio;
+        let flywheel = (required - motor * u2 - gears) / u2;
+        check(
+            "the flywheel's inertia",
+            "finite (the numbers overflow)",
+            flywheel,
+            true,
+        )
     }
 
     /// A rim flywheel by the course's rules of thumb: outer diameter D2 =
@@ -1371,16 +1543,24 @@ pub mod flywheel {
     }
 
     impl Rim {
-        pub fn course_rule(inertia: f64) -> Rim {
+        /// The rim for a moment of inertia `inertia` (kg·m², finite and
+        /// ≥ 0).
+        pub fn course_rule(inertia: f64) -> Result<Rim, MachineError> {
+            let inertia = check(
+                "the flywheel's inertia",
+                "finite and ≥ 0",
+                inertia,
+                inertia >= 0.0,
+            )?;
             let outer = 0.437 * inertia.powf(0.2);
             let inner = 0.8 * outer;
             let width = 0.2 * outer;
-            Rim {
+            Ok(Rim {
                 outer,
                 inner,
                 width,
                 mass: 6123.0 * (outer * outer - inner * inner) * width,
-            }
+            })
         }
 
         /// The rim's own moment of inertia, m(D2² + D1²)/8 (without hub
