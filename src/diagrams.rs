@@ -46,10 +46,18 @@ pub enum Kind {
 
 /// What went wrong drawing the diagrams.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum DiagramError {
+    /// A size or a number of columns is out of its range.
+    BadSetting {
+        what: &'static str,
+        must: &'static str,
+        value: f64,
+    },
     /// The sweep has fewer than two poses.
     TooFewPoses { poses: usize },
-    /// A value to plot is NaN or infinite.
+    /// A value to plot is NaN, infinite, or beyond ±1e300 (where the
+    /// axes' arithmetic would overflow).
     NonFinite {
         what: &'static str,
         name: String,
@@ -62,13 +70,17 @@ pub enum DiagramError {
 impl std::fmt::Display for DiagramError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
+            Self::BadSetting { what, must, value } => {
+                write!(f, "{what} must be {must}, got {value}")
+            }
             Self::TooFewPoses { poses } => write!(
                 f,
                 "motion diagrams need a sweep of at least two poses, got {poses}"
             ),
-            Self::NonFinite { name, pose, what } => {
-                write!(f, "the {what} of `{name}` is not finite at pose {pose}")
-            }
+            Self::NonFinite { name, pose, what } => write!(
+                f,
+                "the {what} of `{name}` at pose {pose} is not finite, or beyond ±1e300"
+            ),
             Self::Drawing(inner) => write!(f, "drawing failed: {inner}"),
         }
     }
@@ -141,10 +153,11 @@ impl Diagrams {
         self
     }
 
-    /// The picture's size: `width` pixels, `row_height` per row.
+    /// The picture's size: `width` pixels (200 to 20 000), `row_height`
+    /// per row (120 to 20 000); checked when it is drawn.
     pub fn size(mut self, width: u32, row_height: u32) -> Diagrams {
-        self.width = width.max(200);
-        self.row_height = row_height.max(120);
+        self.width = width;
+        self.row_height = row_height;
         self
     }
 
@@ -186,6 +199,7 @@ impl Diagrams {
                 }
             })
             .collect();
+        check_plottable("driver", L::V_NAMES[0], xs.iter().copied(), 1)?;
         let x_desc = match driver_kind {
             Some(Kind::Angle) => format!("{} [°]", pretty_name(L::V_NAMES[0])),
             Some(Kind::Length) => format!("{} [{}]", pretty_name(L::V_NAMES[0]), self.length_unit),
@@ -207,7 +221,7 @@ impl Diagrams {
                     ("velocity", p.udot[k]),
                     ("acceleration", p.uddot[k]),
                 ] {
-                    if !x.is_finite() {
+                    if !plottable(x) {
                         return Err(DiagramError::NonFinite {
                             what,
                             name: name.into(),
@@ -245,8 +259,9 @@ impl Diagrams {
             .filter(|k| curves.iter().any(|c| c.kind == *k))
             .collect();
         let title_height = 36;
-        let height = title_height + 3 * self.row_height + 10;
-        page((self.width, height), |root| {
+        let (_, rows_height) = grid(1, 3, height(self.row_height, 120)?)?;
+        let height = title_height + rows_height + 10;
+        page((width(self.width)?, height), |root| {
             self.draw(root, title_height, &columns, &curves, &xs, &x_desc, &events)
         })
     }
@@ -386,14 +401,18 @@ fn span(values: impl Iterator<Item = f64>) -> (f64, f64) {
     let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
         (a.min(v), b.max(v))
     });
-    if lo.is_finite() && hi.is_finite() {
-        if hi > lo {
-            (lo, hi)
-        } else {
-            (lo - 1.0, hi + 1.0)
-        }
+    if !(lo.is_finite() && hi.is_finite()) {
+        return (0.0, 1.0);
+    }
+    // At least a millionth of the values' size wide (1 for values all
+    // zero), so that the axis has ticks to draw.
+    let least = (1e-6 * lo.abs().max(hi.abs())).max(f64::MIN_POSITIVE);
+    if hi - lo >= least {
+        (lo, hi)
     } else {
-        (0.0, 1.0)
+        let middle = 0.5 * lo + 0.5 * hi;
+        let half = if middle == 0.0 { 1.0 } else { least };
+        (middle - half, middle + half)
     }
 }
 
@@ -499,16 +518,17 @@ impl Chart {
         self
     }
 
-    /// Panels per row (default 1).
+    /// Panels per row (default 1; 1 to 20, checked when it is drawn).
     pub fn columns(mut self, columns: usize) -> Chart {
-        self.columns = columns.max(1);
+        self.columns = columns;
         self
     }
 
-    /// The picture's width, and each panel's height, in pixels.
+    /// The picture's width (200 to 20 000), and each panel's height (120 to
+    /// 20 000), in pixels; checked when it is drawn.
     pub fn size(mut self, width: u32, panel_height: u32) -> Chart {
-        self.width = width.max(200);
-        self.panel_height = panel_height.max(120);
+        self.width = width;
+        self.panel_height = panel_height;
         self
     }
 
@@ -516,24 +536,18 @@ impl Chart {
     pub fn render(&self) -> Result<String, DiagramError> {
         for panel in &self.panels {
             for series in &panel.series {
-                if let Some((i, _)) = series
-                    .points
-                    .iter()
-                    .enumerate()
-                    .find(|(_, p)| !(p.0.is_finite() && p.1.is_finite()))
-                {
-                    return Err(DiagramError::NonFinite {
-                        what: "point",
-                        name: series.name.clone(),
-                        pose: i,
-                    });
-                }
+                let coordinates = series.points.iter().flat_map(|p| [p.0, p.1]);
+                check_plottable("point", &series.name, coordinates, 2)?;
+            }
+            for (x, label) in &panel.marks {
+                check_plottable("mark", label, [*x], 1)?;
             }
         }
-        let rows = self.panels.len().div_ceil(self.columns).max(1);
+        let each = height(self.panel_height, 120)?;
+        let (rows, rows_height) = grid(self.columns, self.panels.len(), each)?;
         let title_height = 40;
-        let height = title_height + rows as u32 * self.panel_height + 10;
-        page((self.width, height), |root| {
+        let height = title_height + rows_height + 10;
+        page((width(self.width)?, height), |root| {
             self.draw(root, title_height, rows)
         })
     }
@@ -696,33 +710,33 @@ impl Hodographs {
         self
     }
 
-    /// Panels per row (default 2) and each panel's side in pixels.
+    /// Panels per row (default 2; 1 to 20) and each panel's side in pixels
+    /// (160 to 20 000, the whole picture too); checked when it is drawn.
     pub fn layout(mut self, columns: usize, size: u32) -> Hodographs {
-        self.columns = columns.max(1);
-        self.size = size.max(160);
+        self.columns = columns;
+        self.size = size;
         self
     }
 
     pub fn render(&self) -> Result<String, DiagramError> {
-        for (name, points, _) in &self.panels {
-            if let Some(i) = points
-                .iter()
-                .position(|p| !(p.0.is_finite() && p.1.is_finite()))
-            {
-                return Err(DiagramError::NonFinite {
-                    what: "force",
-                    name: name.clone(),
-                    pose: i,
-                });
+        for (name, points, mark) in &self.panels {
+            check_plottable("force", name, points.iter().flat_map(|p| [p.0, p.1]), 2)?;
+            if let Some((x, y, label)) = mark {
+                check_plottable("marked force", label, [*x, *y], 2)?;
             }
         }
-        let rows = self.panels.len().div_ceil(self.columns).max(1);
+        let side = height(self.size, 160)?;
+        let (rows, rows_height) = grid(self.columns, self.panels.len(), side)?;
+        let total_width = within(
+            "the picture's width",
+            "at most 20 000 pixels (columns × their side)",
+            self.columns as u64 * u64::from(side),
+            0..=MAX_PIXELS.into(),
+        )?;
         let title_height = 40;
-        let (width, height) = (
-            self.columns as u32 * self.size,
-            title_height + rows as u32 * self.size,
-        );
-        page((width, height), |root| self.draw(root, title_height, rows))
+        page((total_width, title_height + rows_height), |root| {
+            self.draw(root, title_height, rows)
+        })
     }
 
     fn draw(
@@ -788,6 +802,90 @@ impl Hodographs {
         Ok(())
     }
 }
+/// Whether a value can be plotted: finite and within ±1e300, so that an
+/// axis's span and its padding cannot overflow.
+fn plottable(x: f64) -> bool {
+    x.abs() <= 1e300 // false for NaN too
+}
+
+/// The first of `values` that cannot be plotted, as an error.
+fn check_plottable(
+    what: &'static str,
+    name: &str,
+    values: impl IntoIterator<Item = f64>,
+    per_pose: usize,
+) -> Result<(), DiagramError> {
+    match values.into_iter().position(|x| !plottable(x)) {
+        Some(i) => Err(DiagramError::NonFinite {
+            what,
+            name: name.into(),
+            pose: i / per_pose.max(1),
+        }),
+        None => Ok(()),
+    }
+}
+
+/// The largest side of a picture, in pixels.
+const MAX_PIXELS: u32 = 20_000;
+
+/// A size or a count, checked: in `range`.
+fn within(
+    what: &'static str,
+    must: &'static str,
+    value: u64,
+    range: std::ops::RangeInclusive<u64>,
+) -> Result<u32, DiagramError> {
+    if range.contains(&value) {
+        Ok(value as u32)
+    } else {
+        Err(DiagramError::BadSetting {
+            what,
+            must,
+            value: value as f64,
+        })
+    }
+}
+
+/// A picture's width, checked: 200 to 20 000 pixels.
+fn width(value: u32) -> Result<u32, DiagramError> {
+    within(
+        "the width",
+        "from 200 to 20 000 pixels",
+        value.into(),
+        200..=MAX_PIXELS.into(),
+    )
+}
+
+/// A panel's or a row's height, checked: `least` to 20 000 pixels.
+fn height(value: u32, least: u32) -> Result<u32, DiagramError> {
+    within(
+        "a panel's height",
+        "from 120 (160 for hodographs) to 20 000 pixels",
+        value.into(),
+        least.into()..=MAX_PIXELS.into(),
+    )
+}
+
+/// Panels per row, and the rows they make of `panels`, checked: 1 to 20
+/// columns, the whole picture at most 20 000 pixels high for `each` pixels
+/// a row.
+fn grid(columns: usize, panels: usize, each: u32) -> Result<(usize, u32), DiagramError> {
+    let columns = within(
+        "the number of columns",
+        "from 1 to 20",
+        columns as u64,
+        1..=20,
+    )? as usize;
+    let rows = panels.div_ceil(columns).max(1);
+    let tall = within(
+        "the picture's height",
+        "at most 20 000 pixels (rows × their height)",
+        rows as u64 * u64::from(each),
+        0..=MAX_PIXELS.into(),
+    )?;
+    Ok((rows, tall))
+}
+
 /// The drawing area of an SVG page.
 type Page<'a> = DrawingArea<SVGBackend<'a>, plotters::coord::Shift>;
 

@@ -56,6 +56,7 @@ use std::fmt::Write as _;
 
 /// What went wrong drawing a scene.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum SceneError {
     /// The scene names a point that neither the frame nor the scene's
     /// ground pivots define.
@@ -67,8 +68,13 @@ pub enum SceneError {
     NonFinite { what: &'static str, name: String },
     /// An animation needs at least two frames.
     TooFewFrames { frames: usize },
-    /// A scale or a size is zero, negative or not finite.
-    BadSetting { what: &'static str, value: f64 },
+    /// A number given is out of its range: a scale or a size zero,
+    /// negative or not finite, an angle not finite.
+    BadSetting {
+        what: &'static str,
+        must: &'static str,
+        value: f64,
+    },
 }
 
 impl std::fmt::Display for SceneError {
@@ -86,8 +92,8 @@ impl std::fmt::Display for SceneError {
             Self::TooFewFrames { frames } => {
                 write!(f, "an animation needs at least two frames, got {frames}")
             }
-            Self::BadSetting { value, what } => {
-                write!(f, "{what} must be positive and finite, got {value}")
+            Self::BadSetting { value, what, must } => {
+                write!(f, "{what} must be {must}, got {value}")
             }
         }
     }
@@ -380,7 +386,8 @@ impl Scene {
         self
     }
 
-    /// The picture's width in pixels (the height follows the mechanism).
+    /// The picture's width in pixels, 200 to 20 000 (the height follows
+    /// the mechanism).
     pub fn width(mut self, pixels: f64) -> Scene {
         self.width = pixels;
         self
@@ -468,12 +475,34 @@ impl Scene {
 
     /// The scale of the drawing and the arrows, fitted to every frame.
     fn layout(&self, frames: &[Frame], cycle: &[Frame]) -> Result<Layout, SceneError> {
-        positive("the width", self.width)?;
+        if !(200.0..=20_000.0).contains(&self.width) {
+            return Err(SceneError::BadSetting {
+                what: "the width",
+                must: "from 200 to 20 000 pixels",
+                value: self.width,
+            });
+        }
+        for slider in &self.sliders {
+            if !slider.angle.is_finite() {
+                return Err(SceneError::BadSetting {
+                    what: "a slider's angle",
+                    must: "finite",
+                    value: slider.angle,
+                });
+            }
+        }
         for scale in [self.velocity_scale, self.acceleration_scale]
             .into_iter()
             .flatten()
         {
-            positive("an arrow scale", scale)?;
+            // Its reciprocal is in the legend.
+            if !(scale > 0.0 && scale.is_finite() && (1.0 / scale).is_finite()) {
+                return Err(SceneError::BadSetting {
+                    what: "an arrow scale",
+                    must: "positive, finite and with a finite reciprocal",
+                    value: scale,
+                });
+            }
         }
         let lookup = |frame: &Frame, name: &str| -> Result<Vector2<f64>, SceneError> {
             resolve(frame, name, &self.ground)
@@ -558,10 +587,21 @@ impl Scene {
                 if let Some(vectors) = vectors {
                     for name in names {
                         let k = frame.index(name).ok_or_else(|| unknown(frame, name))?;
-                        bounds.add(frame.positions[k] + vectors[k] * scale);
+                        let tip = frame.positions[k] + vectors[k] * scale;
+                        finite(tip, "arrow's tip", name)?;
+                        bounds.add(tip);
                     }
                 }
             }
+        }
+        // A mechanism so large that its extent overflows cannot be drawn.
+        let spread = bounds.extent();
+        if !spread.is_finite() {
+            return Err(SceneError::BadSetting {
+                what: "the extent of the drawing",
+                must: "finite (its coordinates overflow)",
+                value: spread,
+            });
         }
         let legend_lines = usize::from(!self.velocity_arrows.is_empty())
             + usize::from(!self.acceleration_arrows.is_empty())
@@ -590,7 +630,6 @@ impl Scene {
         }
         for name in self.names() {
             let at = resolve(frame, name, &self.ground)?;
-            finite(at, "position", name)?;
             placed.insert(name, layout.screen(at));
         }
         placed.centre = placed
@@ -762,7 +801,7 @@ impl Scene {
                     let d = f.get(b) - f.get(a);
                     d.y.atan2(d.x).to_degrees()
                 }
-                _ => -slider.angle.to_degrees(),
+                _ => -slider.angle.rem_euclid(std::f64::consts::TAU).to_degrees(),
             };
             w.open(
                 "g",
@@ -1402,8 +1441,12 @@ fn segment_distance(c: Vector2<f64>, a: Vector2<f64>, b: Vector2<f64>) -> f64 {
     (a + ab * t - c).norm()
 }
 
-/// A scale or a length as a reader would write it: 0.02, 0.0005, 2000.
+/// A scale or a length as a reader would write it: 0.02, 0.0005, 2000;
+/// very small or very large ones as 3e-12 or 4.5e15.
 fn number(x: f64) -> String {
+    if x != 0.0 && !(1e-6..1e9).contains(&x.abs()) {
+        return format!("{x:e}");
+    }
     let text = format!("{x:.10}");
     let text = text.trim_end_matches('0').trim_end_matches('.');
     text.to_string()
@@ -1413,7 +1456,11 @@ fn positive(what: &'static str, value: f64) -> Result<(), SceneError> {
     if value.is_finite() && value > 0.0 {
         Ok(())
     } else {
-        Err(SceneError::BadSetting { what, value })
+        Err(SceneError::BadSetting {
+            what,
+            must: "positive and finite",
+            value,
+        })
     }
 }
 
@@ -1441,14 +1488,16 @@ fn resolve(
     name: &str,
     ground: &[(String, Vector2<f64>)],
 ) -> Result<Vector2<f64>, SceneError> {
-    if let Some(k) = frame.index(name) {
-        return Ok(frame.positions[k]);
-    }
-    ground
-        .iter()
-        .find(|(n, _)| n == name)
-        .map(|(_, p)| *p)
-        .ok_or_else(|| unknown(frame, name))
+    let at = match frame.index(name) {
+        Some(k) => frame.positions[k],
+        None => ground
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, p)| *p)
+            .ok_or_else(|| unknown(frame, name))?,
+    };
+    finite(at, "position", name)?;
+    Ok(at)
 }
 
 /// The model-space box of everything drawn.
@@ -1529,11 +1578,12 @@ impl Layout {
         }
     }
 
-    /// Model → screen.
+    /// Model → screen (scaled before the difference, so that coordinates
+    /// near the ends of the range of f64 do not overflow on the way).
     fn screen(&self, p: Vector2<f64>) -> Vector2<f64> {
         Vector2::new(
-            (p.x - self.origin.x) * self.scale,
-            self.top + (self.origin.y - p.y) * self.scale,
+            p.x * self.scale - self.origin.x * self.scale,
+            self.top + (self.origin.y * self.scale - p.y * self.scale),
         )
     }
 
@@ -1574,6 +1624,8 @@ mod tests {
         assert_eq!(nice_below(1.0), 1.0);
         assert_eq!(number(0.0005), "0.0005");
         assert_eq!(number(2000.0), "2000");
+        assert_eq!(number(3e-12), "3e-12");
+        assert_eq!(number(4.5e15), "4.5e15");
     }
 
     #[test]

@@ -192,7 +192,14 @@ impl Program {
     /// angle, any finite one: the program repeats every turn), and the
     /// stroke.
     pub fn at(&self, phi: f64) -> Result<(Derivatives, Stroke), CamError> {
-        Ok(self.motion(cam_angle(phi)?))
+        let (s, stroke) = self.motion(cam_angle(phi)?);
+        if !s.iter().all(|x| x.is_finite()) {
+            return Err(CamError::Degenerate {
+                phi,
+                why: "the follower's derivatives leave the range of f64 (a segment too short for its lift)",
+            });
+        }
+        Ok((s, stroke))
     }
 
     /// [`Program::at`] for a finite φ.
@@ -443,11 +450,20 @@ impl Cam {
                 setting("the follower's axis angle", "finite", axis_angle, true)?;
             }
         }
-        Ok(Cam {
+        let cam = Cam {
             program,
             follower,
             rotation,
-        })
+        };
+        // Numbers so large that the pitch curve leaves the range of f64.
+        cam.pitch(0.0)?;
+        if !cam.base_radius().is_finite() {
+            return Err(CamError::Degenerate {
+                phi: 0.0,
+                why: "the base radius leaves the range of f64",
+            });
+        }
+        Ok(cam)
     }
 
     pub fn program(&self) -> &Program {
@@ -520,7 +536,8 @@ impl Cam {
                 // In the follower's frame K = (offset ⟂ axis) + (s0 + s)
                 // along the axis; in the cam's frame, turned by −σφ.
                 let axis = Vector2::new(axis_angle.cos(), axis_angle.sin());
-                let s0 = (base * base - offset * offset).max(0.0).sqrt();
+                // √(base² − offset²), without squaring a huge base.
+                let s0 = base * (1.0 - (offset / base).powi(2)).max(0.0).sqrt();
                 let local = perp(axis) * offset + axis * (s0 + s[0]);
                 let turn = -sigma * phi;
                 let k = rotate(local, turn);
@@ -545,7 +562,7 @@ impl Cam {
     /// The pitch curve at φ with its unit tangent, or why there is none.
     fn tangent(&self, phi: f64) -> Result<(Pitch, Vector2<f64>), CamError> {
         let p = self.pitch(phi)?;
-        let speed = p.dk.norm();
+        let speed = p.dk.x.hypot(p.dk.y);
         if !(speed > 0.0 && speed.is_finite()) {
             return Err(CamError::Degenerate {
                 phi,
@@ -585,7 +602,8 @@ impl Cam {
     /// The base radius r0 = |OK| at φ = 0 (the roller centre's distance at
     /// the start of the rise).
     pub fn base_radius(&self) -> f64 {
-        self.pitch_at(0.0).k.norm()
+        let k = self.pitch_at(0.0).k;
+        k.x.hypot(k.y)
     }
 
     /// The worst excess of |θ| over `limit` (rad, in (0, π/2)) in a turn
@@ -648,8 +666,16 @@ impl Cam {
         if outward.dot(&p.k) < 0.0 {
             outward = -outward;
         }
-        let speed = p.dk.norm();
-        Ok(cross(p.dk, p.ddk) / speed.powi(3) * perp(tangent).dot(&(-outward)))
+        // κ = (K′ × K″)/|K′|³, with K″ across the unit tangent.
+        let speed = p.dk.x.hypot(p.dk.y);
+        let kappa = cross(tangent, p.ddk) / (speed * speed) * perp(tangent).dot(&(-outward));
+        if !kappa.is_finite() {
+            return Err(CamError::Degenerate {
+                phi,
+                why: "the pitch curve's curvature leaves the range of f64",
+            });
+        }
+        Ok(kappa)
     }
 
     /// The largest roller that does not undercut: the smallest convex

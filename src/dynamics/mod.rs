@@ -72,6 +72,9 @@ pub enum MachineError {
     /// A load's value (a user's function of the pose, or a weight) is NaN
     /// or infinite at φ.
     NonFiniteLoad { load: String, phi: f64 },
+    /// A reduced quantity leaves the range of f64 at φ: the masses,
+    /// inertias or loads are too large for it.
+    Overflow { what: &'static str, phi: f64 },
 }
 
 impl std::fmt::Display for MachineError {
@@ -104,6 +107,10 @@ impl std::fmt::Display for MachineError {
             Self::NonFiniteLoad { load, phi } => {
                 write!(f, "the load `{load}` is not finite at φ = {phi}")
             }
+            Self::Overflow { what, phi } => write!(
+                f,
+                "{what} leaves the range of f64 at φ = {phi}: the masses, inertias or loads are too large"
+            ),
         }
     }
 }
@@ -848,14 +855,27 @@ impl<L: Linkage<M, 1>, const M: usize> Machine<L, M> {
                 Applied::Moment { coordinate, moment } => moment * pose.q_phi[coordinate],
             };
         }
-        Ok(Reduced {
+        let reduced = Reduced {
             phi: pose.phi,
             inertia: bodies.iter().map(|b| b[0] + b[1]).sum(),
             inertia_derivative: bodies.iter().map(|b| b[2] + b[3]).sum(),
             moment: loads.iter().sum(),
             bodies,
             loads,
-        })
+        };
+        for (what, value) in [
+            ("the reduced moment of inertia J", reduced.inertia),
+            ("its derivative J′", reduced.inertia_derivative),
+            ("the reduced moment of the loads M", reduced.moment),
+        ] {
+            if !value.is_finite() {
+                return Err(MachineError::Overflow {
+                    what,
+                    phi: pose.phi,
+                });
+            }
+        }
+        Ok(reduced)
     }
 
     /// The functions whose sign changes mark the loads' kinks, at a pose.
@@ -965,7 +985,15 @@ impl<L: Linkage<M, 1>, const M: usize> Machine<L, M> {
         let within = (phi - cycles * TAU).clamp(0.0, TAU);
         let k = self.work.partition_point(|&(p, _)| p <= within).max(1) - 1;
         let (start, value) = self.work[k];
-        Ok(cycles * self.cycle_work() + value + self.integrate_smooth(start, within)?)
+        let work = cycles * self.cycle_work() + value + self.integrate_smooth(start, within)?;
+        if !work.is_finite() {
+            return Err(MachineError::BadSetting {
+                what: "φ",
+                must: "small enough that the work of its cycles stays within the range of f64",
+                value: phi,
+            });
+        }
+        Ok(work)
     }
 
     /// A(2π): the work of the loads over a cycle.
@@ -1111,12 +1139,22 @@ impl<'m, L: Linkage<M, 1>, const M: usize> EnergyMethod<'m, L, M> {
         method.minimum = minimum;
         method.maximum = maximum;
         method.flywheel = (method.maximum.1 - method.minimum.1) / (delta * omega_mean * omega_mean);
+        if !method.flywheel.is_finite() {
+            return Err(MachineError::BadSetting {
+                what: "the mean speed",
+                must: "large enough that the flywheel J_I = ΔT/(δ·ω_m²) stays finite",
+                value: omega_mean,
+            });
+        }
         Ok(method)
     }
 
-    /// ΔT_I(φ) = A(φ) + M_D·φ − ½ J(φ) ω_m²
+    /// ΔT_I(φ) = A(φ) + M_D·φ − ½ J(φ) ω_m², periodic (M_D balances the
+    /// work of a cycle): evaluated on φ wrapped to [0, 2π), so that a φ of
+    /// many cycles loses no digits to the cancellation of A and M_D·φ.
     pub fn delta_t(&self, phi: f64) -> Result<f64, MachineError> {
         let r = self.machine.reduced(phi)?;
+        let phi = phi.rem_euclid(TAU);
         Ok(self.machine.work(phi)? + self.driving_moment * phi
             - 0.5 * r.inertia * self.omega_mean * self.omega_mean)
     }
@@ -1555,12 +1593,19 @@ pub mod flywheel {
             let outer = 0.437 * inertia.powf(0.2);
             let inner = 0.8 * outer;
             let width = 0.2 * outer;
-            Ok(Rim {
+            let rim = Rim {
                 outer,
                 inner,
                 width,
                 mass: 6123.0 * (outer * outer - inner * inner) * width,
-            })
+            };
+            check(
+                "the flywheel's inertia",
+                "small enough that the rim's mass and inertia stay finite",
+                inertia,
+                rim.mass.is_finite() && rim.inertia().is_finite(),
+            )?;
+            Ok(rim)
         }
 
         /// The rim's own moment of inertia, m(D2² + D1²)/8 (without hub

@@ -49,7 +49,17 @@ impl Table {
                 why: "its abscissae span nothing".into(),
             });
         }
-        Ok(Table { points })
+        let table = Table { points };
+        let slopes_finite = table
+            .points
+            .windows(2)
+            .all(|w| w[0].0 == w[1].0 || ((w[1].1 - w[0].1) / (w[1].0 - w[0].0)).is_finite());
+        if !(slopes_finite && table.area().is_finite()) {
+            return Err(MachineError::BadTable {
+                why: "its numbers are so large that its slopes or its area overflow".into(),
+            });
+        }
+        Ok(table)
     }
 
     /// The value at x (NaN for a NaN x): at a jump, the value after it.
