@@ -13,6 +13,17 @@ const PITCH: &str = "#7b8794";
 const NORMAL: &str = "#c62828";
 const MOTION: &str = "#2e7d32";
 
+/// A length in metres as a reader wants it: in millimetres where that is
+/// ordinary, else in metres in scientific notation.
+fn metres(x: f64) -> String {
+    let mm = 1000.0 * x;
+    if mm.abs() < 1e7 {
+        format!("{mm:.1} mm")
+    } else {
+        format!("{x:.4e} m")
+    }
+}
+
 impl Cam {
     /// An SVG drawing of the cam turned to `phi`, with a roller of radius
     /// `roller`, `width` pixels wide (200 to 10⁵). The profile must not
@@ -226,8 +237,8 @@ impl Cam {
             (
                 PITCH,
                 format!(
-                    "base circle r0 − r = {:.1} mm, pitch curve (dashed)",
-                    1000.0 * (r0 - roller)
+                    "base circle r0 − r = {}, pitch curve (dashed)",
+                    metres(r0 - roller)
                 ),
             ),
             (NORMAL, "common normal at the contact".to_string()),

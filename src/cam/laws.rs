@@ -75,11 +75,14 @@ impl Law {
     }
 
     /// Whether the law's parameter is in its range: the asymmetry k of the
-    /// constant-acceleration law positive and finite. [`super::Program::new`]
-    /// accepts only valid laws.
+    /// constant-acceleration law positive, and neither so small nor so large
+    /// that its accelerations 2(k + 1) and 2(k + 1)/k overflow.
+    /// [`super::Program::new`] accepts only valid laws.
     pub fn is_valid(&self) -> bool {
         match *self {
-            Law::ConstantAcceleration { k } => k.is_finite() && k > 0.0,
+            Law::ConstantAcceleration { k } => {
+                k > 0.0 && (2.0 * (k + 1.0)).is_finite() && (2.0 * (k + 1.0) / k).is_finite()
+            }
             _ => true,
         }
     }

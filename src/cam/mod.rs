@@ -162,7 +162,7 @@ impl Program {
                     if !law.is_valid() {
                         return Err(CamError::BadSetting {
                             what: "the asymmetry k of a constant-acceleration law",
-                            must: "positive and finite",
+                            must: "positive, finite, and such that 2(k + 1)/k is finite",
                             value: k,
                         });
                     }
@@ -804,6 +804,30 @@ fn coarse_then_brent(f: &mut impl FnMut(f64) -> f64, xs: &[f64], tolerance: f64)
     if fx <= ys[k] { (x, fx) } else { (xs[k], ys[k]) }
 }
 
+/// A bracket [lo, hi] of the smallest feasible size: from `hi`, widened by
+/// half at a time (lo taking the last infeasible one) until feasible, up to
+/// `largest` — at most 200 widenings, and never past the range of f64;
+/// `None` if none up to there is.
+fn bracket_size(
+    feasible: &mut impl FnMut(f64) -> bool,
+    mut lo: f64,
+    mut hi: f64,
+    largest: f64,
+) -> Option<(f64, f64)> {
+    for _ in 0..200 {
+        let within = hi <= largest && hi.is_finite(); // false for NaN too
+        if !within {
+            return None;
+        }
+        if feasible(hi) {
+            return Some((lo, hi));
+        }
+        lo = hi;
+        hi *= 1.5;
+    }
+    None
+}
+
 /// The smallest size in [lo, hi] at which `feasible` holds, by bisection
 /// (at most 60 halvings, to 1e-13 relative), `hi` feasible.
 fn bisect_size(feasible: &mut impl FnMut(f64) -> bool, mut lo: f64, mut hi: f64) -> f64 {
@@ -872,18 +896,16 @@ pub fn smallest_rocker(
             1e-12,
         )
     };
-    let (mut lo, mut hi) = (arm * 0.05, arm * 0.5);
-    let limit_radius = 100.0 * arm;
-    while best(hi).1 > 0.0 {
-        lo = hi;
-        hi *= 1.5;
-        if hi > limit_radius {
-            return Err(CamError::NoSize {
-                limit: limit_radius,
-                angle: limit.to_degrees(),
-            });
-        }
-    }
+    let (lo, hi) = bracket_size(
+        &mut |r0| best(r0).1 <= 0.0,
+        arm * 0.05,
+        arm * 0.5,
+        100.0 * arm,
+    )
+    .ok_or(CamError::NoSize {
+        limit: 100.0 * arm,
+        angle: limit.to_degrees(),
+    })?;
     let r0 = bisect_size(&mut |r0| best(r0).1 <= 0.0, lo, hi);
     let (psi0, _) = best(r0);
     make(r0, psi0).ok_or(CamError::NoSize {
@@ -924,18 +946,13 @@ pub fn smallest_translating(
         )
     };
     let lift = program.lift;
-    let (mut lo, mut hi) = (0.0, lift);
-    while best(hi).1 > 0.0 {
-        lo = hi;
-        hi *= 1.5;
-        if hi > 1e4 * lift {
-            return Err(CamError::NoSize {
-                limit: hi,
-                angle: limit.to_degrees(),
-            });
-        }
-    }
-    let base = bisect_size(&mut |b| b > 0.0 && best(b).1 <= 0.0, lo, hi);
+    let feasible = |b: f64| b > 0.0 && best(b).1 <= 0.0;
+    let (lo, hi) =
+        bracket_size(&mut |b| feasible(b), 0.0, lift, 1e4 * lift).ok_or(CamError::NoSize {
+            limit: 1e4 * lift,
+            angle: limit.to_degrees(),
+        })?;
+    let base = bisect_size(&mut |b| feasible(b), lo, hi);
     let (offset, _) = best(base);
     make(base, offset).ok_or(CamError::NoSize {
         limit: base,

@@ -958,6 +958,12 @@ impl<L: Linkage<M, 1>, const M: usize> Machine<L, M> {
         let mut total = 0.0;
         for w in nodes.windows(2) {
             total += self.integrate_smooth(w[0], w[1])?;
+            if !total.is_finite() {
+                return Err(MachineError::Overflow {
+                    what: "the work of the loads",
+                    phi: w[1],
+                });
+            }
             work.push((w[1], total));
         }
         Ok(work)
