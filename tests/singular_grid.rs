@@ -331,7 +331,7 @@ fn check<L: Linkage<M, 1>, const M: usize>(
         if reversed {
             continue;
         }
-        if let Some((jump, allowed)) = common::ratio_jump(a, b) {
+        if let Some((jump, allowed)) = common::branch_jump(model, a, b) {
             tally.branch_jumps += 1;
             tally.fail(format!(
                 "{}: velocity ratios jump by {jump:e} (allowed {allowed:e}) between v = {} and {}",

@@ -421,3 +421,36 @@ pub fn ratio_jump<const M: usize, const F: usize>(
     let continuous = jump <= allowed; // false for NaN too
     (!continuous).then_some((jump, allowed))
 }
+
+/// The branch-continuity check on two consecutive poses of a sweep of
+/// `model` (f = 1), no limit position between them: [`ratio_jump`], and,
+/// where it flags a jump, a tie-breaker — between coarse grid poses the
+/// branch may turn sharply, past a near-singular pose, where the ends' u″
+/// say nothing of the u″ between. A sweep 64 times finer from one pose to
+/// the other must then arrive at the second pose (to 1e-9), complete, every
+/// one of its own pairs passing [`ratio_jump`]; if it does, the turn is the
+/// branch's own. Returns (jump, allowed) of a true jump.
+pub fn branch_jump<L: Linkage<M, 1>, const M: usize>(
+    model: &L,
+    a: &SweepPose<M, 1>,
+    b: &SweepPose<M, 1>,
+) -> Option<(f64, f64)> {
+    let flagged = ratio_jump(a, b)?;
+    let drive = Drive::Line {
+        from: a.v,
+        to: b.v,
+        steps: 64,
+    };
+    let finer = model.sweep(&a.u, &drive, &SweepOptions::default());
+    let continuous = finer.is_ok_and(|s| {
+        let arrives = s.poses.last().is_some_and(|last| {
+            last.v == b.v && (last.u - b.u).amax() <= 1e-9 * (1.0 + b.u.amax())
+        });
+        s.complete
+            && arrives
+            && s.poses
+                .windows(2)
+                .all(|w| ratio_jump(&w[0], &w[1]).is_none())
+    });
+    (!continuous).then_some(flagged)
+}
