@@ -12,32 +12,10 @@
 //! table. `--no-compile` skips the (slow) compile-time column.
 #![allow(dead_code)]
 
-// The macro's stages, compiled into this program (a proc-macro crate
-// exports nothing else).
-#[path = "../src/ast.rs"]
-mod ast;
-#[path = "../src/dag.rs"]
-mod dag;
-#[path = "../src/diff.rs"]
-mod diff;
-#[path = "../src/display.rs"]
-mod display;
-#[path = "../src/emit.rs"]
-mod emit;
-#[path = "../src/errors.rs"]
-mod errors;
+// The macro's item assembly, compiled into this program (a proc-macro
+// crate exports nothing else); the engine is the linkage-symbolic crate.
 #[path = "../src/expand.rs"]
 mod expand;
-#[path = "../src/lower.rs"]
-mod lower;
-#[path = "../src/model.rs"]
-mod model;
-#[path = "../src/normal.rs"]
-mod normal;
-#[path = "../src/suggest.rs"]
-mod suggest;
-#[path = "../src/valid.rs"]
-mod valid;
 
 use plotters::prelude::*;
 use proc_macro2::{TokenStream, TokenTree};

@@ -1,11 +1,12 @@
 //! Stage 5: the items the attribute emits, assembled with `quote!`.
 
-use crate::ast::Input;
-use crate::dag::{Dag, Id};
-use crate::display::{Formatter, Names};
-use crate::emit::{Body, CodeNames, Mode, Reads, emit};
-use crate::errors::Errors;
-use crate::model::{Matrix, Model};
+use linkage_symbolic::ast::Input;
+use linkage_symbolic::dag::{Dag, Id};
+use linkage_symbolic::derivatives::{Derivatives, Matrix};
+use linkage_symbolic::display::Formatter;
+use linkage_symbolic::emit::{Body, Mode, Reads, emit};
+use linkage_symbolic::errors::Errors;
+use linkage_symbolic::names::SymbolNames;
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 
@@ -54,19 +55,7 @@ pub fn run(
 }
 
 fn generate(input: &Input, errors: &mut Errors) -> Option<TokenStream> {
-    if !input.complete {
-        return None;
-    }
-    let shape_ok = crate::valid::check_shape(input, errors);
-    let mut lowered = crate::lower::lower(input, errors)?;
-    if !shape_ok {
-        return None;
-    }
-    crate::valid::check_structure(input, &mut lowered, errors);
-    if !errors.is_empty() {
-        return None;
-    }
-    let model = Model::build(lowered);
+    let model = linkage_symbolic::build(input, errors)?;
     Some(Generator::new(input, &model).items())
 }
 
@@ -305,9 +294,8 @@ enum Output {
 
 struct Generator<'a> {
     input: &'a Input,
-    model: &'a Model,
-    code: CodeNames,
-    names: Names,
+    model: &'a Derivatives,
+    names: SymbolNames,
     m: usize,
     f: usize,
     np: usize,
@@ -320,12 +308,11 @@ const U_QDOT: &[Arg] = &[Arg::U, Arg::V, Arg::Udot, Arg::Vdot];
 const U_QDOT_QDDOT: &[Arg] = &[Arg::U, Arg::V, Arg::Udot, Arg::Vdot, Arg::Uddot, Arg::Vddot];
 
 impl<'a> Generator<'a> {
-    fn new(input: &'a Input, model: &'a Model) -> Generator<'a> {
+    fn new(input: &'a Input, model: &'a Derivatives) -> Generator<'a> {
         Generator {
             input,
             model,
-            code: CodeNames::new(&model.lowered),
-            names: Names::new(&model.lowered),
+            names: model.lowered.names(),
             m: model.m(),
             f: model.f(),
             np: model.points.len(),
@@ -570,8 +557,18 @@ impl<'a> Generator<'a> {
         let kinematics = self.kinematics_function(false);
         let kinematics_with_trig = self.kinematics_function(true);
         let generic = self.generic_functions();
-        let u_names = self.input.u.items.iter().map(crate::lower::unraw);
-        let v_names = self.input.v.items.iter().map(crate::lower::unraw);
+        let u_names = self
+            .input
+            .u
+            .items
+            .iter()
+            .map(linkage_symbolic::lower::unraw);
+        let v_names = self
+            .input
+            .v
+            .items
+            .iter()
+            .map(linkage_symbolic::lower::unraw);
         let (ml, fl, npl) = (
             Literal::usize_unsuffixed(m),
             Literal::usize_unsuffixed(f),
@@ -649,7 +646,14 @@ impl<'a> Generator<'a> {
             }
         }
         let reserved: Vec<String> = reserved.into_iter().map(|r| self.free_name(&r)).collect();
-        let body: Body = emit(self.dag(), &self.code, &roots, &hints, &reserved, Mode::F64);
+        let body: Body = emit(
+            self.dag(),
+            &self.names,
+            &roots,
+            &hints,
+            &reserved,
+            Mode::F64,
+        );
         let mut values = body.values.iter();
         let mut result_names = reserved.iter();
         let (result, ret) = match &function.output {
@@ -711,7 +715,7 @@ impl<'a> Generator<'a> {
 
     /// `name`, unless a symbol already has it.
     fn free_name(&self, name: &str) -> String {
-        let taken: Vec<String> = self.code.all().collect();
+        let taken: Vec<String> = self.names.all_code().collect();
         let mut candidate = name.to_owned();
         while taken.contains(&candidate) {
             candidate.push('_');
@@ -741,19 +745,20 @@ impl<'a> Generator<'a> {
             "psi", "psi_u", "psi_v", "gamma", "inverse", "rcond", "det", "udot", "uddot",
         ];
         let local: Vec<String> = locals.iter().map(|n| self.free_name(n)).collect();
-        let late: Vec<crate::dag::Symbol> =
-            (0..m).map(|k| crate::dag::Symbol::Vel(k as u16)).collect();
+        let late: Vec<linkage_symbolic::dag::Symbol> = (0..m)
+            .map(|k| linkage_symbolic::dag::Symbol::Vel(k as u16))
+            .collect();
         let trig_names = [self.free_name("trig_u"), self.free_name("trig_v")];
-        let source = crate::emit::TrigSource {
+        let source = linkage_symbolic::emit::TrigSource {
             u: format_ident!("{}", trig_names[0]),
             v: format_ident!("{}", trig_names[1]),
             m,
         };
         let mut reserved = local.clone();
         reserved.extend(trig_names.iter().cloned());
-        let phased = crate::emit::emit_phases(
+        let phased = linkage_symbolic::emit::emit_phases(
             self.dag(),
-            &self.code,
+            &self.names,
             &[&first, &second],
             &[],
             &reserved,
@@ -790,7 +795,13 @@ impl<'a> Generator<'a> {
         let gamma_bind = bind(&gamma, gamma_fill, quote!(SVector::<f64, #ml>));
         // The velocities u̇ that γ uses, read from the solved vector.
         let used: Vec<usize> = (0..m)
-            .filter(|&k| reaches(self.dag(), &second, crate::dag::Symbol::Vel(k as u16)))
+            .filter(|&k| {
+                reaches(
+                    self.dag(),
+                    &second,
+                    linkage_symbolic::dag::Symbol::Vel(k as u16),
+                )
+            })
             .collect();
         let velocity_names: Vec<proc_macro2::Ident> = used
             .iter()
@@ -929,7 +940,7 @@ impl<'a> Generator<'a> {
             .collect();
         let body = emit(
             self.dag(),
-            &self.code,
+            &self.names,
             &roots,
             &[],
             std::slice::from_ref(&psi_result),
@@ -954,7 +965,7 @@ impl<'a> Generator<'a> {
             .collect();
         let pbody = emit(
             self.dag(),
-            &self.code,
+            &self.names,
             &point_roots,
             &hints,
             &[],
@@ -1302,7 +1313,7 @@ fn assemble<'v>(
 }
 
 /// Whether any of `roots` depends on the symbol.
-fn reaches(dag: &Dag, roots: &[Id], symbol: crate::dag::Symbol) -> bool {
+fn reaches(dag: &Dag, roots: &[Id], symbol: linkage_symbolic::dag::Symbol) -> bool {
     let mut seen = std::collections::HashSet::new();
     let mut stack: Vec<Id> = roots.to_vec();
     while let Some(id) = stack.pop() {
@@ -1310,8 +1321,8 @@ fn reaches(dag: &Dag, roots: &[Id], symbol: crate::dag::Symbol) -> bool {
             continue;
         }
         match dag.node(id) {
-            crate::dag::Node::Sym(s) if *s == symbol => return true,
-            node => stack.extend(crate::dag::children(node)),
+            linkage_symbolic::dag::Node::Sym(s) if *s == symbol => return true,
+            node => stack.extend(linkage_symbolic::dag::children(node)),
         }
     }
     false

@@ -2,40 +2,22 @@
 //! planar mechanism, differentiated symbolically at compile time into
 //! straight-line Rust.
 //!
-//! The pipeline, one module per stage:
-//!
-//! 1. `ast`: the attribute and the struct, parsed with their spans;
-//! 2. `lower`: names resolved, expressions lowered into the hash-consed
-//!    DAG of `dag`; `valid`: counts and structural rank checked;
-//! 3. `model`: every derivative built with the rules of `diff`;
-//! 4. `emit`: common subexpressions shared, temporaries named;
-//! 5. `expand`: the items assembled, documented with formulas from
-//!    `display`.
+//! A thin shell around the symbolic engine, `linkage-symbolic` (parse,
+//! DAG, derivatives, normal form, shared subexpressions, emitted
+//! statements): `expand` assembles the engine's statements into documented
+//! items.
 //!
 //! Use it through the `linkage` crate, which documents the attribute.
 
 #![forbid(unsafe_code)]
 
-mod ast;
-mod dag;
-mod diff;
-mod display;
-mod emit;
-mod errors;
 mod expand;
 #[cfg(test)]
 mod fuzz;
 #[cfg(test)]
-mod interp;
-mod lower;
-mod model;
-mod normal;
-#[cfg(test)]
 mod proptests;
 #[cfg(test)]
 mod run_emitted;
-mod suggest;
-mod valid;
 
 use proc_macro::TokenStream;
 

@@ -3,8 +3,8 @@
 //! derivatives evaluated by the interpreter, against num-dual's automatic
 //! derivatives of the unsimplified tree.
 
-use crate::dag::{Dag, Func, Func2, Id, Symbol};
-use crate::interp::eval;
+use linkage_symbolic::dag::{Dag, Func, Func2, Id, Symbol};
+use linkage_symbolic::interp::eval;
 use num_dual::{Dual2_64, Dual64, DualNum, HyperDual64};
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;

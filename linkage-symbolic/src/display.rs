@@ -2,124 +2,7 @@
 //! symbolic table: `-l3·sin θ3`, `l2·cos θ2 + l3·cos θ3 + l4·cos θ4 - l1`.
 
 use crate::dag::{Dag, Func, Func2, Id, Node, Symbol};
-use crate::lower::Lowered;
-
-/// How symbols are shown.
-pub struct Names {
-    params: Vec<String>,
-    coords: Vec<String>,
-}
-
-impl Names {
-    pub fn new(lowered: &Lowered) -> Names {
-        Names {
-            params: (0..lowered.params.len())
-                .map(|k| lowered.param_name(k))
-                .collect(),
-            coords: (0..lowered.coords.len())
-                .map(|k| lowered.coord_name(k))
-                .collect(),
-        }
-    }
-
-    /// The name of a symbol as shown in a formula: Greek letters spelled out
-    /// in an identifier become Greek (`theta3` → `θ3`), velocities get a dot
-    /// (`θ̇3`) and accelerations two (`θ̈3`).
-    pub fn symbol(&self, s: Symbol) -> String {
-        match s {
-            Symbol::Param(k) => greek(&self.params[k as usize]),
-            Symbol::Coord(k) => greek(&self.coords[k as usize]),
-            Symbol::Vel(k) => dotted(&greek(&self.coords[k as usize]), '\u{307}'),
-            Symbol::Acc(k) => dotted(&greek(&self.coords[k as usize]), '\u{308}'),
-            Symbol::Constant(c) => {
-                use crate::dag::Constant::*;
-                match c {
-                    Pi => "π",
-                    Tau => "τ",
-                    E => "e",
-                    FracPi2 => "π/2",
-                    FracPi3 => "π/3",
-                    FracPi4 => "π/4",
-                    FracPi6 => "π/6",
-                    FracPi8 => "π/8",
-                    Frac1Pi => "1/π",
-                    Frac2Pi => "2/π",
-                    Frac2SqrtPi => "2/√π",
-                    Sqrt2 => "√2",
-                    Frac1Sqrt2 => "1/√2",
-                    Ln2 => "ln 2",
-                    Ln10 => "ln 10",
-                    Log2E => "log₂e",
-                    Log10E => "log₁₀e",
-                    Log2_10 => "log₂10",
-                    Log10_2 => "log₁₀2",
-                }
-                .to_owned()
-            }
-        }
-    }
-
-    /// A coordinate's display name.
-    pub fn coord(&self, k: usize) -> String {
-        greek(&self.coords[k])
-    }
-}
-
-const GREEK: [(&str, &str); 24] = [
-    ("alpha", "α"),
-    ("beta", "β"),
-    ("gamma", "γ"),
-    ("delta", "δ"),
-    ("epsilon", "ε"),
-    ("zeta", "ζ"),
-    ("eta", "η"),
-    ("theta", "θ"),
-    ("iota", "ι"),
-    ("kappa", "κ"),
-    ("lambda", "λ"),
-    ("mu", "μ"),
-    ("nu", "ν"),
-    ("xi", "ξ"),
-    ("omicron", "ο"),
-    ("pi", "π"),
-    ("rho", "ρ"),
-    ("sigma", "σ"),
-    ("tau", "τ"),
-    ("upsilon", "υ"),
-    ("phi", "φ"),
-    ("chi", "χ"),
-    ("psi", "ψ"),
-    ("omega", "ω"),
-];
-
-/// `theta3` → `θ3`, `phi_1` → `φ_1`, `Phi` → `Φ`; other names unchanged.
-pub fn greek(name: &str) -> String {
-    let alpha_len = name
-        .find(|c: char| !c.is_ascii_alphabetic())
-        .unwrap_or(name.len());
-    let (word, rest) = name.split_at(alpha_len);
-    for (latin, letter) in GREEK {
-        if word == latin {
-            return format!("{letter}{rest}");
-        }
-        if word.len() == latin.len()
-            && word[..1].chars().all(|c| c.is_ascii_uppercase())
-            && word.to_ascii_lowercase() == latin
-        {
-            return format!("{}{rest}", letter.to_uppercase());
-        }
-    }
-    name.to_owned()
-}
-
-/// The name with a combining mark on its first character: `θ3` → `θ̇3`.
-fn dotted(name: &str, mark: char) -> String {
-    let mut chars = name.chars();
-    match chars.next() {
-        Some(first) => format!("{first}{mark}{}", chars.as_str()),
-        None => String::new(),
-    }
-}
+use crate::names::SymbolNames;
 
 /// Binding strength, for parentheses.
 #[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
@@ -132,7 +15,7 @@ enum Prec {
 /// Renders formulas of one DAG.
 pub struct Formatter<'a> {
     pub dag: &'a Dag,
-    pub names: &'a Names,
+    pub names: &'a SymbolNames,
 }
 
 impl Formatter<'_> {
@@ -153,7 +36,7 @@ impl Formatter<'_> {
                 (number(c), if c < 0.0 { Prec::Sum } else { Prec::Atom })
             }
             Node::Sym(s) => {
-                let text = self.names.symbol(*s);
+                let text = self.names.display(*s);
                 let compound = matches!(s, Symbol::Constant(_)) && text.contains(['/', ' ']);
                 (text, if compound { Prec::Product } else { Prec::Atom })
             }
@@ -413,25 +296,16 @@ mod tests {
         let a = dag.product([(l3, 1), (l4, 1), (s3, 1), (c4, 1)]);
         let b = dag.product([(l3, 1), (l4, 1), (c3, 1), (s4, 1)]);
         let det = dag.sum([(-1.0, a), (1.0, b)]);
-        let names = Names {
-            params: vec!["l3".into(), "l4".into()],
-            coords: vec!["theta3".into(), "theta4".into()],
-        };
+        let names = SymbolNames::new(
+            vec!["l3".into(), "l4".into()],
+            vec!["theta3".into(), "theta4".into()],
+            2,
+        );
         let f = Formatter {
             dag: &dag,
             names: &names,
         };
         assert_eq!(f.format(det), "-l3·l4·(sin θ3·cos θ4 - cos θ3·sin θ4)");
-    }
-
-    #[test]
-    fn greek_names() {
-        assert_eq!(greek("theta3"), "θ3");
-        assert_eq!(greek("phi_1"), "φ_1");
-        assert_eq!(greek("Phi"), "Φ");
-        assert_eq!(greek("l3"), "l3");
-        assert_eq!(greek("thetas"), "thetas");
-        assert_eq!(dotted("θ3", '\u{307}'), "θ\u{307}3");
     }
 
     #[test]

@@ -612,4 +612,13 @@ impl Lowered {
     pub fn param_name(&self, k: usize) -> String {
         unraw(&self.params[k])
     }
+
+    /// The names of the symbols, for generated code and formulas.
+    pub fn names(&self) -> crate::names::SymbolNames {
+        crate::names::SymbolNames::new(
+            (0..self.params.len()).map(|k| self.param_name(k)).collect(),
+            (0..self.coords.len()).map(|k| self.coord_name(k)).collect(),
+            self.m,
+        )
+    }
 }

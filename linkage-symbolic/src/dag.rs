@@ -122,7 +122,7 @@ impl Constant {
         }
     }
 
-    #[cfg(test)]
+    /// The constant's value.
     pub fn value(self) -> f64 {
         use Constant::*;
         use std::f64::consts as c;
@@ -316,9 +316,15 @@ impl Dag {
         &self.nodes[id.index()]
     }
 
-    #[cfg(test)]
+    /// How many distinct nodes the DAG holds.
     pub fn len(&self) -> usize {
         self.nodes.len()
+    }
+
+    /// Whether the DAG holds no node (never, once built: it starts with
+    /// the constants 0 and 1).
+    pub fn is_empty(&self) -> bool {
+        self.nodes.is_empty()
     }
 
     fn intern(&mut self, node: Node) -> Id {

@@ -7,7 +7,7 @@
 
 use crate::dag::{Dag, Func, Func2, Id, Node, Symbol, children};
 use crate::display::display_order;
-use crate::lower::Lowered;
+use crate::names::SymbolNames;
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 use std::collections::{HashMap, HashSet};
@@ -39,45 +39,6 @@ pub struct Body {
     /// One expression per requested root, referring to the temporaries.
     pub values: Vec<TokenStream>,
     pub reads: Reads,
-}
-
-/// Names of the symbols in generated code.
-pub struct CodeNames {
-    params: Vec<String>,
-    coords: Vec<String>,
-    m: usize,
-}
-
-impl CodeNames {
-    pub fn new(lowered: &Lowered) -> CodeNames {
-        CodeNames {
-            params: (0..lowered.params.len())
-                .map(|k| lowered.param_name(k))
-                .collect(),
-            coords: (0..lowered.coords.len())
-                .map(|k| lowered.coord_name(k))
-                .collect(),
-            m: lowered.m,
-        }
-    }
-
-    fn symbol(&self, s: Symbol) -> String {
-        match s {
-            Symbol::Param(k) => self.params[k as usize].clone(),
-            Symbol::Coord(k) => self.coords[k as usize].clone(),
-            Symbol::Vel(k) => format!("{}_dot", self.coords[k as usize]),
-            Symbol::Acc(k) => format!("{}_ddot", self.coords[k as usize]),
-            Symbol::Constant(c) => c.name().to_ascii_lowercase(),
-        }
-    }
-
-    /// Every name a symbol can take: temporaries must avoid them.
-    pub fn all(&self) -> impl Iterator<Item = String> + '_ {
-        let n = self.coords.len() as u16;
-        self.params.iter().cloned().chain((0..n).flat_map(|k| {
-            [Symbol::Coord(k), Symbol::Vel(k), Symbol::Acc(k)].map(|s| self.symbol(s))
-        }))
-    }
 }
 
 /// An identifier for a generated name: names come from the user's
@@ -116,7 +77,7 @@ enum Prec {
 
 struct Emitter<'a> {
     dag: &'a Dag,
-    names: &'a CodeNames,
+    names: &'a SymbolNames,
     mode: Mode,
     /// Temporaries by node.
     bound: HashMap<Id, String>,
@@ -126,7 +87,7 @@ struct Emitter<'a> {
 /// nodes (e.g. a point's coordinates) and always binds them.
 pub fn emit(
     dag: &Dag,
-    names: &CodeNames,
+    names: &SymbolNames,
     roots: &[Id],
     hints: &[(Id, String)],
     reserved: &[String],
@@ -171,7 +132,7 @@ pub struct TrigSource {
 #[allow(clippy::too_many_arguments)]
 pub fn emit_phases(
     dag: &Dag,
-    names: &CodeNames,
+    names: &SymbolNames,
     phases: &[&[Id]],
     hints: &[(Id, String)],
     reserved: &[String],
@@ -222,7 +183,7 @@ pub fn emit_phases(
         })
         .collect();
 
-    let mut taken: HashSet<String> = names.all().collect();
+    let mut taken: HashSet<String> = names.all_code().collect();
     taken.extend(["u", "v", "udot", "vdot", "uddot", "vddot", "self", "D"].map(str::to_owned));
     taken.extend(reserved.iter().cloned());
     let mut emitter = Emitter {
@@ -389,11 +350,11 @@ impl Emitter<'_> {
     /// `let Self { l2, .. } = *self;` and `let (theta3, theta4) = (u[0], u[1]);`
     fn prologue(&self, symbols: &[Symbol], reads: &mut Reads) -> Vec<TokenStream> {
         let mut out = Vec::new();
-        let m = self.names.m;
+        let m = self.names.m();
         let mut params = Vec::new();
         let mut sources: [(Vec<TokenStream>, Vec<TokenStream>); 6] = Default::default();
         for &s in symbols {
-            let name = ident(&self.names.symbol(s));
+            let name = ident(&self.names.code(s));
             let (source, k) = match s {
                 Symbol::Param(_) => {
                     params.push(name);
@@ -457,7 +418,7 @@ impl Emitter<'_> {
                     "k".to_owned()
                 }
             }
-            Node::Sym(s) => self.names.symbol(*s),
+            Node::Sym(s) => self.names.code(*s),
             Node::Call(f, a) => {
                 let prefix = match f {
                     Func::Sin => "s",
@@ -594,7 +555,7 @@ impl Emitter<'_> {
                 }
             }
             Node::Sym(s) => {
-                let name = ident(&self.names.symbol(*s));
+                let name = ident(&self.names.code(*s));
                 (quote!(#name), Prec::Atom)
             }
             Node::Sum(terms) => self.sum(terms.iter().map(|&(c, t)| (c.get(), t)).collect()),

@@ -57,7 +57,7 @@ pub struct PointKinematics {
 }
 
 /// Every output of the macro, as DAG nodes.
-pub struct Model {
+pub struct Derivatives {
     pub lowered: Lowered,
     pub psi: Matrix,
     pub psi_q: Matrix,
@@ -78,10 +78,10 @@ pub struct Model {
     pub methods_agree: Option<bool>,
 }
 
-impl Model {
+impl Derivatives {
     // Index loops over rows and columns read like the formulas they compute.
     #[allow(clippy::needless_range_loop)]
-    pub fn build(mut lowered: Lowered) -> Model {
+    pub fn build(mut lowered: Lowered) -> Derivatives {
         let (m, f) = (lowered.m, lowered.f);
         let n = m + f;
         let dag = &mut lowered.dag;
@@ -177,7 +177,7 @@ impl Model {
             agree
         };
 
-        Model {
+        Derivatives {
             lowered,
             psi,
             psi_q,

@@ -1,0 +1,77 @@
+//! The symbolic engine of `linkage`: the closure equations of a planar
+//! mechanism, written as Rust expressions, turned into straight-line Rust
+//! for Ψ, its Jacobians and every second-order term.
+//!
+//! The pipeline, one module per stage:
+//!
+//! 1. [`ast`]: the attribute and the struct, parsed with their spans;
+//! 2. [`lower`]: names resolved, expressions lowered into the hash-consed
+//!    DAG of [`dag`]; [`valid`]: counts and structural rank checked;
+//! 3. [`derivatives`]: every derivative built with the rules of [`diff`],
+//!    the two acceleration methods compared in the normal form of
+//!    [`normal`];
+//! 4. [`emit`]: common subexpressions shared, temporaries named, Rust
+//!    statements emitted;
+//! 5. [`display`]: formulas as a textbook prints them, for documentation.
+//!
+//! [`build`] runs stages 1–3. The `#[linkage::linkage(...)]` attribute
+//! (crate `linkage-macros`) is a thin shell around this crate: it assembles
+//! the emitted statements into documented items.
+//!
+//! Features: `syntax` (default) reads and emits Rust with syn and quote;
+//! without it only the DAG, its derivative rules, its normal form, its
+//! display and [`names`] remain. `eval` adds [`interp`], an evaluator of the DAG on the dual
+//! numbers of num-dual.
+
+#![forbid(unsafe_code)]
+
+#[cfg(feature = "syntax")]
+pub mod ast;
+pub mod dag;
+#[cfg(feature = "syntax")]
+pub mod derivatives;
+pub mod diff;
+pub mod display;
+#[cfg(feature = "syntax")]
+pub mod emit;
+#[cfg(feature = "syntax")]
+pub mod errors;
+#[cfg(any(test, feature = "eval"))]
+pub mod interp;
+#[cfg(feature = "syntax")]
+pub mod lower;
+pub mod names;
+pub mod normal;
+#[cfg(feature = "syntax")]
+mod suggest;
+#[cfg(feature = "syntax")]
+pub mod valid;
+
+#[cfg(feature = "syntax")]
+pub use pipeline::build;
+
+#[cfg(feature = "syntax")]
+mod pipeline {
+    use crate::ast::Input;
+    use crate::derivatives::Derivatives;
+    use crate::errors::Errors;
+
+    /// Stages 2 and 3 on a parsed attribute: names resolved, counts and
+    /// structural rank checked, every derivative built. `None` when the
+    /// attribute has mistakes, every one of them recorded in `errors`.
+    pub fn build(input: &Input, errors: &mut Errors) -> Option<Derivatives> {
+        if !input.complete {
+            return None;
+        }
+        let shape_ok = crate::valid::check_shape(input, errors);
+        let mut lowered = crate::lower::lower(input, errors)?;
+        if !shape_ok {
+            return None;
+        }
+        crate::valid::check_structure(input, &mut lowered, errors);
+        if !errors.is_empty() {
+            return None;
+        }
+        Some(Derivatives::build(lowered))
+    }
+}
