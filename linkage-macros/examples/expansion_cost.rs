@@ -14,7 +14,7 @@
 
 // The macro's item assembly, compiled into this program (a proc-macro
 // crate exports nothing else); the engine is the linkage-symbolic crate.
-#[path = "../src/expand.rs"]
+#[path = "../src/expand/mod.rs"]
 mod expand;
 
 use plotters::prelude::*;

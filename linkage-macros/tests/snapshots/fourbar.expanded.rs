@@ -469,11 +469,10 @@ const _: () = {
                 Vector2::new(g4_x_ddot, g4_y_ddot),
             ]
         }
-        /// Everything at one pose in one pass: Ψ, Ψ_u and Ψ_v; the velocity
-        /// u̇ = −Ψ_u⁻¹Ψ_v v̇; γ = (Ψ_q q̇)_q q̇ at that velocity; and the
-        /// acceleration ü = −Ψ_u⁻¹(Ψ_v v̈ + γ). Each sine and cosine, and each
-        /// subexpression shared between these, is computed once: the fast path
-        /// of the runtime's analyses and sweeps.
+        /// Everything at one pose in one pass: Ψ, Ψ_u and Ψ_v; the velocity u̇ = −Ψ_u⁻¹Ψ_v v̇; γ =
+        /// (Ψ_q q̇)_q q̇ at that velocity; and the acceleration ü = −Ψ_u⁻¹(Ψ_v v̈ + γ). Each sine and
+        /// cosine, and each subexpression shared between these, is computed once: the fast path of
+        /// the runtime's analyses and sweeps.
         #[must_use]
         #[inline]
         pub fn kinematics(
@@ -536,11 +535,10 @@ const _: () = {
         /// Which coordinates of v appear under `sin`/`cos`, read from
         /// `trig_v`.
         pub const TRIG_V: [bool; 1] = [true];
-        /// [`Self::kinematics`] with the sines and cosines of the
-        /// coordinates given (`trig_u[k]` = (sin uₖ, cos uₖ), likewise
-        /// `trig_v`) instead of computed: a sweep carries them from pose
-        /// to pose by the angle-addition formulas, which costs a few
-        /// multiplications instead of a transcendental call.
+        /// [`Self::kinematics`] with the sines and cosines of the coordinates given (`trig_u[k]` =
+        /// (sin uₖ, cos uₖ), likewise `trig_v`) instead of computed: a sweep carries them from pose
+        /// to pose by the angle-addition formulas, which costs a few multiplications instead of a
+        /// transcendental call.
         #[must_use]
         #[inline(always)]
         #[allow(unused_variables, clippy::too_many_arguments)]
@@ -599,9 +597,9 @@ const _: () = {
                 uddot,
             }
         }
-        /// Ψ(u, v) on any dual number of `num_dual`: the same closure equations as
-        /// [`Self::psi`], for derivatives by automatic differentiation (cross-checks,
-        /// and the alternative Jacobian source of the runtime).
+        /// Ψ(u, v) on any dual number of `num_dual`: the same closure equations as [`Self::psi`], for
+        /// derivatives by automatic differentiation (cross-checks, and the alternative Jacobian
+        /// source of the runtime).
         ///
         /// ```text
         /// [ l2·cos θ2 + l3·cos θ3 + l4·cos θ4 - l1 ]
@@ -627,8 +625,7 @@ const _: () = {
             psi[1] = l2 * s_theta2 + l3 * s_theta3 + l4 * s_theta4;
             psi
         }
-        /// The point positions P(q) on any dual number of `num_dual`
-        /// (see [`Self::point_positions`]).
+        /// The point positions P(q) on any dual number of `num_dual` (see [`Self::point_positions`]).
         #[must_use]
         pub fn point_positions_generic<
             D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy,
@@ -938,7 +935,7 @@ const _: () = {
         fn psi_u(&self, u: &SVector<f64, 2>, v: &SVector<f64, 1>) -> SMatrix<f64, 2, 2> {
             Self::psi_u(self, u, v)
         }
-        fn psi_v(&self, u: &SVector<f64, 2>, v: &SVector<f64, 1>) -> SMatrix<f64, 2, 1> {
+        fn psi_v(&self, u: &SVector<f64, 2>, v: &SVector<f64, 1>) -> SVector<f64, 2> {
             Self::psi_v(self, u, v)
         }
         fn psi_and_psi_u(
@@ -961,7 +958,7 @@ const _: () = {
             u: &SVector<f64, 2>,
             v: &SVector<f64, 1>,
             udot: &SVector<f64, 2>,
-        ) -> SMatrix<f64, 2, 1> {
+        ) -> SVector<f64, 2> {
             Self::psi_u_udot_v(self, u, v, udot)
         }
         fn psi_v_vdot_u(
@@ -977,7 +974,7 @@ const _: () = {
             u: &SVector<f64, 2>,
             v: &SVector<f64, 1>,
             vdot: &SVector<f64, 1>,
-        ) -> SMatrix<f64, 2, 1> {
+        ) -> SVector<f64, 2> {
             Self::psi_v_vdot_v(self, u, v, vdot)
         }
         fn psi_u_dot(
@@ -995,7 +992,7 @@ const _: () = {
             v: &SVector<f64, 1>,
             udot: &SVector<f64, 2>,
             vdot: &SVector<f64, 1>,
-        ) -> SMatrix<f64, 2, 1> {
+        ) -> SVector<f64, 2> {
             Self::psi_v_dot(self, u, v, udot, vdot)
         }
         fn gamma(
@@ -1006,30 +1003,6 @@ const _: () = {
             vdot: &SVector<f64, 1>,
         ) -> SVector<f64, 2> {
             Self::gamma(self, u, v, udot, vdot)
-        }
-        #[inline]
-        fn kinematics(
-            &self,
-            u: &SVector<f64, 2>,
-            v: &SVector<f64, 1>,
-            vdot: &SVector<f64, 1>,
-            vddot: &SVector<f64, 1>,
-        ) -> ::linkage::Kinematics<2, 1> {
-            Self::kinematics(self, u, v, vdot, vddot)
-        }
-        const TRIG_U: [bool; 2] = Self::TRIG_U;
-        const TRIG_V: [bool; 1] = Self::TRIG_V;
-        #[inline(always)]
-        fn kinematics_with_trig(
-            &self,
-            u: &SVector<f64, 2>,
-            v: &SVector<f64, 1>,
-            trig_u: &[(f64, f64); 2],
-            trig_v: &[(f64, f64); 1],
-            vdot: &SVector<f64, 1>,
-            vddot: &SVector<f64, 1>,
-        ) -> ::linkage::Kinematics<2, 1> {
-            Self::kinematics_with_trig(self, u, v, trig_u, trig_v, vdot, vddot)
         }
         fn point_positions(
             &self,
@@ -1057,6 +1030,30 @@ const _: () = {
             vddot: &SVector<f64, 1>,
         ) -> [Vector2<f64>; 5] {
             Self::point_accelerations(self, u, v, udot, vdot, uddot, vddot)
+        }
+        #[inline]
+        fn kinematics(
+            &self,
+            u: &SVector<f64, 2>,
+            v: &SVector<f64, 1>,
+            vdot: &SVector<f64, 1>,
+            vddot: &SVector<f64, 1>,
+        ) -> ::linkage::Kinematics<2, 1> {
+            Self::kinematics(self, u, v, vdot, vddot)
+        }
+        const TRIG_U: [bool; 2] = Self::TRIG_U;
+        const TRIG_V: [bool; 1] = Self::TRIG_V;
+        #[inline(always)]
+        fn kinematics_with_trig(
+            &self,
+            u: &SVector<f64, 2>,
+            v: &SVector<f64, 1>,
+            trig_u: &[(f64, f64); 2],
+            trig_v: &[(f64, f64); 1],
+            vdot: &SVector<f64, 1>,
+            vddot: &SVector<f64, 1>,
+        ) -> ::linkage::Kinematics<2, 1> {
+            Self::kinematics_with_trig(self, u, v, trig_u, trig_v, vdot, vddot)
         }
         fn psi_generic<D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy>(
             &self,

@@ -1,0 +1,198 @@
+//! `kinematics` and `kinematics_with_trig`: Ψ, Ψ_u, Ψ_v, the velocity
+//! solve, γ and the acceleration solve in one pass of straight-line code.
+
+use super::Generator;
+use super::docs::doc_attributes;
+use super::function::{assemble, reaches};
+use linkage_symbolic::dag::{Dag, Id, Symbol};
+use linkage_symbolic::derivatives::Matrix;
+use linkage_symbolic::emit::{Mode, TrigSource, emit_phases};
+use proc_macro2::{Literal, TokenStream};
+use quote::{format_ident, quote};
+
+impl Generator<'_> {
+    /// `kinematics`: Ψ, Ψ_u, Ψ_v, the velocity solve and γ in one pass, every
+    /// sine, cosine and common subexpression computed once.
+    pub(super) fn kinematics_function(&self, with_trig: bool, doc: &[String]) -> TokenStream {
+        let doc = doc_attributes(doc);
+        let model = self.model;
+        let (m, f) = (self.m, self.f);
+        let (ml, fl) = (Literal::usize_unsuffixed(m), Literal::usize_unsuffixed(f));
+        let nonzero = |matrix: &Matrix| -> Vec<Id> {
+            matrix
+                .entries
+                .iter()
+                .copied()
+                .filter(|&e| e != Dag::ZERO)
+                .collect()
+        };
+        let mut first: Vec<Id> = nonzero(&model.psi);
+        first.extend(nonzero(&model.psi_u));
+        first.extend(nonzero(&model.psi_v));
+        let second = nonzero(&model.gamma);
+        let locals = [
+            "psi", "psi_u", "psi_v", "gamma", "inverse", "rcond", "det", "udot", "uddot",
+        ];
+        let local: Vec<String> = locals.iter().map(|n| self.free_name(n)).collect();
+        let late: Vec<Symbol> = (0..m).map(|k| Symbol::Vel(k as u16)).collect();
+        let trig_names = [self.free_name("trig_u"), self.free_name("trig_v")];
+        let source = TrigSource {
+            u: format_ident!("{}", trig_names[0]),
+            v: format_ident!("{}", trig_names[1]),
+            m,
+        };
+        let mut reserved = local.clone();
+        reserved.extend(trig_names.iter().cloned());
+        let phased = emit_phases(
+            self.dag(),
+            &self.names,
+            &[&first, &second],
+            &[],
+            &reserved,
+            Mode::F64,
+            &late,
+            with_trig.then_some(&source),
+        );
+        let [psi, psi_u, psi_v, gamma, inverse, rcond, det, udot, uddot] = locals.map(|n| {
+            let k = locals.iter().position(|x| *x == n).unwrap_or(0);
+            format_ident!("{}", local[k])
+        });
+        let mut phases = phased.phases.into_iter();
+        let (first_statements, first_values) = phases.next().unwrap_or_default();
+        let (second_statements, second_values) = phases.next().unwrap_or_default();
+        let mut values = first_values.iter();
+        let (psi_fill, _, _) = assemble(&model.psi, &psi.to_string(), &mut values, quote!(f64));
+        let (psi_u_fill, _, _) =
+            assemble(&model.psi_u, &psi_u.to_string(), &mut values, quote!(f64));
+        let (psi_v_fill, _, _) =
+            assemble(&model.psi_v, &psi_v.to_string(), &mut values, quote!(f64));
+        let mut values = second_values.iter();
+        let (gamma_fill, _, _) =
+            assemble(&model.gamma, &gamma.to_string(), &mut values, quote!(f64));
+        let bind = |name: &proc_macro2::Ident, fill: Vec<TokenStream>, ty: TokenStream| {
+            if fill.is_empty() {
+                quote!(let #name = #ty::zeros();)
+            } else {
+                quote!(#(#fill)*)
+            }
+        };
+        let psi_bind = bind(&psi, psi_fill, quote!(SVector::<f64, #ml>));
+        let psi_u_bind = bind(&psi_u, psi_u_fill, quote!(SMatrix::<f64, #ml, #ml>));
+        let psi_v_bind = bind(&psi_v, psi_v_fill, quote!(SMatrix::<f64, #ml, #fl>));
+        let gamma_bind = bind(&gamma, gamma_fill, quote!(SVector::<f64, #ml>));
+        // The velocities u̇ that γ uses, read from the solved vector.
+        let used: Vec<usize> = (0..m)
+            .filter(|&k| reaches(self.dag(), &second, Symbol::Vel(k as u16)))
+            .collect();
+        let velocity_names: Vec<proc_macro2::Ident> = used
+            .iter()
+            .map(|&k| format_ident!("{}", format!("{}_dot", self.model.lowered.coord_name(k))))
+            .collect();
+        let indices = used.iter().map(|&k| Literal::usize_unsuffixed(k));
+        let velocity_bind = match velocity_names.len() {
+            0 => quote!(),
+            1 => quote!(let #(#velocity_names)* = #(#udot[#indices])*;),
+            _ => quote!(let (#(#velocity_names),*) = (#(#udot[#indices]),*);),
+        };
+        // `field` when the local has the field's name, `field: local` else.
+        let field = |name: &str, local: &proc_macro2::Ident| {
+            let f = format_ident!("{}", name);
+            if *local == name {
+                quote!(#f)
+            } else {
+                quote!(#f: #local)
+            }
+        };
+        let inverse_pattern = {
+            let (a, b, c) = (
+                field("inverse", &inverse),
+                field("rcond", &rcond),
+                field("det", &det),
+            );
+            quote!(#a, #b, #c)
+        };
+        let fields = [
+            ("psi", &psi),
+            ("psi_u", &psi_u),
+            ("psi_v", &psi_v),
+            ("inverse", &inverse),
+            ("rcond", &rcond),
+            ("det", &det),
+            ("udot", &udot),
+            ("uddot", &uddot),
+        ]
+        .map(|(name, local)| field(name, local));
+        let prologue = &phased.prologue;
+        let reads = phased.reads;
+        let arg = |used: bool, name: &str| {
+            if used {
+                format_ident!("{}", name)
+            } else {
+                format_ident!("_{}", name)
+            }
+        };
+        let (u_arg, v_arg) = (arg(reads.u, "u"), arg(reads.v, "v"));
+        // The body, the same with computed or carried sines and cosines
+        // (the prologue reads them from wherever they come from).
+        let body = quote! {
+            #(#prologue)*
+            #(#first_statements)*
+            #psi_bind
+            #psi_u_bind
+            #psi_v_bind
+            let ::linkage::Inverse { #inverse_pattern } = ::linkage::invert(&#psi_u);
+            let #udot = -(#inverse * (#psi_v * vdot));
+            #velocity_bind
+            #(#second_statements)*
+            #gamma_bind
+            let #uddot = -(#inverse * (#psi_v * vddot + #gamma));
+            ::linkage::Kinematics { #(#fields),* }
+        };
+        if with_trig {
+            let (trig_u, trig_v) = (&source.u, &source.v);
+            let mask = |range: std::ops::Range<usize>| {
+                let flags = range.map(|k| phased.trig_coords.contains(&k));
+                quote!([#(#flags),*])
+            };
+            let (mask_u, mask_v) = (mask(0..m), mask(m..m + f));
+            return quote! {
+                /// Which coordinates of u appear under `sin`/`cos` in
+                /// [`Self::kinematics_with_trig`], which reads their sine and
+                /// cosine from `trig_u` (the others' entries are not read).
+                pub const TRIG_U: [bool; #ml] = #mask_u;
+                /// Which coordinates of v appear under `sin`/`cos`, read from
+                /// `trig_v`.
+                pub const TRIG_V: [bool; #fl] = #mask_v;
+                #doc
+                #[must_use]
+                #[inline(always)]
+                #[allow(unused_variables, clippy::too_many_arguments)]
+                pub fn kinematics_with_trig(
+                    &self,
+                    #u_arg: &SVector<f64, #ml>,
+                    #v_arg: &SVector<f64, #fl>,
+                    #trig_u: &[(f64, f64); #ml],
+                    #trig_v: &[(f64, f64); #fl],
+                    vdot: &SVector<f64, #fl>,
+                    vddot: &SVector<f64, #fl>,
+                ) -> ::linkage::Kinematics<#ml, #fl> {
+                    #body
+                }
+            };
+        }
+        quote! {
+            #doc
+            #[must_use]
+            #[inline]
+            pub fn kinematics(
+                &self,
+                #u_arg: &SVector<f64, #ml>,
+                #v_arg: &SVector<f64, #fl>,
+                vdot: &SVector<f64, #fl>,
+                vddot: &SVector<f64, #fl>,
+            ) -> ::linkage::Kinematics<#ml, #fl> {
+                #body
+            }
+        }
+    }
+}

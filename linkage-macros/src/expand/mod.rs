@@ -1,0 +1,412 @@
+//! The items the attribute emits, assembled with `quote!` from the table of
+//! quantities (`quantities.rs`): the inherent functions (`function.rs`,
+//! `kinematics.rs`, `generic.rs`), the `Linkage` impl (`trait_impl.rs`),
+//! the symbolic table (`symbolic_table.rs`) and, when the attribute has
+//! mistakes, the fallback (`fallback.rs`).
+
+mod docs;
+mod fallback;
+mod function;
+mod generic;
+mod kinematics;
+pub mod quantities;
+mod signature;
+mod symbolic_table;
+mod trait_impl;
+
+use function::Output;
+use linkage_symbolic::ast::Input;
+use linkage_symbolic::dag::{Dag, Id};
+use linkage_symbolic::derivatives::Derivatives;
+use linkage_symbolic::display::Formatter;
+use linkage_symbolic::errors::Errors;
+use linkage_symbolic::names::SymbolNames;
+use proc_macro2::{Literal, TokenStream};
+use quantities::{DocContext, QUANTITIES, Quantity, Scalar, Source};
+use quote::quote;
+
+/// The whole expansion: the struct unchanged, and either the generated items
+/// or, if the attribute has mistakes, every error plus the fallback items
+/// so that the rest of the user's code still type-checks.
+pub fn expand(attr: TokenStream, item: TokenStream) -> TokenStream {
+    let (input, result) = run(attr, item.clone());
+    match result {
+        Ok(tokens) => tokens,
+        Err(error) => {
+            let compile_errors = error.to_compile_error();
+            // The struct with the fallback items, or the item as written.
+            let item = input.as_ref().map(fallback::fallback).unwrap_or(item);
+            quote! {
+                #item
+                #compile_errors
+            }
+        }
+    }
+}
+
+/// The pipeline's verdict: the parsed input, if the item is a struct, and
+/// the generated items or every error found — always one or the other.
+pub fn run(
+    attr: TokenStream,
+    item: TokenStream,
+) -> (Option<Input>, Result<TokenStream, syn::Error>) {
+    let mut errors = Errors::default();
+    let input = Input::parse(attr, item, &mut errors);
+    let generated = input
+        .as_ref()
+        .and_then(|input| linkage_symbolic::build(input, &mut errors))
+        .zip(input.as_ref())
+        .map(|(model, input)| Generator::new(input, &model).items());
+    let result = match (errors.combined(), generated) {
+        (None, Some(tokens)) => Ok(tokens),
+        (Some(error), _) => Err(error),
+        // Every path that gives up records why; should one not, the user
+        // still gets an error rather than a struct without its methods.
+        (None, None) => Err(syn::Error::new(
+            proc_macro2::Span::call_site(),
+            "#[linkage::linkage(...)] could not read this attribute (an internal \
+             error: please report it with the attribute)",
+        )),
+    };
+    (input, result)
+}
+
+/// The items of one model.
+struct Generator<'a> {
+    input: &'a Input,
+    model: &'a Derivatives,
+    names: SymbolNames,
+    m: usize,
+    f: usize,
+    np: usize,
+}
+
+impl<'a> Generator<'a> {
+    fn new(input: &'a Input, model: &'a Derivatives) -> Generator<'a> {
+        Generator {
+            input,
+            model,
+            names: model.lowered.names(),
+            m: model.m(),
+            f: model.f(),
+            np: model.points.len(),
+        }
+    }
+
+    fn dag(&self) -> &Dag {
+        self.model.dag()
+    }
+
+    fn formatter(&self) -> Formatter<'_> {
+        Formatter {
+            dag: self.dag(),
+            names: &self.names,
+        }
+    }
+
+    fn coordinate_list(&self, range: std::ops::Range<usize>) -> String {
+        range
+            .map(|k| self.names.coord(k))
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+
+    fn doc_context(&self) -> DocContext {
+        let (m, f) = (self.m, self.f);
+        let agreement = match self.model.methods_agree {
+            Some(true) => {
+                "Expanded symbolically at compile time, γ by method A (Ψ̇_u u̇ + Ψ̇_v v̇), by method B \
+                 (the four blocks) and this fused form are the same polynomial in q̇."
+            }
+            Some(false) => {
+                "γ by method A and by method B do not expand to the same polynomial here \
+                 (they agree numerically; see the tests)."
+            }
+            None => "γ was too large to compare the two methods symbolically.",
+        };
+        DocContext {
+            m,
+            f,
+            u_list: self.coordinate_list(0..m),
+            v_list: self.coordinate_list(m..m + f),
+            q_list: self.coordinate_list(0..m + f),
+            point_list: self
+                .model
+                .points
+                .iter()
+                .map(|p| p.name.as_str())
+                .collect::<Vec<_>>()
+                .join(", "),
+            agreement: agreement.to_owned(),
+        }
+    }
+
+    /// The documentation of a quantity: its paragraph, then its formulas.
+    fn doc(&self, q: &Quantity, context: &DocContext) -> Vec<String> {
+        let fmt = self.formatter();
+        let mut lines = vec![(q.doc)(context)];
+        match q.source {
+            Source::Formula(matrix) => {
+                lines.push(String::new());
+                lines.push(self.formula_block(matrix(self.model), &fmt));
+            }
+            Source::Points(pick) if q.scalar == Scalar::F64 => {
+                lines.push(String::new());
+                lines.push("```text".to_owned());
+                for p in &self.model.points {
+                    let ids = [p.position, p.velocity, p.acceleration][pick];
+                    lines.push(format!("{}.x = {}", p.name, fmt.format(ids[0])));
+                    lines.push(format!("{}.y = {}", p.name, fmt.format(ids[1])));
+                }
+                lines.push("```".to_owned());
+            }
+            _ => {}
+        }
+        lines
+    }
+
+    /// The inherent function of a quantity.
+    fn inherent(&self, q: &Quantity, context: &DocContext) -> TokenStream {
+        let doc = self.doc(q, context);
+        match (q.scalar, q.source) {
+            (Scalar::F64, Source::Formula(matrix)) => {
+                let output = Output::Matrix(q.name, matrix(self.model).clone());
+                self.function(q, &doc, output)
+            }
+            (Scalar::F64, Source::PsiAndPsiU) => {
+                let output = Output::Tuple(vec![
+                    ("psi", self.model.psi.clone()),
+                    ("psi_u", self.model.psi_u.clone()),
+                ]);
+                self.function(q, &doc, output)
+            }
+            (Scalar::F64, Source::Points(pick)) => {
+                let suffix = ["", "_dot", "_ddot"][pick];
+                let entries: Vec<([Id; 2], [String; 2])> = self
+                    .model
+                    .points
+                    .iter()
+                    .map(|p| {
+                        let l = p.name.to_lowercase();
+                        let ids = [p.position, p.velocity, p.acceleration][pick];
+                        (ids, [format!("{l}_x{suffix}"), format!("{l}_y{suffix}")])
+                    })
+                    .collect();
+                self.function(q, &doc, Output::Points(entries))
+            }
+            (_, Source::Kinematics { with_trig }) => self.kinematics_function(with_trig, &doc),
+            (Scalar::Dual, Source::Formula(matrix)) => {
+                self.generic_formula(q, &doc, matrix(self.model))
+            }
+            (Scalar::Dual, Source::Points(_)) => self.generic_points(q, &doc),
+            (Scalar::Dual, Source::PsiAndPsiU) | (_, Source::Determinant) => quote!(),
+        }
+    }
+
+    fn items(&self) -> TokenStream {
+        let item = &self.input.item;
+        let ty = &item.ident;
+        let (impl_generics, ty_generics, where_clause) = item.generics.split_for_impl();
+        let context = self.doc_context();
+        let functions = QUANTITIES
+            .iter()
+            .filter(|q| q.function)
+            .map(|q| self.inherent(q, &context));
+        let u_names = self
+            .input
+            .u
+            .items
+            .iter()
+            .map(linkage_symbolic::lower::unraw);
+        let v_names = self
+            .input
+            .v
+            .items
+            .iter()
+            .map(linkage_symbolic::lower::unraw);
+        let point_names = self.model.points.iter().map(|p| p.name.as_str());
+        let (ml, fl, npl) = (
+            Literal::usize_unsuffixed(self.m),
+            Literal::usize_unsuffixed(self.f),
+            Literal::usize_unsuffixed(self.np),
+        );
+        let symbolic = self.symbolic_table();
+        let trait_impl = self.trait_impl();
+        quote! {
+            #item
+            const _: () = {
+                use ::linkage::nalgebra::{SMatrix, SVector, Vector2};
+
+                #[automatically_derived]
+                impl #impl_generics #ty #ty_generics #where_clause {
+                    /// The dependent coordinates u, in order.
+                    pub const U_NAMES: [&'static str; #ml] = [#(#u_names),*];
+                    /// The driving coordinates v, in order.
+                    pub const V_NAMES: [&'static str; #fl] = [#(#v_names),*];
+                    /// The named points, in order.
+                    pub const POINT_NAMES: [&'static str; #npl] = [#(#point_names),*];
+
+                    #(#functions)*
+
+                    /// Every generated quantity as a readable formula, for printing.
+                    pub const SYMBOLIC: ::linkage::SymbolicTable = #symbolic;
+                }
+
+                #trait_impl
+            };
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::expand;
+    use super::quantities::QUANTITIES;
+    use quote::quote;
+    use std::collections::BTreeSet;
+
+    /// The names of the functions of every inherent impl and of every
+    /// `Linkage` impl in an expansion, and the keys of its symbolic table.
+    fn inventory(file: &syn::File) -> (BTreeSet<String>, BTreeSet<String>, BTreeSet<String>) {
+        let (mut inherent, mut in_trait) = (BTreeSet::new(), BTreeSet::new());
+        let mut impls = Vec::new();
+        for item in &file.items {
+            if let syn::Item::Const(c) = item {
+                if let syn::Expr::Block(block) = &*c.expr {
+                    for stmt in &block.block.stmts {
+                        if let syn::Stmt::Item(syn::Item::Impl(i)) = stmt {
+                            impls.push(i.clone());
+                        }
+                    }
+                }
+            }
+        }
+        for i in &impls {
+            let names = i.items.iter().filter_map(|it| match it {
+                syn::ImplItem::Fn(f) => Some(f.sig.ident.to_string()),
+                _ => None,
+            });
+            if i.trait_.is_some() {
+                in_trait.extend(names);
+            } else {
+                inherent.extend(names);
+            }
+        }
+        let text = quote!(#file).to_string();
+        let keys = text
+            .split("key : \"")
+            .skip(1)
+            .filter_map(|rest| rest.split('"').next())
+            .map(str::to_owned)
+            .collect();
+        (inherent, in_trait, keys)
+    }
+
+    /// Adding a quantity is one entry of the table: every entry appears,
+    /// as its flags say, in the inherent items, the trait impl, the
+    /// fallback's inherent items and trait impl, and the symbolic table —
+    /// and nothing else does.
+    #[test]
+    fn every_quantity_of_the_table_is_generated_everywhere() {
+        let good = syn::parse_str::<syn::File>(&fourbar_expansion()).unwrap();
+        let broken = expand(
+            quote!(
+                u = [theta3, theta4],
+                v = [theta2],
+                closure = [l2 * thta3.cos(), l2 * theta4.sin()]
+            ),
+            quote!(
+                pub struct FourBar {
+                    pub l2: f64,
+                }
+            ),
+        );
+        let broken: syn::File = syn::parse2(broken).unwrap();
+        let functions: BTreeSet<String> = QUANTITIES
+            .iter()
+            .filter(|q| q.function)
+            .map(|q| q.name.to_owned())
+            .collect();
+        let in_trait: BTreeSet<String> = QUANTITIES
+            .iter()
+            .filter(|q| q.in_trait)
+            .map(|q| q.name.to_owned())
+            .collect();
+        let keys: BTreeSet<String> = QUANTITIES
+            .iter()
+            .filter_map(|q| q.key.map(str::to_owned))
+            .collect();
+        let (good_inherent, good_trait, good_keys) = inventory(&good);
+        assert_eq!(good_inherent, functions);
+        assert_eq!(good_trait, in_trait);
+        assert_eq!(good_keys, keys);
+        let (fallback_inherent, fallback_trait, _) = inventory(&broken);
+        assert_eq!(fallback_inherent, functions);
+        assert_eq!(fallback_trait, in_trait);
+        assert!(
+            quote!(#broken).to_string().contains("compile_error"),
+            "the broken attribute reports its mistake"
+        );
+    }
+
+    /// The four-bar of the worksheet, formatted as `cargo expand` shows it.
+    pub fn fourbar_expansion() -> String {
+        let attr = quote! {
+            u = [theta3, theta4],
+            v = [theta2],
+            points = [
+                B = (l2 * theta2.cos(), l2 * theta2.sin()),
+                C = (B.x + l3 * theta3.cos(), B.y + l3 * theta3.sin()),
+                G2 = (0.5 * B.x, 0.5 * B.y),
+                G3 = (0.5 * (B.x + C.x), 0.5 * (B.y + C.y)),
+                G4 = (C.x + 0.5 * l4 * theta4.cos(), C.y + 0.5 * l4 * theta4.sin()),
+            ],
+            closure = [
+                l2 * theta2.cos() + l3 * theta3.cos() + l4 * theta4.cos() - l1,
+                l2 * theta2.sin() + l3 * theta3.sin() + l4 * theta4.sin(),
+            ],
+        };
+        let item = quote! {
+            #[derive(Clone, Debug)]
+            pub struct FourBar { pub l1: f64, pub l2: f64, pub l3: f64, pub l4: f64 }
+        };
+        let tokens = expand(attr, item);
+        let file: syn::File = match syn::parse2(tokens.clone()) {
+            Ok(file) => file,
+            Err(e) => panic!("the expansion does not parse ({e}):\n{tokens}"),
+        };
+        prettyplease::unparse(&file)
+    }
+
+    /// The expansion of the worksheet's four-bar, formatted with
+    /// prettyplease, against the committed snapshot: any change to the
+    /// generated code shows up here for review. After a deliberate change,
+    /// `LINKAGE_BLESS=1 cargo test -p linkage-macros snapshot` rewrites it.
+    #[test]
+    fn fourbar_expansion_matches_the_snapshot() {
+        let text = fourbar_expansion();
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("tests/snapshots/fourbar.expanded.rs");
+        if std::env::var_os("LINKAGE_BLESS").is_some() {
+            std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+            std::fs::write(&path, &text).unwrap();
+        }
+        let expected = std::fs::read_to_string(&path).unwrap_or_default();
+        if text != expected {
+            let line = text
+                .lines()
+                .zip(expected.lines())
+                .position(|(a, b)| a != b)
+                .unwrap_or_else(|| text.lines().count().min(expected.lines().count()));
+            panic!(
+                "the four-bar's expansion differs from {} from line {}:\n  now:      {:?}\n  snapshot: {:?}\n\
+                 review the change, then rerun with LINKAGE_BLESS=1",
+                path.display(),
+                line + 1,
+                text.lines().nth(line),
+                expected.lines().nth(line)
+            );
+        }
+        assert!(text.contains("let (s_theta3, c_theta3) = theta3.sin_cos();"));
+    }
+}

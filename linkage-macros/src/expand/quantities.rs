@@ -1,0 +1,453 @@
+//! The one table of generated quantities. Each entry says what a generated
+//! function is called, what it takes and returns, where its value comes
+//! from and where it appears: the inherent items, the `Linkage` impl, the
+//! error-path fallback and the symbolic table are all generated from this
+//! table, so adding a quantity is one entry here (plus its formula in
+//! `linkage_symbolic::derivatives`).
+
+use linkage_symbolic::derivatives::{Derivatives, Matrix};
+
+/// An argument of a generated function, after `&self`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Arg {
+    U,
+    V,
+    Udot,
+    Vdot,
+    Uddot,
+    Vddot,
+    /// (sin uₖ, cos uₖ) per dependent coordinate.
+    TrigU,
+    /// (sin vₖ, cos vₖ) per driving coordinate.
+    TrigV,
+}
+
+impl Arg {
+    pub fn name(self) -> &'static str {
+        match self {
+            Arg::U => "u",
+            Arg::V => "v",
+            Arg::Udot => "udot",
+            Arg::Vdot => "vdot",
+            Arg::Uddot => "uddot",
+            Arg::Vddot => "vddot",
+            Arg::TrigU => "trig_u",
+            Arg::TrigV => "trig_v",
+        }
+    }
+
+    /// Whether the argument has one entry per dependent coordinate (else
+    /// one per driving coordinate).
+    pub fn is_dependent(self) -> bool {
+        matches!(self, Arg::U | Arg::Udot | Arg::Uddot | Arg::TrigU)
+    }
+}
+
+/// What a generated function returns.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shape {
+    /// m rows (Ψ, γ).
+    Column,
+    /// m × m (Jacobians with respect to u).
+    Square,
+    /// m × f (Jacobians with respect to v).
+    Wide,
+    /// m × (m + f) (Ψ_q).
+    Full,
+    /// (Ψ, Ψ_u).
+    ColumnAndSquare,
+    /// One 2-vector per named point.
+    Points,
+    /// `linkage::Kinematics<m, f>`.
+    Kinematics,
+}
+
+/// The number type of a function: `f64`, or any dual number of num-dual
+/// (the function is then generic in `D`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Scalar {
+    F64,
+    Dual,
+}
+
+/// Where a function's value comes from.
+#[derive(Clone, Copy)]
+pub enum Source {
+    /// One matrix of formulas of the derivatives.
+    Formula(fn(&Derivatives) -> &Matrix),
+    /// Ψ and Ψ_u in one evaluation.
+    PsiAndPsiU,
+    /// The points' positions (0), velocities (1) or accelerations (2).
+    Points(usize),
+    /// Everything at a pose, the sines and cosines computed or given.
+    Kinematics { with_trig: bool },
+    /// det Ψ_u: in the symbolic table only.
+    Determinant,
+}
+
+/// The text a quantity's documentation is written from.
+pub struct DocContext {
+    pub m: usize,
+    pub f: usize,
+    /// u, v and q = [u; v] as lists of formula names.
+    pub u_list: String,
+    pub v_list: String,
+    pub q_list: String,
+    pub point_list: String,
+    /// Whether the two acceleration methods expand to the same polynomial.
+    pub agreement: String,
+}
+
+/// One generated quantity.
+pub struct Quantity {
+    /// The function's name (and its key in the symbolic table unless
+    /// `key` says otherwise).
+    pub name: &'static str,
+    /// How a textbook writes it: the symbolic table's title.
+    pub symbol: &'static str,
+    pub args: &'static [Arg],
+    pub shape: Shape,
+    pub scalar: Scalar,
+    pub source: Source,
+    /// Whether the struct gets a function (false: a table entry only).
+    pub function: bool,
+    /// Whether the `Linkage` trait has it.
+    pub in_trait: bool,
+    /// Its key in the symbolic table, if it is listed there.
+    pub key: Option<&'static str>,
+    /// The first paragraph of its documentation (formulas follow).
+    pub doc: fn(&DocContext) -> String,
+}
+
+const U_V: &[Arg] = &[Arg::U, Arg::V];
+const U_V_UDOT: &[Arg] = &[Arg::U, Arg::V, Arg::Udot];
+const U_V_VDOT: &[Arg] = &[Arg::U, Arg::V, Arg::Vdot];
+const U_V_QDOT: &[Arg] = &[Arg::U, Arg::V, Arg::Udot, Arg::Vdot];
+const U_V_QDOT_QDDOT: &[Arg] = &[Arg::U, Arg::V, Arg::Udot, Arg::Vdot, Arg::Uddot, Arg::Vddot];
+const U_V_VDOT_VDDOT: &[Arg] = &[Arg::U, Arg::V, Arg::Vdot, Arg::Vddot];
+const U_V_TRIG_VDOT_VDDOT: &[Arg] = &[
+    Arg::U,
+    Arg::V,
+    Arg::TrigU,
+    Arg::TrigV,
+    Arg::Vdot,
+    Arg::Vddot,
+];
+
+/// An f64 function of one matrix of formulas, in the trait and the table.
+const fn formula(
+    name: &'static str,
+    symbol: &'static str,
+    args: &'static [Arg],
+    shape: Shape,
+    matrix: fn(&Derivatives) -> &Matrix,
+    doc: fn(&DocContext) -> String,
+) -> Quantity {
+    Quantity {
+        name,
+        symbol,
+        args,
+        shape,
+        scalar: Scalar::F64,
+        source: Source::Formula(matrix),
+        function: true,
+        in_trait: true,
+        key: Some(name),
+        doc,
+    }
+}
+
+/// Every generated quantity, in the order of the generated items.
+pub const QUANTITIES: &[Quantity] = &[
+    formula(
+        "psi",
+        "Ψ",
+        U_V,
+        Shape::Column,
+        |d| &d.psi,
+        |_| "Ψ(u, v): the closure equations, zero at every assembled pose.".to_owned(),
+    ),
+    Quantity {
+        in_trait: false,
+        ..formula(
+            "psi_q",
+            "Ψ_q",
+            U_V,
+            Shape::Full,
+            |d| &d.psi_q,
+            |c| {
+                format!(
+                    "Ψ_q = ∂Ψ/∂q, the {}×{} Jacobian with columns q = [{}] (u first, then v).",
+                    c.m,
+                    c.m + c.f,
+                    c.q_list
+                )
+            },
+        )
+    },
+    formula(
+        "psi_u",
+        "Ψ_u",
+        U_V,
+        Shape::Square,
+        |d| &d.psi_u,
+        |c| {
+            format!(
+                "Ψ_u = ∂Ψ/∂u, the {m}×{m} Jacobian with respect to u = [{}].",
+                c.u_list,
+                m = c.m
+            )
+        },
+    ),
+    formula(
+        "psi_v",
+        "Ψ_v",
+        U_V,
+        Shape::Wide,
+        |d| &d.psi_v,
+        |c| {
+            format!(
+                "Ψ_v = ∂Ψ/∂v, the {}×{} Jacobian with respect to v = [{}].",
+                c.m, c.f, c.v_list
+            )
+        },
+    ),
+    Quantity {
+        name: "psi_and_psi_u",
+        symbol: "(Ψ, Ψ_u)",
+        args: U_V,
+        shape: Shape::ColumnAndSquare,
+        scalar: Scalar::F64,
+        source: Source::PsiAndPsiU,
+        function: true,
+        in_trait: true,
+        key: None,
+        doc: |_| {
+            "Ψ and Ψ_u together, sharing every sine, cosine and common subexpression: \
+             one Newton–Raphson step's evaluation (see [`Self::psi`] and [`Self::psi_u`])."
+                .to_owned()
+        },
+    },
+    Quantity {
+        name: "det_psi_u",
+        symbol: "det Ψ_u",
+        args: U_V,
+        shape: Shape::Column,
+        scalar: Scalar::F64,
+        source: Source::Determinant,
+        function: false,
+        in_trait: false,
+        key: Some("det_psi_u"),
+        doc: |_| "det Ψ_u".to_owned(),
+    },
+    formula(
+        "psi_u_udot_u",
+        "([Ψ_u]u̇)_u",
+        U_V_UDOT,
+        Shape::Square,
+        |d| &d.psi_u_udot_u,
+        |c| {
+            format!(
+                "([Ψ_u]u̇)_u, the {m}×{m} Jacobian of Ψ_u u̇ with respect to u: the first block of method B (the seed's `Hu_u`).",
+                m = c.m
+            )
+        },
+    ),
+    formula(
+        "psi_u_udot_v",
+        "([Ψ_u]u̇)_v",
+        U_V_UDOT,
+        Shape::Wide,
+        |d| &d.psi_u_udot_v,
+        |c| {
+            format!(
+                "([Ψ_u]u̇)_v, the {}×{} Jacobian of Ψ_u u̇ with respect to v (non-zero when Ψ_u depends on v).",
+                c.m, c.f
+            )
+        },
+    ),
+    formula(
+        "psi_v_vdot_u",
+        "([Ψ_v]v̇)_u",
+        U_V_VDOT,
+        Shape::Square,
+        |d| &d.psi_v_vdot_u,
+        |c| {
+            format!(
+                "([Ψ_v]v̇)_u, the {m}×{m} Jacobian of Ψ_v v̇ with respect to u (non-zero when Ψ_v depends on u).",
+                m = c.m
+            )
+        },
+    ),
+    formula(
+        "psi_v_vdot_v",
+        "([Ψ_v]v̇)_v",
+        U_V_VDOT,
+        Shape::Wide,
+        |d| &d.psi_v_vdot_v,
+        |c| {
+            format!(
+                "([Ψ_v]v̇)_v, the {}×{} Jacobian of Ψ_v v̇ with respect to v (the seed's `Hv_v`).",
+                c.m, c.f
+            )
+        },
+    ),
+    formula(
+        "psi_u_dot",
+        "Ψ̇_u",
+        U_V_QDOT,
+        Shape::Square,
+        |d| &d.psi_u_dot,
+        |c| {
+            format!(
+                "Ψ̇_u = Σₖ ∂Ψ_u/∂qₖ q̇ₖ, the time derivative of Ψ_u ({m}×{m}): method A (the seed's `d_ps_u_pu`).",
+                m = c.m
+            )
+        },
+    ),
+    formula(
+        "psi_v_dot",
+        "Ψ̇_v",
+        U_V_QDOT,
+        Shape::Wide,
+        |d| &d.psi_v_dot,
+        |c| {
+            format!(
+                "Ψ̇_v = Σₖ ∂Ψ_v/∂qₖ q̇ₖ, the time derivative of Ψ_v ({}×{}): method A (the seed's `d_ps_v_pu`).",
+                c.m, c.f
+            )
+        },
+    ),
+    formula(
+        "gamma",
+        "γ = (Ψ_q q̇)_q q̇",
+        U_V_QDOT,
+        Shape::Column,
+        |d| &d.gamma,
+        |c| {
+            format!(
+                "γ = (Ψ_q q̇)_q q̇, the convective term of the acceleration equation \
+                 Ψ_u ü = −Ψ_v v̈ − γ, in one fused evaluation.\n\n{}",
+                c.agreement
+            )
+        },
+    ),
+    points("point_positions", "points", "P", U_V, 0, |c| {
+        format!("The positions P(q) of the points [{}].", c.point_list)
+    }),
+    points(
+        "point_velocities",
+        "point_velocities",
+        "Ṗ",
+        U_V_QDOT,
+        1,
+        |c| format!("The velocities Ṗ = P_q q̇ of the points [{}].", c.point_list),
+    ),
+    points(
+        "point_accelerations",
+        "point_accelerations",
+        "P̈",
+        U_V_QDOT_QDDOT,
+        2,
+        |c| {
+            format!(
+                "The accelerations P̈ = P_q q̈ + (P_q q̇)_q q̇ of the points [{}].",
+                c.point_list
+            )
+        },
+    ),
+    Quantity {
+        name: "kinematics",
+        symbol: "Ψ, Ψ_u, Ψ_v, u̇, ü",
+        args: U_V_VDOT_VDDOT,
+        shape: Shape::Kinematics,
+        scalar: Scalar::F64,
+        source: Source::Kinematics { with_trig: false },
+        function: true,
+        in_trait: true,
+        key: None,
+        doc: |_| {
+            "Everything at one pose in one pass: Ψ, Ψ_u and Ψ_v; the velocity \
+             u̇ = −Ψ_u⁻¹Ψ_v v̇; γ = (Ψ_q q̇)_q q̇ at that velocity; and the \
+             acceleration ü = −Ψ_u⁻¹(Ψ_v v̈ + γ). Each sine and cosine, and each \
+             subexpression shared between these, is computed once: the fast path \
+             of the runtime's analyses and sweeps."
+                .to_owned()
+        },
+    },
+    Quantity {
+        name: "kinematics_with_trig",
+        symbol: "Ψ, Ψ_u, Ψ_v, u̇, ü",
+        args: U_V_TRIG_VDOT_VDDOT,
+        shape: Shape::Kinematics,
+        scalar: Scalar::F64,
+        source: Source::Kinematics { with_trig: true },
+        function: true,
+        in_trait: true,
+        key: None,
+        doc: |_| {
+            "[`Self::kinematics`] with the sines and cosines of the coordinates \
+             given (`trig_u[k]` = (sin uₖ, cos uₖ), likewise `trig_v`) instead of \
+             computed: a sweep carries them from pose to pose by the angle-addition \
+             formulas, which costs a few multiplications instead of a transcendental \
+             call."
+                .to_owned()
+        },
+    },
+    Quantity {
+        name: "psi_generic",
+        symbol: "Ψ",
+        args: U_V,
+        shape: Shape::Column,
+        scalar: Scalar::Dual,
+        source: Source::Formula(|d| &d.psi),
+        function: true,
+        in_trait: true,
+        key: None,
+        doc: |_| {
+            "Ψ(u, v) on any dual number of `num_dual`: the same closure equations as \
+             [`Self::psi`], for derivatives by automatic differentiation (cross-checks, \
+             and the alternative Jacobian source of the runtime)."
+                .to_owned()
+        },
+    },
+    Quantity {
+        name: "point_positions_generic",
+        symbol: "P",
+        args: U_V,
+        shape: Shape::Points,
+        scalar: Scalar::Dual,
+        source: Source::Points(0),
+        function: true,
+        in_trait: true,
+        key: None,
+        doc: |_| {
+            "The point positions P(q) on any dual number of `num_dual` (see \
+             [`Self::point_positions`])."
+                .to_owned()
+        },
+    },
+];
+
+/// An f64 function of the points, in the trait and the table.
+const fn points(
+    name: &'static str,
+    key: &'static str,
+    symbol: &'static str,
+    args: &'static [Arg],
+    pick: usize,
+    doc: fn(&DocContext) -> String,
+) -> Quantity {
+    Quantity {
+        name,
+        symbol,
+        args,
+        shape: Shape::Points,
+        scalar: Scalar::F64,
+        source: Source::Points(pick),
+        function: true,
+        in_trait: true,
+        key: Some(key),
+        doc,
+    }
+}

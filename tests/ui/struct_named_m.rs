@@ -1,0 +1,24 @@
+use linkage::prelude::*;
+
+// A struct named like a dimension: the attribute's mistake is the only
+// error (the fallback's generic parameters must not turn `M` into a type).
+#[linkage::linkage(
+    u = [theta3, theta4],
+    v = [theta2],
+    closure = [
+        l2 * theta2.cos() + l3 * thta3.cos() + l4 * theta4.cos() - l1,
+        l2 * theta2.sin() + l3 * theta3.sin() + l4 * theta4.sin(),
+    ],
+)]
+pub struct M {
+    pub l1: f64,
+    pub l2: f64,
+    pub l3: f64,
+    pub l4: f64,
+}
+
+fn main() {
+    let bar = M { l1: 80.0, l2: 20.0, l3: 50.0, l4: 70.0 };
+    let _ = bar.solve_position(&vector![1.2, -0.9], &vector![0.3], &Options::default());
+    let _ = bar.psi_q::<2, 1, 3>(&vector![1.2, -0.9], &vector![0.3]);
+}
