@@ -5,6 +5,10 @@
 //! constant of `core::f64::consts`. Every mistake is recorded with the span of
 //! the offending token, and lowering continues so that all mistakes of one
 //! attribute are reported together.
+//!
+//! One idea in a little over 600 lines: the lookup of every name and the
+//! lowering of every expression form Rust allows in an equation belong
+//! together, as each form's errors speak of the names around it.
 
 use crate::ast::Input;
 use crate::dag::{Constant, Dag, Func, Func2, Id, Symbol};
