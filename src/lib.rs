@@ -51,8 +51,8 @@ pub mod batch;
 pub mod cam;
 pub mod closed_form;
 pub mod diagrams;
-pub mod dynamics;
-pub mod kinetostatics;
+pub mod machine;
+mod numerics;
 pub mod scene;
 mod svg;
 

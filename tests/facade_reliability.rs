@@ -26,8 +26,8 @@ use linkage::cam::{
     Cam, CamError, Follower, Law, Program, Rotation, Segment, smallest_rocker, smallest_translating,
 };
 use linkage::diagrams::{Chart, Diagrams, Hodographs, Kind, Panel};
-use linkage::dynamics::{Body, Load, Machine, Motor, Table, flywheel};
-use linkage::kinetostatics::Kinetostatics;
+use linkage::machine::kinetostatics::Kinetostatics;
+use linkage::machine::{Body, Load, Machine, Motor, Table, flywheel};
 use linkage::prelude::*;
 use linkage::scene::{Frame, Scene};
 use proptest::prelude::*;
@@ -526,7 +526,7 @@ fn four_bar(bits: &[u64; 4], ordinary: bool) -> FourBar {
 
 /// A machine of the four-bar with awkward bodies and loads, or ordinary
 /// ones (so that the analyses behind are reached).
-fn machine(world: &MachineWorld) -> Result<Machine<FourBar, 2>, linkage::dynamics::MachineError> {
+fn machine(world: &MachineWorld) -> Result<Machine<FourBar, 2>, linkage::machine::MachineError> {
     let (model_bits, body_bits, load_bits, grid_bits) = world;
     // Half the worlds ordinary throughout, so that the analyses behind the
     // checks are reached; the others awkward in a third of their numbers.

@@ -5,8 +5,8 @@
 mod common;
 
 use common::FourBar;
-use linkage::dynamics::{Body, Load, Machine};
-use linkage::kinetostatics::{Kinetostatics, KinetostaticsError};
+use linkage::machine::kinetostatics::{Kinetostatics, KinetostaticsError};
+use linkage::machine::{Body, Load, Machine};
 use linkage::prelude::*;
 
 /// The worksheet's four-bar in metres, with a heavy coupler and rocker and

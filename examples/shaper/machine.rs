@@ -15,8 +15,8 @@
 
 #![allow(dead_code)]
 
-use linkage::dynamics::{Body, Load, Machine, MachineError, Table};
-use linkage::kinetostatics::{Guide, Kinetostatics, KinetostaticsError};
+use linkage::machine::kinetostatics::{Guide, Kinetostatics, KinetostaticsError};
+use linkage::machine::{Body, Load, Machine, MachineError, Table};
 use linkage::prelude::*;
 
 /// The mechanism: u = (φ3, s, x_D) — the rocker's angle, the distance C→A

@@ -16,7 +16,7 @@
 mod machine;
 
 use linkage::diagrams::{Chart, Panel};
-use linkage::dynamics::{Applied, Motor, flywheel};
+use linkage::machine::{Applied, Motor, flywheel};
 use linkage::prelude::*;
 use linkage::scene::{Frame, Scene};
 use machine::{SEED, Shaper, machine, synthesize};
