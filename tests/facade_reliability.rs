@@ -25,11 +25,11 @@ use common::FourBar;
 use linkage::cam::{
     Cam, CamError, Follower, Law, Program, Rotation, Segment, smallest_rocker, smallest_translating,
 };
-use linkage::diagrams::{Chart, Diagrams, Hodographs, Kind, Panel};
+use linkage::draw::diagrams::{Chart, Diagrams, Hodographs, Kind, Panel};
+use linkage::draw::scene::{Frame, Scene};
 use linkage::machine::kinetostatics::Kinetostatics;
 use linkage::machine::{Body, Load, Machine, Motor, Table, flywheel};
 use linkage::prelude::*;
-use linkage::scene::{Frame, Scene};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed, TestCaseError, TestRunner};
 use std::cell::RefCell;

@@ -7,6 +7,7 @@
 #[path = "../examples/shaper/machine.rs"]
 mod machine;
 
+use linkage::error::{NameKind, UnknownName};
 use linkage::machine::{Machine, MachineError, Motor, flywheel};
 use linkage::prelude::*;
 use machine::{Data, SEED, Shaper, machine, synthesize};
@@ -721,7 +722,7 @@ fn bad_machines_are_typed_errors() {
         .err()
         .unwrap();
     assert!(
-        matches!(err, linkage::machine::MachineError::UnknownPoint { ref name, .. } if name == "Q"),
+        matches!(err, linkage::machine::MachineError::UnknownName(UnknownName { kind: NameKind::Point, ref name, .. }) if name == "Q"),
         "{err}"
     );
     let err = Machine::new(shaper, shaper.guess())
@@ -736,7 +737,10 @@ fn bad_machines_are_typed_errors() {
     assert!(
         matches!(
             err,
-            linkage::machine::MachineError::UnknownCoordinate { .. }
+            linkage::machine::MachineError::UnknownName(UnknownName {
+                kind: NameKind::Coordinate,
+                ..
+            })
         ),
         "{err}"
     );

@@ -68,33 +68,16 @@ pub enum CamError {
     },
 }
 
-impl std::fmt::Display for CamError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Self::BadSetting { must, value, what } => {
-                write!(f, "{what} must be {must}, got {value}")
-            }
-            Self::TooLong { total } => {
-                write!(f, "the program's segments take {total}° of the cam's 360°")
-            }
-            Self::Undercut { ranges, roller } => write!(
-                f,
-                "undercut: the pitch curve's radius of curvature is below the roller's radius {roller} for cam angles {ranges:?} (degrees)"
-            ),
-            Self::NoSize { angle, limit } => write!(
-                f,
-                "no cam up to a base radius of {limit} keeps the pressure angle within {angle}°"
-            ),
-            Self::Degenerate { phi, why } => write!(
-                f,
-                "the cam is degenerate at φ = {}°: {why}",
-                phi.to_degrees()
-            ),
-        }
+crate::error::error_impls! {
+    CamError {
+        Self::BadSetting { must, value, what } => ("{what} must be {must}, got {value}"),
+        Self::TooLong { total } => ("the program's segments take {total}° of the cam's 360°"),
+        Self::Undercut { ranges, roller } => ("undercut: the pitch curve's radius of curvature is below the roller's radius {roller} for cam angles {ranges:?} (degrees)"),
+        Self::NoSize { angle, limit } => ("no cam up to a base radius of {limit} keeps the pressure angle within {angle}°"),
+        Self::Degenerate { phi, why } => ("the cam is degenerate at φ = {}°: {why}", phi.to_degrees()),
     }
+    wraps {  }
 }
-
-impl std::error::Error for CamError {}
 
 /// The sense in which the cam turns.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

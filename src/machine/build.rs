@@ -5,6 +5,7 @@ use super::body::MassBody;
 use super::cycle::GridPose;
 use super::load::{LoadKind, ResolvedLoad, unit_direction};
 use super::{Body, Load, Machine, MachineError};
+use crate::error::{NameKind, UnknownName};
 use linkage_runtime::{Drive, Linkage, Options, SweepOptions};
 use nalgebra::{SVector, Vector2};
 use std::f64::consts::TAU;
@@ -51,26 +52,24 @@ impl Names {
     }
 
     /// The index of the point `name`, which `owner` names.
-    pub(crate) fn point(&self, owner: &str, name: &str) -> Result<usize, MachineError> {
-        self.points
-            .iter()
-            .position(|n| *n == name)
-            .ok_or_else(|| MachineError::UnknownPoint {
-                owner: owner.into(),
-                name: name.into(),
-                known: self.points.join(", "),
-            })
+    pub(crate) fn point(&self, owner: &str, name: &str) -> Result<usize, UnknownName> {
+        self.points.iter().position(|n| *n == name).ok_or_else(|| {
+            UnknownName::new(NameKind::Point, owner, name, self.points.iter().copied())
+        })
     }
 
     /// The index of the coordinate `name`, which `owner` names.
-    pub(crate) fn coordinate(&self, owner: &str, name: &str) -> Result<usize, MachineError> {
+    pub(crate) fn coordinate(&self, owner: &str, name: &str) -> Result<usize, UnknownName> {
         self.coordinates
             .iter()
             .position(|n| *n == name)
-            .ok_or_else(|| MachineError::UnknownCoordinate {
-                owner: owner.into(),
-                name: name.into(),
-                known: self.coordinates.join(", "),
+            .ok_or_else(|| {
+                UnknownName::new(
+                    NameKind::Coordinate,
+                    owner,
+                    name,
+                    self.coordinates.iter().copied(),
+                )
             })
     }
 }

@@ -54,24 +54,13 @@ pub use pose::Pose;
 pub use steady::{Motor, SteadyMotion};
 pub use table::Table;
 
+use crate::error::UnknownName;
 use linkage_runtime::Error;
 
 /// What went wrong setting up or analysing a machine.
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum MachineError {
-    /// A body or load names a point the model does not have.
-    UnknownPoint {
-        owner: String,
-        name: String,
-        known: String,
-    },
-    /// A body or load names a coordinate the model does not have.
-    UnknownCoordinate {
-        owner: String,
-        name: String,
-        known: String,
-    },
     /// A force table is not usable.
     BadTable { why: String },
     /// A number given is out of its range.
@@ -95,57 +84,21 @@ pub enum MachineError {
     /// A reduced quantity leaves the range of f64 at φ: the masses,
     /// inertias or loads are too large for it.
     Overflow { what: &'static str, phi: f64 },
+    /// A body or load names a point or a coordinate the model does not have.
+    UnknownName(UnknownName),
 }
 
-impl std::fmt::Display for MachineError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Self::UnknownPoint { known, name, owner } => write!(
-                f,
-                "`{owner}` names the point `{name}`, which the model does not define (its points: {known})"
-            ),
-            Self::UnknownCoordinate { known, name, owner } => write!(
-                f,
-                "`{owner}` names the coordinate `{name}`, which is neither in u nor v (coordinates: {known})"
-            ),
-            Self::BadTable { why } => write!(f, "the table is not usable: {why}"),
-            Self::BadSetting { must, value, what } => {
-                write!(f, "{what} must be {must}, got {value}")
-            }
-            Self::Kinematics(inner) => write!(f, "kinematics: {inner}"),
-            Self::Incomplete { phi, why } => write!(
-                f,
-                "the mechanism does not complete its cycle: it stops at φ = {phi} ({why})"
-            ),
-            Self::Stalls { phi } => write!(
-                f,
-                "the machine stalls at φ = {phi}: its kinetic energy runs out"
-            ),
-            Self::NoSteadyState { omega, why } => {
-                write!(f, "no periodic steady state near ω = {omega}: {why}")
-            }
-            Self::NonFiniteLoad { load, phi } => {
-                write!(f, "the load `{load}` is not finite at φ = {phi}")
-            }
-            Self::Overflow { what, phi } => write!(
-                f,
-                "{what} leaves the range of f64 at φ = {phi}: the masses, inertias or loads are too large"
-            ),
-        }
+crate::error::error_impls! {
+    MachineError {
+        Self::BadTable { why } => ("the table is not usable: {why}"),
+        Self::BadSetting { must, value, what } => ("{what} must be {must}, got {value}"),
+        Self::Kinematics(inner) => ("kinematics: {inner}"),
+        Self::Incomplete { phi, why } => ("the mechanism does not complete its cycle: it stops at φ = {phi} ({why})"),
+        Self::Stalls { phi } => ("the machine stalls at φ = {phi}: its kinetic energy runs out"),
+        Self::NoSteadyState { omega, why } => ("no periodic steady state near ω = {omega}: {why}"),
+        Self::NonFiniteLoad { load, phi } => ("the load `{load}` is not finite at φ = {phi}"),
+        Self::Overflow { what, phi } => ("{what} leaves the range of f64 at φ = {phi}: the masses, inertias or loads are too large"),
+            Self::UnknownName(inner) => ("{inner}"),
     }
-}
-
-impl std::error::Error for MachineError {
-    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
-        match self {
-            Self::Kinematics(e) => Some(e),
-            _ => None,
-        }
-    }
-}
-
-impl From<Error> for MachineError {
-    fn from(e: Error) -> Self {
-        Self::Kinematics(e)
-    }
+    wraps { Kinematics(Error), UnknownName(UnknownName) }
 }

@@ -5,7 +5,10 @@
 use super::{
     Kinetostatics, KinetostaticsError, PointRef, ResolvedGuide, ResolvedJoint, StaticBody,
 };
+use crate::error::{NameKind, UnknownName};
+use crate::ground::Ground;
 use crate::machine::Machine;
+use crate::machine::build::Names;
 use crate::machine::load::LoadKind;
 use linkage_runtime::Linkage;
 use nalgebra::Vector2;
@@ -67,6 +70,16 @@ impl<'m, L: Linkage<M, 1>, const M: usize> KinetostaticsBuilder<'m, L, M> {
     pub fn ground_point(mut self, name: &str, at: [f64; 2]) -> Self {
         self.ground_points
             .push((name.into(), Vector2::new(at[0], at[1])));
+        self
+    }
+
+    /// Every point of `ground` as a ground point (as
+    /// [`KinetostaticsBuilder::ground_point`] each): the same description a
+    /// scene takes.
+    pub fn with_ground(mut self, ground: &Ground) -> Self {
+        for (name, at) in ground.points() {
+            self.ground_points.push((name.into(), at));
+        }
         self
     }
 
@@ -171,10 +184,14 @@ impl<'m, L: Linkage<M, 1>, const M: usize> KinetostaticsBuilder<'m, L, M> {
                 .iter()
                 .position(|b| b == name)
                 .map(|k| k + 1)
-                .ok_or_else(|| KinetostaticsError::UnknownBody {
-                    owner: owner.into(),
-                    name: name.into(),
-                    known: format!("ground, {}", self.bodies.join(", ")),
+                .ok_or_else(|| {
+                    UnknownName::new(
+                        NameKind::Body,
+                        owner,
+                        name,
+                        std::iter::once("ground").chain(self.bodies.iter().map(String::as_str)),
+                    )
+                    .into()
                 })
         };
         let point_names = L::POINT_NAMES;
@@ -185,18 +202,18 @@ impl<'m, L: Linkage<M, 1>, const M: usize> KinetostaticsBuilder<'m, L, M> {
             if let Some((_, p)) = self.ground_points.iter().find(|(n, _)| n == name) {
                 return Ok(PointRef::Ground(*p));
             }
-            Err(KinetostaticsError::UnknownPoint {
-                owner: owner.into(),
-                name: name.into(),
-                known: point_names
+            Err(UnknownName::new(
+                NameKind::Point,
+                owner,
+                name,
+                point_names
                     .iter()
                     .copied()
-                    .chain(self.ground_points.iter().map(|(n, _)| n.as_str()))
-                    .collect::<Vec<_>>()
-                    .join(", "),
-            })
+                    .chain(self.ground_points.iter().map(|(n, _)| n.as_str())),
+            )
+            .into())
         };
-        let coordinates: Vec<&str> = L::U_NAMES.iter().chain(&L::V_NAMES).copied().collect();
+        let names = Names::of::<L, M, 1>();
         let mut joints = Vec::new();
         for joint in &self.joints {
             let guide = match &joint.kind {
@@ -204,14 +221,9 @@ impl<'m, L: Linkage<M, 1>, const M: usize> KinetostaticsBuilder<'m, L, M> {
                 Kind::Prismatic(Guide::Fixed(angle)) => {
                     Some(ResolvedGuide::Fixed(Vector2::new(angle.cos(), angle.sin())))
                 }
-                Kind::Prismatic(Guide::Angle(c)) => Some(ResolvedGuide::Angle(
-                    coordinates.iter().position(|n| n == c).ok_or_else(|| {
-                        KinetostaticsError::UnknownCoordinate {
-                            owner: joint.name.clone(),
-                            name: c.clone(),
-                        }
-                    })?,
-                )),
+                Kind::Prismatic(Guide::Angle(c)) => {
+                    Some(ResolvedGuide::Angle(names.coordinate(&joint.name, c)?))
+                }
                 Kind::Prismatic(Guide::Line(a, b)) => Some(ResolvedGuide::Line(
                     point_ref(&joint.name, a)?,
                     point_ref(&joint.name, b)?,

@@ -30,6 +30,7 @@ mod build;
 pub use build::{Guide, KinetostaticsBuilder};
 
 use super::{Applied, Machine, MachineError, Pose};
+use crate::error::UnknownName;
 use linkage_runtime::Linkage;
 use nalgebra::{DMatrix, DVector, Vector2};
 
@@ -46,20 +47,6 @@ pub enum KinetostaticsError {
     /// The reactions came out NaN or infinite (numbers so large that the
     /// equilibrium overflows).
     NonFinite,
-    UnknownBody {
-        owner: String,
-        name: String,
-        known: String,
-    },
-    UnknownPoint {
-        owner: String,
-        name: String,
-        known: String,
-    },
-    UnknownCoordinate {
-        owner: String,
-        name: String,
-    },
     UnassignedLoad {
         load: String,
     },
@@ -77,76 +64,24 @@ pub enum KinetostaticsError {
     },
     Machine(MachineError),
     Kinematics(linkage_runtime::Error),
+    /// A joint, rotor, driver or load names a body, point or coordinate that
+    /// neither the table nor the model defines.
+    UnknownName(UnknownName),
 }
 
-impl std::fmt::Display for KinetostaticsError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Self::BadSetting { what, must, value } => {
-                write!(f, "{what} must be {must}, got {value}")
-            }
-            Self::NonFinite => write!(
-                f,
-                "the reactions are not finite: the loads and speeds overflow the equilibrium"
-            ),
-            Self::UnknownBody { known, name, owner } => write!(
-                f,
-                "`{owner}` names the body `{name}`, which is not in the table (bodies: {known})"
-            ),
-            Self::UnknownPoint { known, name, owner } => write!(
-                f,
-                "`{owner}` names the point `{name}`, neither a point of the model nor a ground point (points: {known})"
-            ),
-            Self::UnknownCoordinate { name, owner } => write!(
-                f,
-                "`{owner}` names the coordinate `{name}`, which the model does not have"
-            ),
-            Self::UnassignedLoad { load } => write!(
-                f,
-                "the load `{load}` is not assigned to a body (use `load_on`)"
-            ),
-            Self::NoDriver => write!(
-                f,
-                "no driver: say which body carries the balancing moment (`driver`)"
-            ),
-            Self::NotSquare {
-                equations,
-                unknowns,
-                why,
-            } => write!(
-                f,
-                "the table gives {unknowns} unknowns (2 per revolute joint, 3 per prismatic, 1 balancing moment) but {equations} equations (3 per body, 1 per prismatic joint): {why}"
-            ),
-            Self::Indeterminate { joints, rcond } => write!(
-                f,
-                "the reactions of the joints {joints:?} are not determined (reciprocal condition {rcond:.1e}): the structure is statically indeterminate there, or can move by itself"
-            ),
-            Self::Machine(inner) => write!(f, "machine: {inner}"),
-            Self::Kinematics(inner) => write!(f, "kinematics: {inner}"),
-        }
+crate::error::error_impls! {
+    KinetostaticsError {
+        Self::BadSetting { what, must, value } => ("{what} must be {must}, got {value}"),
+        Self::NonFinite => ("the reactions are not finite: the loads and speeds overflow the equilibrium"),
+        Self::UnassignedLoad { load } => ("the load `{load}` is not assigned to a body (use `load_on`)"),
+        Self::NoDriver => ("no driver: say which body carries the balancing moment (`driver`)"),
+        Self::NotSquare { equations, unknowns, why, } => ("the table gives {unknowns} unknowns (2 per revolute joint, 3 per prismatic, 1 balancing moment) but {equations} equations (3 per body, 1 per prismatic joint): {why}"),
+        Self::Indeterminate { joints, rcond } => ("the reactions of the joints {joints:?} are not determined (reciprocal condition {rcond:.1e}): the structure is statically indeterminate there, or can move by itself"),
+        Self::Machine(inner) => ("machine: {inner}"),
+        Self::Kinematics(inner) => ("kinematics: {inner}"),
+            Self::UnknownName(inner) => ("{inner}"),
     }
-}
-
-impl std::error::Error for KinetostaticsError {
-    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
-        match self {
-            Self::Machine(e) => Some(e),
-            Self::Kinematics(e) => Some(e),
-            _ => None,
-        }
-    }
-}
-
-impl From<MachineError> for KinetostaticsError {
-    fn from(e: MachineError) -> Self {
-        Self::Machine(e)
-    }
-}
-
-impl From<linkage_runtime::Error> for KinetostaticsError {
-    fn from(e: linkage_runtime::Error) -> Self {
-        Self::Kinematics(e)
-    }
+    wraps { Machine(MachineError), Kinematics(linkage_runtime::Error), UnknownName(UnknownName) }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
