@@ -323,4 +323,16 @@ mod tests {
         let (x, fx) = minimize(&mut f, 0.0, 3.0, 1e-10).unwrap();
         assert!((x - 1.234).abs() < 1e-8 && (fx - 0.5).abs() < 1e-15);
     }
+
+    #[test]
+    fn bisection_finds_the_smallest_feasible_size() {
+        let mut feasible = |x: f64| x >= 2.5;
+        let (lo, hi) = bracket_feasible(&mut feasible, 0.0, 1.0, 100.0).unwrap();
+        assert!(!feasible(lo) && feasible(hi));
+        let x = bisect(&mut feasible, lo, hi);
+        assert!(x >= 2.5 && x - 2.5 <= 1e-12);
+        assert_eq!(bracket_feasible(&mut |_| false, 0.0, 1.0, 100.0), None);
+        assert_eq!(argmin(&[2.0, 1.0, 1.0]), 1);
+        assert_eq!(argmax(&[1.0, 2.0, 2.0]), 2);
+    }
 }

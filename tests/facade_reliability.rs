@@ -27,6 +27,7 @@ use linkage::cam::{
 };
 use linkage::draw::diagrams::{Chart, Diagrams, Hodographs, Kind, Panel};
 use linkage::draw::scene::{Frame, Scene};
+use linkage::ground::Ground;
 use linkage::machine::kinetostatics::Kinetostatics;
 use linkage::machine::{Body, Load, Machine, Motor, Table, flywheel};
 use linkage::prelude::*;
@@ -754,7 +755,7 @@ fn kinetostatics_never_hang_panic_or_lie() {
                 };
                 let names = ["body 0", "body 1", "body 2"];
                 let statics = Kinetostatics::new(&m)
-                    .ground_point("A", [0.0, x(2)])
+                    .with_ground(&Ground::new().point("A", [0.0, x(2)]))
                     .ground_point("D", [x(1), 0.0])
                     .body(names[0])
                     .body(names[1])
@@ -851,7 +852,7 @@ fn scenes_never_hang_panic_or_lie() {
                 let bar = four_bar(&model_bits, ordinary || model_bits[0] % 2 == 0);
                 let x = |k: usize, usual: f64| settings.get(k, usual);
                 let mut scene = Scene::new()
-                    .ground("A", [0.0, x(0, 0.0)])
+                    .with_ground(&Ground::new().point("A", [0.0, x(0, 0.0)]))
                     .ground("D", [80.0, 0.0])
                     .link(["A", "B"])
                     .link(["B", "C"])

@@ -1,6 +1,10 @@
 //! The drawing symbols of a scene: traces, guides, links and plates,
 //! slider blocks, joints and points, velocity and acceleration arrows,
 //! ground pivots, and the legend.
+//!
+//! Over 600 lines, as one idea: every element a scene draws, each a short
+//! function that writes its SVG in the scene's style (the `style` module);
+//! split further, the pieces would only share that style and the `Arrow`.
 
 use super::animation::{Motion, animate_values};
 use super::layout::{Layout, Placed, nice_below, number};
