@@ -99,7 +99,7 @@ fn time(
     threads: usize,
     repeats: usize,
 ) -> (f64, Vec<Merit>) {
-    let pool = linkage::rayon::ThreadPoolBuilder::new()
+    let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
         .expect("a thread pool");

@@ -16,7 +16,7 @@
 mod machine;
 
 use linkage::cam::{Cam, CamError, Follower, Law, Program, Rotation, Segment, smallest_rocker};
-use linkage::diagrams::{Chart, Panel};
+use linkage::draw::diagrams::{Chart, Panel};
 use std::collections::HashMap;
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::fmt::Write as _;

@@ -251,7 +251,7 @@ fn pictures(
     analysis: &Analysis<2, 1, [Vector2<f64>; 5]>,
     omega2: f64,
 ) -> Result<Vec<std::path::PathBuf>, Box<dyn std::error::Error>> {
-    use linkage::scene::{Frame, Scene};
+    use linkage::draw::scene::{Frame, Scene};
     let folder = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/figures/fourbar");
     std::fs::create_dir_all(&folder)?;
     // A revolution at ω2 = 400 rpm, by continuation from the worksheet's
@@ -303,7 +303,7 @@ fn pictures(
     let path = folder.join("motion.svg");
     std::fs::write(
         &path,
-        linkage::diagrams::Diagrams::new()
+        linkage::draw::diagrams::Diagrams::new()
             .title("θ₃, θ₄ and their rates over a revolution at ω₂ = 400 rpm")
             .render(bar, &sweep)?,
     )?;

@@ -1,4 +1,6 @@
-//! Many independent analyses at once, in parallel on rayon's thread pool.
+//! Many independent analyses at once, in parallel on rayon's thread pool
+//! (with the `parallel` feature, on by default; without it, one after the
+//! other, with the same results).
 //!
 //! Optimising a design means analysing thousands of parameter sets; each is
 //! independent of the others, so they spread over the cores with nothing
@@ -8,8 +10,8 @@
 //!
 //! The work runs on the current rayon pool: the global one (sized by
 //! `RAYON_NUM_THREADS`, by default one thread per core), or one of your own
-//! through [`rayon::ThreadPool::install`] (re-exported as
-//! [`linkage::rayon`](crate::rayon)).
+//! through `rayon::ThreadPool::install` (add `rayon` to your own
+//! dependencies for that).
 //!
 //! ```
 //! use linkage::prelude::*;
@@ -47,7 +49,20 @@
 
 use linkage_runtime::{Analysis, Drive, Error, Linkage, Options, SweepOptions, SweepSummary};
 use nalgebra::SVector;
+#[cfg(feature = "parallel")]
 use rayon::prelude::*;
+
+/// The jobs, on rayon's pool.
+#[cfg(feature = "parallel")]
+fn each<T: Sync>(jobs: &[T]) -> rayon::slice::Iter<'_, T> {
+    jobs.par_iter()
+}
+
+/// The jobs, one after the other (without the `parallel` feature).
+#[cfg(not(feature = "parallel"))]
+fn each<T>(jobs: &[T]) -> std::slice::Iter<'_, T> {
+    jobs.iter()
+}
 
 /// One sweep of a batch: a model (a parameter set), the guess of its
 /// starting pose and its drive.
@@ -85,7 +100,7 @@ where
     I: Fn(usize) -> A + Sync,
     P: Fn(&mut A, &linkage_runtime::SweepPose<M, F>) + Sync,
 {
-    jobs.par_iter()
+    each(jobs)
         .enumerate()
         .map(|(k, job)| {
             let mut value = init(k);
@@ -107,7 +122,8 @@ pub struct AnalysisJob<L, const M: usize, const F: usize> {
     pub vddot: SVector<f64, F>,
 }
 
-/// Runs every job's [`Linkage::analyze`] in parallel.
+/// Runs every job's [`Linkage::analyze`] in parallel (see the module
+/// documentation).
 #[allow(clippy::type_complexity)]
 pub fn analyses<L, const M: usize, const F: usize>(
     jobs: &[AnalysisJob<L, M, F>],
@@ -117,7 +133,7 @@ where
     L: Linkage<M, F> + Sync,
     L::Points: Send,
 {
-    jobs.par_iter()
+    each(jobs)
         .map(|job| {
             job.model
                 .analyze(&job.u_guess, &job.v, &job.vdot, &job.vddot, options)

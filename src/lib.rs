@@ -50,17 +50,17 @@ extern crate self as linkage;
 pub mod batch;
 pub mod cam;
 pub mod closed_form;
-pub mod diagrams;
-pub mod dynamics;
-pub mod kinetostatics;
-pub mod scene;
-mod svg;
+#[cfg(feature = "draw")]
+pub mod draw;
+pub mod error;
+pub mod ground;
+pub mod machine;
+mod numerics;
 
 pub use linkage_macros::linkage;
 pub use linkage_runtime::*;
 pub use nalgebra;
 pub use num_dual;
-pub use rayon;
 
 /// Everything a user of the attribute needs: the runtime's types, the
 /// `Linkage` trait (for the analyses) and nalgebra's vectors and matrices.

@@ -71,7 +71,7 @@ fn batch_sweeps_equal_single_sweeps_on_any_number_of_threads() {
         })
         .collect();
     for threads in [1, 2, 3] {
-        let pool = linkage::rayon::ThreadPoolBuilder::new()
+        let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(threads)
             .build()
             .unwrap();

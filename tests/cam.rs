@@ -519,6 +519,7 @@ fn bad_settings_are_typed_errors() {
         cam.profile(0.01, usize::MAX),
         Err(CamError::BadSetting { .. })
     ));
+    #[cfg(feature = "draw")]
     assert!(matches!(
         cam.drawing(0.01, 0.0, "", f64::NAN),
         Err(CamError::BadSetting { .. })

@@ -25,11 +25,12 @@ use common::FourBar;
 use linkage::cam::{
     Cam, CamError, Follower, Law, Program, Rotation, Segment, smallest_rocker, smallest_translating,
 };
-use linkage::diagrams::{Chart, Diagrams, Hodographs, Kind, Panel};
-use linkage::dynamics::{Body, Load, Machine, Motor, Table, flywheel};
-use linkage::kinetostatics::Kinetostatics;
+use linkage::draw::diagrams::{Chart, Diagrams, Hodographs, Kind, Panel};
+use linkage::draw::scene::{Frame, Scene};
+use linkage::ground::Ground;
+use linkage::machine::kinetostatics::Kinetostatics;
+use linkage::machine::{Body, Load, Machine, Motor, Table, flywheel};
 use linkage::prelude::*;
-use linkage::scene::{Frame, Scene};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed, TestCaseError, TestRunner};
 use std::cell::RefCell;
@@ -526,7 +527,7 @@ fn four_bar(bits: &[u64; 4], ordinary: bool) -> FourBar {
 
 /// A machine of the four-bar with awkward bodies and loads, or ordinary
 /// ones (so that the analyses behind are reached).
-fn machine(world: &MachineWorld) -> Result<Machine<FourBar, 2>, linkage::dynamics::MachineError> {
+fn machine(world: &MachineWorld) -> Result<Machine<FourBar, 2>, linkage::machine::MachineError> {
     let (model_bits, body_bits, load_bits, grid_bits) = world;
     // Half the worlds ordinary throughout, so that the analyses behind the
     // checks are reached; the others awkward in a third of their numbers.
@@ -754,7 +755,7 @@ fn kinetostatics_never_hang_panic_or_lie() {
                 };
                 let names = ["body 0", "body 1", "body 2"];
                 let statics = Kinetostatics::new(&m)
-                    .ground_point("A", [0.0, x(2)])
+                    .with_ground(&Ground::new().point("A", [0.0, x(2)]))
                     .ground_point("D", [x(1), 0.0])
                     .body(names[0])
                     .body(names[1])
@@ -851,7 +852,7 @@ fn scenes_never_hang_panic_or_lie() {
                 let bar = four_bar(&model_bits, ordinary || model_bits[0] % 2 == 0);
                 let x = |k: usize, usual: f64| settings.get(k, usual);
                 let mut scene = Scene::new()
-                    .ground("A", [0.0, x(0, 0.0)])
+                    .with_ground(&Ground::new().point("A", [0.0, x(0, 0.0)]))
                     .ground("D", [80.0, 0.0])
                     .link(["A", "B"])
                     .link(["B", "C"])

@@ -5,8 +5,9 @@
 mod common;
 
 use common::FourBar;
-use linkage::dynamics::{Body, Load, Machine};
-use linkage::kinetostatics::{Kinetostatics, KinetostaticsError};
+use linkage::error::{NameKind, UnknownName};
+use linkage::machine::kinetostatics::{Kinetostatics, KinetostaticsError};
+use linkage::machine::{Body, Load, Machine};
 use linkage::prelude::*;
 
 /// The worksheet's four-bar in metres, with a heavy coupler and rocker and
@@ -227,7 +228,13 @@ fn a_redundant_or_loose_table_says_which_joints() {
         .err()
         .unwrap();
     assert!(
-        matches!(err, KinetostaticsError::UnknownPoint { .. }),
+        matches!(
+            err,
+            KinetostaticsError::UnknownName(UnknownName {
+                kind: NameKind::Point,
+                ..
+            })
+        ),
         "{err}"
     );
     let err = Kinetostatics::new(&m)
@@ -239,7 +246,13 @@ fn a_redundant_or_loose_table_says_which_joints() {
         .err()
         .unwrap();
     assert!(
-        matches!(err, KinetostaticsError::UnknownBody { .. }),
+        matches!(
+            err,
+            KinetostaticsError::UnknownName(UnknownName {
+                kind: NameKind::Body,
+                ..
+            })
+        ),
         "{err}"
     );
     let err = Kinetostatics::new(&m)

@@ -6,9 +6,10 @@ mod common;
 
 use common::{FourBar, OMEGA2, SEED, SLIDER_CRANK, SliderCrank};
 use linkage::closed_form;
-use linkage::diagrams::{DiagramError, Diagrams};
+use linkage::draw::diagrams::{DiagramError, Diagrams};
+use linkage::draw::scene::{Frame, Scene, SceneError};
+use linkage::error::{NameKind, UnknownName};
 use linkage::prelude::*;
-use linkage::scene::{Frame, Scene, SceneError};
 use std::f64::consts::TAU;
 
 /// The worksheet's pose: θ2 = 20°, ω2 = 400 rpm, α2 = 0.
@@ -344,7 +345,7 @@ fn bad_scenes_are_typed_errors() {
         .render(&frame, &[])
         .unwrap_err();
     assert!(
-        matches!(&err, SceneError::UnknownPoint { name, known } if name == "A" && known.contains("G3")),
+        matches!(&err, SceneError::UnknownName(UnknownName { kind: NameKind::Point, name, known, .. }) if name == "A" && known.contains("G3")),
         "{err}"
     );
     let positions_only = Frame::positions(&SEED, &pose.u, &vector![20f64.to_radians()]);

@@ -7,7 +7,8 @@
 #[path = "../examples/shaper/machine.rs"]
 mod machine;
 
-use linkage::dynamics::{Machine, MachineError, Motor, flywheel};
+use linkage::error::{NameKind, UnknownName};
+use linkage::machine::{Machine, MachineError, Motor, flywheel};
 use linkage::prelude::*;
 use machine::{Data, SEED, Shaper, machine, synthesize};
 use std::collections::HashMap;
@@ -92,7 +93,7 @@ fn ours(data: &Data) -> HashMap<&'static str, f64> {
         .unwrap()
         .into_iter()
         .find_map(|(load, applied)| match applied {
-            linkage::dynamics::Applied::Force { force, .. } if load == 0 => Some(force.x),
+            linkage::machine::Applied::Force { force, .. } if load == 0 => Some(force.x),
             _ => None,
         })
         .unwrap();
@@ -430,7 +431,7 @@ fn other_inputs_keep_the_methods_invariants() {
     assert!((dead / (TAU - dead) - data.k_v).abs() < 1e-13);
     // Energy balance over a cycle: M_D·2π = −A(2π) = the cutting diagram's
     // area + friction over both strokes (gravity does no work over a cycle).
-    let area = linkage::dynamics::Table::new(
+    let area = linkage::machine::Table::new(
         data.cutting
             .iter()
             .map(|&(s, f)| (s * data.stroke, f))
@@ -609,7 +610,7 @@ fn a_force_that_jumps_and_work_over_any_angle() {
 /// zero, a load that returns NaN.
 #[test]
 fn bad_settings_of_a_machine_are_typed_errors() {
-    use linkage::dynamics::{Body, Load, MachineError as E};
+    use linkage::machine::{Body, Load, MachineError as E};
     let shaper = synthesize(&SEED).unwrap();
     let m = machine(&shaper, &SEED).unwrap();
     let omega = TAU * SEED.n1;
@@ -716,17 +717,17 @@ fn the_synthesis_rejects_a_time_ratio_of_one_or_less() {
 fn bad_machines_are_typed_errors() {
     let shaper = synthesize(&SEED).unwrap();
     let err = Machine::new(shaper, shaper.guess())
-        .body(linkage::dynamics::Body::new("ram").mass(1.0).at("Q"))
+        .body(linkage::machine::Body::new("ram").mass(1.0).at("Q"))
         .build()
         .err()
         .unwrap();
     assert!(
-        matches!(err, linkage::dynamics::MachineError::UnknownPoint { ref name, .. } if name == "Q"),
+        matches!(err, linkage::machine::MachineError::UnknownName(UnknownName { kind: NameKind::Point, ref name, .. }) if name == "Q"),
         "{err}"
     );
     let err = Machine::new(shaper, shaper.guess())
         .body(
-            linkage::dynamics::Body::new("rocker")
+            linkage::machine::Body::new("rocker")
                 .inertia(1.0)
                 .angle("psi"),
         )
@@ -736,18 +737,21 @@ fn bad_machines_are_typed_errors() {
     assert!(
         matches!(
             err,
-            linkage::dynamics::MachineError::UnknownCoordinate { .. }
+            linkage::machine::MachineError::UnknownName(UnknownName {
+                kind: NameKind::Coordinate,
+                ..
+            })
         ),
         "{err}"
     );
-    assert!(linkage::dynamics::Table::new(vec![(0.0, 1.0), (0.0, 2.0)]).is_err());
+    assert!(linkage::machine::Table::new(vec![(0.0, 1.0), (0.0, 2.0)]).is_err());
     let err = Machine::new(shaper, shaper.guess())
-        .body(linkage::dynamics::Body::new("ram").mass(-1.0).at("S5"))
+        .body(linkage::machine::Body::new("ram").mass(-1.0).at("S5"))
         .build()
         .err()
         .unwrap();
     assert!(
-        matches!(err, linkage::dynamics::MachineError::BadSetting { .. }),
+        matches!(err, linkage::machine::MachineError::BadSetting { .. }),
         "{err}"
     );
     // A crank as long as the pivot distance: A passes through C, where the
@@ -760,8 +764,8 @@ fn bad_machines_are_typed_errors() {
     assert!(
         matches!(
             err,
-            linkage::dynamics::MachineError::Incomplete { .. }
-                | linkage::dynamics::MachineError::Kinematics(_)
+            linkage::machine::MachineError::Incomplete { .. }
+                | linkage::machine::MachineError::Kinematics(_)
         ),
         "{err}"
     );

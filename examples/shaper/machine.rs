@@ -15,8 +15,9 @@
 
 #![allow(dead_code)]
 
-use linkage::dynamics::{Body, Load, Machine, MachineError, Table};
-use linkage::kinetostatics::{Guide, Kinetostatics, KinetostaticsError};
+use linkage::ground::Ground;
+use linkage::machine::kinetostatics::{Guide, Kinetostatics, KinetostaticsError};
+use linkage::machine::{Body, Load, Machine, MachineError, Table};
 use linkage::prelude::*;
 
 /// The mechanism: u = (φ3, s, x_D) — the rocker's angle, the distance C→A
@@ -227,6 +228,14 @@ pub fn machine(shaper: &Shaper, data: &Data) -> Result<Machine<Shaper, 3>, Machi
         .build()
 }
 
+/// The frame's fixed points, written once: the crank's pivot O and the
+/// rocker's pivot C. The picture and the force analysis both take them.
+pub fn ground(shaper: &Shaper) -> Ground {
+    Ground::new()
+        .point("O", [0.0, 0.0])
+        .point("C", [0.0, shaper.y_c])
+}
+
 /// The seed's force analysis: bodies 1–5 (crank, block, rocker, block,
 /// ram), the joint table 10, 12, 30, 34 (revolute), 23, 45, 50 (prismatic)
 /// in the seed's order, the loads on the ram, the flywheel's J_PRI on the
@@ -237,8 +246,7 @@ pub fn kinetostatics<'m>(
 ) -> Result<Kinetostatics<'m, Shaper, 3>, KinetostaticsError> {
     let shaper = machine.model();
     Kinetostatics::new(machine)
-        .ground_point("O", [0.0, 0.0])
-        .ground_point("C", [0.0, shaper.y_c])
+        .with_ground(&ground(shaper))
         .body("crank 1")
         .body("block 2")
         .body("rocker 3")

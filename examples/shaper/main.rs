@@ -15,10 +15,10 @@
 
 mod machine;
 
-use linkage::diagrams::{Chart, Panel};
-use linkage::dynamics::{Applied, Motor, flywheel};
+use linkage::draw::diagrams::{Chart, Panel};
+use linkage::draw::scene::{Frame, Scene};
+use linkage::machine::{Applied, Motor, flywheel};
 use linkage::prelude::*;
-use linkage::scene::{Frame, Scene};
 use machine::{SEED, Shaper, machine, synthesize};
 use std::collections::HashMap;
 use std::f64::consts::{PI, TAU};
@@ -358,8 +358,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         &vector![eps],
     );
     let scene = Scene::new()
-        .ground("O", [0.0, 0.0])
-        .ground("C", [0.0, shaper.y_c])
+        .with_ground(&machine::ground(&shaper))
         .link(["O", "A"])
         .link(["C", "D"])
         .link(["D", "F"])
@@ -471,7 +470,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "F30: ground on rocker, at C",
         "F34: block 4 on rocker, at D",
     ];
-    let mut chart = linkage::diagrams::Hodographs::new(
+    let mut chart = linkage::draw::diagrams::Hodographs::new(
         "Hodographs of the joint reactions over a cycle (the red vector: at f)",
         "N",
     );

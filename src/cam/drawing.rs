@@ -3,7 +3,7 @@
 //! angle at the contact.
 
 use super::{Cam, CamError, Follower, ProfilePoint, perp, rotate};
-use crate::svg::{Writer, fmt};
+use crate::draw::svg::{Writer, fmt};
 use nalgebra::Vector2;
 
 const INK: &str = "#1b1b1b";

@@ -12,12 +12,24 @@
 //! (or guide) turns the other way (inversion). Derivatives with respect to
 //! φ are analytic: the law's S′, S″ scaled by the segment.
 
+//!
+//! The area's files: the motion laws (`laws.rs`), the follower's program
+//! (`program.rs`), the cam's geometry (here), the smallest cam
+//! (`sizing.rs`) and the drawing (`drawing.rs`, with the `draw` feature).
+
+#[cfg(feature = "draw")]
 mod drawing;
 mod laws;
+mod program;
+mod sizing;
 
 pub use laws::{Derivatives, Law};
+pub use program::{Program, Segment, Stroke};
+pub use sizing::{smallest_rocker, smallest_translating};
 
+use crate::numerics;
 use nalgebra::Vector2;
+use program::cam_angle;
 use std::f64::consts::{PI, TAU};
 
 /// What went wrong designing a cam.
@@ -56,234 +68,15 @@ pub enum CamError {
     },
 }
 
-impl std::fmt::Display for CamError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Self::BadSetting { must, value, what } => {
-                write!(f, "{what} must be {must}, got {value}")
-            }
-            Self::TooLong { total } => {
-                write!(f, "the program's segments take {total}° of the cam's 360°")
-            }
-            Self::Undercut { ranges, roller } => write!(
-                f,
-                "undercut: the pitch curve's radius of curvature is below the roller's radius {roller} for cam angles {ranges:?} (degrees)"
-            ),
-            Self::NoSize { angle, limit } => write!(
-                f,
-                "no cam up to a base radius of {limit} keeps the pressure angle within {angle}°"
-            ),
-            Self::Degenerate { phi, why } => write!(
-                f,
-                "the cam is degenerate at φ = {}°: {why}",
-                phi.to_degrees()
-            ),
-        }
+crate::error::error_impls! {
+    CamError {
+        Self::BadSetting { must, value, what } => ("{what} must be {must}, got {value}"),
+        Self::TooLong { total } => ("the program's segments take {total}° of the cam's 360°"),
+        Self::Undercut { ranges, roller } => ("undercut: the pitch curve's radius of curvature is below the roller's radius {roller} for cam angles {ranges:?} (degrees)"),
+        Self::NoSize { angle, limit } => ("no cam up to a base radius of {limit} keeps the pressure angle within {angle}°"),
+        Self::Degenerate { phi, why } => ("the cam is degenerate at φ = {}°: {why}", phi.to_degrees()),
     }
-}
-
-impl std::error::Error for CamError {}
-
-/// One segment of the follower's program.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Segment {
-    /// Out by the lift over `angle` (rad) of cam rotation.
-    Rise { angle: f64, law: Law },
-    /// At rest.
-    Dwell { angle: f64 },
-    /// Back by the lift, the law run backwards (a time-reversed rise, as
-    /// the course project's return).
-    Return { angle: f64, law: Law },
-}
-
-impl Segment {
-    fn angle(&self) -> f64 {
-        match *self {
-            Segment::Rise { angle, .. }
-            | Segment::Dwell { angle }
-            | Segment::Return { angle, .. } => angle,
-        }
-    }
-}
-
-/// The follower's program over a turn of the cam: segments from φ = 0, the
-/// rest of the turn a dwell at the start. Made by [`Program::new`], which
-/// checks it.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Program {
-    lift: f64,
-    segments: Vec<Segment>,
-}
-
-/// Which part of the program a cam angle falls in.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Stroke {
-    Rise,
-    Dwell,
-    Return,
-}
-
-/// A cam angle, checked: finite.
-fn cam_angle(phi: f64) -> Result<f64, CamError> {
-    if phi.is_finite() {
-        Ok(phi)
-    } else {
-        Err(CamError::BadSetting {
-            what: "the cam angle",
-            must: "finite",
-            value: phi,
-        })
-    }
-}
-
-impl Program {
-    /// The program of `segments`, each of a finite angle ≥ 0 and a valid
-    /// law, taking at most a turn, for a `lift` > 0.
-    pub fn new(lift: f64, segments: Vec<Segment>) -> Result<Program, CamError> {
-        if !(lift.is_finite() && lift > 0.0) {
-            return Err(CamError::BadSetting {
-                what: "the lift",
-                must: "positive",
-                value: lift,
-            });
-        }
-        let mut total = 0.0;
-        for s in &segments {
-            let a = s.angle();
-            if !(a.is_finite() && a >= 0.0) {
-                return Err(CamError::BadSetting {
-                    what: "a segment's angle",
-                    must: "finite and ≥ 0",
-                    value: a,
-                });
-            }
-            if let Segment::Rise { law, .. } | Segment::Return { law, .. } = s {
-                if let Law::ConstantAcceleration { k } = *law {
-                    if !law.is_valid() {
-                        return Err(CamError::BadSetting {
-                            what: "the asymmetry k of a constant-acceleration law",
-                            must: "positive, finite, and such that 2(k + 1)/k is finite",
-                            value: k,
-                        });
-                    }
-                }
-            }
-            total += a;
-        }
-        if total > TAU * (1.0 + 1e-12) {
-            return Err(CamError::TooLong {
-                total: total.to_degrees(),
-            });
-        }
-        Ok(Program { lift, segments })
-    }
-
-    /// The follower's lift.
-    pub fn lift(&self) -> f64 {
-        self.lift
-    }
-
-    /// The segments, from φ = 0.
-    pub fn segments(&self) -> &[Segment] {
-        &self.segments
-    }
-
-    /// s(φ) and its derivatives s′, s″, s‴ with respect to φ (the cam
-    /// angle, any finite one: the program repeats every turn), and the
-    /// stroke.
-    pub fn at(&self, phi: f64) -> Result<(Derivatives, Stroke), CamError> {
-        let (s, stroke) = self.motion(cam_angle(phi)?);
-        if !s.iter().all(|x| x.is_finite()) {
-            return Err(CamError::Degenerate {
-                phi,
-                why: "the follower's derivatives leave the range of f64 (a segment too short for its lift)",
-            });
-        }
-        Ok((s, stroke))
-    }
-
-    /// [`Program::at`] for a finite φ.
-    fn motion(&self, phi: f64) -> (Derivatives, Stroke) {
-        let phi = phi.rem_euclid(TAU);
-        let mut start = 0.0;
-        let mut level = 0.0;
-        for s in &self.segments {
-            let a = s.angle();
-            if phi < start + a
-                || (phi == start + a && a > 0.0 && !matches!(s, Segment::Dwell { .. }))
-            {
-                let x = (phi - start) / a;
-                let scale = |d: Derivatives, sign: f64| -> Derivatives {
-                    [
-                        d[0],
-                        sign * d[1] / a,
-                        d[2] / (a * a),
-                        sign * d[3] / (a * a * a),
-                    ]
-                };
-                return match *s {
-                    Segment::Dwell { .. } => ([level, 0.0, 0.0, 0.0], Stroke::Dwell),
-                    Segment::Rise { law, .. } => {
-                        let d = scale(law.at(x), 1.0);
-                        (
-                            [
-                                self.lift * d[0],
-                                self.lift * d[1],
-                                self.lift * d[2],
-                                self.lift * d[3],
-                            ],
-                            Stroke::Rise,
-                        )
-                    }
-                    Segment::Return { law, .. } => {
-                        let d = scale(law.at(1.0 - x), -1.0);
-                        (
-                            [
-                                self.lift * d[0],
-                                self.lift * d[1],
-                                self.lift * d[2],
-                                self.lift * d[3],
-                            ],
-                            Stroke::Return,
-                        )
-                    }
-                };
-            }
-            start += a;
-            level = match s {
-                Segment::Rise { .. } => self.lift,
-                Segment::Return { .. } => 0.0,
-                Segment::Dwell { .. } => level,
-            };
-        }
-        ([level, 0.0, 0.0, 0.0], Stroke::Dwell)
-    }
-
-    /// The cam angles where a segment starts or a law's acceleration
-    /// jumps, ascending in [0, 2π).
-    pub fn breakpoints(&self) -> Vec<f64> {
-        let mut out = vec![0.0];
-        let mut start = 0.0;
-        for s in &self.segments {
-            let a = s.angle();
-            match s {
-                Segment::Rise { law, .. } => {
-                    out.extend(law.breakpoints().iter().map(|b| start + b * a))
-                }
-                Segment::Return { law, .. } => {
-                    out.extend(law.breakpoints().iter().map(|b| start + (1.0 - b) * a))
-                }
-                Segment::Dwell { .. } => {}
-            }
-            start += a;
-            if start < TAU {
-                out.push(start);
-            }
-        }
-        out.sort_by(f64::total_cmp);
-        out.dedup_by(|a, b| (*a - *b).abs() < 1e-15);
-        out
-    }
+    wraps {  }
 }
 
 /// The sense in which the cam turns.
@@ -363,16 +156,6 @@ pub struct ProfilePoint {
 
 /// (φ, value): a value at a cam angle.
 pub type AngleAt = (f64, f64);
-
-/// Brent's minimum of f on [a, b] to `tolerance`.
-fn minimize(
-    f: &mut impl FnMut(f64) -> Result<f64, CamError>,
-    a: f64,
-    b: f64,
-    tolerance: f64,
-) -> Result<(f64, f64), CamError> {
-    crate::dynamics::numerics::minimize(f, a, b, tolerance)
-}
 
 fn rotate(v: Vector2<f64>, angle: f64) -> Vector2<f64> {
     let (s, c) = angle.sin_cos();
@@ -626,22 +409,16 @@ impl Cam {
             if b - a <= 0.0 {
                 continue;
             }
-            let n = 48;
-            let inset = 1e-10;
-            let xs: Vec<f64> = (0..=n)
-                .map(|i| a + inset + (b - a - 2.0 * inset) * i as f64 / n as f64)
-                .collect();
+            let xs = numerics::samples(a, b, 1e-10, 48);
             let ys: Vec<f64> = xs
                 .iter()
                 .map(|&x| self.pressure_angle(x))
                 .collect::<Result<_, _>>()?;
             for (sign, best) in [(1.0, &mut best_max), (-1.0, &mut best_min)] {
-                let k = (0..ys.len())
-                    .max_by(|&p, &q| (sign * ys[p]).total_cmp(&(sign * ys[q])))
-                    .unwrap_or(0);
-                let (lo, hi) = (xs[k.saturating_sub(1)], xs[(k + 1).min(n)]);
+                let signed: Vec<f64> = ys.iter().map(|y| sign * y).collect();
+                let k = numerics::argmax(&signed);
                 let mut f = |x: f64| self.pressure_angle(x).map(|theta| -sign * theta);
-                let (x, fx) = minimize(&mut f, lo, hi, 1e-11)?;
+                let (x, fx) = numerics::refine(&mut f, &xs, k, 1e-11)?;
                 // The segment's ends too (an extreme at a law's joint).
                 for (x, value) in [
                     (x, -sign * fx),
@@ -691,21 +468,14 @@ impl Cam {
             if b - a <= 0.0 {
                 continue;
             }
-            let n = 48;
-            let inset = 1e-10;
-            let xs: Vec<f64> = (0..=n)
-                .map(|i| a + inset + (b - a - 2.0 * inset) * i as f64 / n as f64)
-                .collect();
+            let xs = numerics::samples(a, b, 1e-10, 48);
             let ys: Vec<f64> = xs
                 .iter()
                 .map(|&x| self.pitch_curvature(x))
                 .collect::<Result<_, _>>()?;
-            let k = (0..xs.len())
-                .max_by(|&p, &q| ys[p].total_cmp(&ys[q]))
-                .unwrap_or(0);
-            let (lo, hi) = (xs[k.saturating_sub(1)], xs[(k + 1).min(n)]);
+            let k = numerics::argmax(&ys);
             let mut f = |x: f64| self.pitch_curvature(x).map(|kappa| -kappa);
-            let (x, minus_kappa) = minimize(&mut f, lo, hi, 1e-11)?;
+            let (x, minus_kappa) = numerics::refine(&mut f, &xs, k, 1e-11)?;
             for (x, kappa) in [(x, -minus_kappa), (xs[k], ys[k])] {
                 if kappa > best.1 {
                     best = (x, kappa);
@@ -778,184 +548,4 @@ impl Cam {
         }
         Ok(out)
     }
-}
-
-/// The worst excess of a candidate cam's pressure angle over `limit`;
-/// +∞ for a candidate that is no cam (degenerate somewhere): infeasible.
-fn candidate_excess(cam: Option<Cam>, limit: f64) -> f64 {
-    cam.and_then(|c| c.pressure_excess(limit).ok())
-        .filter(|e| !e.is_nan())
-        .unwrap_or(f64::INFINITY)
-}
-
-/// The x in `xs` where f is least (the first of equals), then Brent's
-/// minimum between its neighbours: (x, f(x)).
-fn coarse_then_brent(f: &mut impl FnMut(f64) -> f64, xs: &[f64], tolerance: f64) -> (f64, f64) {
-    let ys: Vec<f64> = xs.iter().map(|&x| f(x)).collect();
-    let k = (0..xs.len())
-        .min_by(|&p, &q| ys[p].total_cmp(&ys[q]))
-        .unwrap_or(0);
-    let (lo, hi) = (xs[k.saturating_sub(1)], xs[(k + 1).min(xs.len() - 1)]);
-    let mut g = |x: f64| Ok::<f64, std::convert::Infallible>(f(x));
-    let (x, fx) = match crate::dynamics::numerics::minimize(&mut g, lo, hi, tolerance) {
-        Ok(found) => found,
-        Err(never) => match never {},
-    };
-    if fx <= ys[k] { (x, fx) } else { (xs[k], ys[k]) }
-}
-
-/// A bracket [lo, hi] of the smallest feasible size: from `hi`, widened by
-/// half at a time (lo taking the last infeasible one) until feasible, up to
-/// `largest` — at most 200 widenings, and never past the range of f64;
-/// `None` if none up to there is.
-fn bracket_size(
-    feasible: &mut impl FnMut(f64) -> bool,
-    mut lo: f64,
-    mut hi: f64,
-    largest: f64,
-) -> Option<(f64, f64)> {
-    for _ in 0..200 {
-        let within = hi <= largest && hi.is_finite(); // false for NaN too
-        if !within {
-            return None;
-        }
-        if feasible(hi) {
-            return Some((lo, hi));
-        }
-        lo = hi;
-        hi *= 1.5;
-    }
-    None
-}
-
-/// The smallest size in [lo, hi] at which `feasible` holds, by bisection
-/// (at most 60 halvings, to 1e-13 relative), `hi` feasible.
-fn bisect_size(feasible: &mut impl FnMut(f64) -> bool, mut lo: f64, mut hi: f64) -> f64 {
-    if feasible(lo) {
-        return lo;
-    }
-    for _ in 0..60 {
-        let mid = 0.5 * (lo + hi);
-        if feasible(mid) {
-            hi = mid;
-        } else {
-            lo = mid;
-        }
-        if hi - lo <= 1e-13 * hi {
-            break;
-        }
-    }
-    hi
-}
-
-/// The smallest rocker cam whose pressure angle stays within ±`limit` (rad,
-/// in (0, π/2)) over the turn, for a given program, arm (positive and
-/// finite), pivot direction and rotation: the base radius by bisection, and
-/// for each candidate base radius the initial arm angle (with the centre
-/// distance it implies by the law of cosines, r0² = a² + l² − 2al·cos ψ0)
-/// that best balances the rise's and the return's extremes. Base radii up
-/// to 100 arms are tried.
-pub fn smallest_rocker(
-    program: &Program,
-    arm: f64,
-    pivot_angle: f64,
-    rotation: Rotation,
-    limit: f64,
-) -> Result<Cam, CamError> {
-    setting("the rocker's arm", "positive and finite", arm, arm > 0.0)?;
-    setting("the rocker's pivot angle", "finite", pivot_angle, true)?;
-    let limit = pressure_limit(limit)?;
-    let make = |r0: f64, psi0: f64| -> Option<Cam> {
-        let disc = r0 * r0 - arm * arm * psi0.sin().powi(2);
-        if disc < 0.0 {
-            return None;
-        }
-        let a = arm * psi0.cos() + disc.sqrt();
-        let clear_of_the_centre = a > arm * 1e-6; // false for NaN too
-        if !clear_of_the_centre {
-            return None;
-        }
-        let follower = Follower::Rocker {
-            arm,
-            centre_distance: a,
-            initial_angle: psi0,
-            pivot_angle,
-        };
-        Cam::new(program.clone(), follower, rotation).ok()
-    };
-    // For a base radius: the best initial angle, and its excess.
-    let best = |r0: f64| -> (f64, f64) {
-        let upper = (r0 / arm).clamp(-1.0, 1.0).asin().min(PI / 2.0 - 1e-9);
-        let n = 24;
-        let xs: Vec<f64> = (0..=n)
-            .map(|i| 1e-3 + (upper - 2e-3) * i as f64 / n as f64)
-            .collect();
-        coarse_then_brent(
-            &mut |psi0| candidate_excess(make(r0, psi0), limit),
-            &xs,
-            1e-12,
-        )
-    };
-    let (lo, hi) = bracket_size(
-        &mut |r0| best(r0).1 <= 0.0,
-        arm * 0.05,
-        arm * 0.5,
-        100.0 * arm,
-    )
-    .ok_or(CamError::NoSize {
-        limit: 100.0 * arm,
-        angle: limit.to_degrees(),
-    })?;
-    let r0 = bisect_size(&mut |r0| best(r0).1 <= 0.0, lo, hi);
-    let (psi0, _) = best(r0);
-    make(r0, psi0).ok_or(CamError::NoSize {
-        limit: r0,
-        angle: limit.to_degrees(),
-    })
-}
-
-/// The smallest translating cam (base radius, with the offset that best
-/// balances the strokes) whose pressure angle stays within ±`limit` (rad,
-/// in (0, π/2)), for a finite axis angle. Base radii up to 10⁴ lifts are
-/// tried.
-pub fn smallest_translating(
-    program: &Program,
-    axis_angle: f64,
-    rotation: Rotation,
-    limit: f64,
-) -> Result<Cam, CamError> {
-    setting("the follower's axis angle", "finite", axis_angle, true)?;
-    let limit = pressure_limit(limit)?;
-    let make = |base: f64, offset: f64| {
-        let follower = Follower::Translating {
-            offset,
-            base,
-            axis_angle,
-        };
-        Cam::new(program.clone(), follower, rotation).ok()
-    };
-    let best = |base: f64| -> (f64, f64) {
-        let n = 24;
-        let xs: Vec<f64> = (0..=n)
-            .map(|i| -0.95 * base + 1.9 * base * i as f64 / n as f64)
-            .collect();
-        coarse_then_brent(
-            &mut |e| candidate_excess(make(base, e), limit),
-            &xs,
-            1e-13 * base,
-        )
-    };
-    let lift = program.lift;
-    let feasible = |b: f64| b > 0.0 && best(b).1 <= 0.0;
-    let (lo, hi) =
-        bracket_size(&mut |b| feasible(b), 0.0, lift, 1e4 * lift).ok_or(CamError::NoSize {
-            limit: 1e4 * lift,
-            angle: limit.to_degrees(),
-        })?;
-    let base = bisect_size(&mut |b| feasible(b), lo, hi);
-    let (offset, _) = best(base);
-    make(base, offset).ok_or(CamError::NoSize {
-        limit: base,
-        angle: limit.to_degrees(),
-    })
 }

@@ -21,8 +21,16 @@
 //! The power balance gives the balancing moment independently:
 //! M_b·ω_driver + Σ F·v + Σ M·ω (loads, weights and inertia loads) = 0;
 //! [`Kinetostatics::power_balance`] computes it for the check.
+//!
+//! The builder and its checks are in `build.rs`; this file holds the
+//! analysis: the system's assembly and solution, and the power balance.
 
-use crate::dynamics::{Applied, LoadKind, Machine, MachineError, Pose};
+mod build;
+
+pub use build::{Guide, KinetostaticsBuilder};
+
+use super::{Applied, Machine, MachineError, Pose};
+use crate::error::UnknownName;
 use linkage_runtime::Linkage;
 use nalgebra::{DMatrix, DVector, Vector2};
 
@@ -39,20 +47,6 @@ pub enum KinetostaticsError {
     /// The reactions came out NaN or infinite (numbers so large that the
     /// equilibrium overflows).
     NonFinite,
-    UnknownBody {
-        owner: String,
-        name: String,
-        known: String,
-    },
-    UnknownPoint {
-        owner: String,
-        name: String,
-        known: String,
-    },
-    UnknownCoordinate {
-        owner: String,
-        name: String,
-    },
     UnassignedLoad {
         load: String,
     },
@@ -70,382 +64,64 @@ pub enum KinetostaticsError {
     },
     Machine(MachineError),
     Kinematics(linkage_runtime::Error),
+    /// A joint, rotor, driver or load names a body, point or coordinate that
+    /// neither the table nor the model defines.
+    UnknownName(UnknownName),
 }
 
-impl std::fmt::Display for KinetostaticsError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Self::BadSetting { what, must, value } => {
-                write!(f, "{what} must be {must}, got {value}")
-            }
-            Self::NonFinite => write!(
-                f,
-                "the reactions are not finite: the loads and speeds overflow the equilibrium"
-            ),
-            Self::UnknownBody { known, name, owner } => write!(
-                f,
-                "`{owner}` names the body `{name}`, which is not in the table (bodies: {known})"
-            ),
-            Self::UnknownPoint { known, name, owner } => write!(
-                f,
-                "`{owner}` names the point `{name}`, neither a point of the model nor a ground point (points: {known})"
-            ),
-            Self::UnknownCoordinate { name, owner } => write!(
-                f,
-                "`{owner}` names the coordinate `{name}`, which the model does not have"
-            ),
-            Self::UnassignedLoad { load } => write!(
-                f,
-                "the load `{load}` is not assigned to a body (use `load_on`)"
-            ),
-            Self::NoDriver => write!(
-                f,
-                "no driver: say which body carries the balancing moment (`driver`)"
-            ),
-            Self::NotSquare {
-                equations,
-                unknowns,
-                why,
-            } => write!(
-                f,
-                "the table gives {unknowns} unknowns (2 per revolute joint, 3 per prismatic, 1 balancing moment) but {equations} equations (3 per body, 1 per prismatic joint): {why}"
-            ),
-            Self::Indeterminate { joints, rcond } => write!(
-                f,
-                "the reactions of the joints {joints:?} are not determined (reciprocal condition {rcond:.1e}): the structure is statically indeterminate there, or can move by itself"
-            ),
-            Self::Machine(inner) => write!(f, "machine: {inner}"),
-            Self::Kinematics(inner) => write!(f, "kinematics: {inner}"),
-        }
+crate::error::error_impls! {
+    KinetostaticsError {
+        Self::BadSetting { what, must, value } => ("{what} must be {must}, got {value}"),
+        Self::NonFinite => ("the reactions are not finite: the loads and speeds overflow the equilibrium"),
+        Self::UnassignedLoad { load } => ("the load `{load}` is not assigned to a body (use `load_on`)"),
+        Self::NoDriver => ("no driver: say which body carries the balancing moment (`driver`)"),
+        Self::NotSquare { equations, unknowns, why, } => ("the table gives {unknowns} unknowns (2 per revolute joint, 3 per prismatic, 1 balancing moment) but {equations} equations (3 per body, 1 per prismatic joint): {why}"),
+        Self::Indeterminate { joints, rcond } => ("the reactions of the joints {joints:?} are not determined (reciprocal condition {rcond:.1e}): the structure is statically indeterminate there, or can move by itself"),
+        Self::Machine(inner) => ("machine: {inner}"),
+        Self::Kinematics(inner) => ("kinematics: {inner}"),
+            Self::UnknownName(inner) => ("{inner}"),
     }
-}
-
-impl std::error::Error for KinetostaticsError {
-    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
-        match self {
-            Self::Machine(e) => Some(e),
-            Self::Kinematics(e) => Some(e),
-            _ => None,
-        }
-    }
-}
-
-impl From<MachineError> for KinetostaticsError {
-    fn from(e: MachineError) -> Self {
-        Self::Machine(e)
-    }
-}
-
-impl From<linkage_runtime::Error> for KinetostaticsError {
-    fn from(e: linkage_runtime::Error) -> Self {
-        Self::Kinematics(e)
-    }
-}
-
-/// How a prismatic joint's guide is directed.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Guide {
-    /// At a fixed angle (rad) from the x axis.
-    Fixed(f64),
-    /// Along a coordinate that is an angle: (cos q, sin q).
-    Angle(String),
-    /// Along the line from one point to another.
-    Line(String, String),
-}
-
-#[derive(Clone, Debug, PartialEq)]
-enum Kind {
-    Revolute,
-    Prismatic(Guide),
-}
-
-#[derive(Clone, Debug, PartialEq)]
-struct Joint {
-    name: String,
-    bodies: (String, String),
-    point: String,
-    kind: Kind,
-}
-
-/// A [`Kinetostatics`] being described.
-pub struct KinetostaticsBuilder<'m, L, const M: usize> {
-    machine: &'m Machine<L, M>,
-    ground_points: Vec<(String, Vector2<f64>)>,
-    bodies: Vec<String>,
-    joints: Vec<Joint>,
-    load_bodies: Vec<(String, String)>,
-    driver: Option<(String, f64)>,
-    rotors: Vec<(String, f64, f64)>,
-}
-
-impl<'m, L: Linkage<M, 1>, const M: usize> KinetostaticsBuilder<'m, L, M> {
-    /// A fixed point of the ground, for joints with the ground.
-    pub fn ground_point(mut self, name: &str, at: [f64; 2]) -> Self {
-        self.ground_points
-            .push((name.into(), Vector2::new(at[0], at[1])));
-        self
-    }
-
-    /// The next body (1, 2, …). A body of the machine keeps its mass,
-    /// inertia, centre and angle; another is massless.
-    pub fn body(mut self, name: &str) -> Self {
-        self.bodies.push(name.into());
-        self
-    }
-
-    /// A revolute joint at `point` between bodies `i` and `j` ("ground" for
-    /// body 0): the reaction F_ij on i from j.
-    pub fn revolute(mut self, name: &str, i: &str, j: &str, point: &str) -> Self {
-        self.joints.push(Joint {
-            name: name.into(),
-            bodies: (i.into(), j.into()),
-            point: point.into(),
-            kind: Kind::Revolute,
-        });
-        self
-    }
-
-    /// A prismatic joint between bodies `i` and `j`, its reaction's line
-    /// through `point`, sliding along `guide`: the force normal to the
-    /// guide and the moment M_ij (on i, about `point`).
-    pub fn prismatic(mut self, name: &str, i: &str, j: &str, point: &str, guide: Guide) -> Self {
-        self.joints.push(Joint {
-            name: name.into(),
-            bodies: (i.into(), j.into()),
-            point: point.into(),
-            kind: Kind::Prismatic(guide),
-        });
-        self
-    }
-
-    /// The machine's load `load` acts on `body` (gravity needs no
-    /// assignment: each body carries its own weight).
-    pub fn load_on(mut self, load: &str, body: &str) -> Self {
-        self.load_bodies.push((load.into(), body.into()));
-        self
-    }
-
-    /// The body that carries the unknown balancing moment; its angle is
-    /// `factor` × φ + a constant (−1 for a crank turning clockwise).
-    pub fn driver(mut self, body: &str, factor: f64) -> Self {
-        self.driver = Some((body.into(), factor));
-        self
-    }
-
-    /// A rotor of moment of inertia `inertia` on `body`, turning at
-    /// `factor` × φ̇ (a flywheel reduced to the crank): it adds the
-    /// inertia moment −inertia·factor·φ̈.
-    pub fn rotor(mut self, body: &str, inertia: f64, factor: f64) -> Self {
-        self.rotors.push((body.into(), inertia, factor));
-        self
-    }
-
-    /// Resolves every name, checks every number (finite ground points and
-    /// guide angles, rotors of finite inertia ≥ 0 and finite factor, a
-    /// driver factor finite and nonzero), and checks that the system is
-    /// square and regular at a pose of the cycle.
-    pub fn build(self) -> Result<Kinetostatics<'m, L, M>, KinetostaticsError> {
-        let setting = |what, must, value: f64, ok: bool| {
-            if ok && value.is_finite() {
-                Ok(())
-            } else {
-                Err(KinetostaticsError::BadSetting { what, must, value })
-            }
-        };
-        for (_, at) in &self.ground_points {
-            for x in [at.x, at.y] {
-                setting("a ground point's coordinate", "finite", x, true)?;
-            }
-        }
-        for joint in &self.joints {
-            if let Kind::Prismatic(Guide::Fixed(angle)) = joint.kind {
-                setting("a fixed guide's angle", "finite", angle, true)?;
-            }
-        }
-        for &(_, inertia, factor) in &self.rotors {
-            setting(
-                "a rotor's inertia",
-                "finite and ≥ 0",
-                inertia,
-                inertia >= 0.0,
-            )?;
-            setting("a rotor's speed factor", "finite", factor, true)?;
-        }
-        if let Some((_, factor)) = self.driver {
-            setting(
-                "the driver's factor",
-                "finite and nonzero",
-                factor,
-                factor != 0.0,
-            )?;
-        }
-        let body_index = |owner: &str, name: &str| -> Result<usize, KinetostaticsError> {
-            if name == "ground" {
-                return Ok(0);
-            }
-            self.bodies
-                .iter()
-                .position(|b| b == name)
-                .map(|k| k + 1)
-                .ok_or_else(|| KinetostaticsError::UnknownBody {
-                    owner: owner.into(),
-                    name: name.into(),
-                    known: format!("ground, {}", self.bodies.join(", ")),
-                })
-        };
-        let point_names = L::POINT_NAMES;
-        let point_ref = |owner: &str, name: &str| -> Result<PointRef, KinetostaticsError> {
-            if let Some(k) = point_names.iter().position(|n| *n == name) {
-                return Ok(PointRef::Model(k));
-            }
-            if let Some((_, p)) = self.ground_points.iter().find(|(n, _)| n == name) {
-                return Ok(PointRef::Ground(*p));
-            }
-            Err(KinetostaticsError::UnknownPoint {
-                owner: owner.into(),
-                name: name.into(),
-                known: point_names
-                    .iter()
-                    .copied()
-                    .chain(self.ground_points.iter().map(|(n, _)| n.as_str()))
-                    .collect::<Vec<_>>()
-                    .join(", "),
-            })
-        };
-        let coordinates: Vec<&str> = L::U_NAMES.iter().chain(&L::V_NAMES).copied().collect();
-        let mut joints = Vec::new();
-        for joint in &self.joints {
-            let guide = match &joint.kind {
-                Kind::Revolute => None,
-                Kind::Prismatic(Guide::Fixed(angle)) => {
-                    Some(ResolvedGuide::Fixed(Vector2::new(angle.cos(), angle.sin())))
-                }
-                Kind::Prismatic(Guide::Angle(c)) => Some(ResolvedGuide::Angle(
-                    coordinates.iter().position(|n| n == c).ok_or_else(|| {
-                        KinetostaticsError::UnknownCoordinate {
-                            owner: joint.name.clone(),
-                            name: c.clone(),
-                        }
-                    })?,
-                )),
-                Kind::Prismatic(Guide::Line(a, b)) => Some(ResolvedGuide::Line(
-                    point_ref(&joint.name, a)?,
-                    point_ref(&joint.name, b)?,
-                )),
-            };
-            joints.push(ResolvedJoint {
-                name: joint.name.clone(),
-                names: joint.bodies.clone(),
-                bodies: (
-                    body_index(&joint.name, &joint.bodies.0)?,
-                    body_index(&joint.name, &joint.bodies.1)?,
-                ),
-                point: point_ref(&joint.name, &joint.point)?,
-                guide,
-            });
-        }
-        // The machine's bodies keep their masses.
-        let mut bodies: Vec<StaticBody> = self
-            .bodies
-            .iter()
-            .map(|name| StaticBody {
-                name: name.clone(),
-                machine_body: self.machine.bodies.iter().position(|b| &b.name == name),
-                rotors: Vec::new(),
-            })
-            .collect();
-        for (body, inertia, factor) in &self.rotors {
-            let k = body_index("a rotor", body)?;
-            if k == 0 {
-                continue;
-            }
-            bodies[k - 1].rotors.push((*inertia, *factor));
-        }
-        // Every load of the machine but gravity acts on a named body.
-        let mut load_bodies = Vec::new();
-        for load in &self.machine.loads {
-            if let LoadKind::Gravity { .. } = load.load.kind {
-                load_bodies.push(None);
-                continue;
-            }
-            let body = self
-                .load_bodies
-                .iter()
-                .find(|(l, _)| *l == load.load.name)
-                .ok_or_else(|| KinetostaticsError::UnassignedLoad {
-                    load: load.load.name.clone(),
-                })?;
-            load_bodies.push(Some(body_index(&body.0, &body.1)?));
-        }
-        let (driver_name, driver_factor) =
-            self.driver.clone().ok_or(KinetostaticsError::NoDriver)?;
-        let driver = body_index("the driver", &driver_name)?;
-        let prismatic = joints.iter().filter(|j| j.guide.is_some()).count();
-        let unknowns = 2 * joints.len() + prismatic + 1;
-        let equations = 3 * bodies.len() + prismatic;
-        if unknowns != equations {
-            return Err(KinetostaticsError::NotSquare {
-                unknowns,
-                equations,
-                why: if unknowns > equations {
-                    "more reactions than the equilibrium of the bodies can fix: statically indeterminate"
-                } else {
-                    "fewer reactions than equations: the bodies could move under the loads"
-                },
-            });
-        }
-        let statics = Kinetostatics {
-            machine: self.machine,
-            bodies,
-            joints,
-            load_bodies,
-            driver,
-            driver_factor,
-        };
-        // Regular at a generic pose of the cycle.
-        statics.solve(1.0, 1.0, 0.0)?;
-        Ok(statics)
-    }
+    wraps { Machine(MachineError), Kinematics(linkage_runtime::Error), UnknownName(UnknownName) }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
-enum PointRef {
+pub(super) enum PointRef {
     Model(usize),
     Ground(Vector2<f64>),
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
-enum ResolvedGuide {
+pub(super) enum ResolvedGuide {
     Fixed(Vector2<f64>),
     Angle(usize),
     Line(PointRef, PointRef),
 }
 
-struct ResolvedJoint {
-    name: String,
-    names: (String, String),
-    bodies: (usize, usize),
-    point: PointRef,
-    guide: Option<ResolvedGuide>,
+pub(super) struct ResolvedJoint {
+    pub(super) name: String,
+    pub(super) names: (String, String),
+    pub(super) bodies: (usize, usize),
+    pub(super) point: PointRef,
+    pub(super) guide: Option<ResolvedGuide>,
 }
 
-struct StaticBody {
-    name: String,
+pub(super) struct StaticBody {
+    pub(super) name: String,
     /// The machine body it is, if it has mass.
-    machine_body: Option<usize>,
+    pub(super) machine_body: Option<usize>,
     /// (inertia, factor) of rotors on it.
-    rotors: Vec<(f64, f64)>,
+    pub(super) rotors: Vec<(f64, f64)>,
 }
 
 /// The force analysis of a machine (see the module documentation).
 pub struct Kinetostatics<'m, L, const M: usize> {
-    machine: &'m Machine<L, M>,
-    bodies: Vec<StaticBody>,
-    joints: Vec<ResolvedJoint>,
+    pub(super) machine: &'m Machine<L, M>,
+    pub(super) bodies: Vec<StaticBody>,
+    pub(super) joints: Vec<ResolvedJoint>,
     /// The body each machine load acts on (None: gravity).
-    load_bodies: Vec<Option<usize>>,
-    driver: usize,
-    driver_factor: f64,
+    pub(super) load_bodies: Vec<Option<usize>>,
+    pub(super) driver: usize,
+    pub(super) driver_factor: f64,
 }
 
 /// One joint's reaction.
@@ -500,20 +176,6 @@ pub struct Reactions {
 }
 
 impl<'m, L: Linkage<M, 1>, const M: usize> Kinetostatics<'m, L, M> {
-    /// A force analysis of `machine`, to be described.
-    #[allow(clippy::new_ret_no_self)]
-    pub fn new(machine: &'m Machine<L, M>) -> KinetostaticsBuilder<'m, L, M> {
-        KinetostaticsBuilder {
-            machine,
-            ground_points: Vec::new(),
-            bodies: Vec::new(),
-            joints: Vec::new(),
-            load_bodies: Vec::new(),
-            driver: None,
-            rotors: Vec::new(),
-        }
-    }
-
     fn point(&self, pose: &Pose, p: PointRef) -> Vector2<f64> {
         match p {
             PointRef::Model(k) => pose.points[k],
@@ -558,23 +220,20 @@ impl<'m, L: Linkage<M, 1>, const M: usize> Kinetostatics<'m, L, M> {
             })
             .collect();
         // Weights and inertia of the machine's bodies.
-        let gravity = self.machine.loads.iter().find_map(|l| match l.load.kind {
-            LoadKind::Gravity { g } => Some(g),
-            _ => None,
-        });
+        let gravity = self.machine.gravity();
         for (k, body) in self.bodies.iter().enumerate() {
             let (forces, velocities) = {
                 let entry = &mut out[k];
                 (&mut entry.0.forces, &mut entry.1)
             };
             if let Some(mb) = body.machine_body {
-                let b = &self.machine.bodies[mb];
+                let b = &self.machine.bodies()[mb];
                 if let Some(c) = b.centre {
                     let (p, v_q, a_q) = (pose.points[c], pose.points_phi[c], pose.points_phiphi[c]);
                     let v = v_q * omega;
                     let a = a_q * (omega * omega) + v_q * epsilon;
                     if let Some(g) = gravity {
-                        forces.push((p, g * b.mass));
+                        forces.push((p, b.weight(g)));
                         velocities.push(v);
                     }
                     forces.push((p, -a * b.mass));

@@ -1,5 +1,7 @@
-//! The one-dimensional numerics the dynamics need: adaptive Gauss–Kronrod
-//! quadrature, a bracketed root, and Brent's minimisation.
+//! The one-dimensional numerics the machine and the cam share: adaptive
+//! Gauss–Kronrod quadrature, a bracketed root, Brent's minimisation, a
+//! coarse scan refined by it, and the bisection of a yes/no question (the
+//! smallest size at which a design works).
 
 /// Gauss–Kronrod 7–15 nodes (the positive half) and weights, to the digits
 /// of the published tables.
@@ -219,6 +221,83 @@ pub(crate) fn minimize<E>(
     Ok((x, fx))
 }
 
+/// `n` + 1 equally spaced samples of [a, b], `inset` in from each end.
+pub(crate) fn samples(a: f64, b: f64, inset: f64, n: usize) -> Vec<f64> {
+    (0..=n)
+        .map(|i| a + inset + (b - a - 2.0 * inset) * i as f64 / n as f64)
+        .collect()
+}
+
+/// The index of the least of `ys` (the first of equals; 0 if empty).
+pub(crate) fn argmin(ys: &[f64]) -> usize {
+    (0..ys.len())
+        .min_by(|&p, &q| ys[p].total_cmp(&ys[q]))
+        .unwrap_or(0)
+}
+
+/// The index of the greatest of `ys` (the last of equals; 0 if empty).
+pub(crate) fn argmax(ys: &[f64]) -> usize {
+    (0..ys.len())
+        .max_by(|&p, &q| ys[p].total_cmp(&ys[q]))
+        .unwrap_or(0)
+}
+
+/// Brent's minimum of f between the neighbours of the sample `xs[k]` (a
+/// coarse scan's best): (x, f(x)).
+pub(crate) fn refine<E>(
+    f: &mut impl FnMut(f64) -> Result<f64, E>,
+    xs: &[f64],
+    k: usize,
+    tolerance: f64,
+) -> Result<(f64, f64), E> {
+    let (lo, hi) = (xs[k.saturating_sub(1)], xs[(k + 1).min(xs.len() - 1)]);
+    minimize(f, lo, hi, tolerance)
+}
+
+/// A bracket [lo, hi] of the smallest size at which `feasible` holds: from
+/// `hi`, widened by half at a time (lo taking the last infeasible one)
+/// until feasible, up to `largest` — at most 200 widenings, and never past
+/// the range of f64; `None` if none up to there is.
+pub(crate) fn bracket_feasible(
+    feasible: &mut impl FnMut(f64) -> bool,
+    mut lo: f64,
+    mut hi: f64,
+    largest: f64,
+) -> Option<(f64, f64)> {
+    for _ in 0..200 {
+        let within = hi <= largest && hi.is_finite(); // false for NaN too
+        if !within {
+            return None;
+        }
+        if feasible(hi) {
+            return Some((lo, hi));
+        }
+        lo = hi;
+        hi *= 1.5;
+    }
+    None
+}
+
+/// The smallest x in [lo, hi] at which `feasible` holds, by bisection (at
+/// most 60 halvings, to 1e-13 relative), `hi` feasible.
+pub(crate) fn bisect(feasible: &mut impl FnMut(f64) -> bool, mut lo: f64, mut hi: f64) -> f64 {
+    if feasible(lo) {
+        return lo;
+    }
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if feasible(mid) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+        if hi - lo <= 1e-13 * hi {
+            break;
+        }
+    }
+    hi
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -243,5 +322,17 @@ mod tests {
         let mut f = |x: f64| Ok::<f64, Never>((x - 1.234).powi(2) + 0.5);
         let (x, fx) = minimize(&mut f, 0.0, 3.0, 1e-10).unwrap();
         assert!((x - 1.234).abs() < 1e-8 && (fx - 0.5).abs() < 1e-15);
+    }
+
+    #[test]
+    fn bisection_finds_the_smallest_feasible_size() {
+        let mut feasible = |x: f64| x >= 2.5;
+        let (lo, hi) = bracket_feasible(&mut feasible, 0.0, 1.0, 100.0).unwrap();
+        assert!(!feasible(lo) && feasible(hi));
+        let x = bisect(&mut feasible, lo, hi);
+        assert!(x >= 2.5 && x - 2.5 <= 1e-12);
+        assert_eq!(bracket_feasible(&mut |_| false, 0.0, 1.0, 100.0), None);
+        assert_eq!(argmin(&[2.0, 1.0, 1.0]), 1);
+        assert_eq!(argmax(&[1.0, 2.0, 2.0]), 2);
     }
 }

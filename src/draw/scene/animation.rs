@@ -1,0 +1,79 @@
+//! Animation of a scene: a cycle's frames as SMIL animations of every
+//! drawn element, looping.
+
+use super::layout::Placed;
+use super::symbols::ground_symbol;
+use super::{Frame, Scene, SceneError, positive, resolve};
+use crate::draw::svg::{Writer, fmt};
+
+impl Scene {
+    /// An animation of `cycle` (its frames at equal time steps, looping
+    /// over `seconds`), as SVG with SMIL animations: self-contained, played
+    /// by any browser.
+    pub fn animate(&self, cycle: &[Frame], seconds: f64) -> Result<String, SceneError> {
+        if cycle.len() < 2 {
+            return Err(SceneError::TooFewFrames {
+                frames: cycle.len(),
+            });
+        }
+        positive("the animation's duration", seconds)?;
+        let layout = self.layout(cycle, cycle)?;
+        let mut w = layout.open(self);
+        self.draw_traces(&mut w, &layout, cycle)?;
+        self.draw_guides(&mut w, &layout, cycle, cycle)?;
+        for (name, _) in &self.ground {
+            let at = resolve(&cycle[0], name, &self.ground)?;
+            ground_symbol(&mut w, layout.screen(at));
+        }
+        let frames: Vec<Placed> = cycle
+            .iter()
+            .map(|f| self.place(&layout, f))
+            .collect::<Result<_, _>>()?;
+        let motion = Motion {
+            frames: &frames,
+            seconds,
+        };
+        self.draw_links(&mut w, &frames[0], Some(&motion));
+        self.draw_sliders(&mut w, &frames[0], Some(&motion));
+        self.draw_points(&mut w, &frames[0], Some(&motion));
+        self.draw_arrows(&mut w, &layout, &cycle[0], Some((cycle, seconds)))?;
+        if self.labels {
+            let obstacles = self.obstacles(&layout, &cycle[0], &frames[0]);
+            self.draw_labels(&mut w, &frames[0], Some(&motion), &obstacles);
+        }
+        self.draw_legend(&mut w, &layout, true);
+        Ok(w.finish())
+    }
+}
+
+/// The frames of an animation and its period.
+pub(super) struct Motion<'a> {
+    pub(super) frames: &'a [Placed],
+    pub(super) seconds: f64,
+}
+
+impl Motion<'_> {
+    /// An `<animate>` of `attribute` through the frames' values.
+    pub(super) fn animate(
+        &self,
+        w: &mut Writer,
+        attribute: &str,
+        value: impl Fn(&Placed) -> String,
+    ) {
+        let values: Vec<String> = self.frames.iter().map(value).collect();
+        animate_values(w, attribute, &values.join(";"), self.seconds);
+    }
+}
+
+pub(super) fn animate_values(w: &mut Writer, attribute: &str, values: &str, seconds: f64) {
+    w.element(
+        "animate",
+        &[
+            ("attributeName", attribute),
+            ("dur", &format!("{}s", fmt(seconds))),
+            ("repeatCount", "indefinite"),
+            ("calcMode", "linear"),
+            ("values", values),
+        ],
+    );
+}

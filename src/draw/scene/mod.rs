@@ -1,0 +1,469 @@
+//! Pictures of a mechanism: a pose drawn with its velocity and acceleration
+//! arrows, the paths its points trace, and an animation of a whole cycle, as
+//! self-contained SVG (no fonts or system libraries needed to write them).
+//!
+//! A [`Scene`] says no more than a picture needs — which points are ground
+//! pivots, which pairs (or polygons) of points are links, which points ride
+//! on sliders, which get arrows and at what scales, which paths to trace.
+//! Everything else comes from the generated point kinematics, through a
+//! [`Frame`] per pose:
+//!
+//! ```
+//! use linkage::prelude::*;
+//! use linkage::draw::scene::{Frame, Scene};
+//!
+//! #[linkage::linkage(
+//!     u = [theta3, theta4],
+//!     v = [theta2],
+//!     points = [
+//!         B = (l2 * theta2.cos(), l2 * theta2.sin()),
+//!         C = (B.x + l3 * theta3.cos(), B.y + l3 * theta3.sin()),
+//!     ],
+//!     closure = [
+//!         l2 * theta2.cos() + l3 * theta3.cos() + l4 * theta4.cos() - l1,
+//!         l2 * theta2.sin() + l3 * theta3.sin() + l4 * theta4.sin(),
+//!     ],
+//! )]
+//! #[derive(Clone, Debug)]
+//! pub struct FourBar { pub l1: f64, pub l2: f64, pub l3: f64, pub l4: f64 }
+//!
+//! let bar = FourBar { l1: 80.0, l2: 20.0, l3: 50.0, l4: 70.0 };
+//! let pose = bar.analyze(
+//!     &vector![1.2, -0.9], &vector![0.35], &vector![41.9], &vector![0.0],
+//!     &Options::default(),
+//! )?;
+//! let scene = Scene::new()
+//!     .ground("A", [0.0, 0.0])
+//!     .ground("D", [80.0, 0.0])
+//!     .link(["A", "B"])
+//!     .link(["B", "C"])
+//!     .link(["C", "D"])
+//!     .velocities(["B", "C"]);
+//! let svg = scene.render(&Frame::from_analysis::<FourBar, 2, 1>(&pose), &[])?;
+//! assert!(svg.starts_with("<svg"));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
+//! Drawing conventions: x to the right and y up, one scale for both axes,
+//! fitted to the picture; ground pivots hatched; links as bars, joints as
+//! open circles, other points as dots; velocities green and accelerations
+//! red (as in the Maple worksheet), each with its scale in the legend.
+//!
+//! The area's files: the description (here: [`Scene`], [`Frame`], the
+//! checks), the layout (`layout.rs`: the scale, the screen positions, where
+//! labels go), the drawing symbols (`symbols.rs`: links, sliders, arrows,
+//! ground and guides, the legend) and the animation (`animation.rs`).
+
+mod animation;
+mod layout;
+mod symbols;
+
+use crate::error::{NameKind, UnknownName};
+use crate::ground::Ground;
+use linkage_runtime::{Analysis, Linkage, SweepPose};
+use nalgebra::{SVector, Vector2};
+use symbols::ground_symbol;
+
+/// What went wrong drawing a scene.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum SceneError {
+    /// Arrows were asked for, but the frame has no velocities or
+    /// accelerations.
+    MissingKinematics { what: &'static str },
+    /// A coordinate to draw is NaN or infinite.
+    NonFinite { what: &'static str, name: String },
+    /// An animation needs at least two frames.
+    TooFewFrames { frames: usize },
+    /// A number given is out of its range: a scale or a size zero,
+    /// negative or not finite, an angle not finite.
+    BadSetting {
+        what: &'static str,
+        must: &'static str,
+        value: f64,
+    },
+    /// The scene names a point that neither the frame nor the scene's
+    /// ground pivots define.
+    UnknownName(UnknownName),
+}
+
+crate::error::error_impls! {
+    SceneError {
+        Self::MissingKinematics { what } => ("the scene draws {what} arrows but the frame has no {what}"),
+        Self::NonFinite { name, what } => ("the {what} of `{name}` is not finite"),
+        Self::TooFewFrames { frames } => ("an animation needs at least two frames, got {frames}"),
+        Self::BadSetting { value, what, must } => ("{what} must be {must}, got {value}"),
+            Self::UnknownName(inner) => ("{inner}"),
+    }
+    wraps { UnknownName(UnknownName) }
+}
+
+/// The named points of one pose: positions, and, where known, velocities
+/// and accelerations (in the model's length and time units).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Frame {
+    pub names: Vec<String>,
+    pub positions: Vec<Vector2<f64>>,
+    pub velocities: Option<Vec<Vector2<f64>>>,
+    pub accelerations: Option<Vec<Vector2<f64>>>,
+}
+
+impl Frame {
+    /// The points of a whole analysis ([`Linkage::analyze`]).
+    pub fn from_analysis<L: Linkage<M, F>, const M: usize, const F: usize>(
+        analysis: &Analysis<M, F, L::Points>,
+    ) -> Frame {
+        Frame {
+            names: L::POINT_NAMES.iter().map(|s| s.to_string()).collect(),
+            positions: analysis.points.as_ref().to_vec(),
+            velocities: Some(analysis.point_velocities.as_ref().to_vec()),
+            accelerations: Some(analysis.point_accelerations.as_ref().to_vec()),
+        }
+    }
+
+    /// The points of a pose of a sweep (driven at the sweep's constant
+    /// speed: v̈ = 0).
+    pub fn from_sweep_pose<L: Linkage<M, F>, const M: usize, const F: usize>(
+        model: &L,
+        pose: &SweepPose<M, F>,
+    ) -> Frame {
+        Frame::at(
+            model,
+            &pose.u,
+            &pose.v,
+            &pose.udot,
+            &pose.vdot,
+            &pose.uddot,
+            &SVector::zeros(),
+        )
+    }
+
+    /// The points at a state (u, v, u̇, v̇, ü, v̈).
+    pub fn at<L: Linkage<M, F>, const M: usize, const F: usize>(
+        model: &L,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        udot: &SVector<f64, M>,
+        vdot: &SVector<f64, F>,
+        uddot: &SVector<f64, M>,
+        vddot: &SVector<f64, F>,
+    ) -> Frame {
+        Frame {
+            names: L::POINT_NAMES.iter().map(|s| s.to_string()).collect(),
+            positions: model.point_positions(u, v).as_ref().to_vec(),
+            velocities: Some(model.point_velocities(u, v, udot, vdot).as_ref().to_vec()),
+            accelerations: Some(
+                model
+                    .point_accelerations(u, v, udot, vdot, uddot, vddot)
+                    .as_ref()
+                    .to_vec(),
+            ),
+        }
+    }
+
+    /// Positions only (no arrows can be drawn from it).
+    pub fn positions<L: Linkage<M, F>, const M: usize, const F: usize>(
+        model: &L,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+    ) -> Frame {
+        Frame {
+            names: L::POINT_NAMES.iter().map(|s| s.to_string()).collect(),
+            positions: model.point_positions(u, v).as_ref().to_vec(),
+            velocities: None,
+            accelerations: None,
+        }
+    }
+
+    fn index(&self, name: &str) -> Option<usize> {
+        self.names.iter().position(|n| n == name)
+    }
+}
+
+/// A body of the mechanism: a bar between two points or a plate over three
+
+#[derive(Clone, Debug, PartialEq)]
+enum Shape {
+    Bar([String; 2]),
+    Plate(Vec<String>),
+}
+
+/// A slider: the block at `point`, moving along a guide at `angle` (rad)
+/// through it.
+#[derive(Clone, Debug, PartialEq)]
+struct Slider {
+    point: String,
+    angle: f64,
+    guide: Slideway,
+}
+
+/// What a slider block slides on.
+#[derive(Clone, Debug, PartialEq)]
+enum Slideway {
+    /// A fixed straight guide at the slider's angle, drawn hatched.
+    Ground,
+    /// A link: the block turns with the line from the first point to the
+    /// second (the link itself is drawn as a body).
+    Link([String; 2]),
+    /// A slot in a moving body at a fixed angle, drawn with that body.
+    Slot,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scene {
+    ground: Vec<(String, Vector2<f64>)>,
+    shapes: Vec<Shape>,
+    sliders: Vec<Slider>,
+    velocity_arrows: Vec<String>,
+    acceleration_arrows: Vec<String>,
+    velocity_scale: Option<f64>,
+    acceleration_scale: Option<f64>,
+    traces: Vec<String>,
+    labels: bool,
+    title: Option<String>,
+    length_unit: String,
+    time_unit: String,
+    width: f64,
+}
+
+impl Default for Scene {
+    fn default() -> Self {
+        Scene::new()
+    }
+}
+
+impl Scene {
+    /// An empty scene, 720 pixels wide, labelled, units mm and s.
+    pub fn new() -> Scene {
+        Scene {
+            ground: Vec::new(),
+            shapes: Vec::new(),
+            sliders: Vec::new(),
+            velocity_arrows: Vec::new(),
+            acceleration_arrows: Vec::new(),
+            velocity_scale: None,
+            acceleration_scale: None,
+            traces: Vec::new(),
+            labels: true,
+            title: None,
+            length_unit: "mm".into(),
+            time_unit: "s".into(),
+            width: 720.0,
+        }
+    }
+
+    /// A ground pivot named `name` at a fixed position (drawn hatched); a
+    /// name the frame also defines is drawn where the frame puts it.
+    pub fn ground(mut self, name: &str, at: [f64; 2]) -> Scene {
+        self.ground.push((name.into(), Vector2::new(at[0], at[1])));
+        self
+    }
+
+    /// Every point of `ground` as a ground pivot (as [`Scene::ground`]
+    /// each): the same description a force analysis takes.
+    pub fn with_ground(mut self, ground: &Ground) -> Scene {
+        for (name, at) in ground.points() {
+            self.ground.push((name.into(), at));
+        }
+        self
+    }
+
+    /// A binary link between two points (frame points or ground pivots).
+    pub fn link(mut self, ends: [&str; 2]) -> Scene {
+        self.shapes.push(Shape::Bar(ends.map(String::from)));
+        self
+    }
+
+    /// A ternary (or larger) link: the polygon through its joints.
+    pub fn plate<const N: usize>(mut self, corners: [&str; N]) -> Scene {
+        self.shapes.push(Shape::Plate(
+            corners.iter().map(|s| s.to_string()).collect(),
+        ));
+        self
+    }
+
+    /// A slider block at `point` on a straight guide at `angle` (rad, from
+    /// the x axis) through it.
+    pub fn slider(mut self, point: &str, angle: f64) -> Scene {
+        self.sliders.push(Slider {
+            point: point.into(),
+            angle,
+            guide: Slideway::Ground,
+        });
+        self
+    }
+
+    /// A slider block at `point` sliding along the link through `line`
+    /// (its two points): the block turns with the link.
+    pub fn slider_on(mut self, point: &str, line: [&str; 2]) -> Scene {
+        self.sliders.push(Slider {
+            point: point.into(),
+            angle: 0.0,
+            guide: Slideway::Link(line.map(String::from)),
+        });
+        self
+    }
+
+    /// A slider block at `point` in a slot at a fixed `angle` (rad) of a
+    /// translating body, such as a ram: no ground guide is drawn.
+    pub fn block(mut self, point: &str, angle: f64) -> Scene {
+        self.sliders.push(Slider {
+            point: point.into(),
+            angle,
+            guide: Slideway::Slot,
+        });
+        self
+    }
+
+    /// Velocity arrows at these points.
+    pub fn velocities<const N: usize>(mut self, points: [&str; N]) -> Scene {
+        self.velocity_arrows
+            .extend(points.iter().map(|s| s.to_string()));
+        self
+    }
+
+    /// Acceleration arrows at these points.
+    pub fn accelerations<const N: usize>(mut self, points: [&str; N]) -> Scene {
+        self.acceleration_arrows
+            .extend(points.iter().map(|s| s.to_string()));
+        self
+    }
+
+    /// Drawn length per unit of velocity (the worksheet's 0.02: an arrow of
+    /// 0.02 mm per mm/s). Chosen automatically if not set.
+    pub fn velocity_scale(mut self, scale: f64) -> Scene {
+        self.velocity_scale = Some(scale);
+        self
+    }
+
+    /// Drawn length per unit of acceleration (the worksheet's 0.0005).
+    pub fn acceleration_scale(mut self, scale: f64) -> Scene {
+        self.acceleration_scale = Some(scale);
+        self
+    }
+
+    /// The path of these points over the cycle given to
+    /// [`Scene::render`] (a coupler curve).
+    pub fn trace<const N: usize>(mut self, points: [&str; N]) -> Scene {
+        self.traces.extend(points.iter().map(|s| s.to_string()));
+        self
+    }
+
+    /// Whether to write the points' names beside them (default yes).
+    pub fn labels(mut self, on: bool) -> Scene {
+        self.labels = on;
+        self
+    }
+
+    /// A title above the drawing.
+    pub fn title(mut self, title: &str) -> Scene {
+        self.title = Some(title.into());
+        self
+    }
+
+    /// The units of the model's lengths and times, for the legend.
+    pub fn units(mut self, length: &str, time: &str) -> Scene {
+        self.length_unit = length.into();
+        self.time_unit = time.into();
+        self
+    }
+
+    /// The picture's width in pixels, 200 to 20 000 (the height follows
+    /// the mechanism).
+    pub fn width(mut self, pixels: f64) -> Scene {
+        self.width = pixels;
+        self
+    }
+
+    /// The pose `frame` as SVG, with the traced paths over `cycle` (frames
+    /// of the whole motion; may be empty).
+    pub fn render(&self, frame: &Frame, cycle: &[Frame]) -> Result<String, SceneError> {
+        let layout = self.layout(std::slice::from_ref(frame), cycle)?;
+        let mut w = layout.open(self);
+        self.draw_traces(&mut w, &layout, cycle)?;
+        self.draw_guides(&mut w, &layout, std::slice::from_ref(frame), cycle)?;
+        for (name, _) in &self.ground {
+            let at = resolve(frame, name, &self.ground)?;
+            ground_symbol(&mut w, layout.screen(at));
+        }
+        let placed = self.place(&layout, frame)?;
+        self.draw_links(&mut w, &placed, None);
+        self.draw_sliders(&mut w, &placed, None);
+        self.draw_points(&mut w, &placed, None);
+        self.draw_arrows(&mut w, &layout, frame, None)?;
+        if self.labels {
+            let obstacles = self.obstacles(&layout, frame, &placed);
+            self.draw_labels(&mut w, &placed, None, &obstacles);
+        }
+        self.draw_legend(&mut w, &layout, !cycle.is_empty());
+        Ok(w.finish())
+    }
+
+    /// Every point the scene names, checked against the frame.
+    pub(super) fn names(&self) -> impl Iterator<Item = &String> {
+        let bodies = self.shapes.iter().flat_map(|b| match b {
+            Shape::Bar(ends) => ends.as_slice(),
+            Shape::Plate(corners) => corners.as_slice(),
+        });
+        let guides = self.sliders.iter().flat_map(|s| match &s.guide {
+            Slideway::Link(line) => line.as_slice(),
+            _ => &[],
+        });
+        bodies
+            .chain(self.sliders.iter().map(|s| &s.point))
+            .chain(guides)
+            .chain(&self.velocity_arrows)
+            .chain(&self.acceleration_arrows)
+            .chain(&self.traces)
+    }
+}
+
+pub(super) fn positive(what: &'static str, value: f64) -> Result<(), SceneError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(())
+    } else {
+        Err(SceneError::BadSetting {
+            what,
+            must: "positive and finite",
+            value,
+        })
+    }
+}
+
+pub(super) fn finite(p: Vector2<f64>, what: &'static str, name: &str) -> Result<(), SceneError> {
+    if p.x.is_finite() && p.y.is_finite() {
+        Ok(())
+    } else {
+        Err(SceneError::NonFinite {
+            what,
+            name: name.into(),
+        })
+    }
+}
+
+pub(super) fn unknown(frame: &Frame, name: &str) -> SceneError {
+    SceneError::UnknownName(UnknownName::new(
+        NameKind::Point,
+        "scene",
+        name,
+        frame.names.iter().map(String::as_str),
+    ))
+}
+
+/// A name's position: the frame's point, else the scene's ground pivot.
+pub(super) fn resolve(
+    frame: &Frame,
+    name: &str,
+    ground: &[(String, Vector2<f64>)],
+) -> Result<Vector2<f64>, SceneError> {
+    let at = match frame.index(name) {
+        Some(k) => frame.positions[k],
+        None => ground
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, p)| *p)
+            .ok_or_else(|| unknown(frame, name))?,
+    };
+    finite(at, "position", name)?;
+    Ok(at)
+}
