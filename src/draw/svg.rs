@@ -74,52 +74,6 @@ pub(crate) fn fmt(x: f64) -> String {
     }
 }
 
-/// A name as a textbook prints it: a Greek letter's name as the letter,
-/// trailing digits as subscripts (theta3 → θ₃, G2 → G₂, s → s).
-pub(crate) fn pretty_name(name: &str) -> String {
-    const GREEK: [(&str, &str); 24] = [
-        ("alpha", "α"),
-        ("beta", "β"),
-        ("gamma", "γ"),
-        ("delta", "δ"),
-        ("epsilon", "ε"),
-        ("zeta", "ζ"),
-        ("eta", "η"),
-        ("theta", "θ"),
-        ("iota", "ι"),
-        ("kappa", "κ"),
-        ("lambda", "λ"),
-        ("mu", "μ"),
-        ("nu", "ν"),
-        ("xi", "ξ"),
-        ("omicron", "ο"),
-        ("pi", "π"),
-        ("rho", "ρ"),
-        ("sigma", "σ"),
-        ("tau", "τ"),
-        ("upsilon", "υ"),
-        ("phi", "φ"),
-        ("chi", "χ"),
-        ("psi", "ψ"),
-        ("omega", "ω"),
-    ];
-    let stem_end = name.trim_end_matches(|c: char| c.is_ascii_digit()).len();
-    let (stem, digits) = name.split_at(stem_end);
-    let stem = stem.strip_suffix('_').unwrap_or(stem);
-    let letter = GREEK
-        .iter()
-        .find(|(word, _)| *word == stem)
-        .map_or(stem, |(_, letter)| *letter);
-    if stem.is_empty() {
-        return name.to_string();
-    }
-    let sub: String = digits
-        .chars()
-        .map(|c| char::from_u32(0x2080 + c.to_digit(10).unwrap_or(0)).unwrap_or(c))
-        .collect();
-    format!("{letter}{sub}")
-}
-
 fn escape(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     for c in text.chars() {
@@ -146,11 +100,5 @@ mod tests {
         assert_eq!(fmt(5.0), "5");
         assert_eq!(fmt(-2.255), "-2.25");
         assert_eq!(escape(r#"a<b & "c""#), "a&lt;b &amp; &quot;c&quot;");
-        assert_eq!(pretty_name("theta3"), "θ₃");
-        assert_eq!(pretty_name("G2"), "G₂");
-        assert_eq!(pretty_name("phi_12"), "φ₁₂");
-        assert_eq!(pretty_name("s"), "s");
-        assert_eq!(pretty_name("P"), "P");
-        assert_eq!(pretty_name("42"), "42");
     }
 }

@@ -44,8 +44,8 @@ mod plot;
 pub use chart::{Chart, Panel, Series};
 pub use hodographs::Hodographs;
 
-use super::svg::pretty_name;
 use linkage_runtime::{EventKind, Linkage, Sweep};
+use linkage_symbolic::names::textbook;
 use plot::*;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -203,8 +203,8 @@ impl Diagrams {
             .collect();
         check_plottable("driver", L::V_NAMES[0], xs.iter().copied(), 1)?;
         let x_desc = match driver_kind {
-            Some(Kind::Angle) => format!("{} [°]", pretty_name(L::V_NAMES[0])),
-            Some(Kind::Length) => format!("{} [{}]", pretty_name(L::V_NAMES[0]), self.length_unit),
+            Some(Kind::Angle) => format!("{} [°]", textbook(L::V_NAMES[0])),
+            Some(Kind::Length) => format!("{} [{}]", textbook(L::V_NAMES[0]), self.length_unit),
             None => "pose".to_string(),
         };
         let mut curves = Vec::new();
@@ -234,7 +234,7 @@ impl Diagrams {
                 values.push([position, p.udot[k], p.uddot[k]]);
             }
             curves.push(Curve {
-                name: pretty_name(name),
+                name: textbook(name),
                 kind,
                 values,
             });

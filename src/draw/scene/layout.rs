@@ -5,7 +5,8 @@
 use super::animation::Motion;
 use super::symbols::style;
 use super::{Frame, Scene, SceneError, Shape, Slideway, finite, resolve, unknown};
-use crate::draw::svg::{Writer, fmt, pretty_name};
+use crate::draw::svg::{Writer, fmt};
+use linkage_symbolic::names::textbook;
 use nalgebra::Vector2;
 
 impl Scene {
@@ -236,7 +237,7 @@ impl Scene {
                 m.animate(w, "x", |f| fmt(spot(f.get(name)).x));
                 m.animate(w, "y", |f| fmt(spot(f.get(name)).y));
             }
-            w.text(&pretty_name(name));
+            w.text(&textbook(name));
             w.close("text");
         }
     }

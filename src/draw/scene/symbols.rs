@@ -9,7 +9,8 @@
 use super::animation::{Motion, animate_values};
 use super::layout::{Layout, Placed, nice_below, number};
 use super::{Frame, Scene, SceneError, Shape, Slideway, resolve, unknown};
-use crate::draw::svg::{Writer, fmt, pretty_name};
+use crate::draw::svg::{Writer, fmt};
+use linkage_symbolic::names::textbook;
 use nalgebra::Vector2;
 use std::fmt::Write as _;
 
@@ -451,7 +452,7 @@ impl Scene {
                 w,
                 x + 44.0,
                 y,
-                &format!("path of {} over the cycle", pretty_name(name)),
+                &format!("path of {} over the cycle", textbook(name)),
             );
             y += style::LEGEND_LINE;
         }
