@@ -7,8 +7,8 @@
 //! cargo run --release --example speed_accuracy -- --chart  # chart the CSVs only
 //! ```
 //!
-//! It writes `bench/results/ours.csv`, reads the peers' results
-//! (`bench/results/peers.csv`, written by `bench/peers/run.sh`), prints the
+//! It writes `benches/results/ours.csv`, reads the peers' results
+//! (`benches/results/peers.csv`, written by `benches/peers/run.sh`), prints the
 //! table and writes `docs/figures/speed_accuracy.svg`.
 
 mod workloads;
@@ -416,7 +416,7 @@ fn chart(results: &[Result], path: &Path) -> std::result::Result<(), Box<dyn std
 
 fn main() -> std::result::Result<(), Box<dyn std::error::Error>> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let ours_path = root.join("bench/results/ours.csv");
+    let ours_path = root.join("benches/results/ours.csv");
     let ours = if std::env::args().any(|a| a == "--chart") {
         read_csv(&ours_path)
     } else {
@@ -424,7 +424,7 @@ fn main() -> std::result::Result<(), Box<dyn std::error::Error>> {
         write_csv(&ours_path, &measured)?;
         measured
     };
-    let peers = read_csv(&root.join("bench/results/peers.csv"));
+    let peers = read_csv(&root.join("benches/results/peers.csv"));
     let mut all = ours;
     all.extend(peers);
     print_table(&all);

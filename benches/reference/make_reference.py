@@ -5,10 +5,10 @@ Everything is computed with mpmath at 50 significant digits, from the closed
 forms of the mechanisms, at driver values that are exactly representable as
 f64 (the value the Rust code is given), and written as CSV under tests/data/.
 
-    python3 bench/reference/make_reference.py [--bench | --all]
+    python3 benches/reference/make_reference.py [--bench | --all]
 
 (the near-singular references; --bench the dense-sweep references of the
-benchmarks; --all both) creates its own virtual environment (bench/reference/.venv) with mpmath from
+benchmarks; --all both) creates its own virtual environment (benches/reference/.venv) with mpmath from
 PyPI on first use, then reruns itself inside it.
 """
 import os
@@ -96,7 +96,7 @@ def near_singular(name, l2, singular, description):
         rows.append([fmt(exact_delta), text] + [fmt(x) for x in r])
     write(name, [
         description,
-        "Written by bench/reference/make_reference.py (mpmath, 50 digits; 40 kept): the closed form at the",
+        "Written by benches/reference/make_reference.py (mpmath, 50 digits; 40 kept): the closed form at the",
         "f64 value of theta2 given in the second column, branch sigma = +1 (the worksheet's), omega2 = 1, alpha2 = 0",
         "(so omega and alpha are the first and second kinematic analogs). delta = exact distance to the singular pose.",
     ], rows)
@@ -132,7 +132,7 @@ def near_limit_boom():
     write("near_limit_boom.csv", [
         "The boom of tests/common (A = (0.4, -0.3), b = 1) as its actuator length approaches full extension L* = 1.5,",
         "where the cylinder lines up with the boom (a limit position of the actuator).",
-        "Written by bench/reference/make_reference.py (mpmath, 50 digits; 40 kept): the closed form (circle intersection)",
+        "Written by benches/reference/make_reference.py (mpmath, 50 digits; 40 kept): the closed form (circle intersection)",
         "at the f64 length of the second column, and its first and second derivatives d/dL by mpmath's diff.",
     ], rows)
 
@@ -160,7 +160,7 @@ def dense_fourbar():
     write("bench_fourbar.csv", [
         "The worksheet's four-bar (80/20/50/70, branch sigma = +1), omega2 = 400 rpm, alpha2 = 0, on the dense grid",
         "theta2 = (TAU*k)/1008000 (f64), every 280th sample: the reference of the speed-accuracy benchmark.",
-        "Written by bench/reference/make_reference.py (mpmath at 40 digits, 22 kept), from the closed form.",
+        "Written by benches/reference/make_reference.py (mpmath at 40 digits, 22 kept), from the closed form.",
     ], rows)
 
 
@@ -181,7 +181,7 @@ def dense_slider_crank():
     write("bench_slider_crank.csv", [
         "The offset slider-crank of the tests (r = 0.05, l = 0.2, e = 0.01 m) on the dense grid theta2 = (TAU*k)/1008000,",
         "every 280th sample: theta3 = asin((e - r sin theta2)/l), s = r cos theta2 + l cos theta3 and their first and second",
-        "derivatives with respect to theta2 (kinematic analogs). Written by bench/reference/make_reference.py (mpmath).",
+        "derivatives with respect to theta2 (kinematic analogs). Written by benches/reference/make_reference.py (mpmath).",
     ], rows)
 
 
@@ -220,7 +220,7 @@ def dense_six_bar():
         "The two-loop six-bar of the tests (the worksheet's four-bar; coupler point at 40 mm, 30 deg; dyad 60/50 to the",
         "ground pivot (20, 90); dyad branch sigma = +1) on the dense grid theta2 = (TAU*k)/1008000, every 280th sample:",
         "theta3..theta6 and their first and second derivatives with respect to theta2 (kinematic analogs), by mpmath's",
-        "diff on the closed form. Written by bench/reference/make_reference.py.",
+        "diff on the closed form. Written by benches/reference/make_reference.py.",
     ], rows)
 
 

@@ -3,7 +3,7 @@
 # `cargo run --release --example speed_accuracy`: the seed four-bar over a
 # revolution of the dense grid, positions, velocities and accelerations, errors
 # against tests/data/bench_fourbar.csv. Sets up its own Python environment
-# from PyPI (bench/peers/.venv) and writes bench/results/peers.csv.
+# from PyPI (benches/peers/.venv) and writes benches/results/peers.csv.
 set -euo pipefail
 cd "$(dirname "$0")"
 if [ ! -x .venv/bin/python ]; then
@@ -14,7 +14,7 @@ PY=.venv/bin/python
 mkdir -p build ../results
 out=../results/peers.csv
 {
-  echo "# Written by bench/peers/run.sh on $(date -u +%Y-%m-%d) ($(uname -m), $(nproc) cores): the peers on the seed four-bar,"
+  echo "# Written by benches/peers/run.sh on $(date -u +%Y-%m-%d) ($(uname -m), $(nproc) cores): the peers on the seed four-bar,"
   echo "# median ns per sample and worst relative errors against tests/data/bench_fourbar.csv."
   echo "workload,method,ns_per_sample,error_positions,error_velocities,error_accelerations,samples"
 } > "$out"
