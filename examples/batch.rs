@@ -7,26 +7,11 @@
 //!     cargo run --release --example batch
 
 use linkage::batch::{self, SweepJob};
+use linkage::mechanisms::BareFourBar;
 use linkage::prelude::*;
 use std::f64::consts::TAU;
 use std::path::Path;
 use std::time::Instant;
-
-#[linkage::linkage(
-    u = [theta3, theta4],
-    v = [theta2],
-    closure = [
-        l2 * theta2.cos() + l3 * theta3.cos() + l4 * theta4.cos() - l1,
-        l2 * theta2.sin() + l3 * theta3.sin() + l4 * theta4.sin(),
-    ],
-)]
-#[derive(Clone, Copy, Debug)]
-pub struct FourBar {
-    pub l1: f64,
-    pub l2: f64,
-    pub l3: f64,
-    pub l4: f64,
-}
 
 const STEPS: usize = 3600;
 const OMEGA2: f64 = 400.0 * TAU / 60.0;
@@ -38,11 +23,11 @@ struct Merit {
     max_alpha4: f64,
 }
 
-fn jobs() -> Vec<SweepJob<FourBar, 2, 1>> {
+fn jobs() -> Vec<SweepJob<BareFourBar, 2, 1>> {
     let mut jobs = Vec::new();
     for i in 0..40 {
         for j in 0..50 {
-            let model = FourBar {
+            let model = BareFourBar {
                 l1: 80.0,
                 l2: 20.0,
                 l3: 45.0 + 0.5 * i as f64,
@@ -71,7 +56,7 @@ fn jobs() -> Vec<SweepJob<FourBar, 2, 1>> {
     jobs
 }
 
-fn run(jobs: &[SweepJob<FourBar, 2, 1>], options: &SweepOptions) -> Vec<Merit> {
+fn run(jobs: &[SweepJob<BareFourBar, 2, 1>], options: &SweepOptions) -> Vec<Merit> {
     batch::sweeps(
         jobs,
         options,
@@ -94,7 +79,7 @@ fn run(jobs: &[SweepJob<FourBar, 2, 1>], options: &SweepOptions) -> Vec<Merit> {
 /// The median of `repeats` timings of the batch on `threads` threads, in
 /// seconds, and the results.
 fn time(
-    jobs: &[SweepJob<FourBar, 2, 1>],
+    jobs: &[SweepJob<BareFourBar, 2, 1>],
     options: &SweepOptions,
     threads: usize,
     repeats: usize,

@@ -7,34 +7,9 @@
 //!
 //! Run with `cargo run --release --example fourbar`.
 
+use linkage::mechanisms::FourBar;
 use linkage::prelude::*;
 use std::f64::consts::TAU;
-
-/// The four-bar: ground A–D of length l1, crank AB (l2, angle θ2), coupler
-/// BC (l3, θ3), rocker CD (l4, θ4 the angle of C→D); G2, G3, G4 are the link
-/// midpoints the worksheet draws its arrows from.
-#[linkage::linkage(
-    u = [theta3, theta4],
-    v = [theta2],
-    points = [
-        B = (l2 * theta2.cos(), l2 * theta2.sin()),
-        C = (B.x + l3 * theta3.cos(), B.y + l3 * theta3.sin()),
-        G2 = (0.5 * B.x, 0.5 * B.y),
-        G3 = (0.5 * (B.x + C.x), 0.5 * (B.y + C.y)),
-        G4 = (C.x + 0.5 * l4 * theta4.cos(), C.y + 0.5 * l4 * theta4.sin()),
-    ],
-    closure = [
-        l2 * theta2.cos() + l3 * theta3.cos() + l4 * theta4.cos() - l1,
-        l2 * theta2.sin() + l3 * theta3.sin() + l4 * theta4.sin(),
-    ],
-)]
-#[derive(Clone, Debug)]
-pub struct FourBar {
-    pub l1: f64,
-    pub l2: f64,
-    pub l3: f64,
-    pub l4: f64,
-}
 
 /// What the worksheet printed (Maple, `Digits = 10`), for comparison.
 mod worksheet {

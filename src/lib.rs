@@ -55,6 +55,7 @@ pub mod draw;
 pub mod error;
 pub mod ground;
 pub mod machine;
+pub mod mechanisms;
 mod numerics;
 
 pub use linkage_macros::linkage;

@@ -29,30 +29,13 @@ mod common;
 
 use common::{SEED, SLIDER_DRIVEN, SliderDriven};
 use linkage::closed_form::{self, circle_intersection};
+use linkage::mechanisms::BareFourBar;
 use linkage::prelude::*;
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 use std::time::{Duration, Instant};
 
 /// The location promised for a singular pose, relative to max(1, |v|).
 const LOCATED_TO: f64 = 1e-12;
-
-/// A four-bar in the worksheet's convention (the one of `common`, without
-/// points).
-#[linkage::linkage(
-    u = [theta3, theta4],
-    v = [theta2],
-    closure = [
-        l2 * theta2.cos() + l3 * theta3.cos() + l4 * theta4.cos() - l1,
-        l2 * theta2.sin() + l3 * theta3.sin() + l4 * theta4.sin(),
-    ],
-)]
-#[derive(Clone, Copy, Debug)]
-struct FourBar {
-    l1: f64,
-    l2: f64,
-    l3: f64,
-    l4: f64,
-}
 
 /// A centred slider-crank (crank r, rod l, slider s on the x axis).
 #[linkage::linkage(
@@ -492,7 +475,7 @@ fn report(name: &str, tally: &Tally, began: Instant) {
     );
 }
 
-fn cf(bar: FourBar) -> closed_form::FourBar {
+fn cf(bar: BareFourBar) -> closed_form::FourBar {
     closed_form::FourBar {
         l1: bar.l1,
         l2: bar.l2,
@@ -504,7 +487,7 @@ fn cf(bar: FourBar) -> closed_form::FourBar {
 /// A four-bar swept through its branch points, on both branches: the
 /// smooth continuation through a branch point changes the closed form's
 /// branch (the side of B→D that C is on).
-fn four_bar_through(name: &str, bar: FourBar, singular: &[f64]) {
+fn four_bar_through(name: &str, bar: BareFourBar, singular: &[f64]) {
     let began = Instant::now();
     let closed = cf(bar);
     let counts = step_counts();
@@ -524,7 +507,7 @@ fn four_bar_through(name: &str, bar: FourBar, singular: &[f64]) {
 
 #[test]
 fn change_point_l80_40_50_70() {
-    let bar = FourBar {
+    let bar = BareFourBar {
         l1: 80.0,
         l2: 40.0,
         l3: 50.0,
@@ -542,7 +525,7 @@ fn change_point_l80_40_50_70() {
 #[test]
 fn change_point_from_zero_to_two_pi_at_every_step_count() {
     let began = Instant::now();
-    let bar = FourBar {
+    let bar = BareFourBar {
         l1: 80.0,
         l2: 40.0,
         l3: 50.0,
@@ -583,7 +566,7 @@ fn change_point_from_zero_to_two_pi_at_every_step_count() {
 
 #[test]
 fn change_point_l100_30_60_70() {
-    let bar = FourBar {
+    let bar = BareFourBar {
         l1: 100.0,
         l2: 30.0,
         l3: 60.0,
@@ -595,7 +578,7 @@ fn change_point_l100_30_60_70() {
 
 #[test]
 fn change_point_l60_20_80_40() {
-    let bar = FourBar {
+    let bar = BareFourBar {
         l1: 60.0,
         l2: 20.0,
         l3: 80.0,
@@ -607,7 +590,7 @@ fn change_point_l60_20_80_40() {
 
 #[test]
 fn change_point_l60_20_40_80() {
-    let bar = FourBar {
+    let bar = BareFourBar {
         l1: 60.0,
         l2: 20.0,
         l3: 40.0,
@@ -621,7 +604,7 @@ fn change_point_l60_20_40_80() {
 /// are the two branches, crossing at θ2 = 0 and π.
 #[test]
 fn parallelogram_and_anti_parallelogram() {
-    let bar = FourBar {
+    let bar = BareFourBar {
         l1: 80.0,
         l2: 30.0,
         l3: 80.0,
@@ -635,7 +618,7 @@ fn parallelogram_and_anti_parallelogram() {
 /// poses.
 #[test]
 fn kite() {
-    let bar = FourBar {
+    let bar = BareFourBar {
         l1: 40.0,
         l2: 40.0,
         l3: 70.0,
@@ -648,7 +631,7 @@ fn kite() {
 /// θ2; the other branch crosses that one at θ2 = 0 and π.
 #[test]
 fn deltoid() {
-    let bar = FourBar {
+    let bar = BareFourBar {
         l1: 80.0,
         l2: 30.0,
         l3: 30.0,
@@ -761,7 +744,7 @@ fn six_bar_with_a_change_point_dyad() {
 #[test]
 fn triple_rocker_limit_on_the_grid() {
     let began = Instant::now();
-    let bar = FourBar {
+    let bar = BareFourBar {
         l1: 80.0,
         l2: 45.0,
         l3: 50.0,

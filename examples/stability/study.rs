@@ -6,24 +6,8 @@
 #![allow(dead_code)]
 
 use linkage::closed_form;
+use linkage::mechanisms::BareFourBar;
 use linkage::prelude::*;
-
-/// The worksheet's four-bar, any lengths.
-#[linkage::linkage(
-    u = [theta3, theta4],
-    v = [theta2],
-    closure = [
-        l2 * theta2.cos() + l3 * theta3.cos() + l4 * theta4.cos() - l1,
-        l2 * theta2.sin() + l3 * theta3.sin() + l4 * theta4.sin(),
-    ],
-)]
-#[derive(Clone, Copy, Debug)]
-pub struct Bar {
-    pub l1: f64,
-    pub l2: f64,
-    pub l3: f64,
-    pub l4: f64,
-}
 
 /// A singular pose approached.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -35,12 +19,12 @@ pub enum Case {
 }
 
 impl Case {
-    pub fn bar(self) -> Bar {
+    pub fn bar(self) -> BareFourBar {
         let l2 = match self {
             Case::Limit => 45.0,
             Case::Branch => 40.0,
         };
-        Bar {
+        BareFourBar {
             l1: 80.0,
             l2,
             l3: 50.0,

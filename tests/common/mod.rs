@@ -1,33 +1,10 @@
 //! Mechanisms and helpers shared by the integration tests.
 #![allow(dead_code)]
 
+pub use linkage::mechanisms::FourBar;
 use linkage::num_dual::{Dual2_64, Dual64};
 use linkage::prelude::*;
 use std::f64::consts::{PI, TAU};
-
-/// The four-bar of the Maple worksheet, with the link midpoints G2, G3, G4.
-#[linkage::linkage(
-    u = [theta3, theta4],
-    v = [theta2],
-    points = [
-        B = (l2 * theta2.cos(), l2 * theta2.sin()),
-        C = (B.x + l3 * theta3.cos(), B.y + l3 * theta3.sin()),
-        G2 = (0.5 * B.x, 0.5 * B.y),
-        G3 = (0.5 * (B.x + C.x), 0.5 * (B.y + C.y)),
-        G4 = (C.x + 0.5 * l4 * theta4.cos(), C.y + 0.5 * l4 * theta4.sin()),
-    ],
-    closure = [
-        l2 * theta2.cos() + l3 * theta3.cos() + l4 * theta4.cos() - l1,
-        l2 * theta2.sin() + l3 * theta3.sin() + l4 * theta4.sin(),
-    ],
-)]
-#[derive(Clone, Debug)]
-pub struct FourBar {
-    pub l1: f64,
-    pub l2: f64,
-    pub l3: f64,
-    pub l4: f64,
-}
 
 pub const SEED: FourBar = FourBar {
     l1: 80.0,
