@@ -106,6 +106,7 @@ impl Generator<'_> {
         quote! {
             #doc
             #[must_use]
+            #[inline]
             pub fn #name(&self, #(#args),*) -> #ret {
                 #(#statements)*
                 #result

@@ -83,6 +83,7 @@ impl Generator<'_> {
         quote! {
             #doc
             #[must_use]
+            #[inline]
             pub fn #name #generics(&self, #(#args),*) -> #ret {
                 #(#statements)*
                 #result

@@ -31,7 +31,7 @@ impl Generator<'_> {
                     const TRIG_V: [bool; #f] = Self::TRIG_V;
                     #[inline(always)]
                 },
-                _ => quote!(),
+                _ => quote!(#[inline]),
             };
             quote! {
                 #prefix

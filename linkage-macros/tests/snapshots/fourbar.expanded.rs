@@ -22,6 +22,7 @@ const _: () = {
         /// [ l2·sin θ2 + l3·sin θ3 + l4·sin θ4      ]
         /// ```
         #[must_use]
+        #[inline]
         pub fn psi(&self, u: &SVector<f64, 2>, v: &SVector<f64, 1>) -> SVector<f64, 2> {
             let Self { l1, l2, l3, l4, .. } = *self;
             let (theta3, theta4) = (u[0], u[1]);
@@ -41,6 +42,7 @@ const _: () = {
         /// [  l3·cos θ3    l4·cos θ4    l2·cos θ2 ]
         /// ```
         #[must_use]
+        #[inline]
         pub fn psi_q(
             &self,
             u: &SVector<f64, 2>,
@@ -68,6 +70,7 @@ const _: () = {
         /// [  l3·cos θ3    l4·cos θ4 ]
         /// ```
         #[must_use]
+        #[inline]
         pub fn psi_u(
             &self,
             u: &SVector<f64, 2>,
@@ -91,6 +94,7 @@ const _: () = {
         /// [  l2·cos θ2 ]
         /// ```
         #[must_use]
+        #[inline]
         pub fn psi_v(
             &self,
             _u: &SVector<f64, 2>,
@@ -107,6 +111,7 @@ const _: () = {
         /// Ψ and Ψ_u together, sharing every sine, cosine and common subexpression: one
         /// Newton–Raphson step's evaluation (see [`Self::psi`] and [`Self::psi_u`]).
         #[must_use]
+        #[inline]
         pub fn psi_and_psi_u(
             &self,
             u: &SVector<f64, 2>,
@@ -140,6 +145,7 @@ const _: () = {
         /// [ -l3·sin θ3·θ̇3   -l4·sin θ4·θ̇4 ]
         /// ```
         #[must_use]
+        #[inline]
         pub fn psi_u_udot_u(
             &self,
             u: &SVector<f64, 2>,
@@ -166,6 +172,7 @@ const _: () = {
         /// [ 0 ]
         /// ```
         #[must_use]
+        #[inline]
         pub fn psi_u_udot_v(
             &self,
             _u: &SVector<f64, 2>,
@@ -182,6 +189,7 @@ const _: () = {
         /// [ 0   0 ]
         /// ```
         #[must_use]
+        #[inline]
         pub fn psi_v_vdot_u(
             &self,
             _u: &SVector<f64, 2>,
@@ -197,6 +205,7 @@ const _: () = {
         /// [ -l2·sin θ2·θ̇2 ]
         /// ```
         #[must_use]
+        #[inline]
         pub fn psi_v_vdot_v(
             &self,
             _u: &SVector<f64, 2>,
@@ -220,6 +229,7 @@ const _: () = {
         /// [ -l3·sin θ3·θ̇3   -l4·sin θ4·θ̇4 ]
         /// ```
         #[must_use]
+        #[inline]
         pub fn psi_u_dot(
             &self,
             u: &SVector<f64, 2>,
@@ -247,6 +257,7 @@ const _: () = {
         /// [ -l2·sin θ2·θ̇2 ]
         /// ```
         #[must_use]
+        #[inline]
         pub fn psi_v_dot(
             &self,
             _u: &SVector<f64, 2>,
@@ -274,6 +285,7 @@ const _: () = {
         /// [ -l3·sin θ3·θ̇3² - l4·sin θ4·θ̇4² - l2·sin θ2·θ̇2² ]
         /// ```
         #[must_use]
+        #[inline]
         pub fn gamma(
             &self,
             u: &SVector<f64, 2>,
@@ -313,6 +325,7 @@ const _: () = {
         /// G4.y = l2·sin θ2 + l3·sin θ3 + 0.5·l4·sin θ4
         /// ```
         #[must_use]
+        #[inline]
         pub fn point_positions(
             &self,
             u: &SVector<f64, 2>,
@@ -359,6 +372,7 @@ const _: () = {
         /// G4.y = l3·cos θ3·θ̇3 + 0.5·l4·cos θ4·θ̇4 + l2·cos θ2·θ̇2
         /// ```
         #[must_use]
+        #[inline]
         pub fn point_velocities(
             &self,
             u: &SVector<f64, 2>,
@@ -412,6 +426,7 @@ const _: () = {
         /// G4.y = -l3·sin θ3·θ̇3² - 0.5·l4·sin θ4·θ̇4² - l2·sin θ2·θ̇2² + l2·cos θ2·θ̈2 + l3·cos θ3·θ̈3 + 0.5·l4·cos θ4·θ̈4
         /// ```
         #[must_use]
+        #[inline]
         pub fn point_accelerations(
             &self,
             u: &SVector<f64, 2>,
@@ -606,6 +621,7 @@ const _: () = {
         /// [ l2·sin θ2 + l3·sin θ3 + l4·sin θ4      ]
         /// ```
         #[must_use]
+        #[inline]
         pub fn psi_generic<D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy>(
             &self,
             u: &SVector<D, 2>,
@@ -627,6 +643,7 @@ const _: () = {
         }
         /// The point positions P(q) on any dual number of `num_dual` (see [`Self::point_positions`]).
         #[must_use]
+        #[inline]
         pub fn point_positions_generic<
             D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy,
         >(&self, u: &SVector<D, 2>, v: &SVector<D, 1>) -> [Vector2<D>; 5] {
@@ -929,15 +946,19 @@ const _: () = {
         const V_NAMES: [&'static str; 1] = Self::V_NAMES;
         const POINT_NAMES: &'static [&'static str] = &Self::POINT_NAMES;
         const SYMBOLIC: ::linkage::SymbolicTable = Self::SYMBOLIC;
+        #[inline]
         fn psi(&self, u: &SVector<f64, 2>, v: &SVector<f64, 1>) -> SVector<f64, 2> {
             Self::psi(self, u, v)
         }
+        #[inline]
         fn psi_u(&self, u: &SVector<f64, 2>, v: &SVector<f64, 1>) -> SMatrix<f64, 2, 2> {
             Self::psi_u(self, u, v)
         }
+        #[inline]
         fn psi_v(&self, u: &SVector<f64, 2>, v: &SVector<f64, 1>) -> SVector<f64, 2> {
             Self::psi_v(self, u, v)
         }
+        #[inline]
         fn psi_and_psi_u(
             &self,
             u: &SVector<f64, 2>,
@@ -945,6 +966,7 @@ const _: () = {
         ) -> (SVector<f64, 2>, SMatrix<f64, 2, 2>) {
             Self::psi_and_psi_u(self, u, v)
         }
+        #[inline]
         fn psi_u_udot_u(
             &self,
             u: &SVector<f64, 2>,
@@ -953,6 +975,7 @@ const _: () = {
         ) -> SMatrix<f64, 2, 2> {
             Self::psi_u_udot_u(self, u, v, udot)
         }
+        #[inline]
         fn psi_u_udot_v(
             &self,
             u: &SVector<f64, 2>,
@@ -961,6 +984,7 @@ const _: () = {
         ) -> SVector<f64, 2> {
             Self::psi_u_udot_v(self, u, v, udot)
         }
+        #[inline]
         fn psi_v_vdot_u(
             &self,
             u: &SVector<f64, 2>,
@@ -969,6 +993,7 @@ const _: () = {
         ) -> SMatrix<f64, 2, 2> {
             Self::psi_v_vdot_u(self, u, v, vdot)
         }
+        #[inline]
         fn psi_v_vdot_v(
             &self,
             u: &SVector<f64, 2>,
@@ -977,6 +1002,7 @@ const _: () = {
         ) -> SVector<f64, 2> {
             Self::psi_v_vdot_v(self, u, v, vdot)
         }
+        #[inline]
         fn psi_u_dot(
             &self,
             u: &SVector<f64, 2>,
@@ -986,6 +1012,7 @@ const _: () = {
         ) -> SMatrix<f64, 2, 2> {
             Self::psi_u_dot(self, u, v, udot, vdot)
         }
+        #[inline]
         fn psi_v_dot(
             &self,
             u: &SVector<f64, 2>,
@@ -995,6 +1022,7 @@ const _: () = {
         ) -> SVector<f64, 2> {
             Self::psi_v_dot(self, u, v, udot, vdot)
         }
+        #[inline]
         fn gamma(
             &self,
             u: &SVector<f64, 2>,
@@ -1004,6 +1032,7 @@ const _: () = {
         ) -> SVector<f64, 2> {
             Self::gamma(self, u, v, udot, vdot)
         }
+        #[inline]
         fn point_positions(
             &self,
             u: &SVector<f64, 2>,
@@ -1011,6 +1040,7 @@ const _: () = {
         ) -> [Vector2<f64>; 5] {
             Self::point_positions(self, u, v)
         }
+        #[inline]
         fn point_velocities(
             &self,
             u: &SVector<f64, 2>,
@@ -1020,6 +1050,7 @@ const _: () = {
         ) -> [Vector2<f64>; 5] {
             Self::point_velocities(self, u, v, udot, vdot)
         }
+        #[inline]
         fn point_accelerations(
             &self,
             u: &SVector<f64, 2>,
@@ -1055,6 +1086,7 @@ const _: () = {
         ) -> ::linkage::Kinematics<2, 1> {
             Self::kinematics_with_trig(self, u, v, trig_u, trig_v, vdot, vddot)
         }
+        #[inline]
         fn psi_generic<D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy>(
             &self,
             u: &SVector<D, 2>,
@@ -1062,6 +1094,7 @@ const _: () = {
         ) -> SVector<D, 2> {
             Self::psi_generic(self, u, v)
         }
+        #[inline]
         fn point_positions_generic<
             D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy,
         >(&self, u: &SVector<D, 2>, v: &SVector<D, 1>) -> impl AsRef<[Vector2<D>]> {
