@@ -30,7 +30,7 @@
 use super::tracker::{REGULAR_RCOND, State, Tracker};
 use super::{Event, EventKind};
 use crate::linalg::scaled_svd;
-use crate::model::Linkage;
+use crate::linkage::Linkage;
 use crate::sources;
 use nalgebra::{DMatrix, DVector, SVector};
 use num_dual::HyperDual64;

@@ -4,7 +4,7 @@
 
 use super::tracker::{State, Tracker};
 use crate::linalg::determinant;
-use crate::model::Linkage;
+use crate::linkage::Linkage;
 use crate::sources;
 use nalgebra::{DMatrix, DVector, SVector};
 

@@ -44,7 +44,7 @@ mod trig;
 pub(crate) use driver::sweep;
 
 use crate::error::Error;
-use crate::model::Options;
+use crate::options::Options;
 use nalgebra::SVector;
 
 /// How the driver moves.

@@ -5,10 +5,14 @@
 use super::branch_point::Passage;
 use super::trig::TrigCarrier;
 use super::{Event, SweepOptions, SweepPose};
+use crate::checks::check_result;
 use crate::error::{Error, Stage};
 use crate::linalg::invert;
-use crate::model::{AccelerationMethod, Linkage, Options};
-use crate::sources;
+use crate::linkage::Linkage;
+use crate::options::{AccelerationMethod, JacobianSource, Options};
+use crate::results::Kinematics;
+use crate::solve::acceleration_conditioning_with;
+use crate::{newton, sources};
 use nalgebra::{SMatrix, SVector};
 
 /// A solved state on the path: t is the path parameter.
@@ -137,7 +141,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             damped: false,
             ..self.options.options
         };
-        let p = self.model.solve_position(guess, &self.v(t), &options)?;
+        let p = newton::solve(self.model, guess, &self.v(t), &options, &mut |_| {})?;
         Ok((p.u, p.iterations))
     }
 
@@ -145,7 +149,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
     /// fused γ).
     pub(super) fn fused(&self) -> bool {
         let o = &self.options.options;
-        o.jacobian == sources::JacobianSource::Generated && o.method == AccelerationMethod::Fused
+        o.jacobian == JacobianSource::Generated && o.method == AccelerationMethod::Fused
     }
 
     /// u̇ and ü for the driver moving at `vdot` (no driver acceleration) at
@@ -174,10 +178,8 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             return (None, inv.det, inv.rcond);
         }
         let udot = -(inv.inverse * (psi_v * vdot));
-        let generated = || {
-            self.model
-                .gamma_by(self.options.options.method, u, v, &udot, vdot)
-        };
+        let generated =
+            || sources::generated_gamma(self.model, self.options.options.method, u, v, &udot, vdot);
         let gamma = sources::gamma(self.model, jacobian, generated, u, v, &udot, vdot);
         let uddot = -(inv.inverse * gamma);
         let known = finite(&udot, &uddot);
@@ -207,7 +209,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         u: SVector<f64, M>,
         t: f64,
         iterations: usize,
-        k: &crate::model::Kinematics<M, F>,
+        k: &Kinematics<M, F>,
     ) -> State<M, F> {
         let finite = k.rcond > 0.0 && k.udot.iter().chain(k.uddot.iter()).all(|x| x.is_finite());
         State {
@@ -268,7 +270,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         v: &SVector<f64, F>,
         carries: bool,
         trig: &mut TrigCarrier<M, F>,
-    ) -> crate::model::Kinematics<M, F> {
+    ) -> Kinematics<M, F> {
         let zero = SVector::<f64, F>::zeros();
         if carries {
             let (trig_u, trig_v) = trig.at(&L::TRIG_U, &L::TRIG_V, x, v);
@@ -600,7 +602,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         let (jacobian, v) = (options.jacobian, self.v(state.t));
         let psi_u = sources::psi_and_psi_u(self.model, jacobian, &state.u, &v).1;
         let psi_v = sources::psi_v(self.model, jacobian, &state.u, &v);
-        crate::model::acceleration_conditioning_with(
+        acceleration_conditioning_with(
             &psi_u,
             &psi_v,
             state.rcond,
@@ -715,12 +717,12 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             });
         }
         let log_rate = rate.abs().log2();
-        crate::error::check_result(
+        check_result(
             Stage::Velocity,
             "the sweep's u̇ at its speed",
             state.du.amax().log2() + log_rate,
         )?;
-        crate::error::check_result(
+        check_result(
             Stage::Acceleration,
             "the sweep's ü at its speed",
             state.ddu.amax().log2() + 2.0 * log_rate,
