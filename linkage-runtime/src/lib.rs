@@ -10,8 +10,9 @@
 //! [`Error`] rather than panic, and never a NaN or an infinity inside `Ok`.
 #![forbid(unsafe_code)]
 
-// The modules in layers, each using only those before it (and the trait,
-// the interface every analysis takes its model by):
+// The modules in layers, each using only those before it, but for the
+// trait: its provided methods delegate to sources, newton, solve and sweep,
+// which take their model through it (its methods, never helpers in its file).
 //   error     the typed errors
 //   linalg    small matrices: inversion, factorisation, conditioning
 //   checks    finite inputs and outputs, numbers in the normal range

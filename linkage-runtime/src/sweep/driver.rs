@@ -3,7 +3,9 @@
 //! reversal of a rocking drive.
 
 use super::branch_point::BRANCH_RANK;
-use super::tracker::{Advance, Progress, Track, Tracker};
+use super::state::{Progress, Track};
+use super::substep::Advance;
+use super::tracker::Tracker;
 use super::trig::TrigCarrier;
 use super::{Drive, Event, EventKind, SweepOptions, SweepPose, SweepSummary};
 use crate::checks::check_input;
