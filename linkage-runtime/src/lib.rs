@@ -10,19 +10,36 @@
 //! [`Error`] rather than panic, and never a NaN or an infinity inside `Ok`.
 #![forbid(unsafe_code)]
 
+// The modules in layers, each using only those before it, but for the
+// trait: its provided methods delegate to sources, newton, solve and sweep,
+// which take their model through it (its methods, never helpers in its file).
+//   error     the typed errors
+//   linalg    small matrices: inversion, factorisation, conditioning
+//   checks    finite inputs and outputs, numbers in the normal range
+//   options   the solvers' settings; results: what the analyses return
+//   symbolic  the generated formulas as text
+//   linkage   the trait: the generated methods, and the analyses' entry
+//             points, which delegate to the modules below
+//   sources   where Ψ_u, Ψ_v and γ come from
+//   newton    positions: Newton–Raphson
+//   solve     velocities and accelerations
+//   sweep     continuation along a drive
+mod checks;
 mod error;
 mod linalg;
-mod model;
+mod linkage;
 mod newton;
+mod options;
+mod results;
+mod solve;
 mod sources;
 mod sweep;
 mod symbolic;
 
 pub use error::{Error, Stage};
 pub use linalg::{Inverse, determinant, invert, scaled_svd};
-pub use model::{
-    AccelerationMethod, Analysis, Iterate, Kinematics, Linkage, Options, Position, Velocity,
-};
-pub use sources::JacobianSource;
+pub use linkage::Linkage;
+pub use options::{AccelerationMethod, JacobianSource, Options};
+pub use results::{Analysis, Iterate, Kinematics, Position, Velocity};
 pub use sweep::{Drive, Event, EventKind, Sweep, SweepOptions, SweepPose, SweepSummary};
 pub use symbolic::{SymbolicMatrix, SymbolicTable};

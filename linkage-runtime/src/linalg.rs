@@ -1,6 +1,7 @@
 //! Small dense linear algebra without allocation: the inverse of Ψ_u with its
 //! reciprocal condition number, in closed form for m ≤ 3.
 
+use crate::error::{Error, Stage};
 use nalgebra::{SMatrix, SVector};
 
 /// An inverted square matrix, its determinant and its conditioning.
@@ -107,6 +108,26 @@ fn invert_at_scale<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
         }
     } else {
         singular(det)
+    }
+}
+
+/// `a` inverted, or [`Error::Singular`] in `stage` if its reciprocal
+/// condition number is 0 or below `min_rcond` (the least that keeps the
+/// requested accuracy there, [`crate::Options::min_rcond`]).
+pub(crate) fn factor<const M: usize>(
+    a: &SMatrix<f64, M, M>,
+    stage: Stage,
+    min_rcond: f64,
+) -> Result<Inverse<M>, Error> {
+    let inv = invert(a);
+    if inv.rcond > 0.0 && inv.rcond >= min_rcond {
+        Ok(inv)
+    } else {
+        Err(Error::Singular {
+            stage,
+            rcond: inv.rcond,
+            min_rcond,
+        })
     }
 }
 
@@ -259,6 +280,41 @@ pub fn scaled_svd(
         .iter()
         .all(|s| s.is_finite())
         .then_some(svd)
+}
+
+/// σ_max/σ_min of [Ψ_u Ψ_v] with its columns scaled to unit length.
+pub(crate) fn augmented_condition<const M: usize, const F: usize>(
+    psi_u: &SMatrix<f64, M, M>,
+    psi_v: &SMatrix<f64, M, F>,
+) -> f64 {
+    let mut q = nalgebra::DMatrix::<f64>::zeros(M, M + F);
+    for j in 0..M + F {
+        let column: Vec<f64> = (0..M)
+            .map(|i| {
+                if j < M {
+                    psi_u[(i, j)]
+                } else {
+                    psi_v[(i, j - M)]
+                }
+            })
+            .collect();
+        let norm = column.iter().map(|x| x * x).sum::<f64>().sqrt();
+        if norm > 0.0 {
+            for (i, x) in column.iter().enumerate() {
+                q[(i, j)] = x / norm;
+            }
+        }
+    }
+    // A decomposition that fails (only for extreme numbers) counts as
+    // ill-conditioned: the cautious reading.
+    let Some(svd) = scaled_svd(&q, false) else {
+        return f64::INFINITY;
+    };
+    let (max, min) = svd
+        .singular_values
+        .iter()
+        .fold((0.0_f64, f64::INFINITY), |(a, b), &x| (a.max(x), b.min(x)));
+    if min > 0.0 { max / min } else { f64::INFINITY }
 }
 
 /// The Euclidean norm of x without overflow or underflow on the way (x

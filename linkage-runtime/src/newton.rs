@@ -10,9 +10,12 @@
 //! vector of Ψ_u; at a minimum the mechanism cannot be assembled, and the
 //! error says how far it is from closing.
 
-use crate::error::{Error, Stage, check_input, check_value};
-use crate::linalg::invert;
-use crate::model::{Iterate, Linkage, Options, Position};
+use crate::checks::{check_input, check_value};
+use crate::error::{Error, Stage};
+use crate::linalg::{factor, invert};
+use crate::linkage::Linkage;
+use crate::options::Options;
+use crate::results::{Iterate, Position};
 use crate::sources::psi_and_psi_u;
 use nalgebra::{SMatrix, SVector};
 
@@ -100,8 +103,8 @@ pub(crate) fn solve<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
                 }
             }
         } else {
-            let inv = factor(&psi_u, options.min_rcond(Stage::Position))?;
-            -(inv * psi)
+            let inv = factor(&psi_u, Stage::Position, options.min_rcond(Stage::Position))?;
+            -(inv.inverse * psi)
         };
         u += delta;
         step = delta.amax();
@@ -158,22 +161,6 @@ fn relative_gradient<const M: usize>(psi_u: &SMatrix<f64, M, M>, psi: &SVector<f
         }
     }
     worst
-}
-
-fn factor<const M: usize>(
-    psi_u: &SMatrix<f64, M, M>,
-    min_rcond: f64,
-) -> Result<SMatrix<f64, M, M>, Error> {
-    let inv = invert(psi_u);
-    if inv.rcond > 0.0 && inv.rcond >= min_rcond {
-        Ok(inv.inverse)
-    } else {
-        Err(Error::Singular {
-            stage: Stage::Position,
-            rcond: inv.rcond,
-            min_rcond,
-        })
-    }
 }
 
 /// A step off a stationary point of ½‖Ψ‖² that is not a root, if it is a

@@ -3,23 +3,10 @@
 //! differences of `psi`. The generated code is the fast and exact one; the
 //! other two are for cross-checks and for the speed-against-accuracy chart.
 
-use crate::model::Linkage;
+use crate::linkage::Linkage;
+use crate::options::{AccelerationMethod, JacobianSource};
 use nalgebra::{SMatrix, SVector};
 use num_dual::{Dual2_64, DualSVec64, DualVec, jacobian};
-
-/// The source of Ψ_u, Ψ_v and γ used by the solvers.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub enum JacobianSource {
-    /// The code the macro generated (symbolic derivatives).
-    #[default]
-    Generated,
-    /// Forward-mode automatic differentiation of `psi_generic`: Ψ_u and Ψ_v
-    /// with vector dual numbers, γ with a second-order dual number along q̇.
-    Dual,
-    /// Central finite differences of `psi`: steps ε^(1/3)·max(1, |qₖ|) for
-    /// the Jacobians (error ~1e-10) and ε^(1/4) along q̇ for γ (~1e-8).
-    FiniteDifference,
-}
 
 /// Ψ and Ψ_u at (u, v).
 pub(crate) fn psi_and_psi_u<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
@@ -50,6 +37,30 @@ pub(crate) fn psi_and_psi_u<L: Linkage<M, F> + ?Sized, const M: usize, const F: 
             }
             (psi, jac)
         }
+    }
+}
+
+/// γ from the generated code by `method` (see [`AccelerationMethod`]); the
+/// body of [`Linkage::gamma_by`].
+pub(crate) fn generated_gamma<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
+    model: &L,
+    method: AccelerationMethod,
+    u: &SVector<f64, M>,
+    v: &SVector<f64, F>,
+    udot: &SVector<f64, M>,
+    vdot: &SVector<f64, F>,
+) -> SVector<f64, M> {
+    match method {
+        AccelerationMethod::A => {
+            model.psi_u_dot(u, v, udot, vdot) * udot + model.psi_v_dot(u, v, udot, vdot) * vdot
+        }
+        AccelerationMethod::B => {
+            model.psi_u_udot_u(u, v, udot) * udot
+                + model.psi_u_udot_v(u, v, udot) * vdot
+                + model.psi_v_vdot_u(u, v, vdot) * udot
+                + model.psi_v_vdot_v(u, v, vdot) * vdot
+        }
+        AccelerationMethod::Fused => model.gamma(u, v, udot, vdot),
     }
 }
 

@@ -27,11 +27,11 @@
 //! tangents are the two null directions of J on which the quadratic form
 //! ψᵀ∇²Ψ[ξ, ξ] vanishes.
 
-use super::tracker::{REGULAR_RCOND, State, Tracker};
+use super::state::{Passage, REGULAR_RCOND, State};
+use super::tracker::Tracker;
 use super::{Event, EventKind};
 use crate::linalg::scaled_svd;
-use crate::model::Linkage;
-use crate::sources;
+use crate::linkage::Linkage;
 use nalgebra::{DMatrix, DVector, SVector};
 use num_dual::HyperDual64;
 
@@ -54,32 +54,7 @@ pub(super) struct BranchPoint<const M: usize> {
     pub(super) rank_measure: f64,
 }
 
-/// A branch point passed: the event, a regular state after it on the smooth
-/// continuation of the branch the sweep arrived on, and, when the sub-step's
-/// target lies between the two, the state at the target.
-pub(super) struct Passage<const M: usize, const F: usize> {
-    pub(super) event: Event<M, F>,
-    pub(super) beyond: State<M, F>,
-    pub(super) at_target: Option<State<M, F>>,
-}
-
 impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
-    /// J = [Ψ_u Ψ_τ] at (u, t), Ψ_τ the derivative along the unit direction
-    /// of the path: m × (m + 1).
-    fn path_jacobian(&self, u: &SVector<f64, M>, t: f64) -> DMatrix<f64> {
-        let v = self.v(t);
-        let jacobian = self.options.options.jacobian;
-        let psi_u = sources::psi_and_psi_u(self.model, jacobian, u, &v).1;
-        let psi_tau = self.psi_t(u, t) / self.step_length;
-        DMatrix::from_fn(
-            M,
-            M + 1,
-            |i, j| {
-                if j < M { psi_u[(i, j)] } else { psi_tau[i] }
-            },
-        )
-    }
-
     /// σ_min/σ_max of [Ψ_u Ψ_τ]: about 0 at a branch point. A
     /// decomposition that fails (only for extreme numbers) is taken for
     /// rank-deficient: the cautious reading.

@@ -3,12 +3,16 @@
 //! reversal of a rocking drive.
 
 use super::branch_point::BRANCH_RANK;
-use super::tracker::{Advance, Progress, Track, Tracker};
+use super::state::{Progress, Track};
+use super::substep::Advance;
+use super::tracker::Tracker;
 use super::trig::TrigCarrier;
 use super::{Drive, Event, EventKind, SweepOptions, SweepPose, SweepSummary};
-use crate::error::{Error, Stage, check_input};
+use crate::checks::check_input;
+use crate::error::{Error, Stage};
 use crate::linalg::scaled_norm;
-use crate::model::Linkage;
+use crate::linkage::Linkage;
+use crate::newton;
 use nalgebra::SVector;
 
 /// Runs a sweep (see [`Linkage::sweep`]).
@@ -56,7 +60,7 @@ where
         min_rcond_acceleration: options.options.min_rcond(Stage::Acceleration),
         rate: options.speed / length,
     };
-    let start = model.solve_position(u0, &base, &options.options)?;
+    let start = newton::solve(model, u0, &base, &options.options, &mut |_| {})?;
     let state = tracker.state(start.u, 0.0, start.iterations);
     if !tracker.keeps_accuracy(&state) {
         let min_rcond = options.options.min_rcond(Stage::Velocity);

@@ -2,11 +2,13 @@
 //! [Ψ_u Ψ_v] of full rank), located exactly, and the mirror pose on the
 //! other branch from which a rocking drive goes back.
 
-use super::tracker::{State, Tracker};
+use super::bordered::Border;
+use super::state::State;
+use super::tracker::Tracker;
 use crate::linalg::determinant;
-use crate::model::Linkage;
+use crate::linkage::Linkage;
 use crate::sources;
-use nalgebra::{DMatrix, DVector, SVector};
+use nalgebra::{DMatrix, SVector};
 
 impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
     /// det Ψ_u relative to the product of its column norms (|·| ≤ 1).
@@ -23,25 +25,10 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
     /// The limit position near `near`: Newton on Ψ(u, t) = 0, det Ψ_u = 0
     /// for (u, t), with the gradient of det by central differences.
     pub(super) fn locate_limit(&self, near: &State<M, F>) -> Option<(SVector<f64, M>, f64)> {
-        let (mut u, mut t) = (near.u, near.t);
-        let n = M + 1;
-        for _ in 0..50 {
-            let v = self.v(t);
-            let psi = self.model.psi(&u, &v);
-            let psi_u = sources::psi_and_psi_u(self.model, self.options.options.jacobian, &u, &v).1;
-            let psi_t = self.psi_t(&u, t);
-            let d = self.normalized_det(&u, t);
-            let mut jac = DMatrix::<f64>::zeros(n, n);
-            let mut rhs = DVector::<f64>::zeros(n);
-            for i in 0..M {
-                for j in 0..M {
-                    jac[(i, j)] = psi_u[(i, j)];
-                }
-                jac[(i, M)] = psi_t[i];
-                rhs[i] = -psi[i];
-            }
-            rhs[M] = -d;
-            for j in 0..n {
+        // det Ψ_u's row: its gradient in (u, t) by central differences.
+        let det_row = |u: &SVector<f64, M>, t: f64| -> Border<M> {
+            let u = *u;
+            let derivative = |j: usize| {
                 let x = if j < M { u[j] } else { t };
                 let h = 1e-7 * x.abs().max(1.0);
                 let (mut up, mut um, mut tp, mut tm) = (u, u, t, t);
@@ -52,22 +39,12 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
                     tp += h;
                     tm -= h;
                 }
-                jac[(M, j)] =
-                    (self.normalized_det(&up, tp) - self.normalized_det(&um, tm)) / (2.0 * h);
-            }
-            let step = jac.lu().solve(&rhs)?;
-            if !step.iter().all(|x| x.is_finite()) {
-                return None;
-            }
-            for j in 0..M {
-                u[j] += step[j];
-            }
-            t += step[M];
-            let size = step.amax();
-            if size <= 1e-14 * u.amax().max(t.abs()).max(1.0) {
-                break;
-            }
-        }
+                (self.normalized_det(&up, tp) - self.normalized_det(&um, tm)) / (2.0 * h)
+            };
+            let gradient_u = SVector::<f64, M>::from_fn(|j, _| derivative(j));
+            (gradient_u, derivative(M), -self.normalized_det(&u, t))
+        };
+        let (u, t) = self.bordered_newton(&near.u, near.t, det_row)?;
         let residual = self.model.psi(&u, &self.v(t)).amax();
         let scale =
             sources::psi_and_psi_u(self.model, self.options.options.jacobian, &u, &self.v(t))
@@ -105,34 +82,10 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         }
         // Solve Ψ(u, t) = 0 with null·(u − u*) = −s: (m+1) unknowns (u, t).
         let target = -s;
-        let (mut u, mut t) = (limit_u - null * s, came_from.t);
-        let n = M + 1;
-        for _ in 0..50 {
-            let vt = self.v(t);
-            let psi = self.model.psi(&u, &vt);
-            let psi_u =
-                sources::psi_and_psi_u(self.model, self.options.options.jacobian, &u, &vt).1;
-            let psi_t = self.psi_t(&u, t);
-            let mut jac = DMatrix::<f64>::zeros(n, n);
-            let mut rhs = DVector::<f64>::zeros(n);
-            for i in 0..M {
-                for j in 0..M {
-                    jac[(i, j)] = psi_u[(i, j)];
-                }
-                jac[(i, M)] = psi_t[i];
-                rhs[i] = -psi[i];
-                jac[(M, i)] = null[i];
-            }
-            rhs[M] = target - null.dot(&(u - limit_u));
-            let step = jac.lu().solve(&rhs)?;
-            for j in 0..M {
-                u[j] += step[j];
-            }
-            t += step[M];
-            if step.amax() <= 1e-14 * u.amax().max(t.abs()).max(1.0) {
-                break;
-            }
-        }
+        let held = |u: &SVector<f64, M>, _t: f64| -> Border<M> {
+            (null, 0.0, target - null.dot(&(u - limit_u)))
+        };
+        let (u, t) = self.bordered_newton(&(limit_u - null * s), came_from.t, held)?;
         let (u, iterations) = self.correct(&u, t).ok()?;
         let state = self.state(u, t, iterations);
         (state.det.signum() != came_from.det.signum()).then_some(state)

@@ -35,16 +35,32 @@
 //! `tests/singular_grid.rs`, every step count from 50 to 5000 with a grid
 //! pose on the singular one or a few ulps off, is 1.7e-15).
 
+// The files, each using only those before it:
+//   state         what a sweep knows of its path (State, Track, Passage, Progress)
+//   tracker       the path, the corrector, one predictor–corrector sub-step
+//   bordered      Ψ_u, Ψ_t along the path and the bordered Newton system
+//   branch_point  branch points: located, the two branches, passed
+//   limit         limit positions: located, and the mirror pose
+//   substep       sub-stepping, and the judgement of each sub-step's pose
+//   pose          the poses handed out, at the sweep's speed
+//   trig          sines and cosines carried from pose to pose
+//   fast_run      the fast run over a regular stretch
+//   driver        the driver loop
+mod bordered;
 mod branch_point;
 mod driver;
+mod fast_run;
 mod limit;
+mod pose;
+mod state;
+mod substep;
 mod tracker;
 mod trig;
 
 pub(crate) use driver::sweep;
 
 use crate::error::Error;
-use crate::model::Options;
+use crate::options::Options;
 use nalgebra::SVector;
 
 /// How the driver moves.

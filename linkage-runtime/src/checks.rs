@@ -1,0 +1,105 @@
+//! The checks every entry point makes: inputs finite, computed values
+//! finite, and numbers in the normal range of f64 where relative precision
+//! lives.
+
+use crate::error::{Error, Stage};
+use crate::linalg::pow2;
+
+/// Checks that every entry of `values` is finite.
+pub(crate) fn check_input(argument: &'static str, values: &[f64]) -> Result<(), Error> {
+    match values.iter().position(|x| !x.is_finite()) {
+        None => Ok(()),
+        Some(index) => Err(Error::NonFiniteInput {
+            argument,
+            index,
+            value: values[index],
+        }),
+    }
+}
+
+/// The smallest scale of a nonzero column or row that keeps relative
+/// precision: 2⁻⁹⁷⁰, 52 binary orders above the subnormal range.
+const NORMAL_SCALE: f64 = pow2(-970);
+
+/// Checks that no nonzero row or column of [Ψ_u Ψ_v] lives in the
+/// subnormal range (see [`Error::Underflow`]), and returns the smallest
+/// nonzero and the largest of the row and column scales (each the largest
+/// |entry| of its row or column), found in one pass over the entries.
+#[inline]
+pub(crate) fn check_scale<const M: usize, const F: usize>(
+    stage: Stage,
+    psi_u: &nalgebra::SMatrix<f64, M, M>,
+    psi_v: &nalgebra::SMatrix<f64, M, F>,
+) -> Result<(f64, f64), Error> {
+    // Plain comparisons (the entries are finite here): this runs in every
+    // analysis, and f64::max's NaN handling costs more than the rest.
+    let pick = |a: f64, b: f64| if b > a { b } else { a };
+    let mut rows = [0.0_f64; M];
+    let mut smallest = f64::INFINITY;
+    let mut largest = 0.0_f64;
+    let mut column = |entries: &[f64]| {
+        let mut scale = 0.0_f64;
+        for (row, x) in rows.iter_mut().zip(entries) {
+            let x = x.abs();
+            scale = pick(scale, x);
+            *row = pick(*row, x);
+        }
+        if scale > 0.0 && scale < smallest {
+            smallest = scale;
+        }
+        largest = pick(largest, scale);
+    };
+    for j in 0..M {
+        column(psi_u.column(j).as_slice());
+    }
+    for j in 0..F {
+        column(psi_v.column(j).as_slice());
+    }
+    for &scale in &rows {
+        if scale > 0.0 && scale < smallest {
+            smallest = scale;
+        }
+    }
+    if smallest < NORMAL_SCALE {
+        Err(Error::Underflow {
+            stage,
+            quantity: "[Ψ_u Ψ_v]",
+            scale: smallest,
+        })
+    } else {
+        Ok((smallest, largest))
+    }
+}
+
+/// Checks that a computed result of size 2^`size_log2` (its largest
+/// entry, found at unit scale and so without underflow) is a normal
+/// number, which f64 holds to full relative precision; −∞ (an exactly
+/// zero result) passes. Below 2⁻¹⁰²² it is an [`Error::Underflow`].
+pub(crate) fn check_result(
+    stage: Stage,
+    quantity: &'static str,
+    size_log2: f64,
+) -> Result<(), Error> {
+    if size_log2 > f64::NEG_INFINITY && size_log2 < f64::MIN_POSITIVE.log2() {
+        Err(Error::Underflow {
+            stage,
+            quantity,
+            scale: size_log2.exp2(),
+        })
+    } else {
+        Ok(())
+    }
+}
+
+/// Checks that a computed quantity is finite.
+pub(crate) fn check_value(
+    stage: Stage,
+    quantity: &'static str,
+    values: &[f64],
+) -> Result<(), Error> {
+    if values.iter().all(|x| x.is_finite()) {
+        Ok(())
+    } else {
+        Err(Error::NonFiniteValue { stage, quantity })
+    }
+}

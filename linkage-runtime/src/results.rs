@@ -1,0 +1,80 @@
+//! What the analyses return: a pose, a Newton iterate, velocities, the
+//! one-pass kinematics, and the whole analysis of a pose.
+
+use nalgebra::{SMatrix, SVector};
+
+/// An assembled pose found by Newton–Raphson.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Position<const M: usize> {
+    pub u: SVector<f64, M>,
+    /// Newton steps taken.
+    pub iterations: usize,
+    /// ‖Ψ(u, v)‖∞ at the solution.
+    pub residual: f64,
+    /// Ψ_u at the solution (reused by the velocity solve).
+    pub psi_u: SMatrix<f64, M, M>,
+}
+
+/// One Newton–Raphson iterate, as reported to an observer.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Iterate<const M: usize> {
+    /// 0 for the initial guess.
+    pub iteration: usize,
+    pub u: SVector<f64, M>,
+    /// ‖Ψ(u, v)‖∞
+    pub residual: f64,
+    /// ‖Δu‖∞ of the step that led here (0 for the initial guess).
+    pub step: f64,
+}
+
+/// The velocity solution.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Velocity<const M: usize, const F: usize> {
+    /// u̇ = −R v̇
+    pub udot: SVector<f64, M>,
+    /// The velocity ratios R = Ψ_u⁻¹Ψ_v (the worksheet's `Rap`); for one
+    /// degree of freedom, −R is the column of first kinematic analogs du/dv.
+    pub ratios: SMatrix<f64, M, F>,
+    /// The reciprocal condition number of Ψ_u.
+    pub rcond: f64,
+}
+
+/// Everything at one pose, from one pass of generated code
+/// ([`Linkage::kinematics`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Kinematics<const M: usize, const F: usize> {
+    /// Ψ (the residual of the pose).
+    pub psi: SVector<f64, M>,
+    pub psi_u: SMatrix<f64, M, M>,
+    pub psi_v: SMatrix<f64, M, F>,
+    /// Ψ_u⁻¹ (meaningless if `rcond` is 0).
+    pub inverse: SMatrix<f64, M, M>,
+    /// The column-equilibrated reciprocal condition number of Ψ_u.
+    pub rcond: f64,
+    /// det Ψ_u
+    pub det: f64,
+    /// u̇ = −Ψ_u⁻¹Ψ_v v̇
+    pub udot: SVector<f64, M>,
+    /// ü = −Ψ_u⁻¹(Ψ_v v̈ + γ)
+    pub uddot: SVector<f64, M>,
+}
+
+/// Positions, velocities and accelerations of a pose, of the coordinates
+/// and of the points.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Analysis<const M: usize, const F: usize, P> {
+    pub u: SVector<f64, M>,
+    pub udot: SVector<f64, M>,
+    pub uddot: SVector<f64, M>,
+    /// R = Ψ_u⁻¹Ψ_v
+    pub ratios: SMatrix<f64, M, F>,
+    pub points: P,
+    pub point_velocities: P,
+    pub point_accelerations: P,
+    /// Newton steps taken.
+    pub iterations: usize,
+    /// ‖Ψ‖∞ at the solution.
+    pub residual: f64,
+    /// The reciprocal condition number of Ψ_u at the solution.
+    pub rcond: f64,
+}
