@@ -74,7 +74,7 @@ impl std::error::Error for UnknownName {}
 /// wrapped errors as sources) and `From` for each wrapped error, of an
 /// error enum:
 ///
-/// ```ignore
+/// ```text
 /// error_impls! {
 ///     MachineError {
 ///         Self::Stalls { phi } => ("the machine stalls at φ = {phi}"),
