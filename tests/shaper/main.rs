@@ -1,0 +1,14 @@
+//! The shaping machine of the course project (seed 002), first half:
+//! synthesis, kinematics, reduced dynamics, work, the flywheel by the energy
+//! method, ω1 and ε1 — against the 50-digit reference
+//! (tests/data/shaper_cam_reference.csv), and, with other inputs, against
+//! the invariants of the method.
+
+#[path = "../../examples/shaper/machine.rs"]
+mod machine;
+
+mod bad_settings;
+mod first_half;
+mod kinetostatics;
+mod reference;
+mod steady_motion;
