@@ -1,5 +1,5 @@
 //! Criterion benchmarks of the generated code and the runtime, for the
-//! three benchmark mechanisms (the seed four-bar, the offset slider-crank,
+//! three benchmark mechanisms (the worksheet's four-bar, the offset slider-crank,
 //! the two-loop six-bar): Ψ, Ψ_u and γ evaluations, one Newton step, the
 //! fused kernel, a whole analysis, and a sweep over a revolution.
 //!

@@ -1,14 +1,14 @@
-//! The cam of the Mathcad course project (seed 002): the tool-feed cam of
+//! The cam of the Mathcad course project: the tool-feed cam of
 //! the shaping machine, an oscillating roller follower. Its phases come
 //! from the shaper's motion (the crank angles where the ram is at 5 % of
-//! its stroke), its law is the seed's piecewise-constant acceleration with
-//! k = 1, and its size the seed read off a drawing: here the seed's design
+//! its stroke), its law is the course project's piecewise-constant acceleration with
+//! k = 1, and its size the course project read off a drawing: here the course project's design
 //! is checked — its return stroke exceeds the pressure-angle limit — and
 //! the smallest cam that keeps within the limit is found numerically.
 //!
 //! Writes `docs/figures/cam/cam.svg` (the cam at its worst pressure angle),
 //! `motion.svg`, `pressure.svg` and `profile.csv` (the profile and the pitch
-//! curve in millimetres, as the seed's x.txt and y.txt).
+//! curve in millimetres, as the course project's x.txt and y.txt).
 //!
 //!     cargo run --release --example cam
 
@@ -39,7 +39,7 @@ fn heading(title: &str) {
     println!("\n{title}\n{}", "─".repeat(title.chars().count()));
     println!(
         "{:<34} {:>20}  {:>9}  {:>9}",
-        "", "ours", "seed", "vs exact"
+        "", "ours", "printed", "vs exact"
     );
 }
 
@@ -82,7 +82,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let rad = |x: f64| x.to_radians();
 
     // 1. The phases, from the shaper's motion.
-    let data = machine::SEED;
+    let data = machine::COURSE_PROJECT;
     let shaper = machine::synthesize(&data)?;
     let m = machine::machine(&shaper, &data)?;
     let x0 = m.analysis(0.0)?.u[2];
@@ -94,7 +94,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let f_p1 = bisect(travel, 0.1, 1.0);
     let f_p2 = bisect(travel, -1.0, -0.1);
     let ff_rab = PI + shaper.beta();
-    println!("The cam of the shaping machine (seed 002), by linkage");
+    println!("The cam of the shaping machine, by linkage");
     heading("1. Phase angles from the shaper's motion [°]");
     row(
         "f_p1: ram at 0.05 H, working stroke",
@@ -110,13 +110,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "φ_y = |f_p2| + f_p1/2 − 10°",
         "phi_y_calc_deg",
         deg(phi_y_calc),
-        "the seed then sets φ_y = 28°",
+        "the course project then sets φ_y = 28°",
     );
     row(
         "φ_s = ff_rab/2 + f_p1/2 − 15°",
         "phi_s_calc_deg",
         deg(phi_s_calc),
-        "the seed then sets φ_s = φ_y",
+        "the course project then sets φ_s = φ_y",
     );
     let (phi_y, phi_ds) = (rad(28.0), rad(15.0));
     let phi_s = phi_y;
@@ -127,7 +127,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "",
     );
 
-    // 2. The program: rise, far dwell, return, with the seed's law.
+    // 2. The program: rise, far dwell, return, with the course project's law.
     let (h, arm, k) = (0.045, 0.15, 1.0);
     let law = Law::ConstantAcceleration { k };
     let program = Program::new(
@@ -139,7 +139,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         ],
     )?;
     heading(
-        "2. The law: piecewise-constant acceleration, k = 1 (the seed's text says 2, its code 1)",
+        "2. The law: piecewise-constant acceleration, k = 1 (the course project's text says 2, its code 1)",
     );
     row(
         "a_q1 = 2(k+1)h/φ_y² [m/rad²]",
@@ -167,11 +167,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     );
     row("ψ_max = h/l_BN [°]", "psi_max_deg", deg(h / arm), "");
     println!(
-        "(the seed's S_B printed (a_q1/k)φ² for the first branch; (a_q1/2)φ² is what v_q = a_q1·φ integrates to)"
+        "(the course project's S_B printed (a_q1/k)φ² for the first branch; (a_q1/2)φ² is what v_q = a_q1·φ integrates to)"
     );
 
-    // 3. The seed's design, read off its drawing.
-    let seed_rocker = |initial_angle: f64| {
+    // 3. The course project's design, read off its drawing.
+    let drawn_rocker = |initial_angle: f64| {
         Cam::new(
             program.clone(),
             Follower::Rocker {
@@ -183,21 +183,21 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             Rotation::CounterClockwise,
         )
     };
-    let seed_cam = seed_rocker(rad(54.0))?;
-    let ((at_max, theta_max), (at_min, theta_min)) = seed_cam.pressure_extremes()?;
-    heading("3. The seed's design: a_w = 0.2973 m, φ20 = 54°, l_BN = 0.15 m");
+    let drawn_cam = drawn_rocker(rad(54.0))?;
+    let ((at_max, theta_max), (at_min, theta_min)) = drawn_cam.pressure_extremes()?;
+    heading("3. The course project's design: a_w = 0.2973 m, φ20 = 54°, l_BN = 0.15 m");
     row(
         "r0 = |OK0| [m]",
         "r0",
-        seed_cam.base_radius(),
-        "the seed reads 0.2413 off its drawing",
+        drawn_cam.base_radius(),
+        "the course project reads 0.2413 off its drawing",
     );
-    let k0 = seed_cam.pitch(0.0)?.k;
+    let k0 = drawn_cam.pitch(0.0)?.k;
     row("K0.x [m]", "K0.x", k0.x, "");
     row("K0.y [m]", "K0.y", k0.y, "");
     // The φ20 that would give the graphical r0 with a_w = 0.2973.
     let implied = bisect(
-        |psi0| seed_rocker(psi0).map_or(f64::NAN, |cam| cam.base_radius() - 0.2413),
+        |psi0| drawn_rocker(psi0).map_or(f64::NAN, |cam| cam.base_radius() - 0.2413),
         rad(45.0),
         rad(60.0),
     );
@@ -210,7 +210,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     row(
         "r at the far dwell [m]",
         "r_far_dwell",
-        seed_cam.pitch(phi_y + 0.5 * phi_ds)?.k.norm(),
+        drawn_cam.pitch(phi_y + 0.5 * phi_ds)?.k.norm(),
         "",
     );
     row(
@@ -256,7 +256,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 
     let (at_sharpest, largest) = best.largest_roller()?;
     println!(
-        "the seed allows rollers of 0.25…0.4·r0 = {:.1}…{:.1} mm, but this cam's pitch curve bends with a radius of only {:.1} mm\n\
+        "the course project allows rollers of 0.25…0.4·r0 = {:.1}…{:.1} mm, but this cam's pitch curve bends with a radius of only {:.1} mm\n\
          at φ = {:.2}°: a roller above that undercuts (the profile would loop)",
         250.0 * best.base_radius(),
         400.0 * best.base_radius(),
@@ -326,11 +326,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     .panel(Panel::new("a_q [mm/rad²]").line("a_q", curve(&|p| Ok(1000.0 * program.at(p)?.0[2]))?));
     let motion_path = folder.join("motion.svg");
     std::fs::write(&motion_path, motion.render()?)?;
-    let pressure = Chart::new("Pressure angle: the seed's design and the smallest cam within ±35° (φ = 0…100°, then a dwell)", "φ [°]")
+    let pressure = Chart::new("Pressure angle: the course project's design and the smallest cam within ±35° (φ = 0…100°, then a dwell)", "φ [°]")
         .size(900, 320)
         .panel(
             Panel::new("θ [°]")
-                .line("the seed's (a_w 0.2973, φ20 54°)", curve(&|p| Ok(deg(seed_cam.pressure_angle(p)?)))?)
+                .line("the course project's (a_w 0.2973, φ20 54°)", curve(&|p| Ok(deg(drawn_cam.pressure_angle(p)?)))?)
                 .line("the smallest within the limit", curve(&|p| Ok(deg(best.pressure_angle(p)?)))?)
                 .dashed("+35°", curve(&|_| Ok(35.0))?)
                 .dashed("−35°", curve(&|_| Ok(-35.0))?),

@@ -201,7 +201,7 @@ impl FourBar {
 mod tests {
     use super::*;
 
-    const SEED: FourBar = FourBar {
+    const WORKSHEET: FourBar = FourBar {
         l1: 80.0,
         l2: 20.0,
         l3: 50.0,
@@ -210,29 +210,40 @@ mod tests {
 
     #[test]
     fn the_worksheet_pose() {
-        let s = SEED
+        let s = WORKSHEET
             .state(20f64.to_radians(), 41.88790204786391, 0.0, 1.0)
             .unwrap();
         assert!((s.angles[0] - 1.231_343_147_254_347_3).abs() < 1e-15);
         assert!((s.angles[1] + 0.880_796_908_593_408_3).abs() < 1e-15);
         assert!((s.velocities[0] + 18.425_284_259_084_822).abs() < 1e-12);
         assert!((s.accelerations[1] - 584.710_757_984_326_3).abs() < 1e-10);
-        assert_eq!(SEED.branch(20f64.to_radians(), s.angles[0]), 1.0);
+        assert_eq!(WORKSHEET.branch(20f64.to_radians(), s.angles[0]), 1.0);
     }
 
     #[test]
     fn grashof_classes() {
-        assert_eq!(SEED.grashof(), Grashof::CrankRocker);
-        assert_eq!(FourBar { l2: 40.0, ..SEED }.grashof(), Grashof::ChangePoint);
+        assert_eq!(WORKSHEET.grashof(), Grashof::CrankRocker);
         assert_eq!(
-            FourBar { l2: 45.0, ..SEED }.grashof(),
+            FourBar {
+                l2: 40.0,
+                ..WORKSHEET
+            }
+            .grashof(),
+            Grashof::ChangePoint
+        );
+        assert_eq!(
+            FourBar {
+                l2: 45.0,
+                ..WORKSHEET
+            }
+            .grashof(),
             Grashof::TripleRocker
         );
         assert_eq!(
             FourBar {
                 l1: 20.0,
                 l2: 60.0,
-                ..SEED
+                ..WORKSHEET
             }
             .grashof(),
             Grashof::DoubleCrank
@@ -241,7 +252,7 @@ mod tests {
             FourBar {
                 l3: 20.0,
                 l2: 80.0,
-                ..SEED
+                ..WORKSHEET
             }
             .grashof(),
             Grashof::GrashofDoubleRocker
@@ -250,13 +261,20 @@ mod tests {
 
     #[test]
     fn limit_positions_by_the_law_of_cosines() {
-        let angles = FourBar { l2: 45.0, ..SEED }.collinear_crank_angles();
+        let angles = FourBar {
+            l2: 45.0,
+            ..WORKSHEET
+        }
+        .collinear_crank_angles();
         assert_eq!(angles.len(), 1);
         assert!((angles[0].to_degrees() - 146.084_473_399_991_7).abs() < 1e-12);
         assert!(
-            FourBar { l2: 45.0, ..SEED }
-                .position(std::f64::consts::PI, 1.0)
-                .is_none()
+            FourBar {
+                l2: 45.0,
+                ..WORKSHEET
+            }
+            .position(std::f64::consts::PI, 1.0)
+            .is_none()
         );
     }
 }

@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{FourBar, OMEGA2, SEED, gamma_by_dual, rel_norm};
+use common::{FourBar, OMEGA2, gamma_by_dual, rel_norm};
 use linkage::num_dual::{DualSVec64, jacobian};
 use linkage::prelude::*;
 
@@ -13,7 +13,7 @@ fn revolution(n: usize) -> Vec<(f64, SVector<f64, 2>)> {
         .map(|k| vector![std::f64::consts::TAU * k as f64 / n as f64])
         .collect();
     let poses = common::continuation(
-        &SEED,
+        &FourBar::WORKSHEET,
         vector![78f64.to_radians(), -44f64.to_radians()],
         &drivers,
     );
@@ -33,8 +33,9 @@ fn uddot(
         method,
         ..Options::default()
     };
-    let vel = SEED.velocity(u, &v, &vdot, &options).unwrap();
-    SEED.acceleration(u, &v, &vel.udot, &vdot, &vector![alpha2], &options)
+    let vel = FourBar::WORKSHEET.velocity(u, &v, &vdot, &options).unwrap();
+    FourBar::WORKSHEET
+        .acceleration(u, &v, &vel.udot, &vdot, &vector![alpha2], &options)
         .unwrap()
 }
 
@@ -88,15 +89,17 @@ fn psi_q_is_the_jacobian_of_psi_generic() {
     for (theta2, u) in revolution(360) {
         let q = vector![u[0], u[1], theta2];
         let (psi, jac) = jacobian(
-            |q: SVector<DualSVec64<3>, 3>| SEED.psi_generic(&vector![q[0], q[1]], &vector![q[2]]),
+            |q: SVector<DualSVec64<3>, 3>| {
+                FourBar::WORKSHEET.psi_generic(&vector![q[0], q[1]], &vector![q[2]])
+            },
             &q,
         );
-        let generated = SEED.psi_q(&u, &vector![theta2]);
+        let generated = FourBar::WORKSHEET.psi_q(&u, &vector![theta2]);
         let r = rel_norm(generated.as_slice(), jac.as_slice(), 0.0);
         assert!(r <= 1e-13, "θ2 = {theta2}: {generated} vs {jac}");
         assert!(
             rel_norm(
-                SEED.psi(&u, &vector![theta2]).as_slice(),
+                FourBar::WORKSHEET.psi(&u, &vector![theta2]).as_slice(),
                 psi.as_slice(),
                 1.0
             ) <= 1e-13
@@ -112,12 +115,12 @@ fn gamma_is_the_second_derivative_of_psi_generic() {
     for (theta2, u) in revolution(360) {
         let v = vector![theta2];
         let vdot = vector![OMEGA2];
-        let udot = SEED
+        let udot = FourBar::WORKSHEET
             .velocity(&u, &v, &vdot, &Options::default())
             .unwrap()
             .udot;
-        let g = SEED.gamma(&u, &v, &udot, &vdot);
-        let d = gamma_by_dual(&SEED, &u, &v, &udot, &vdot);
+        let g = FourBar::WORKSHEET.gamma(&u, &v, &udot, &vdot);
+        let d = gamma_by_dual(&FourBar::WORKSHEET, &u, &v, &udot, &vdot);
         let r = rel_norm(g.as_slice(), d.as_slice(), 0.0);
         assert!(r <= 1e-13, "θ2 = {theta2}: {g} vs {d}");
         worst = worst.max(r);
@@ -132,16 +135,18 @@ fn gamma_is_the_second_derivative_of_psi_generic() {
 fn the_fused_kernel_equals_the_separate_functions() {
     for (theta2, u) in revolution(360) {
         let (v, vdot, vddot) = (vector![theta2], vector![OMEGA2], vector![37.0]);
-        let k = SEED.kinematics(&u, &v, &vdot, &vddot);
-        assert_eq!(k.psi, SEED.psi(&u, &v));
-        assert_eq!(k.psi_u, SEED.psi_u(&u, &v));
-        assert_eq!(k.psi_v, SEED.psi_v(&u, &v));
+        let k = FourBar::WORKSHEET.kinematics(&u, &v, &vdot, &vddot);
+        assert_eq!(k.psi, FourBar::WORKSHEET.psi(&u, &v));
+        assert_eq!(k.psi_u, FourBar::WORKSHEET.psi_u(&u, &v));
+        assert_eq!(k.psi_v, FourBar::WORKSHEET.psi_v(&u, &v));
         let options = Options {
             method: AccelerationMethod::B,
             ..Options::default()
         };
-        let vel = SEED.velocity(&u, &v, &vdot, &options).unwrap();
-        let acc = SEED
+        let vel = FourBar::WORKSHEET
+            .velocity(&u, &v, &vdot, &options)
+            .unwrap();
+        let acc = FourBar::WORKSHEET
             .acceleration(&u, &v, &vel.udot, &vdot, &vddot, &options)
             .unwrap();
         assert!(rel_norm(k.udot.as_slice(), vel.udot.as_slice(), 0.0) <= 1e-15);
@@ -164,12 +169,13 @@ fn the_kernel_with_given_trig_equals_the_fused_kernel() {
         let (v, vdot, vddot) = (vector![theta2], vector![OMEGA2], vector![37.0]);
         let trig_u = [u[0].sin_cos(), u[1].sin_cos()];
         let trig_v = [theta2.sin_cos()];
-        let k = SEED.kinematics(&u, &v, &vdot, &vddot);
-        let t = SEED.kinematics_with_trig(&u, &v, &trig_u, &trig_v, &vdot, &vddot);
+        let k = FourBar::WORKSHEET.kinematics(&u, &v, &vdot, &vddot);
+        let t = FourBar::WORKSHEET.kinematics_with_trig(&u, &v, &trig_u, &trig_v, &vdot, &vddot);
         assert_eq!(k, t, "θ2 = {theta2}");
         let shifted = (theta2 + 1e-3).sin_cos();
-        let moved = SEED.kinematics_with_trig(&u, &v, &trig_u, &[shifted], &vdot, &vddot);
-        let expected = SEED.kinematics(&u, &vector![theta2 + 1e-3], &vdot, &vddot);
+        let moved =
+            FourBar::WORKSHEET.kinematics_with_trig(&u, &v, &trig_u, &[shifted], &vdot, &vddot);
+        let expected = FourBar::WORKSHEET.kinematics(&u, &vector![theta2 + 1e-3], &vdot, &vddot);
         assert_eq!(moved.psi, expected.psi);
     }
 }

@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{FourBar, OMEGA2, SEED};
+use common::{FourBar, OMEGA2};
 use linkage::batch::{self, AnalysisJob, SweepJob};
 use linkage::prelude::*;
 use std::f64::consts::TAU;
@@ -15,7 +15,7 @@ fn designs() -> Vec<FourBar> {
         .map(|k| {
             let mut bar = FourBar {
                 l3: 40.0 + k as f64,
-                ..SEED
+                ..FourBar::WORKSHEET
             };
             if k == 7 {
                 bar.l2 = 500.0;

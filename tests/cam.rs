@@ -1,4 +1,4 @@
-//! The cam of the course project (seed 002) against the 50-digit
+//! The cam of the course project against the 50-digit
 //! reference, the motion laws at their joints, profiles against their
 //! pitch curves, the sizing against its limit, and undercut.
 
@@ -17,10 +17,10 @@ fn reference() -> HashMap<String, (f64, Option<String>)> {
         .filter(|l| !l.starts_with('#') && !l.starts_with("key,"))
         .map(|l| {
             let cols: Vec<&str> = l.split(',').collect();
-            let seed = (!cols[2].is_empty()).then(|| cols[2].to_string());
+            let printed = (!cols[2].is_empty()).then(|| cols[2].to_string());
             (
                 cols[0].to_string(),
-                (cols[1].parse().unwrap_or(f64::NAN), seed),
+                (cols[1].parse().unwrap_or(f64::NAN), printed),
             )
         })
         .collect()
@@ -29,7 +29,7 @@ fn reference() -> HashMap<String, (f64, Option<String>)> {
 const H: f64 = 0.045;
 const ARM: f64 = 0.15;
 
-fn seed_program() -> Program {
+fn course_program() -> Program {
     let law = Law::ConstantAcceleration { k: 1.0 };
     Program::new(
         H,
@@ -80,7 +80,7 @@ fn bisect(g: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
 
 fn ours() -> HashMap<&'static str, f64> {
     let mut out = HashMap::new();
-    let data = machine::SEED;
+    let data = machine::COURSE_PROJECT;
     let shaper = machine::synthesize(&data).unwrap();
     let m = machine::machine(&shaper, &data).unwrap();
     let x0 = m.analysis(0.0).unwrap().u[2];
@@ -100,7 +100,7 @@ fn ours() -> HashMap<&'static str, f64> {
     );
     out.insert("cam.phi_r_deg", 28.0 + 15.0 + 28.0);
     out.insert("cam.k_used", 1.0);
-    let program = seed_program();
+    let program = course_program();
     let phi_y = 28f64.to_radians();
     out.insert("cam.a_q1", program.at(0.25 * phi_y).unwrap().0[2]);
     out.insert(
@@ -124,14 +124,14 @@ fn ours() -> HashMap<&'static str, f64> {
         "cam.check.SB_correct_at_phi_y_over_2",
         program.at(0.5 * phi_y).unwrap().0[0],
     );
-    let seed = rocker(&program, 0.2973, 54.0);
-    let ((at_max, max), (at_min, min)) = seed.pressure_extremes().unwrap();
+    let drawn = rocker(&program, 0.2973, 54.0);
+    let ((at_max, max), (at_min, min)) = drawn.pressure_extremes().unwrap();
     out.insert("cam.theta_max_rise_deg", max.to_degrees());
     out.insert("cam.theta_max_rise_at_deg", at_max.to_degrees());
     out.insert("cam.theta_min_return_deg", min.to_degrees());
     out.insert("cam.theta_min_return_at_deg", at_min.to_degrees());
-    out.insert("cam.r0", seed.base_radius());
-    let k0 = seed.pitch(0.0).unwrap().k;
+    out.insert("cam.r0", drawn.base_radius());
+    let k0 = drawn.pitch(0.0).unwrap().k;
     out.insert("cam.K0.x", k0.x);
     out.insert("cam.K0.y", k0.y);
     out.insert(
@@ -146,7 +146,7 @@ fn ours() -> HashMap<&'static str, f64> {
     out.insert("cam.r_R_max", 0.4 * 0.2413);
     out.insert(
         "cam.r_far_dwell",
-        seed.pitch(35f64.to_radians()).unwrap().k.norm(),
+        drawn.pitch(35f64.to_radians()).unwrap().k.norm(),
     );
     let best = smallest_rocker(
         &program,
@@ -171,7 +171,7 @@ fn ours() -> HashMap<&'static str, f64> {
 }
 
 #[test]
-fn the_seeds_cam_matches_the_50_digit_reference() {
+fn the_course_projects_cam_matches_the_50_digit_reference() {
     let reference = reference();
     let ours = ours();
     assert!(ours.len() >= 28, "{}", ours.len());
@@ -194,7 +194,7 @@ fn the_seeds_cam_matches_the_50_digit_reference() {
             let decimals = text.split_once('.').map_or(0, |(_, d)| d.len()) as i32;
             let half = 0.5 * 10f64.powi(-decimals);
             if *key == "cam.r0" {
-                // The seed's graphical reading: 0.2 % low.
+                // The course project's graphical reading: 0.2 % low.
                 assert!((value - p) / p > 1e-3 && (value - p) / p < 3e-3);
             } else {
                 assert!(
@@ -206,13 +206,13 @@ fn the_seeds_cam_matches_the_50_digit_reference() {
     }
 }
 
-/// The seed's pressure-angle formula for its rocker,
+/// The course project's pressure-angle formula for its rocker,
 /// tan θ = (v_q + a_w cos(φ20 + ψ) − l)/(a_w sin(φ20 + ψ)), is what the
 /// geometric definition (the common normal against the roller centre's
 /// motion) gives.
 #[test]
-fn the_pressure_angle_is_the_seeds_formula() {
-    let program = seed_program();
+fn the_pressure_angle_is_the_course_projects_formula() {
+    let program = course_program();
     let cam = rocker(&program, 0.2973, 54.0);
     for i in 0..720 {
         let phi = TAU * i as f64 / 720.0;
@@ -312,7 +312,7 @@ fn distance_to_pitch(cam: &Cam, p: nalgebra::Vector2<f64>) -> f64 {
 
 #[test]
 fn the_profile_keeps_the_roller_radius_from_the_pitch_curve() {
-    let program = seed_program();
+    let program = course_program();
     let best = smallest_rocker(
         &program,
         ARM,
@@ -321,7 +321,7 @@ fn the_profile_keeps_the_roller_radius_from_the_pitch_curve() {
         35f64.to_radians(),
     )
     .unwrap();
-    // The seed allows rollers up to 0.4·r0, but this cam's pitch curve has
+    // The course project allows rollers up to 0.4·r0, but this cam's pitch curve has
     // a convex radius of only 76.6 mm on its flanks: a roller that large
     // undercuts.
     let (at, largest) = best.largest_roller().unwrap();
@@ -346,7 +346,7 @@ fn the_profile_keeps_the_roller_radius_from_the_pitch_curve() {
 
 #[test]
 fn the_smallest_cams_reach_the_limit_exactly() {
-    let program = seed_program();
+    let program = course_program();
     let limit = 35f64.to_radians();
     let best =
         smallest_rocker(&program, ARM, -FRAC_PI_2, Rotation::CounterClockwise, limit).unwrap();
@@ -413,7 +413,7 @@ fn the_smallest_cams_reach_the_limit_exactly() {
 
 #[test]
 fn an_undercut_is_an_error_naming_the_angles() {
-    let program = seed_program();
+    let program = course_program();
     let cam = rocker(&program, 0.2973, 54.0);
     // A roller larger than the pitch curve's sharpest convex radius.
     let err = cam.profile(0.2, 720).unwrap_err();
@@ -440,7 +440,7 @@ fn an_undercut_is_an_error_naming_the_angles() {
 /// 90° or more returned a cam of 0.055 m or 1.4e-6 m.
 #[test]
 fn bad_settings_are_typed_errors() {
-    let program = seed_program();
+    let program = course_program();
     let limit = 35f64.to_radians();
     let bad = |result: Result<Cam, CamError>, what: &str| {
         assert!(

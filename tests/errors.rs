@@ -2,7 +2,7 @@
 
 mod common;
 
-use common::{FourBar, OMEGA2, SEED};
+use common::{FourBar, OMEGA2};
 use linkage::prelude::*;
 use std::f64::consts::PI;
 
@@ -14,14 +14,14 @@ fn guess() -> SVector<f64, 2> {
 fn non_finite_inputs_are_named() {
     let o = Options::default();
     let v = vector![0.3];
-    let err = SEED
+    let err = FourBar::WORKSHEET
         .solve_position(&vector![f64::NAN, 0.0], &v, &o)
         .unwrap_err();
     assert!(
         matches!(err, Error::NonFiniteInput { argument: "u0", index: 0, value } if value.is_nan()),
         "{err}"
     );
-    let err = SEED
+    let err = FourBar::WORKSHEET
         .solve_position(&guess(), &vector![f64::INFINITY], &o)
         .unwrap_err();
     assert_eq!(
@@ -32,7 +32,7 @@ fn non_finite_inputs_are_named() {
             value: f64::INFINITY
         }
     );
-    let err = SEED
+    let err = FourBar::WORKSHEET
         .velocity(&guess(), &v, &vector![f64::NEG_INFINITY], &o)
         .unwrap_err();
     assert!(
@@ -45,7 +45,7 @@ fn non_finite_inputs_are_named() {
         ),
         "{err}"
     );
-    let err = SEED
+    let err = FourBar::WORKSHEET
         .analyze(&guess(), &v, &vector![OMEGA2], &vector![f64::NAN], &o)
         .unwrap_err();
     assert!(
@@ -65,7 +65,7 @@ fn non_finite_inputs_are_named() {
 fn non_finite_parameters_are_reported() {
     let bar = FourBar {
         l1: f64::NAN,
-        ..SEED
+        ..FourBar::WORKSHEET
     };
     let err = bar
         .solve_position(&guess(), &vector![0.3], &Options::default())
@@ -83,7 +83,10 @@ fn non_finite_parameters_are_reported() {
 /// joints collinear, det Ψ_u = 0.
 #[test]
 fn singular_pose_is_detected_with_its_conditioning() {
-    let bar = FourBar { l2: 40.0, ..SEED };
+    let bar = FourBar {
+        l2: 40.0,
+        ..FourBar::WORKSHEET
+    };
     let (u, v) = (vector![0.0, 0.0], vector![PI]);
     assert!(
         bar.psi(&u, &v).amax() < 1e-12,
@@ -126,7 +129,10 @@ fn singular_pose_is_detected_with_its_conditioning() {
 /// Newton fails with a typed error, not a wrong pose.
 #[test]
 fn unassemblable_pose_is_an_error() {
-    let bar = FourBar { l2: 45.0, ..SEED };
+    let bar = FourBar {
+        l2: 45.0,
+        ..FourBar::WORKSHEET
+    };
     let result = bar.solve_position(&vector![0.1, -0.1], &vector![PI], &Options::default());
     match result {
         Err(Error::NotConverged {
@@ -150,7 +156,10 @@ fn unassemblable_pose_is_an_error() {
 /// so the closest pose, coupler and rocker stretched along BD, misses by 5.
 #[test]
 fn damped_newton_reports_cannot_assemble_with_the_gap() {
-    let bar = FourBar { l2: 45.0, ..SEED };
+    let bar = FourBar {
+        l2: 45.0,
+        ..FourBar::WORKSHEET
+    };
     for guess in [vector![0.1, -0.1], vector![2.0, 1.0], vector![-1.0, 2.5]] {
         let err = bar
             .solve_position(&guess, &vector![PI], &Options::damped())
@@ -174,10 +183,10 @@ fn damped_newton_reports_cannot_assemble_with_the_gap() {
     }
     // Where it can be assembled, damped Newton finds the same pose as Newton.
     let v = vector![20f64.to_radians()];
-    let plain = SEED
+    let plain = FourBar::WORKSHEET
         .solve_position(&guess(), &v, &Options::default())
         .unwrap();
-    let damped = SEED
+    let damped = FourBar::WORKSHEET
         .solve_position(&guess(), &v, &Options::damped())
         .unwrap();
     assert!((plain.u - damped.u).amax() < 1e-14);
@@ -191,9 +200,9 @@ fn damped_newton_converges_from_poor_guesses() {
     for k in 0..36 {
         let a = f64::from(k) * 10f64.to_radians();
         let start = vector![a, -a];
-        if let Ok(p) = SEED.solve_position(&start, &v, &Options::damped()) {
+        if let Ok(p) = FourBar::WORKSHEET.solve_position(&start, &v, &Options::damped()) {
             // Either assembly mode is a valid answer; it must satisfy Ψ = 0.
-            assert!(SEED.psi(&p.u, &v).amax() < 1e-12);
+            assert!(FourBar::WORKSHEET.psi(&p.u, &v).amax() < 1e-12);
             damped_ok += 1;
         }
     }
@@ -227,7 +236,7 @@ fn no_nan_inside_ok_on_hostile_inputs() {
     for &a in &values {
         for &b in &values {
             for &t in &values {
-                match SEED.analyze(
+                match FourBar::WORKSHEET.analyze(
                     &vector![a, b],
                     &vector![t],
                     &vector![OMEGA2],
@@ -242,7 +251,7 @@ fn no_nan_inside_ok_on_hostile_inputs() {
                                 .chain(&r.uddot)
                                 .chain(r.points.iter().flat_map(|p| p.iter()));
                         assert!(all.copied().all(f64::is_finite), "{r:?}");
-                        assert!(SEED.psi(&r.u, &vector![t]).amax() <= o.residual_tol);
+                        assert!(FourBar::WORKSHEET.psi(&r.u, &vector![t]).amax() <= o.residual_tol);
                     }
                     Err(_) => errs += 1,
                 }
@@ -254,13 +263,13 @@ fn no_nan_inside_ok_on_hostile_inputs() {
 
 #[test]
 fn newton_reports_iterations_and_residual() {
-    let p = SEED
+    let p = FourBar::WORKSHEET
         .solve_position(&guess(), &vector![20f64.to_radians()], &Options::default())
         .unwrap();
     assert!(p.iterations >= 3 && p.iterations <= 5, "{}", p.iterations);
     assert!(p.residual < 1e-13);
     // A cap of one step is not enough from (70°, −50°).
-    let err = SEED
+    let err = FourBar::WORKSHEET
         .solve_position(
             &guess(),
             &vector![20f64.to_radians()],

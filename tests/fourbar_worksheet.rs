@@ -1,16 +1,16 @@
 //! The Maple worksheet's four-bar, number by number, against the reference
-//! recomputed at 50 digits (`tests/data/fourbar_seed.csv`), and the 360-pose
+//! recomputed at 50 digits (`tests/data/fourbar_worksheet.csv`), and the 360-pose
 //! sweep (`tests/data/fourbar_sweep.csv`).
 
 mod common;
 
-use common::{FourBar, OMEGA2, SEED, rel};
+use common::{FourBar, OMEGA2, rel};
 use linkage::prelude::*;
 use std::collections::HashMap;
 
 /// key → value, from the reference CSV.
 fn reference() -> HashMap<String, f64> {
-    let text = include_str!("data/fourbar_seed.csv");
+    let text = include_str!("data/fourbar_worksheet.csv");
     text.lines()
         .filter(|l| !l.starts_with('#') && !l.starts_with("key,"))
         .filter_map(|l| {
@@ -78,7 +78,7 @@ impl Worksheet {
     /// Every quantity of the worksheet at θ2 = 20°, ω2 = 400 rpm, α2 = 0,
     /// computed through the public API.
     fn compute() -> Worksheet {
-        let bar = SEED;
+        let bar = FourBar::WORKSHEET;
         let theta2 = 20f64.to_radians();
         let v = vector![theta2];
         let guess = vector![70f64.to_radians(), -50f64.to_radians()];
@@ -117,8 +117,8 @@ impl Worksheet {
         put("theta4", a.u[1]);
         put("theta3_deg", a.u[0].to_degrees());
         put("theta4_deg", a.u[1].to_degrees());
-        put("seed004.phi3_deg", a.u[0].to_degrees());
-        put("seed004.phi4_deg", a.u[1].to_degrees() + 180.0);
+        put("four_bar_note.phi3_deg", a.u[0].to_degrees());
+        put("four_bar_note.phi4_deg", a.u[1].to_degrees() + 180.0);
         put("omega3", a.udot[0]);
         put("omega4", a.udot[1]);
         put("alpha3", a.uddot[0]);
@@ -231,7 +231,7 @@ fn every_worksheet_number_to_1e_12() {
 
 #[test]
 fn link_lengths_and_residual() {
-    let bar = SEED;
+    let bar = FourBar::WORKSHEET;
     let v = vector![20f64.to_radians()];
     let a = bar
         .analyze(
@@ -257,13 +257,14 @@ fn link_lengths_and_residual() {
 #[test]
 fn newton_iterates_converge_quadratically() {
     let mut residuals = Vec::new();
-    SEED.solve_position_observed(
-        &vector![70f64.to_radians(), -50f64.to_radians()],
-        &vector![20f64.to_radians()],
-        &Options::default(),
-        |it| residuals.push(it.residual),
-    )
-    .unwrap();
+    FourBar::WORKSHEET
+        .solve_position_observed(
+            &vector![70f64.to_radians(), -50f64.to_radians()],
+            &vector![20f64.to_radians()],
+            &Options::default(),
+            |it| residuals.push(it.residual),
+        )
+        .unwrap();
     assert!(residuals[0] > 0.5);
     assert!(residuals[1] < 1e-2 * residuals[0]);
     assert!(residuals[2] < 1e-4 * residuals[1].max(1e-12));
@@ -289,7 +290,7 @@ fn sweep_ours() -> Vec<[f64; 7]> {
     (0..360)
         .map(|deg| {
             let theta2 = f64::from(deg).to_radians();
-            let a = SEED
+            let a = FourBar::WORKSHEET
                 .analyze(
                     &u,
                     &vector![theta2],
@@ -374,7 +375,9 @@ fn sweep_extrema() -> HashMap<String, f64> {
     }
     let det = |deg: f64| {
         let u = pose_near(deg, &ours);
-        SEED.psi_u(&u, &vector![deg.to_radians()]).determinant()
+        FourBar::WORKSHEET
+            .psi_u(&u, &vector![deg.to_radians()])
+            .determinant()
     };
     let (at, min_det) = ours
         .iter()
@@ -434,7 +437,8 @@ fn sweep_extrema() -> HashMap<String, f64> {
 fn pose_near(deg: f64, sweep: &[[f64; 7]]) -> SVector<f64, 2> {
     let row = &sweep[(deg.rem_euclid(360.0).round() as usize) % 360];
     let guess = vector![row[1].to_radians(), row[2].to_radians()];
-    SEED.solve_position(&guess, &vector![deg.to_radians()], &Options::default())
+    FourBar::WORKSHEET
+        .solve_position(&guess, &vector![deg.to_radians()], &Options::default())
         .unwrap()
         .u
 }
@@ -442,7 +446,7 @@ fn pose_near(deg: f64, sweep: &[[f64; 7]]) -> SVector<f64, 2> {
 /// [θ3, θ4, ω3, ω4, α3, α4] at θ2 in degrees (rad and rad/s units).
 fn analysis_at(deg: f64, sweep: &[[f64; 7]]) -> [f64; 6] {
     let u = pose_near(deg, sweep);
-    let a = SEED
+    let a = FourBar::WORKSHEET
         .analyze(
             &u,
             &vector![deg.to_radians()],

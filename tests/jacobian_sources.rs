@@ -4,21 +4,22 @@
 
 mod common;
 
-use common::{OMEGA2, SEED, rel_norm};
+use common::{FourBar, OMEGA2, rel_norm};
 use linkage::prelude::*;
 
 fn analyze(jacobian: JacobianSource) -> Analysis<2, 1, [Vector2<f64>; 5]> {
-    SEED.analyze(
-        &vector![70f64.to_radians(), -50f64.to_radians()],
-        &vector![20f64.to_radians()],
-        &vector![OMEGA2],
-        &vector![37.0],
-        &Options {
-            jacobian,
-            ..Options::default()
-        },
-    )
-    .unwrap()
+    FourBar::WORKSHEET
+        .analyze(
+            &vector![70f64.to_radians(), -50f64.to_radians()],
+            &vector![20f64.to_radians()],
+            &vector![OMEGA2],
+            &vector![37.0],
+            &Options {
+                jacobian,
+                ..Options::default()
+            },
+        )
+        .unwrap()
 }
 
 #[test]
@@ -55,7 +56,7 @@ fn every_source_solves_newton_to_full_precision() {
         JacobianSource::FiniteDifference,
     ] {
         for damped in [false, true] {
-            let p = SEED
+            let p = FourBar::WORKSHEET
                 .solve_position(
                     &vector![70f64.to_radians(), -50f64.to_radians()],
                     &vector![20f64.to_radians()],

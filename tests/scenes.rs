@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{FourBar, OMEGA2, SEED, SLIDER_CRANK, SliderCrank};
+use common::{FourBar, OMEGA2, SLIDER_CRANK, SliderCrank};
 use linkage::closed_form;
 use linkage::draw::diagrams::{DiagramError, Diagrams};
 use linkage::draw::scene::{Frame, Scene, SceneError};
@@ -14,20 +14,21 @@ use std::f64::consts::TAU;
 
 /// The worksheet's pose: θ2 = 20°, ω2 = 400 rpm, α2 = 0.
 fn worksheet_pose() -> Analysis<2, 1, [Vector2<f64>; 5]> {
-    SEED.analyze(
-        &vector![70f64.to_radians(), -50f64.to_radians()],
-        &vector![20f64.to_radians()],
-        &vector![OMEGA2],
-        &vector![0.0],
-        &Options::default(),
-    )
-    .unwrap()
+    FourBar::WORKSHEET
+        .analyze(
+            &vector![70f64.to_radians(), -50f64.to_radians()],
+            &vector![20f64.to_radians()],
+            &vector![OMEGA2],
+            &vector![0.0],
+            &Options::default(),
+        )
+        .unwrap()
 }
 
 fn worksheet_scene() -> Scene {
     Scene::new()
         .ground("A", [0.0, 0.0])
-        .ground("D", [SEED.l1, 0.0])
+        .ground("D", [FourBar::WORKSHEET.l1, 0.0])
         .link(["A", "B"])
         .link(["B", "C"])
         .link(["C", "D"])
@@ -39,10 +40,10 @@ fn worksheet_scene() -> Scene {
         .title("The four-bar at θ₂ = 20°")
 }
 
-/// A revolution of the seed four-bar from the worksheet's pose.
+/// A revolution of the worksheet's four-bar from the worksheet's pose.
 fn revolution(steps: usize) -> (Sweep<2, 1>, Vec<Frame>) {
     let pose = worksheet_pose();
-    let sweep = SEED
+    let sweep = FourBar::WORKSHEET
         .sweep(
             &pose.u,
             &Drive::Line {
@@ -59,7 +60,7 @@ fn revolution(steps: usize) -> (Sweep<2, 1>, Vec<Frame>) {
     let frames = sweep
         .poses
         .iter()
-        .map(|p| Frame::from_sweep_pose(&SEED, p))
+        .map(|p| Frame::from_sweep_pose(&FourBar::WORKSHEET, p))
         .collect();
     (sweep, frames)
 }
@@ -108,7 +109,7 @@ impl Readback {
         assert!((a.y - d.y).abs() < 1e-9, "the ground line is level");
         Readback {
             a,
-            scale: (d.x - a.x) / SEED.l1,
+            scale: (d.x - a.x) / FourBar::WORKSHEET.l1,
         }
     }
 
@@ -190,7 +191,7 @@ fn automatic_arrow_scales_fit_the_drawing() {
     let frame = Frame::from_analysis::<FourBar, 2, 1>(&pose);
     let svg = Scene::new()
         .ground("A", [0.0, 0.0])
-        .ground("D", [SEED.l1, 0.0])
+        .ground("D", [FourBar::WORKSHEET.l1, 0.0])
         .link(["A", "B"])
         .link(["B", "C"])
         .link(["C", "D"])
@@ -348,7 +349,8 @@ fn bad_scenes_are_typed_errors() {
         matches!(&err, SceneError::UnknownName(UnknownName { kind: NameKind::Point, name, known, .. }) if name == "A" && known.contains("G3")),
         "{err}"
     );
-    let positions_only = Frame::positions(&SEED, &pose.u, &vector![20f64.to_radians()]);
+    let positions_only =
+        Frame::positions(&FourBar::WORKSHEET, &pose.u, &vector![20f64.to_radians()]);
     assert_eq!(
         Scene::new()
             .velocities(["B"])
@@ -392,8 +394,8 @@ fn bad_scenes_are_typed_errors() {
 fn motion_diagrams_are_well_formed_and_mark_the_limit_positions() {
     let (sweep, _) = revolution(90);
     let svg = Diagrams::new()
-        .title("The seed four-bar")
-        .render(&SEED, &sweep)
+        .title("The worksheet's four-bar")
+        .render(&FourBar::WORKSHEET, &sweep)
         .unwrap();
     let doc = parse(&svg);
     let text: String = doc
@@ -413,7 +415,10 @@ fn motion_diagrams_are_well_formed_and_mark_the_limit_positions() {
     }
     assert!(!text.contains("limit position"));
     // A triple rocker rocks between two limit positions: both marked.
-    let bar = FourBar { l2: 45.0, ..SEED };
+    let bar = FourBar {
+        l2: 45.0,
+        ..FourBar::WORKSHEET
+    };
     let cf = closed_form::FourBar {
         l1: bar.l1,
         l2: bar.l2,

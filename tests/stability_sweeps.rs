@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{FourBar, SEED, SIX_BAR, SLIDER_CRANK, SLIDER_DRIVEN, SixBar, SliderDriven};
+use common::{FourBar, SIX_BAR, SLIDER_CRANK, SLIDER_DRIVEN, SixBar, SliderDriven};
 use linkage::closed_form::{self, Grashof, circle_intersection};
 use linkage::prelude::*;
 use std::f64::consts::{PI, TAU};
@@ -97,11 +97,11 @@ fn start_pose(bar: &FourBar, theta2: f64, sigma: f64) -> SVector<f64, 2> {
 
 #[test]
 fn crank_rocker_full_cycle_never_flips() {
-    assert_eq!(closed(&SEED).grashof(), Grashof::CrankRocker);
+    assert_eq!(closed(&FourBar::WORKSHEET).grashof(), Grashof::CrankRocker);
     for sigma in [1.0, -1.0] {
-        let sweep = SEED
+        let sweep = FourBar::WORKSHEET
             .sweep(
-                &start_pose(&SEED, 0.0, sigma),
+                &start_pose(&FourBar::WORKSHEET, 0.0, sigma),
                 &full_turn(STEPS),
                 &SweepOptions::default(),
             )
@@ -109,7 +109,7 @@ fn crank_rocker_full_cycle_never_flips() {
         assert!(sweep.complete);
         assert_eq!(sweep.poses.len(), STEPS + 1);
         assert!(sweep.events.is_empty(), "{:?}", sweep.events);
-        let worst = check_fourbar(&SEED, &sweep, sigma, false);
+        let worst = check_fourbar(&FourBar::WORKSHEET, &sweep, sigma, false);
         eprintln!("crank-rocker, branch {sigma}: worst angle error {worst:.1e}");
         // After a full turn the mechanism is back where it started.
         let (first, last) = (sweep.poses[0].u, sweep.poses[STEPS].u);
@@ -144,7 +144,10 @@ fn double_crank_full_cycle_never_flips() {
 
 #[test]
 fn triple_rocker_rocks_between_its_limit_positions() {
-    let bar = FourBar { l2: 45.0, ..SEED };
+    let bar = FourBar {
+        l2: 45.0,
+        ..FourBar::WORKSHEET
+    };
     let cf = closed(&bar);
     assert_eq!(cf.grashof(), Grashof::TripleRocker);
     // The law of cosines: BD = l3 + l4.
@@ -192,7 +195,10 @@ fn triple_rocker_rocks_between_its_limit_positions() {
 
 #[test]
 fn change_point_branch_point_is_found_and_crossed() {
-    let bar = FourBar { l2: 40.0, ..SEED };
+    let bar = FourBar {
+        l2: 40.0,
+        ..FourBar::WORKSHEET
+    };
     let cf = closed(&bar);
     assert_eq!(cf.grashof(), Grashof::ChangePoint);
     // The collinear pose at θ2 = π is on the grid (step 5000 of 10 000) and,
@@ -418,11 +424,15 @@ fn sweep_kinematics_match_analyze() {
         speed: omega2,
         ..SweepOptions::default()
     };
-    let sweep = SEED
-        .sweep(&start_pose(&SEED, 0.0, 1.0), &full_turn(360), &options)
+    let sweep = FourBar::WORKSHEET
+        .sweep(
+            &start_pose(&FourBar::WORKSHEET, 0.0, 1.0),
+            &full_turn(360),
+            &options,
+        )
         .unwrap();
     for p in &sweep.poses {
-        let a = SEED
+        let a = FourBar::WORKSHEET
             .analyze(
                 &p.u,
                 &p.v,

@@ -1,4 +1,4 @@
-/* Drives the C that CasADi generated for one continuation step of the seed
+/* Drives the C that CasADi generated for one continuation step of the worksheet's
  * four-bar (fourbar_step.c) over the dense revolution, N = 1 008 000 samples,
  * and times it. Writes the results at the reference samples to the file
  * given as the first argument, and prints ns per sample (median of 7 runs).

@@ -1,4 +1,4 @@
-"""Shared by the peers: the seed four-bar, the dense grid, the reference and
+"""Shared by the peers: the worksheet's four-bar, the dense grid, the reference and
 the error measure, exactly as the Rust benchmark defines them."""
 import math
 import os

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs the peers on this machine, on the same work as
-# `cargo run --release --example speed_accuracy`: the seed four-bar over a
+# `cargo run --release --example speed_accuracy`: the worksheet's four-bar over a
 # revolution of the dense grid, positions, velocities and accelerations, errors
 # against tests/data/bench_fourbar.csv. Sets up its own Python environment
 # from PyPI (benches/peers/.venv) and writes benches/results/peers.csv.
@@ -14,7 +14,7 @@ PY=.venv/bin/python
 mkdir -p build ../results
 out=../results/peers.csv
 {
-  echo "# Written by benches/peers/run.sh on $(date -u +%Y-%m-%d) ($(uname -m), $(nproc) cores): the peers on the seed four-bar,"
+  echo "# Written by benches/peers/run.sh on $(date -u +%Y-%m-%d) ($(uname -m), $(nproc) cores): the peers on the worksheet's four-bar,"
   echo "# median ns per sample and worst relative errors against tests/data/bench_fourbar.csv."
   echo "workload,method,ns_per_sample,error_positions,error_velocities,error_accelerations,samples"
 } > "$out"

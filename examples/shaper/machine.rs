@@ -1,4 +1,4 @@
-//! The shaping machine of the Mathcad course project (seed 002): a
+//! The shaping machine of the Mathcad course project: a
 //! quick-return slotted-lever mechanism, its synthesis from the time ratio
 //! K_V, the stroke H and the distance l_OC between the pivots, and its masses
 //! and loads.
@@ -68,8 +68,8 @@ pub struct Data {
     pub n_motor: f64,
     /// Time ratio of the strokes (working / return).
     pub k_v: f64,
-    /// The stroke H of the ram, m. The seed never defines it; H = 0.5 m
-    /// reproduces its l_CD, F_Cx(f) and cam angles (SEED_NOTES §2.1).
+    /// The stroke H of the ram, m. The course project never defines it; H = 0.5 m
+    /// reproduces its l_CD, F_Cx(f) and cam angles (tests/data/README.md).
     pub stroke: f64,
     pub l_oc: f64,
     pub m3: f64,
@@ -92,8 +92,8 @@ pub struct Data {
     pub g: f64,
 }
 
-/// The seed's numbers.
-pub const SEED: Data = Data {
+/// The course project's numbers.
+pub const COURSE_PROJECT: Data = Data {
     n1: 73.0 / 60.0,
     n_motor: 23.54,
     k_v: 1.6,
@@ -121,7 +121,7 @@ pub const SEED: Data = Data {
     g: 9.81,
 };
 
-/// The synthesis of the slotted-lever mechanism (the seed's section 1).
+/// The synthesis of the slotted-lever mechanism (the course project's section 1).
 ///
 /// ```text
 /// β    = π (K_V − 1)/(K_V + 1)        the rocker's swing (= the crank angle of the return stroke − π)
@@ -170,8 +170,8 @@ impl Shaper {
         2.0 * (self.phi0 - std::f64::consts::PI)
     }
 
-    /// The seed's analysed position f: the crank at φ1 = 60°.
-    pub fn seed_position(&self) -> f64 {
+    /// The course project's analysed position f: the crank at φ1 = 60°.
+    pub fn analysed_position(&self) -> f64 {
         self.phi0 - 60f64.to_radians()
     }
 
@@ -181,7 +181,7 @@ impl Shaper {
         vector![std::f64::consts::FRAC_PI_2, -self.y_c, 0.0]
     }
 
-    /// The seed's closed form, φ3 = π/2 − atan(x_A/(y_A − y_C)), for the
+    /// The course project's closed form, φ3 = π/2 − atan(x_A/(y_A − y_C)), for the
     /// tests' cross-check.
     pub fn closed_form_phi3(&self, phi: f64) -> f64 {
         let (x_a, y_a) = (
@@ -236,9 +236,9 @@ pub fn ground(shaper: &Shaper) -> Ground {
         .point("C", [0.0, shaper.y_c])
 }
 
-/// The seed's force analysis: bodies 1–5 (crank, block, rocker, block,
+/// The course project's force analysis: bodies 1–5 (crank, block, rocker, block,
 /// ram), the joint table 10, 12, 30, 34 (revolute), 23, 45, 50 (prismatic)
-/// in the seed's order, the loads on the ram, the flywheel's J_PRI on the
+/// in the course project's order, the loads on the ram, the flywheel's J_PRI on the
 /// crank, and the balancing moment on the crank.
 pub fn kinetostatics<'m>(
     machine: &'m Machine<Shaper, 3>,

@@ -1,11 +1,11 @@
-//! The shaping machine of the Mathcad course project (seed 002): the
+//! The shaping machine of the Mathcad course project: the
 //! slotted-lever mechanism synthesised from K_V, H and l_OC; its positions
-//! and kinematic analogs at the seed's position f (crank at 60°); reduced
+//! and kinematic analogs at the course project's position f (crank at 60°); reduced
 //! inertias and moments; work; the flywheel by the energy method; ω1 and
-//! ε1; the motor, gear and flywheel rim; what the seed could not do, the
+//! ε1; the motor, gear and flywheel rim; what the course project could not do, the
 //! machine's real motion with that flywheel; and the kinetostatics — the
 //! 18×18 system of the joint reactions and the balancing moment — each
-//! number beside the one the seed printed and the 50-digit reference.
+//! number beside the one the course project printed and the 50-digit reference.
 //!
 //! Writes `docs/figures/shaper/diagrams.svg` (J, M, A, ΔT_I, ω1, ε1 over a
 //! cycle), `docs/figures/shaper/mechanism.svg` (the mechanism at f) and
@@ -19,11 +19,11 @@ use linkage::draw::diagrams::{Chart, Panel};
 use linkage::draw::scene::{Frame, Scene};
 use linkage::machine::{Applied, Motor, flywheel};
 use linkage::prelude::*;
-use machine::{SEED, Shaper, machine, synthesize};
+use machine::{COURSE_PROJECT, Shaper, machine, synthesize};
 use std::collections::HashMap;
 use std::f64::consts::{PI, TAU};
 
-/// The 50-digit reference and the seed's printed numbers
+/// The 50-digit reference and the course project's printed numbers
 /// (tests/data/shaper_cam_reference.csv): key → (exact, printed).
 fn reference() -> HashMap<String, (f64, String)> {
     include_str!("../../tests/data/shaper_cam_reference.csv")
@@ -39,14 +39,14 @@ fn reference() -> HashMap<String, (f64, String)> {
         .collect()
 }
 
-/// Why a printed number differs from the exact one (SEED_NOTES, kept in
+/// Why a printed number differs from the exact one (the list in
 /// tests/data/README.md).
 fn note(key: &str) -> &'static str {
     match key {
-        "A_C_f" | "A_C_2pi" | "dT_Imin" | "dT_Imax" => "seed: Mathcad quadrature, 1.7e-4",
+        "A_C_f" | "A_C_2pi" | "dT_Imin" | "dT_Imax" => "Mathcad quadrature, 1.7e-4",
         "M_PRDsr" | "A_D_f" | "A_Sigma_f" | "dT_I_f" | "J_PRI" | "eps_n" | "eps1_min"
         | "eps1_max" | "m1" | "M_Phi1" | "B10" | "Phi5x" | "reactions.F30y" | "reactions.F30"
-        | "reactions.M1" => "seed: inherits the quadrature",
+        | "reactions.M1" => "inherits the quadrature",
         _ => "",
     }
 }
@@ -70,7 +70,7 @@ impl Table {
         println!("\n{title}\n{}", "─".repeat(title.chars().count()));
         println!(
             "{:<26} {:>22}  {:>12}  {:>9}  {:>9}",
-            "", "ours", "seed", "vs seed¹", "vs exact²"
+            "", "ours", "printed", "vs printed¹", "vs exact²"
         );
     }
 
@@ -88,13 +88,13 @@ impl Table {
             }
         };
         // Within the printed digits: ✓; else the relative difference.
-        let vs_seed = printed.parse::<f64>().map_or_else(
+        let vs_printed = printed.parse::<f64>().map_or_else(
             |_| "—".to_string(),
-            |seed| {
-                if (ours - seed).abs() <= half_unit(&printed) * (1.0 + 1e-9) {
+            |value| {
+                if (ours - value).abs() <= half_unit(&printed) * (1.0 + 1e-9) {
                     "✓".to_string()
                 } else {
-                    relative(seed)
+                    relative(value)
                 }
             },
         );
@@ -109,28 +109,28 @@ impl Table {
             printed
         };
         println!(
-            "{label:<26} {ours:>22.15}  {printed:>12}  {vs_seed:>9}  {vs_exact:>9}  {}",
+            "{label:<26} {ours:>22.15}  {printed:>12}  {vs_printed:>9}  {vs_exact:>9}  {}",
             note(key)
         );
     }
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let data = SEED;
+    let data = COURSE_PROJECT;
     let shaper = synthesize(&data)?;
     let m = machine(&shaper, &data)?;
     let t = Table {
         reference: reference(),
     };
-    let f = shaper.seed_position();
+    let f = shaper.analysed_position();
     let omega = TAU * data.n1;
-    println!("The shaping machine of the course project (seed 002), by linkage");
+    println!("The shaping machine of the course project, by linkage");
     println!(
-        "¹ ✓: within the seed's printed digits; else the relative difference, explained in the last column.\n\
+        "¹ ✓: within the course project's printed digits; else the relative difference, explained in the last column.\n\
          ² against the 50-digit reference (tests/data/shaper_cam_reference.csv)."
     );
     println!(
-        "K_V = {}, H = {} m (assumed: the seed never defines it), l_OC = {} m, n1 = 73 rpm, δ = {}",
+        "K_V = {}, H = {} m (assumed: the course project never defines it), l_OC = {} m, n1 = 73 rpm, δ = {}",
         data.k_v, data.stroke, data.l_oc, data.delta
     );
 
@@ -234,13 +234,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     t.row("ε1min (at φ_min2)", "eps1_min", eps_min.1);
     t.row("ε1max", "eps1_max", eps_max.1);
     println!(
-        "(the seed's ε1min is printed for φ_min2; its formula reads ε1(φ_min) = {:.6}, the slip SEED_NOTES §2.4 describes)",
+        "(the course project's ε1min is printed for φ_min2; its formula reads ε1(φ_min) = {:.6}, the slip tests/data/README.md describes)",
         e.epsilon(e.minimum.0)?
     );
 
     let real = m.steady_motion(e.flywheel, Motor::Constant { moment: md }, omega, 4000)?;
     println!(
-        "\n9. Beyond the seed: the real motion with J_PRI = {:.4} kg·m²",
+        "\n9. Beyond the course project: the real motion with J_PRI = {:.4} kg·m²",
         e.flywheel
     );
     println!("─────────────────────────────────────────────────────────────");
@@ -412,7 +412,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         t.row(&format!("B{k}"), &format!("B{k}"), sol.rhs[k]);
     }
     t.row("det A", "check.det_A", sol.matrix.determinant());
-    t.heading("12. The reactions at f: the seed's 18 unknowns [N, N·m]");
+    t.heading("12. The reactions at f: the course project's 18 unknowns [N, N·m]");
     let names = ["F10", "F12", "F30", "F34", "F23", "F45", "F50"];
     for (axis, offset) in [("x", 0), ("y", 7)] {
         for (k, n) in names.iter().enumerate() {

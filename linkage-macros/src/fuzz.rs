@@ -52,7 +52,7 @@ fn runner() -> TestRunner {
     TestRunner::new(config)
 }
 
-/// Real attributes and their structs: the seed's four-bar with points, a
+/// Real attributes and their structs: the worksheet's four-bar with points, a
 /// slider-crank, a two-loop six-bar and the shaper's mechanism, each one
 /// accepted as written.
 const CORPUS: &[(&str, &str)] = &[

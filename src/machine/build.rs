@@ -86,7 +86,7 @@ impl<L: Linkage<M, 1>, const M: usize> MachineBuilder<L, M> {
     }
 
     /// Poses precomputed over the cycle (default 720, from 8 to 10⁶): they
-    /// seed every later position solve and bracket the loads' kinks.
+    /// start every later position solve and bracket the loads' kinks.
     pub fn grid(mut self, poses: usize) -> Self {
         self.grid = poses;
         self

@@ -1,17 +1,11 @@
 //! Mechanisms and helpers shared by the integration tests.
 #![allow(dead_code)]
 
+#[allow(unused_imports)] // not every test binary uses it
 pub use linkage::mechanisms::FourBar;
 use linkage::num_dual::{Dual2_64, Dual64};
 use linkage::prelude::*;
 use std::f64::consts::{PI, TAU};
-
-pub const SEED: FourBar = FourBar {
-    l1: 80.0,
-    l2: 20.0,
-    l3: 50.0,
-    l4: 70.0,
-};
 
 /// ω2 = 400 rpm
 pub const OMEGA2: f64 = 400.0 * TAU / 60.0;

@@ -1,6 +1,6 @@
 //! Failures the long campaigns found, kept as fixed cases.
 
-use crate::common::{FourBar, SEED};
+use crate::common::FourBar;
 use crate::harness::{Truth, four_bar_truth};
 use linkage::prelude::*;
 
@@ -43,17 +43,17 @@ fn regressions() {
 fn huge_steps_keep_their_speed() {
     let from = 20f64.to_radians();
     let [t3, t4] = linkage::closed_form::FourBar {
-        l1: SEED.l1,
-        l2: SEED.l2,
-        l3: SEED.l3,
-        l4: SEED.l4,
+        l1: FourBar::WORKSHEET.l1,
+        l2: FourBar::WORKSHEET.l2,
+        l3: FourBar::WORKSHEET.l3,
+        l4: FourBar::WORKSHEET.l4,
     }
     .position(from, 1.0)
     .unwrap();
     for step in [1e160, -1e200] {
         // One pose only (the first step cannot be taken): the start, at the
         // sweep's speed.
-        let summary = SEED.sweep_each(
+        let summary = FourBar::WORKSHEET.sweep_each(
             &vector![t3, t4],
             &Drive::Rocking {
                 from: vector![from],
@@ -191,7 +191,7 @@ fn endless_drives_hit_the_substep_limit() {
         to: vector![1e4],
         steps: 2,
     };
-    let result = SEED.sweep(&guess, &far, &options);
+    let result = FourBar::WORKSHEET.sweep(&guess, &far, &options);
     assert!(
         matches!(
             result,
@@ -209,7 +209,9 @@ fn endless_drives_hit_the_substep_limit() {
         to: vector![std::f64::consts::TAU],
         steps: 36,
     };
-    let sweep = SEED.sweep(&guess, &turn, &options).expect("one turn");
+    let sweep = FourBar::WORKSHEET
+        .sweep(&guess, &turn, &options)
+        .expect("one turn");
     assert!(sweep.complete && sweep.poses.len() == 37);
 }
 
@@ -290,14 +292,14 @@ fn angles_are_scale_invariant() {
 fn subnormal_velocities_with_an_ordinary_acceleration() {
     let options = Options::default();
     let v = vector![20f64.to_radians()];
-    let pose = SEED
+    let pose = FourBar::WORKSHEET
         .solve_position(
             &vector![70f64.to_radians(), -50f64.to_radians()],
             &v,
             &options,
         )
         .expect("the worksheet's pose");
-    let rest = SEED
+    let rest = FourBar::WORKSHEET
         .acceleration(
             &pose.u,
             &v,
@@ -314,7 +316,7 @@ fn subnormal_velocities_with_an_ordinary_acceleration() {
     ] {
         let with = Options { method, ..options };
         let udot = vector![1e-309, -2e-309];
-        let uddot = SEED
+        let uddot = FourBar::WORKSHEET
             .acceleration(&pose.u, &v, &udot, &vector![1e-309], &vector![1.0], &with)
             .expect("γ ≈ 1e-618 is nothing beside Ψ_v v̈");
         assert!((uddot - rest).amax() <= 1e-15 * rest.amax(), "{method:?}");

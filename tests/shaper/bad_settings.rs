@@ -1,6 +1,6 @@
 //! Bad settings, bad machines and a bad synthesis are typed errors.
 
-use crate::machine::{Data, SEED, Shaper, machine, synthesize};
+use crate::machine::{COURSE_PROJECT, Data, Shaper, machine, synthesize};
 use linkage::error::{NameKind, UnknownName};
 use linkage::machine::{Machine, MachineError, Motor, flywheel};
 use linkage::prelude::*;
@@ -13,16 +13,16 @@ use std::f64::consts::TAU;
 #[test]
 fn bad_settings_of_a_machine_are_typed_errors() {
     use linkage::machine::{Body, Load, MachineError as E};
-    let shaper = synthesize(&SEED).unwrap();
-    let m = machine(&shaper, &SEED).unwrap();
-    let omega = TAU * SEED.n1;
+    let shaper = synthesize(&COURSE_PROJECT).unwrap();
+    let m = machine(&shaper, &COURSE_PROJECT).unwrap();
+    let omega = TAU * COURSE_PROJECT.n1;
     for delta in [2.0, 3.0, 0.0, -0.1, f64::NAN] {
         assert!(
             matches!(m.energy_method(omega, delta), Err(E::BadSetting { .. })),
             "δ = {delta}"
         );
     }
-    let e = m.energy_method(omega, SEED.delta).unwrap();
+    let e = m.energy_method(omega, COURSE_PROJECT.delta).unwrap();
     for motor in [
         Motor::Constant { moment: f64::NAN },
         Motor::Linear {
@@ -92,7 +92,10 @@ fn bad_settings_of_a_machine_are_typed_errors() {
 #[test]
 fn the_synthesis_rejects_a_time_ratio_of_one_or_less() {
     for k_v in [0.8, 1.0, f64::NAN, f64::INFINITY] {
-        let data = Data { k_v, ..SEED };
+        let data = Data {
+            k_v,
+            ..COURSE_PROJECT
+        };
         let err = synthesize(&data).err();
         assert!(
             matches!(
@@ -109,7 +112,7 @@ fn the_synthesis_rejects_a_time_ratio_of_one_or_less() {
     assert!(
         synthesize(&Data {
             stroke: 0.0,
-            ..SEED
+            ..COURSE_PROJECT
         })
         .is_err()
     );
@@ -117,7 +120,7 @@ fn the_synthesis_rejects_a_time_ratio_of_one_or_less() {
 
 #[test]
 fn bad_machines_are_typed_errors() {
-    let shaper = synthesize(&SEED).unwrap();
+    let shaper = synthesize(&COURSE_PROJECT).unwrap();
     let err = Machine::new(shaper, shaper.guess())
         .body(linkage::machine::Body::new("ram").mass(1.0).at("Q"))
         .build()

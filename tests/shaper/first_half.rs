@@ -1,9 +1,9 @@
 //! The first half of the course project — synthesis, kinematics, reduced
 //! dynamics, work, the flywheel by the energy method, ω1 and ε1 — against
-//! the 50-digit reference and the seed's printed numbers, and the seed's
+//! the 50-digit reference and the course project's printed numbers, and the course project's
 //! closed form against Newton.
 
-use crate::machine::{Data, SEED, Shaper, machine, synthesize};
+use crate::machine::{COURSE_PROJECT, Data, Shaper, machine, synthesize};
 use crate::reference::{printed, reference};
 use linkage::machine::flywheel;
 use linkage::prelude::*;
@@ -14,7 +14,7 @@ use std::f64::consts::TAU;
 fn ours(data: &Data) -> HashMap<&'static str, f64> {
     let shaper = synthesize(data).unwrap();
     let m = machine(&shaper, data).expect("the shaper runs its cycle");
-    let f = shaper.seed_position();
+    let f = shaper.analysed_position();
     let omega = TAU * data.n1;
     let mut out = HashMap::new();
     let mut put = |k: &'static str, v: f64| {
@@ -152,7 +152,7 @@ fn tolerance(key: &str) -> f64 {
 #[test]
 fn every_first_half_value_matches_the_50_digit_reference() {
     let reference = reference();
-    let ours = ours(&SEED);
+    let ours = ours(&COURSE_PROJECT);
     assert!(ours.len() >= 74, "{} values", ours.len());
     let mut worst = ("", 0.0_f64);
     for (key, value) in &ours {
@@ -172,7 +172,7 @@ fn every_first_half_value_matches_the_50_digit_reference() {
     eprintln!("worst relative difference: {} {:e}", worst.0, worst.1);
 }
 
-/// Where the seed's printed number is not the exact value, the reason (see
+/// Where the course project's printed number is not the exact value, the reason (see
 /// tests/data/README.md): Mathcad integrated the moment with a quadrature
 /// off by 1.7e-4 relative, and everything downstream inherits it; ε1 at
 /// φ = 0 inherits it through ω1; the rim's mass through D2⁵ ∝ J_m.
@@ -193,25 +193,25 @@ const QUADRATURE_CHAIN: [&str; 13] = [
 ];
 
 #[test]
-fn the_seeds_printed_numbers_agree_to_their_digits_or_by_the_known_quadrature_error() {
+fn the_course_projects_printed_numbers_agree_to_their_digits_or_by_the_known_quadrature_error() {
     let reference = reference();
-    let ours = ours(&SEED);
+    let ours = ours(&COURSE_PROJECT);
     let mut checked = 0;
     for (key, value) in &ours {
         let Some((_, Some(text))) = reference.get(*key) else {
             continue;
         };
-        let (seed, half) = printed(text);
+        let (printed_value, half) = printed(text);
         checked += 1;
         if QUADRATURE_CHAIN.contains(key) {
-            let relative = (value - seed).abs() / seed.abs();
+            let relative = (value - printed_value).abs() / printed_value.abs();
             assert!(
-                (value - seed).abs() > half && relative < 2e-3,
+                (value - printed_value).abs() > half && relative < 2e-3,
                 "{key}: ours {value}, printed {text}: expected the known quadrature offset, got {relative:e}"
             );
         } else {
             assert!(
-                (value - seed).abs() <= half * (1.0 + 1e-9),
+                (value - printed_value).abs() <= half * (1.0 + 1e-9),
                 "{key}: ours {value}, printed {text} (±{half})"
             );
         }
@@ -220,9 +220,9 @@ fn the_seeds_printed_numbers_agree_to_their_digits_or_by_the_known_quadrature_er
 }
 
 #[test]
-fn the_seeds_closed_form_is_what_newton_finds() {
-    let shaper = synthesize(&SEED).unwrap();
-    let m = machine(&shaper, &SEED).unwrap();
+fn the_course_projects_closed_form_is_what_newton_finds() {
+    let shaper = synthesize(&COURSE_PROJECT).unwrap();
+    let m = machine(&shaper, &COURSE_PROJECT).unwrap();
     for k in 0..360 {
         let phi = (k as f64).to_radians();
         let a = m.analysis(phi).unwrap();

@@ -1,7 +1,7 @@
-//! The force analysis at the seed's position against the 50-digit
+//! The force analysis at the course project's position against the 50-digit
 //! reference, and the balancing moment three ways over a cycle.
 
-use crate::machine::{self, Data, SEED, Shaper, machine, synthesize};
+use crate::machine::{self, COURSE_PROJECT, Data, Shaper, machine, synthesize};
 use crate::reference::{printed, reference};
 use linkage::prelude::*;
 use std::collections::HashMap;
@@ -12,7 +12,7 @@ use std::f64::consts::TAU;
 fn ours_kinetostatics(data: &Data) -> HashMap<String, f64> {
     let shaper = synthesize(data).unwrap();
     let m = machine(&shaper, data).unwrap();
-    let f = shaper.seed_position();
+    let f = shaper.analysed_position();
     let omega = TAU * data.n1;
     let e = m.energy_method(omega, data.delta).unwrap();
     let statics = machine::kinetostatics(&m, e.flywheel).unwrap();
@@ -67,13 +67,13 @@ fn ours_kinetostatics(data: &Data) -> HashMap<String, f64> {
 #[test]
 fn the_reaction_table_matches_the_50_digit_reference() {
     let reference = reference();
-    let ours = ours_kinetostatics(&SEED);
+    let ours = ours_kinetostatics(&COURSE_PROJECT);
     // Components that vanish exactly (forces normal to a guide): to the
     // rounding of the 18×18 solve, relative to the largest reaction.
     let scale = 1600.0;
     let mut printed_checked = 0;
     for (key, value) in &ours {
-        let (exact, seed) = reference
+        let (exact, printed_text) = reference
             .get(key)
             .unwrap_or_else(|| panic!("{key} not in the reference"));
         let error = if *exact == 0.0 || key.starts_with("shaper.check.M1") {
@@ -85,7 +85,7 @@ fn the_reaction_table_matches_the_50_digit_reference() {
             error <= 1e-9,
             "{key}: ours {value}, exact {exact}, {error:e}"
         );
-        if let Some(text) = seed {
+        if let Some(text) = printed_text {
             let (printed, half) = printed(text);
             printed_checked += 1;
             let explained = [
@@ -119,10 +119,10 @@ fn the_reaction_table_matches_the_50_digit_reference() {
 
 #[test]
 fn the_balancing_moment_three_ways_over_a_cycle() {
-    let shaper = synthesize(&SEED).unwrap();
-    let m = machine(&shaper, &SEED).unwrap();
-    let omega = TAU * SEED.n1;
-    let e = m.energy_method(omega, SEED.delta).unwrap();
+    let shaper = synthesize(&COURSE_PROJECT).unwrap();
+    let m = machine(&shaper, &COURSE_PROJECT).unwrap();
+    let omega = TAU * COURSE_PROJECT.n1;
+    let e = m.energy_method(omega, COURSE_PROJECT.delta).unwrap();
     let statics = machine::kinetostatics(&m, e.flywheel).unwrap();
     let (mut against_power, mut against_dynamics) = (0.0_f64, 0.0_f64);
     for k in 0..360 {

@@ -1,4 +1,4 @@
-//! The shaping machine of the course project (seed 002), first half:
+//! The shaping machine of the course project, first half:
 //! synthesis, kinematics, reduced dynamics, work, the flywheel by the energy
 //! method, ω1 and ε1 — against the 50-digit reference
 //! (tests/data/shaper_cam_reference.csv), and, with other inputs, against

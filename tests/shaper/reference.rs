@@ -1,9 +1,9 @@
 //! The 50-digit reference (tests/data/shaper_cam_reference.csv) and the
-//! seed's printed digits.
+//! course project's printed digits.
 
 use std::collections::HashMap;
 
-/// key → (exact value, the seed's printed text).
+/// key → (exact value, the course project's printed text).
 pub(crate) fn reference() -> HashMap<String, (f64, Option<String>)> {
     include_str!("../data/shaper_cam_reference.csv")
         .lines()
@@ -11,13 +11,13 @@ pub(crate) fn reference() -> HashMap<String, (f64, Option<String>)> {
         .map(|l| {
             let cols: Vec<&str> = l.split(',').collect();
             let value = cols[1].parse().unwrap_or(f64::NAN);
-            let seed = (!cols[2].is_empty()).then(|| cols[2].to_string());
-            (cols[0].to_string(), (value, seed))
+            let printed = (!cols[2].is_empty()).then(|| cols[2].to_string());
+            (cols[0].to_string(), (value, printed))
         })
         .collect()
 }
 
-/// The printed digits of a seed value: "102.041" → (102.041, 0.0005).
+/// The printed digits of a value: "102.041" → (102.041, 0.0005).
 pub(crate) fn printed(text: &str) -> (f64, f64) {
     let text = text.trim();
     let (mantissa, exponent) = match text.split_once('e') {

@@ -2,7 +2,7 @@
 //! invariants, the real (steady) motion and its extremes, and the work of a
 //! force that jumps over any angle.
 
-use crate::machine::{Data, SEED, machine, synthesize};
+use crate::machine::{COURSE_PROJECT, Data, machine, synthesize};
 use linkage::machine::{MachineError, Motor};
 use std::f64::consts::TAU;
 
@@ -12,7 +12,7 @@ fn other_inputs_keep_the_methods_invariants() {
         k_v: 1.4,
         stroke: 0.4,
         m5: 80.0,
-        ..SEED
+        ..COURSE_PROJECT
     };
     let shaper = synthesize(&data).unwrap();
     let m = machine(&shaper, &data).unwrap();
@@ -74,10 +74,10 @@ fn other_inputs_keep_the_methods_invariants() {
 
 #[test]
 fn the_real_motion_is_periodic_and_conserves_energy() {
-    let shaper = synthesize(&SEED).unwrap();
-    let m = machine(&shaper, &SEED).unwrap();
-    let omega = TAU * SEED.n1;
-    let e = m.energy_method(omega, SEED.delta).unwrap();
+    let shaper = synthesize(&COURSE_PROJECT).unwrap();
+    let m = machine(&shaper, &COURSE_PROJECT).unwrap();
+    let omega = TAU * COURSE_PROJECT.n1;
+    let e = m.energy_method(omega, COURSE_PROJECT.delta).unwrap();
     let real = m
         .steady_motion(
             e.flywheel,
@@ -103,7 +103,7 @@ fn the_real_motion_is_periodic_and_conserves_energy() {
     assert!((0.5 * (real.omega_min.1 + real.omega_max.1) - omega).abs() < 1e-9);
     // The energy method's estimate against the achieved fluctuation.
     assert!(
-        real.delta < SEED.delta && real.delta > 0.9 * SEED.delta,
+        real.delta < COURSE_PROJECT.delta && real.delta > 0.9 * COURSE_PROJECT.delta,
         "{}",
         real.delta
     );
@@ -117,7 +117,7 @@ fn the_real_motion_is_periodic_and_conserves_energy() {
     let settled = m.steady_motion(e.flywheel, motor, omega, 4000).unwrap();
     let n = settled.omega.len();
     assert!((settled.omega[n - 1] - settled.omega[0]).abs() < 1e-9);
-    assert!(settled.delta < SEED.delta);
+    assert!(settled.delta < COURSE_PROJECT.delta);
 }
 
 /// The real motion's extremes of ω are located between the nodes (ε = 0
@@ -125,10 +125,10 @@ fn the_real_motion_is_periodic_and_conserves_energy() {
 /// a coarse and a fine grid far better than the grid's spacing would allow.
 #[test]
 fn the_real_motion_locates_its_extremes() {
-    let shaper = synthesize(&SEED).unwrap();
-    let m = machine(&shaper, &SEED).unwrap();
-    let omega = TAU * SEED.n1;
-    let e = m.energy_method(omega, SEED.delta).unwrap();
+    let shaper = synthesize(&COURSE_PROJECT).unwrap();
+    let m = machine(&shaper, &COURSE_PROJECT).unwrap();
+    let omega = TAU * COURSE_PROJECT.n1;
+    let e = m.energy_method(omega, COURSE_PROJECT.delta).unwrap();
     let motor = Motor::Constant {
         moment: e.driving_moment,
     };
@@ -172,7 +172,7 @@ fn a_force_that_jumps_and_work_over_any_angle() {
             (0.95, 0.0),
             (1.0, 0.0),
         ],
-        ..SEED
+        ..COURSE_PROJECT
     };
     let shaper = synthesize(&data).unwrap();
     let m = machine(&shaper, &data).unwrap();

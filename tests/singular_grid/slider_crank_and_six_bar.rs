@@ -1,7 +1,7 @@
 //! Branch points beyond the four-bar: a slider-crank with r = l, and a Watt
 //! six-bar whose second loop is a change-point four-bar.
 
-use crate::common::SEED;
+use crate::common::FourBar;
 use crate::harness::{Tally, campaign, full_turns, report, step_counts};
 use linkage::closed_form::{self, circle_intersection};
 use linkage::prelude::*;
@@ -101,7 +101,12 @@ fn six_bar_pose(m: &WattSixBar, v: f64, side: f64) -> Option<[f64; 4]> {
 #[test]
 fn six_bar_with_a_change_point_dyad() {
     let began = Instant::now();
-    let (l1, l2, l3, l4) = (SEED.l1, SEED.l2, SEED.l3, SEED.l4);
+    let (l1, l2, l3, l4) = (
+        FourBar::WORKSHEET.l1,
+        FourBar::WORKSHEET.l2,
+        FourBar::WORKSHEET.l3,
+        FourBar::WORKSHEET.l4,
+    );
     let four = closed_form::FourBar { l1, l2, l3, l4 };
     let theta2 = 2.0;
     let [_, theta4] = four.position(theta2, 1.0).unwrap();

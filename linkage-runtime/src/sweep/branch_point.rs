@@ -78,11 +78,11 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         let mut hessian = DMatrix::zeros(n, n);
         for j in 0..n {
             for k in j..n {
-                // Seed x_j with ε₁ and x_k with ε₂: the ε₁ε₂ part of Ψ is
+                // Give x_j the ε₁ part and x_k the ε₂ part: the ε₁ε₂ part of Ψ is
                 // ∂²Ψ/∂x_j∂x_k.
-                let seed = |index: usize, c: usize| if index == c { 1.0 } else { 0.0 };
+                let unit = |index: usize, c: usize| if index == c { 1.0 } else { 0.0 };
                 let uh = SVector::<HyperDual64, M>::from_fn(|c, _| {
-                    HyperDual64::new(u[c], seed(j, c), seed(k, c), 0.0)
+                    HyperDual64::new(u[c], unit(j, c), unit(k, c), 0.0)
                 });
                 let vh = SVector::<HyperDual64, F>::from_fn(|c, _| {
                     let e1 = if j == M { along[c] } else { 0.0 };

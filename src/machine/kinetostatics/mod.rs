@@ -11,7 +11,7 @@
 //! the centre of mass, −I·ε_body, and −J·ε for a rotor (a flywheel) on it.
 //! One body, the driver, carries the unknown balancing moment.
 //!
-//! The unknowns, in the seed's order: the x components of every joint's
+//! The unknowns, in the course project's order: the x components of every joint's
 //! force in the table's order, then the y components, then the prismatic
 //! joints' moments, then the balancing moment. The equations: ΣFx = 0 for
 //! bodies 1…n, ΣFy = 0, ΣM about the origin = 0, then one condition per
@@ -167,7 +167,7 @@ pub struct Reactions {
     pub joints: Vec<JointReaction>,
     /// The balancing moment on the driver (positive counter-clockwise).
     pub driving_moment: f64,
-    /// The system A·x = b as assembled, and x, in the seed's order.
+    /// The system A·x = b as assembled, and x, in the course project's order.
     pub matrix: DMatrix<f64>,
     pub rhs: DVector<f64>,
     pub unknowns: DVector<f64>,
