@@ -294,16 +294,19 @@ fn read_csv(path: &Path) -> Vec<Result> {
     text.lines()
         .filter(|l| !l.starts_with('#') && !l.starts_with("workload"))
         .filter_map(|l| {
-            let f: Vec<&str> = l.split(',').collect();
-            if f.len() < 7 {
+            // workload, method, then five numbers; a method's name may
+            // hold commas ("Newton per sample, step tol 1e-4").
+            let (workload, rest) = l.split_once(',')?;
+            let f: Vec<&str> = rest.rsplitn(6, ',').collect();
+            if f.len() < 6 {
                 return None;
             }
             Some(Result {
-                workload: f[0].into(),
-                method: f[1].into(),
-                ns: f[2].parse().ok()?,
-                errors: [f[3].parse().ok()?, f[4].parse().ok()?, f[5].parse().ok()?],
-                samples: f[6].parse().ok()?,
+                workload: workload.into(),
+                method: f[5].into(),
+                ns: f[4].parse().ok()?,
+                errors: [f[3].parse().ok()?, f[2].parse().ok()?, f[1].parse().ok()?],
+                samples: f[0].parse().ok()?,
             })
         })
         .collect()
@@ -341,7 +344,7 @@ fn chart(results: &[Result], path: &Path) -> std::result::Result<(), Box<dyn std
     root.fill(&WHITE)?;
     let (top, body) = root.split_vertically(34);
     top.draw(&Text::new(
-        "The seed four-bar over a revolution (1 008 000 samples): time per sample against worst relative error",
+        "The worksheet's four-bar over a revolution (1 008 000 samples): time per sample against worst relative error",
         (14, 9),
         ("sans-serif", 17).into_font(),
     ))?;
@@ -417,7 +420,8 @@ fn chart(results: &[Result], path: &Path) -> std::result::Result<(), Box<dyn std
 fn main() -> std::result::Result<(), Box<dyn std::error::Error>> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let ours_path = root.join("benches/results/ours.csv");
-    let ours = if std::env::args().any(|a| a == "--chart") {
+    let chart_only = std::env::args().any(|a| a == "--chart");
+    let ours = if chart_only {
         read_csv(&ours_path)
     } else {
         let measured = measure();
@@ -430,6 +434,10 @@ fn main() -> std::result::Result<(), Box<dyn std::error::Error>> {
     print_table(&all);
     let figure = root.join("docs/figures/speed_accuracy.svg");
     chart(&all, &figure)?;
-    println!("\nwrote {} and {}", ours_path.display(), figure.display());
+    if chart_only {
+        println!("\nread {}, wrote {}", ours_path.display(), figure.display());
+    } else {
+        println!("\nwrote {} and {}", ours_path.display(), figure.display());
+    }
     Ok(())
 }
