@@ -6,15 +6,25 @@ use crate::error::{Error, Stage};
 use crate::linalg::pow2;
 
 /// Checks that every entry of `values` is finite.
+#[inline]
 pub(crate) fn check_input(argument: &'static str, values: &[f64]) -> Result<(), Error> {
-    match values.iter().position(|x| !x.is_finite()) {
-        None => Ok(()),
-        Some(index) => Err(Error::NonFiniteInput {
-            argument,
-            index,
-            value: values[index],
-        }),
+    if all_finite(values) {
+        return Ok(());
     }
+    let index = values.iter().position(|x| !x.is_finite()).unwrap_or(0);
+    Err(Error::NonFiniteInput {
+        argument,
+        index,
+        value: values[index],
+    })
+}
+
+/// Whether every entry is finite, without a branch per entry: x·0 is 0 for
+/// a finite x and NaN for an infinite or NaN one, and a sum with a NaN is
+/// NaN.
+#[inline(always)]
+fn all_finite(values: &[f64]) -> bool {
+    values.iter().fold(0.0, |sum, x| sum + x * 0.0) == 0.0
 }
 
 /// The smallest scale of a nonzero column or row that keeps relative
@@ -92,12 +102,13 @@ pub(crate) fn check_result(
 }
 
 /// Checks that a computed quantity is finite.
+#[inline]
 pub(crate) fn check_value(
     stage: Stage,
     quantity: &'static str,
     values: &[f64],
 ) -> Result<(), Error> {
-    if values.iter().all(|x| x.is_finite()) {
+    if all_finite(values) {
         Ok(())
     } else {
         Err(Error::NonFiniteValue { stage, quantity })

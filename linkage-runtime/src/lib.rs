@@ -35,6 +35,7 @@ mod solve;
 mod sources;
 mod sweep;
 mod symbolic;
+mod trig;
 
 pub use error::{Error, Stage};
 pub use linalg::{Inverse, determinant, invert, scaled_svd};

@@ -2,6 +2,7 @@
 //! reciprocal condition number, in closed form for m ≤ 3.
 
 use crate::error::{Error, Stage};
+use crate::options::Options;
 use nalgebra::{SMatrix, SVector};
 
 /// An inverted square matrix, its determinant and its conditioning.
@@ -112,23 +113,16 @@ fn invert_at_scale<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
 }
 
 /// `a` inverted, or [`Error::Singular`] in `stage` if its reciprocal
-/// condition number is 0 or below `min_rcond` (the least that keeps the
-/// requested accuracy there, [`crate::Options::min_rcond`]).
+/// condition number is 0 or does not keep the requested accuracy there
+/// ([`Options::keeps_accuracy`]).
 pub(crate) fn factor<const M: usize>(
     a: &SMatrix<f64, M, M>,
     stage: Stage,
-    min_rcond: f64,
+    options: &Options,
 ) -> Result<Inverse<M>, Error> {
     let inv = invert(a);
-    if inv.rcond > 0.0 && inv.rcond >= min_rcond {
-        Ok(inv)
-    } else {
-        Err(Error::Singular {
-            stage,
-            rcond: inv.rcond,
-            min_rcond,
-        })
-    }
+    options.require_accuracy(stage, inv.rcond)?;
+    Ok(inv)
 }
 
 /// adj A and det A for m ≤ 3 (the adjugate is the transpose of the

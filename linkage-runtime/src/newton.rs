@@ -15,8 +15,9 @@ use crate::error::{Error, Stage};
 use crate::linalg::{factor, invert};
 use crate::linkage::Linkage;
 use crate::options::Options;
-use crate::results::{Iterate, Position};
+use crate::results::{Iterate, Kinematics, Position};
 use crate::sources::psi_and_psi_u;
+use crate::trig::TrigCarrier;
 use nalgebra::{SMatrix, SVector};
 
 /// Ψ_uᵀΨ below this fraction of ‖Ψ_u‖·‖Ψ‖ is a stationary point of ‖Ψ‖².
@@ -103,7 +104,7 @@ pub(crate) fn solve<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
                 }
             }
         } else {
-            let inv = factor(&psi_u, Stage::Position, options.min_rcond(Stage::Position))?;
+            let inv = factor(&psi_u, Stage::Position, options)?;
             -(inv.inverse * psi)
         };
         u += delta;
@@ -117,13 +118,7 @@ pub(crate) fn solve<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
             residual,
             step,
         });
-        let scale = u.amax().max(1.0);
-        let small_step = step <= options.step_tol * scale;
-        // At rounding level the steps stop shrinking: that is convergence
-        // too, whatever the step tolerance asked for.
-        let stagnated = step >= previous_step && step <= 64.0 * f64::EPSILON * scale;
-        previous_step = step;
-        if (small_step || stagnated || residual == 0.0) && residual <= options.residual_tol {
+        if converged(&u, step, previous_step, residual, options) {
             return Ok(Position {
                 u,
                 iterations: iteration,
@@ -131,12 +126,117 @@ pub(crate) fn solve<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
                 psi_u,
             });
         }
+        previous_step = step;
     }
     Err(Error::NotConverged {
         iterations: options.max_iterations,
         residual,
         step,
     })
+}
+
+/// Plain Newton–Raphson whose every evaluation is the fused kernel
+/// ([`Linkage::kinematics_with_trig`]): Ψ, Ψ_u and Ψ_u⁻¹ for the steps and,
+/// at the iterate that converges, the velocities and accelerations too. So
+/// an analysis evaluates the mechanism once more than it takes steps (the
+/// evaluation that confirms convergence is the one that gives the
+/// kinematics), and the drivers' sines and cosines once. The same iterates,
+/// tests and errors as [`solve`] without damping, bit for bit.
+#[inline]
+pub(crate) fn solve_fused<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
+    model: &L,
+    u0: &SVector<f64, M>,
+    v: &SVector<f64, F>,
+    vdot: &SVector<f64, F>,
+    vddot: &SVector<f64, F>,
+    options: &Options,
+) -> Result<(Position<M>, Kinematics<M, F>), Error> {
+    check_input("u0", u0.as_slice())?;
+    check_input("v", v.as_slice())?;
+    options.check()?;
+    // The sines and cosines carried from iterate to iterate, but computed
+    // exactly where the evaluation may confirm convergence: a returned pose
+    // closes to its residual as `psi` computes it, to the bit.
+    let mut trig = TrigCarrier::new();
+    let mut evaluate = |u: &SVector<f64, M>, exact: bool| -> Result<Kinematics<M, F>, Error> {
+        let (trig_u, trig_v) = if exact {
+            trig.exactly_at(&L::TRIG_U, &L::TRIG_V, u, v)
+        } else {
+            trig.at(&L::TRIG_U, &L::TRIG_V, u, v)
+        };
+        let k = model.kinematics_with_trig(u, v, &trig_u, &trig_v, vdot, vddot);
+        check_value(Stage::Position, "Ψ", k.psi.as_slice())?;
+        check_value(Stage::Position, "Ψ_u", k.psi_u.as_slice())?;
+        Ok(k)
+    };
+    let mut u = *u0;
+    let mut k = evaluate(&u, true)?;
+    let mut residual = k.psi.amax();
+    let mut step = f64::INFINITY;
+    let mut previous_step = f64::INFINITY;
+    for iteration in 1..=options.max_iterations {
+        options.require_accuracy(Stage::Position, k.rcond)?;
+        let delta = -(k.inverse * k.psi);
+        u += delta;
+        step = delta.amax();
+        check_value(Stage::Position, "u", u.as_slice())?;
+        // Only a step that passes the step test, or an exact zero of Ψ,
+        // ends the iteration; the latter is confirmed on exact sines.
+        let last = step_is_final(&u, step, previous_step, options);
+        k = evaluate(&u, last)?;
+        residual = k.psi.amax();
+        if !last && residual == 0.0 {
+            k = evaluate(&u, true)?;
+            residual = k.psi.amax();
+        }
+        if converged(&u, step, previous_step, residual, options) {
+            let position = Position {
+                u,
+                iterations: iteration,
+                residual,
+                psi_u: k.psi_u,
+            };
+            return Ok((position, k));
+        }
+        previous_step = step;
+    }
+    Err(Error::NotConverged {
+        iterations: options.max_iterations,
+        residual,
+        step,
+    })
+}
+
+/// Whether the iterate `u`, reached by a step of size `step` after one of
+/// `previous_step`, with ‖Ψ‖∞ = `residual`, is a solution: the residual
+/// within tolerance, and the step final ([`step_is_final`]) or the residual
+/// exactly 0.
+#[inline]
+fn converged<const M: usize>(
+    u: &SVector<f64, M>,
+    step: f64,
+    previous_step: f64,
+    residual: f64,
+    options: &Options,
+) -> bool {
+    (step_is_final(u, step, previous_step, options) || residual == 0.0)
+        && residual <= options.residual_tol
+}
+
+/// Whether a step ends Newton's iteration if the residual is within
+/// tolerance: it is small, or no longer shrinking at rounding level (which
+/// is convergence too, whatever the step tolerance asked for).
+#[inline]
+fn step_is_final<const M: usize>(
+    u: &SVector<f64, M>,
+    step: f64,
+    previous_step: f64,
+    options: &Options,
+) -> bool {
+    let scale = u.amax().max(1.0);
+    let small_step = step <= options.step_tol * scale;
+    let stagnated = step >= previous_step && step <= 64.0 * f64::EPSILON * scale;
+    small_step || stagnated
 }
 
 /// How far from a least-squares minimum of ½‖Ψ‖²: the largest |cos| of

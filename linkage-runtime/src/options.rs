@@ -123,6 +123,43 @@ impl Options {
         }
     }
 
+    /// Whether a reciprocal condition number `rcond` of Ψ_u keeps
+    /// [`Options::accuracy`] in `stage`: rcond ≥ [`Options::min_rcond`],
+    /// decided as rcondᵏ ≥ ε/accuracy without taking the root (a cube root
+    /// costs more than the rest of an analysis's checks). The same test to
+    /// rounding; an exactly singular Ψ_u (rcond = 0) never passes.
+    #[inline]
+    pub fn keeps_accuracy(&self, stage: Stage, rcond: f64) -> bool {
+        // Below 2⁻³⁰⁰ a cube would leave the normal range: the root decides.
+        const SMALL: f64 = crate::linalg::pow2(-300);
+        let ordinary = rcond >= SMALL; // false for NaN too
+        if !ordinary {
+            return rcond > 0.0 && rcond >= self.min_rcond(stage);
+        }
+        let ratio = f64::EPSILON / self.accuracy;
+        let power = match stage {
+            Stage::Position => rcond,
+            Stage::Velocity => rcond * rcond,
+            Stage::Acceleration | Stage::Points => rcond * rcond * rcond,
+        };
+        power >= ratio
+    }
+
+    /// [`Error::Singular`] in `stage` unless `rcond` keeps the accuracy
+    /// there ([`Options::keeps_accuracy`]).
+    #[inline]
+    pub(crate) fn require_accuracy(&self, stage: Stage, rcond: f64) -> Result<(), Error> {
+        if self.keeps_accuracy(stage, rcond) {
+            Ok(())
+        } else {
+            Err(Error::Singular {
+                stage,
+                rcond,
+                min_rcond: self.min_rcond(stage),
+            })
+        }
+    }
+
     /// The defaults with the damped Newton method.
     pub fn damped() -> Options {
         Options {

@@ -8,13 +8,16 @@ use crate::error::{Error, Stage};
 use crate::linalg::{augmented_condition, factor, invert, power_of_two_near};
 use crate::linkage::Linkage;
 use crate::options::{AccelerationMethod, JacobianSource, Options};
-use crate::results::{Analysis, Velocity};
+use crate::results::{Analysis, Kinematics, Velocity};
 use crate::{newton, sources};
 use nalgebra::{SMatrix, SVector};
 
 /// [`Linkage::analyze`]: Newton–Raphson, then the velocities and the
 /// accelerations (by the fused kernel where it serves, else by the separate
-/// solves), then the points.
+/// solves), then the points. With the generated code, the fused γ and
+/// plain Newton (the defaults), every Newton evaluation is the fused kernel
+/// and the one that confirms convergence gives the kinematics
+/// ([`newton::solve_fused`]).
 pub(crate) fn analyze<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     model: &L,
     u_guess: &SVector<f64, M>,
@@ -25,19 +28,27 @@ pub(crate) fn analyze<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>
 ) -> Result<Analysis<M, F, L::Points>, Error> {
     check_input("vdot", vdot.as_slice())?;
     check_input("vddot", vddot.as_slice())?;
-    let position = newton::solve(model, u_guess, v, options, &mut |_| {})?;
-    let u = position.u;
     // The fused kernel where its numbers are ordinary; the separate
     // solves, which scale γ and check for underflow, at the extremes.
-    let fused = if options.jacobian == JacobianSource::Generated
+    let fused_serves = options.jacobian == JacobianSource::Generated
         && options.method == AccelerationMethod::Fused
         && ordinary(vdot.amax(), true)
-        && ordinary(vddot.amax(), true)
-    {
-        fused_kinematics(model, &u, v, vdot, vddot, options)?
+        && ordinary(vddot.amax(), true);
+    let (position, fused) = if fused_serves && !options.damped {
+        let (position, k) = newton::solve_fused(model, u_guess, v, vdot, vddot, options)?;
+        let fused = fused_kinematics(&k, vdot, vddot, options)?;
+        (position, fused)
     } else {
-        None
+        let position = newton::solve(model, u_guess, v, options, &mut |_| {})?;
+        let fused = if fused_serves {
+            let k = model.kinematics(&position.u, v, vdot, vddot);
+            fused_kinematics(&k, vdot, vddot, options)?
+        } else {
+            None
+        };
+        (position, fused)
     };
+    let u = position.u;
     let (velocity, uddot) = if let Some(fused) = fused {
         fused
     } else {
@@ -138,7 +149,7 @@ fn velocity_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     let psi_v = sources::psi_v(model, options.jacobian, u, v);
     check_value(Stage::Velocity, "Ψ_v", psi_v.as_slice())?;
     check_scale(Stage::Velocity, psi_u, &psi_v)?;
-    let inv = factor(psi_u, Stage::Velocity, options.min_rcond(Stage::Velocity))?;
+    let inv = factor(psi_u, Stage::Velocity, options)?;
     let ratios = inv.inverse * psi_v;
     let udot = -(ratios * vdot);
     check_value(Stage::Velocity, "u̇", udot.as_slice())?;
@@ -159,33 +170,26 @@ fn velocity_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
 
 /// A magnitude the fused kernel handles with full precision: within
 /// 10^±60, or zero where `zero_ok`.
+#[inline(always)]
 fn ordinary(x: f64, zero_ok: bool) -> bool {
     (zero_ok && x == 0.0) || (1e-60..=1e60).contains(&x)
 }
 
-/// Velocities and accelerations from one fused generated evaluation, with
-/// the same conditioning checks as the separate solves; `None` where the
-/// results are extreme (nonzero and outside 10^±100), which the separate
-/// solves handle with their scaling and underflow checks.
-fn fused_kinematics<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
-    model: &L,
-    u: &SVector<f64, M>,
-    v: &SVector<f64, F>,
+/// Velocities and accelerations from one fused generated evaluation `k`
+/// at the solved pose, with the same conditioning checks as the separate
+/// solves; `None` where the results are extreme (nonzero and outside
+/// 10^±60), which the separate solves handle with their scaling and
+/// underflow checks.
+#[inline]
+fn fused_kinematics<const M: usize, const F: usize>(
+    k: &Kinematics<M, F>,
     vdot: &SVector<f64, F>,
     vddot: &SVector<f64, F>,
     options: &Options,
 ) -> Result<Option<(Velocity<M, F>, SVector<f64, M>)>, Error> {
-    let k = model.kinematics(u, v, vdot, vddot);
     check_value(Stage::Velocity, "Ψ_v", k.psi_v.as_slice())?;
     let (smallest, largest) = check_scale(Stage::Velocity, &k.psi_u, &k.psi_v)?;
-    let min_rcond = options.min_rcond(Stage::Velocity);
-    if !(k.rcond > 0.0 && k.rcond >= min_rcond) {
-        return Err(Error::Singular {
-            stage: Stage::Velocity,
-            rcond: k.rcond,
-            min_rcond,
-        });
-    }
+    options.require_accuracy(Stage::Velocity, k.rcond)?;
     check_value(Stage::Velocity, "u̇", k.udot.as_slice())?;
     acceleration_conditioning(&k.psi_u, &k.psi_v, k.rcond, options)?;
     check_value(Stage::Acceleration, "ü", k.uddot.as_slice())?;
@@ -277,6 +281,9 @@ pub(crate) fn acceleration_conditioning<const M: usize, const F: usize>(
     rcond: f64,
     options: &Options,
 ) -> Result<(), Error> {
+    if options.keeps_accuracy(Stage::Acceleration, rcond) {
+        return Ok(());
+    }
     acceleration_conditioning_with(
         psi_u,
         psi_v,

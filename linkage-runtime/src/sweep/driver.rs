@@ -6,13 +6,13 @@ use super::branch_point::BRANCH_RANK;
 use super::state::{Progress, Track};
 use super::substep::Advance;
 use super::tracker::Tracker;
-use super::trig::TrigCarrier;
 use super::{Drive, Event, EventKind, SweepOptions, SweepPose, SweepSummary};
 use crate::checks::check_input;
 use crate::error::{Error, Stage};
 use crate::linalg::scaled_norm;
 use crate::linkage::Linkage;
 use crate::newton;
+use crate::trig::TrigCarrier;
 use nalgebra::SVector;
 
 /// Runs a sweep (see [`Linkage::sweep`]).

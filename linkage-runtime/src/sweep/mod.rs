@@ -55,7 +55,6 @@ mod pose;
 mod state;
 mod substep;
 mod tracker;
-mod trig;
 
 pub(crate) use driver::sweep;
 

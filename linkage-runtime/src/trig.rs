@@ -20,7 +20,7 @@ use nalgebra::SVector;
 /// 2⁻¹⁰ from its anchor it is re-anchored where it is, the `sin_cos` of the
 /// new anchor running beside the current step (the current value still
 /// comes from the old anchor), so a dense sweep stays on the short series.
-pub(super) struct TrigCarrier<const M: usize, const F: usize> {
+pub(crate) struct TrigCarrier<const M: usize, const F: usize> {
     anchor_u: [f64; M],
     trig_u: [(f64, f64); M],
     anchor_v: [f64; F],
@@ -28,7 +28,7 @@ pub(super) struct TrigCarrier<const M: usize, const F: usize> {
 }
 
 /// (sin, cos) of n angles.
-pub(super) type SinCos<const N: usize> = [(f64, f64); N];
+pub(crate) type SinCos<const N: usize> = [(f64, f64); N];
 
 /// The ranges of |δ| carried by the short and the long series.
 const SHORT_RANGE: f64 = 1.0 / 512.0;
@@ -36,7 +36,7 @@ const LONG_RANGE: f64 = 1.0 / 16.0;
 
 impl<const M: usize, const F: usize> TrigCarrier<M, F> {
     /// Anchored nowhere: the first use anchors each coordinate it needs.
-    pub(super) fn new() -> Self {
+    pub(crate) fn new() -> Self {
         TrigCarrier {
             anchor_u: [f64::NAN; M],
             trig_u: [(0.0, 1.0); M],
@@ -48,7 +48,7 @@ impl<const M: usize, const F: usize> TrigCarrier<M, F> {
     /// (sin, cos) of the masked coordinates of u and v (unspecified
     /// elsewhere).
     #[inline(always)]
-    pub(super) fn at(
+    pub(crate) fn at(
         &mut self,
         mask_u: &[bool; M],
         mask_v: &[bool; F],
@@ -57,6 +57,30 @@ impl<const M: usize, const F: usize> TrigCarrier<M, F> {
     ) -> (SinCos<M>, SinCos<F>) {
         (
             carry_all(mask_u, &mut self.anchor_u, &mut self.trig_u, u.as_slice()),
+            carry_all(mask_v, &mut self.anchor_v, &mut self.trig_v, v.as_slice()),
+        )
+    }
+
+    /// [`TrigCarrier::at`] with the masked coordinates of u anchored where
+    /// they are: their `sin_cos` exactly, bit for bit what the generated
+    /// code computes itself (v is carried; it is exact where v has not
+    /// moved from its anchor).
+    #[inline(always)]
+    pub(crate) fn exactly_at(
+        &mut self,
+        mask_u: &[bool; M],
+        mask_v: &[bool; F],
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+    ) -> (SinCos<M>, SinCos<F>) {
+        for k in 0..M {
+            if mask_u[k] {
+                self.anchor_u[k] = u[k];
+                self.trig_u[k] = u[k].sin_cos();
+            }
+        }
+        (
+            self.trig_u,
             carry_all(mask_v, &mut self.anchor_v, &mut self.trig_v, v.as_slice()),
         )
     }
