@@ -61,6 +61,20 @@ pub struct FourBarState {
     pub accelerations: [f64; 2],
 }
 
+/// A four-bar's state with the coupler's and the rocker's angles given by
+/// their directions (see [`FourBar::directions_from_crank`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FourBarDirections {
+    /// (cos θ3, sin θ3)
+    pub coupler: Vector2<f64>,
+    /// (cos θ4, sin θ4)
+    pub rocker: Vector2<f64>,
+    /// ω3, ω4
+    pub velocities: [f64; 2],
+    /// α3, α4
+    pub accelerations: [f64; 2],
+}
+
 /// Grashof's classification of a four-bar by its link lengths s ≤ p ≤ q ≤ l.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Grashof {
@@ -79,6 +93,28 @@ pub enum Grashof {
     /// s + l = p + q: the four joints become collinear, where the two
     /// assembly branches cross.
     ChangePoint,
+}
+
+/// The unit directions (cos θ, sin θ) of the crank, the coupler and the
+/// rocker.
+struct Directions {
+    crank: Vector2<f64>,
+    coupler: Vector2<f64>,
+    rocker: Vector2<f64>,
+}
+
+impl Directions {
+    fn of_angles(theta2: f64, [theta3, theta4]: [f64; 2]) -> Directions {
+        let unit = |angle: f64| {
+            let (s, c) = angle.sin_cos();
+            Vector2::new(c, s)
+        };
+        Directions {
+            crank: unit(theta2),
+            coupler: unit(theta3),
+            rocker: unit(theta4),
+        }
+    }
 }
 
 impl FourBar {
@@ -112,12 +148,8 @@ impl FourBar {
 
     /// ω3, ω4 in closed form.
     pub fn velocities(&self, theta2: f64, angles: [f64; 2], omega2: f64) -> [f64; 2] {
-        let [t3, t4] = angles;
-        let s34 = (t3 - t4).sin();
-        [
-            -self.l2 * omega2 * (theta2 - t4).sin() / (self.l3 * s34),
-            self.l2 * omega2 * (theta2 - t3).sin() / (self.l4 * s34),
-        ]
+        let directions = Directions::of_angles(theta2, angles);
+        self.rates(&directions, omega2, 0.0, None).0
     }
 
     /// α3, α4 in closed form.
@@ -129,31 +161,95 @@ impl FourBar {
         alpha2: f64,
         omegas: [f64; 2],
     ) -> [f64; 2] {
-        let [t3, t4] = angles;
-        let [w3, w4] = omegas;
-        let (l2, l3, l4) = (self.l2, self.l3, self.l4);
-        let s34 = (t3 - t4).sin();
-        let (s24, c24) = (theta2 - t4).sin_cos();
-        let (s23, c23) = (theta2 - t3).sin_cos();
-        let c34 = (t3 - t4).cos();
-        [
-            (-alpha2 * l2 * s24 - l2 * omega2 * omega2 * c24 - l3 * w3 * w3 * c34 - l4 * w4 * w4)
-                / (l3 * s34),
-            (alpha2 * l2 * s23 + l2 * omega2 * omega2 * c23 + l3 * w3 * w3 + l4 * w4 * w4 * c34)
-                / (l4 * s34),
-        ]
+        let directions = Directions::of_angles(theta2, angles);
+        self.rates(&directions, omega2, alpha2, Some(omegas)).1
     }
 
     /// Positions, velocities and accelerations in closed form.
     pub fn state(&self, theta2: f64, omega2: f64, alpha2: f64, sigma: f64) -> Option<FourBarState> {
-        let angles = self.position(theta2, sigma)?;
-        let velocities = self.velocities(theta2, angles, omega2);
-        let accelerations = self.accelerations(theta2, angles, omega2, alpha2, velocities);
+        self.state_from_crank(theta2.sin_cos(), omega2, alpha2, sigma)
+    }
+
+    /// [`FourBar::state`] from the crank's sine and cosine (sin θ2, cos θ2),
+    /// which a sweep can carry from sample to sample instead of computing
+    /// them: [`FourBar::directions_from_crank`], then θ3 and θ4 by `atan2`.
+    pub fn state_from_crank(
+        &self,
+        crank: (f64, f64),
+        omega2: f64,
+        alpha2: f64,
+        sigma: f64,
+    ) -> Option<FourBarState> {
+        let d = self.directions_from_crank(crank, omega2, alpha2, sigma)?;
         Some(FourBarState {
-            angles,
+            angles: [d.coupler.y.atan2(d.coupler.x), d.rocker.y.atan2(d.rocker.x)],
+            velocities: d.velocities,
+            accelerations: d.accelerations,
+        })
+    }
+
+    /// The coupler's and the rocker's directions, velocities and
+    /// accelerations from the crank's sine and cosine, with no sine, cosine
+    /// or arctangent: the circle intersection gives C, and with it
+    /// (cos θ3, sin θ3) = (C − B)/l3 and (cos θ4, sin θ4) = (D − C)/l4; the
+    /// velocities and accelerations need only sines and cosines of angle
+    /// differences, which are products of those. Per call a hypot, a square
+    /// root and four divisions.
+    pub fn directions_from_crank(
+        &self,
+        crank: (f64, f64),
+        omega2: f64,
+        alpha2: f64,
+        sigma: f64,
+    ) -> Option<FourBarDirections> {
+        let (s2, c2) = crank;
+        let b = Vector2::new(self.l2 * c2, self.l2 * s2);
+        let c = circle_intersection(b, self.l3, self.d(), self.l4, sigma)?;
+        let directions = Directions {
+            crank: Vector2::new(c2, s2),
+            coupler: (c - b) / self.l3,
+            rocker: (self.d() - c) / self.l4,
+        };
+        let (velocities, accelerations) = self.rates(&directions, omega2, alpha2, None);
+        Some(FourBarDirections {
+            coupler: directions.coupler,
+            rocker: directions.rocker,
             velocities,
             accelerations,
         })
+    }
+
+    /// (ω3, ω4) and (α3, α4) from the links' directions: the velocity
+    /// equations solved by Cramer's rule, and the accelerations likewise
+    /// with the centripetal terms (`omegas` given, or the velocities just
+    /// found).
+    fn rates(
+        &self,
+        e: &Directions,
+        omega2: f64,
+        alpha2: f64,
+        omegas: Option<[f64; 2]>,
+    ) -> ([f64; 2], [f64; 2]) {
+        let (l2, l3, l4) = (self.l2, self.l3, self.l4);
+        // sin and cos of θi − θj
+        let sin = |a: &Vector2<f64>, b: &Vector2<f64>| a.y * b.x - a.x * b.y;
+        let cos = |a: &Vector2<f64>, b: &Vector2<f64>| a.x * b.x + a.y * b.y;
+        let s34 = sin(&e.coupler, &e.rocker);
+        let (s24, c24) = (sin(&e.crank, &e.rocker), cos(&e.crank, &e.rocker));
+        let (s23, c23) = (sin(&e.crank, &e.coupler), cos(&e.crank, &e.coupler));
+        let c34 = cos(&e.coupler, &e.rocker);
+        let velocities = [
+            -l2 * omega2 * s24 / (l3 * s34),
+            l2 * omega2 * s23 / (l4 * s34),
+        ];
+        let [w3, w4] = omegas.unwrap_or(velocities);
+        let accelerations = [
+            (-alpha2 * l2 * s24 - l2 * omega2 * omega2 * c24 - l3 * w3 * w3 * c34 - l4 * w4 * w4)
+                / (l3 * s34),
+            (alpha2 * l2 * s23 + l2 * omega2 * omega2 * c23 + l3 * w3 * w3 + l4 * w4 * w4 * c34)
+                / (l4 * s34),
+        ];
+        (velocities, accelerations)
     }
 
     /// Grashof's classification.
