@@ -41,11 +41,14 @@ fn pose<L: Linkage<M, 1>, const M: usize>(
     (last.u, v, last.udot)
 }
 
+/// The benchmarks of one mechanism; `u0` starts the sweeps near θ2 = 0,
+/// `cold` is the rough guess of the cold analysis at θ2 = 20°.
 fn mechanism<L: Linkage<M, 1>, const M: usize>(
     c: &mut Criterion,
     name: &str,
     model: &L,
     u0: SVector<f64, M>,
+    cold: SVector<f64, M>,
 ) {
     let (u, v, udot) = pose(model, u0);
     let vdot = vector![1.0];
@@ -74,10 +77,19 @@ fn mechanism<L: Linkage<M, 1>, const M: usize>(
     group.bench_function("kinematics (fused kernel)", |b| {
         b.iter(|| model.kinematics(black_box(&u), black_box(&v), &vdot, &vddot))
     });
-    group.bench_function("analyze (Newton + velocities + accelerations)", |b| {
+    // The whole analysis of one pose, warm (from the converged pose: one
+    // Newton step confirms it) and cold (from a rough guess).
+    group.bench_function("analyze warm", |b| {
         b.iter(|| {
             model
                 .analyze(black_box(&u), black_box(&v), &vdot, &vddot, &options)
+                .expect("regular pose")
+        })
+    });
+    group.bench_function("analyze cold", |b| {
+        b.iter(|| {
+            model
+                .analyze(black_box(&cold), black_box(&v), &vdot, &vddot, &options)
                 .expect("regular pose")
         })
     });
@@ -99,6 +111,26 @@ fn mechanism<L: Linkage<M, 1>, const M: usize>(
             checksum
         })
     });
+    // The dense grid of the speed table (workloads::N samples per
+    // revolution), over a tenth of a revolution: one fused evaluation per
+    // pose.
+    let dense = Drive::Line {
+        from: vector![0.0],
+        to: vector![std::f64::consts::TAU / 10.0],
+        steps: workloads::N / 10,
+    };
+    group.throughput(Throughput::Elements(workloads::N as u64 / 10 + 1));
+    group.bench_function("sweep dense", |b| {
+        b.iter(|| {
+            let mut checksum = 0.0;
+            model
+                .sweep_each(black_box(&u0), &dense, &sweep_options, |p| {
+                    checksum += p.uddot[0]
+                })
+                .expect("the dense sweep runs");
+            checksum
+        })
+    });
     group.finish();
 }
 
@@ -111,19 +143,28 @@ fn benches(c: &mut Criterion) {
     }
     .position(0.0, 1.0)
     .expect("assembles");
-    mechanism(c, "four-bar", &FOUR_BAR, vector![four_bar[0], four_bar[1]]);
+    // The cold guess is the README's (θ3, θ4) = (70°, −50°).
+    mechanism(
+        c,
+        "four-bar",
+        &FOUR_BAR,
+        vector![four_bar[0], four_bar[1]],
+        vector![70f64.to_radians(), -50f64.to_radians()],
+    );
     // Near the starts of the reference data (tests/data/bench_*.csv, k = 0).
     mechanism(
         c,
         "slider-crank",
         &SLIDER_CRANK,
         vector![0.050_020_857, 0.249_749_844],
+        vector![0.0, 0.25],
     );
     mechanism(
         c,
         "six-bar",
         &SIX_BAR,
         vector![1.369_438_4, -0.775_193_4, 2.237_243_8, -3.043_485_2],
+        vector![1.2, -0.7, 2.1, -3.0],
     );
 }
 

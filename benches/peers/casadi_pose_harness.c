@@ -1,0 +1,211 @@
+/* Drives the C that CasADi generated in casadi_pose.py (build/fourbar_pose.c)
+ * on the worksheet's four-bar, and times it (median of 7 runs):
+ *
+ *   harness pose THETA3 THETA4
+ *       the single-pose job of linkage's `analyze` at θ2 = 20°, ω2 = 400 rpm,
+ *       α2 = 0: Newton–Raphson until the step is ≤ 1e-10·max(1, ‖u‖∞), then
+ *       the velocities and accelerations. Warm from the converged pose
+ *       (THETA3, THETA4 given), cold from the README's guess (70°, −50°).
+ *       Prints "warm_ns cold_ns iterations_cold" and the results.
+ *   harness carried OUT.csv THETA3 THETA4
+ *       the dense revolution (N = 1 008 000 samples) with the sines and
+ *       cosines carried from sample to sample by the angle-addition formulas
+ *       (as linkage's sweep does), the second-order predictor from the
+ *       current analogs and one Newton correction with the fresh inverse.
+ *   harness ours OUT.csv THETA3 THETA4
+ *       the same with linkage's fast-path algorithm: the predictor from the
+ *       analogs one step back, u + (u′ₖ₋₁ + 1.5·u″ₖ₋₁·h)·h, and the Newton
+ *       correction with the previous pose's inverse (a chord step).
+ *   The sweep modes write the analogs at the reference samples to OUT.csv
+ *   and print ns per sample.
+ *
+ *     gcc -O3 -I build casadi_pose_harness.c build/fourbar_pose.c -lm
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include "fourbar_pose.h"
+
+#define N 1008000
+#define STRIDE 280
+#define W 64 /* work arrays, larger than any SZ_W of the three functions */
+
+static double theta2(long k) { return (6.283185307179586 * (double)k) / (double)N; }
+
+static double now(void) {
+  struct timespec t;
+  clock_gettime(CLOCK_MONOTONIC, &t);
+  return t.tv_sec * 1e9 + t.tv_nsec;
+}
+
+static int cmp(const void *a, const void *b) {
+  double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
+static double median7(double *t) {
+  qsort(t, 7, sizeof(double), cmp);
+  return t[3];
+}
+
+/* ---- the single pose ---- */
+
+static int analyze(const double *guess, double t, double tdot, double tddot, double *out) {
+  casadi_int iw[W];
+  casadi_real w[W];
+  double u[2] = {guess[0], guess[1]}, next[2], step;
+  int it = 0;
+  for (it = 1; it <= 50; it++) {
+    const casadi_real *arg[2] = {u, &t};
+    casadi_real *res[2] = {next, &step};
+    fourbar_newton(arg, res, iw, w, 0);
+    u[0] = next[0];
+    u[1] = next[1];
+    double scale = fmax(1.0, fmax(fabs(u[0]), fabs(u[1])));
+    if (step <= 1e-10 * scale) break;
+  }
+  double psi[2];
+  const casadi_real *arg[4] = {u, &t, &tdot, &tddot};
+  casadi_real *res[3] = {psi, out + 2, out + 4};
+  fourbar_kinematics(arg, res, iw, w, 0);
+  out[0] = u[0];
+  out[1] = u[1];
+  return it;
+}
+
+static double time_pose(const double *guess, double t, double tdot, double tddot, int *iterations) {
+  const long reps = 200000;
+  double times[7], out[6], sink = 0.0;
+  for (int r = 0; r < 7; r++) {
+    double t0 = now();
+    for (long i = 0; i < reps; i++) {
+      *iterations = analyze(guess, t, tdot, tddot, out);
+      sink += out[4];
+    }
+    times[r] = (now() - t0) / reps;
+  }
+  if (sink == 1.2345) printf("!");
+  return median7(times);
+}
+
+/* ---- sines and cosines carried (as linkage-runtime/src/trig.rs) ---- */
+
+typedef struct {
+  double anchor, s, c;
+} Carried;
+
+static double carry(Carried *a, double x, double *s_out) {
+  double d = x - a->anchor, distance = fabs(d), sd, cd;
+  if (distance <= 1.0 / 512.0) {
+    double d2 = d * d;
+    sd = d + d * d2 * (-1.0 / 6.0 + d2 / 120.0);
+    cd = d2 * (-0.5 + d2 / 24.0);
+  } else if (distance <= 1.0 / 16.0) {
+    double d2 = d * d;
+    sd = d + d * d2 * (-1.0 / 6.0 + d2 * (1.0 / 120.0 + d2 * (-1.0 / 5040.0 + d2 / 362880.0)));
+    cd = d2 * (-0.5 + d2 * (1.0 / 24.0 + d2 * (-1.0 / 720.0 + d2 / 40320.0)));
+  } else {
+    a->anchor = x;
+    a->s = sin(x);
+    a->c = cos(x);
+    *s_out = a->s;
+    return a->c;
+  }
+  double s = a->s + (a->s * cd + a->c * sd), c = a->c + (a->c * cd - a->s * sd);
+  if (distance > 0.5 / 512.0) {
+    a->anchor = x;
+    a->s = sin(x);
+    a->c = cos(x);
+  }
+  *s_out = s;
+  return c;
+}
+
+/* One revolution; lagged != 0: linkage's predictor and chord step. */
+static double revolution(const double *u0, int lagged, double *out) {
+  casadi_int iw[W];
+  casadi_real w[W];
+  Carried a3 = {NAN, 0, 1}, a4 = {NAN, 0, 1}, a2 = {NAN, 0, 1};
+  double u[2] = {u0[0], u0[1]}, du[2], ddu[2], pdu[2] = {0, 0}, pddu[2] = {0, 0};
+  double sc[6], psi[2], inv[4], lag[4], d1[2], d2[2], x[2], sum = 0.0;
+  const casadi_real *arg[2] = {x, sc};
+  casadi_real *res[4] = {psi, inv, d1, d2};
+  /* The analogs at the start. */
+  x[0] = u[0];
+  x[1] = u[1];
+  sc[4] = 0.0, sc[5] = 1.0;
+  sc[0] = sin(u[0]), sc[1] = cos(u[0]), sc[2] = sin(u[1]), sc[3] = cos(u[1]);
+  fourbar_kernel(arg, res, iw, w, 0);
+  memcpy(du, d1, sizeof du);
+  memcpy(ddu, d2, sizeof ddu);
+  memcpy(lag, inv, sizeof lag);
+  if (out) {
+    out[0] = 0; out[1] = u[0]; out[2] = u[1]; out[3] = du[0]; out[4] = du[1]; out[5] = ddu[0]; out[6] = ddu[1];
+  }
+  double tp = 0.0;
+  for (long k = 1; k <= N; k++) {
+    double t = theta2(k), h = t - tp;
+    for (int i = 0; i < 2; i++)
+      x[i] = (lagged && k > 1) ? u[i] + (pdu[i] + pddu[i] * (1.5 * h)) * h
+                               : u[i] + du[i] * h + ddu[i] * (0.5 * h * h);
+    sc[1] = carry(&a3, x[0], &sc[0]);
+    sc[3] = carry(&a4, x[1], &sc[2]);
+    sc[5] = carry(&a2, t, &sc[4]);
+    fourbar_kernel(arg, res, iw, w, 0);
+    const double *m = lagged ? lag : inv; /* column-major */
+    u[0] = x[0] - (m[0] * psi[0] + m[2] * psi[1]);
+    u[1] = x[1] - (m[1] * psi[0] + m[3] * psi[1]);
+    memcpy(pdu, du, sizeof du);
+    memcpy(pddu, ddu, sizeof ddu);
+    memcpy(du, d1, sizeof du);
+    memcpy(ddu, d2, sizeof ddu);
+    memcpy(lag, inv, sizeof lag);
+    tp = t;
+    sum += ddu[0];
+    if (out && k % STRIDE == 0 && k < N) {
+      double *o = out + 7 * (k / STRIDE);
+      o[0] = (double)k; o[1] = u[0]; o[2] = u[1]; o[3] = du[0]; o[4] = du[1]; o[5] = ddu[0]; o[6] = ddu[1];
+    }
+  }
+  return sum;
+}
+
+int main(int argc, char **argv) {
+  if (argc == 4 && strcmp(argv[1], "pose") == 0) {
+    double warm[2] = {atof(argv[2]), atof(argv[3])};
+    double cold[2] = {70.0 * M_PI / 180.0, -50.0 * M_PI / 180.0};
+    double t = 20.0 * M_PI / 180.0, tdot = 400.0 * 2.0 * M_PI / 60.0, out[6];
+    int iw, ic;
+    double w_ns = time_pose(warm, t, tdot, 0.0, &iw);
+    double c_ns = time_pose(cold, t, tdot, 0.0, &ic);
+    analyze(cold, t, tdot, 0.0, out);
+    printf("%.3f %.3f %d\n", w_ns, c_ns, ic);
+    printf("%.17g %.17g %.17g %.17g %.17g %.17g\n", out[0], out[1], out[2], out[3], out[4], out[5]);
+    return 0;
+  }
+  if (argc != 5) {
+    fprintf(stderr, "usage: harness pose THETA3 THETA4 | harness carried|ours OUT.csv THETA3 THETA4\n");
+    return 2;
+  }
+  int lagged = strcmp(argv[1], "ours") == 0;
+  double u0[2] = {atof(argv[3]), atof(argv[4])};
+  double *out = calloc(7 * (N / STRIDE), sizeof(double));
+  double times[7], sink = 0.0;
+  revolution(u0, lagged, out);
+  for (int r = 0; r < 7; r++) {
+    double t0 = now();
+    sink += revolution(u0, lagged, NULL);
+    times[r] = (now() - t0) / N;
+  }
+  FILE *f = fopen(argv[2], "w");
+  if (!f) return 1;
+  for (long i = 0; i < N / STRIDE; i++) {
+    double *o = out + 7 * i;
+    fprintf(f, "%.0f,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", o[0], o[1], o[2], o[3], o[4], o[5], o[6]);
+  }
+  fclose(f);
+  printf("%.3f %g\n", median7(times), sink);
+  return 0;
+}
