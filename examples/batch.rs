@@ -100,6 +100,40 @@ fn time(
     (times[repeats / 2], results)
 }
 
+/// The same jobs as a plain loop of `sweep_each` calls on this thread,
+/// with the same work per pose, without the batch: the cost the batch
+/// machinery is measured against (median of `repeats`, seconds).
+fn time_plain_loop(
+    jobs: &[SweepJob<BareFourBar, 2, 1>],
+    options: &SweepOptions,
+    repeats: usize,
+) -> f64 {
+    let mut times: Vec<f64> = (0..repeats)
+        .map(|_| {
+            let start = Instant::now();
+            let mut merits = Vec::with_capacity(jobs.len());
+            for job in jobs {
+                let mut merit = Merit {
+                    min_transmission: 180.0,
+                    max_alpha4: 0.0,
+                };
+                job.model
+                    .sweep_each(&job.u0, &job.drive, options, |pose| {
+                        let mu = (pose.u[0] - pose.u[1]).sin().abs().asin().to_degrees();
+                        merit.min_transmission = merit.min_transmission.min(mu);
+                        merit.max_alpha4 = merit.max_alpha4.max(pose.uddot[1].abs());
+                    })
+                    .expect("every design sweeps");
+                merits.push(merit);
+            }
+            std::hint::black_box(merits);
+            start.elapsed().as_secs_f64()
+        })
+        .collect();
+    times.sort_by(f64::total_cmp);
+    times[repeats / 2]
+}
+
 fn main() -> std::io::Result<()> {
     let jobs = jobs();
     let options = SweepOptions {
@@ -110,6 +144,7 @@ fn main() -> std::io::Result<()> {
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     let (one, serial) = time(&jobs, &options, 1, 5);
     let (all, parallel) = time(&jobs, &options, cores, 5);
+    let plain = time_plain_loop(&jobs, &options, 5);
     assert_eq!(
         serial, parallel,
         "the same results on any number of threads"
@@ -134,6 +169,11 @@ fn main() -> std::io::Result<()> {
         );
     }
     println!(
+        "| plain loop of sweep_each, 1 | {plain:.3} | {:.1} | {:.2}× |",
+        plain * 1e9 / poses as f64,
+        one / plain
+    );
+    println!(
         "\nbest transmission: l3 = {}, l4 = {}: μ_min = {:.2}°, max |α4| = {:.0} rad/s²",
         best.1.model.l3, best.1.model.l4, best.0.min_transmission, best.0.max_alpha4
     );
@@ -142,12 +182,14 @@ fn main() -> std::io::Result<()> {
         &path,
         format!(
             "# Written by `cargo run --release --example batch`: {} four-bar designs, {} poses each, median of 5 runs.\n\
-             threads,seconds,ns_per_pose,speedup\n1,{one:.4},{:.2},1.00\n{cores},{all:.4},{:.2},{:.2}\n",
+             threads,seconds,ns_per_pose,speedup\n1,{one:.4},{:.2},1.00\n{cores},{all:.4},{:.2},{:.2}\nplain loop,{plain:.4},{:.2},{:.2}\n",
             jobs.len(),
             STEPS + 1,
             one * 1e9 / poses as f64,
             all * 1e9 / poses as f64,
-            one / all
+            one / all,
+            plain * 1e9 / poses as f64,
+            one / plain
         ),
     )?;
     println!("wrote {}", path.display());

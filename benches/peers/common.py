@@ -65,3 +65,17 @@ def errors(results):
 
 def row(method, ns, errs, samples):
     return f"four-bar,{method},{ns:.2f},{errs[0]:.3e},{errs[1]:.3e},{errs[2]:.3e},{samples}"
+
+
+def pose20():
+    """The converged pose at theta2 = 20 degrees on the worksheet's branch
+    (closed form), the warm start of the single-pose job."""
+    t = math.radians(20.0)
+    bx, by = L2 * math.cos(t), L2 * math.sin(t)
+    dx, dy = L1 - bx, -by
+    d = math.hypot(dx, dy)
+    a = (L3 * L3 - L4 * L4 + d * d) / (2 * d)
+    h = math.sqrt(L3 * L3 - a * a)
+    ex, ey = dx / d, dy / d
+    cx, cy = bx + ex * a - ey * h, by + ey * a + ex * h
+    return math.atan2(cy - by, cx - bx), math.atan2(-cy, L1 - cx)

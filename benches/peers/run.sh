@@ -27,5 +27,23 @@ $PY casadi_peer.py codegen
 gcc -O3 -I build casadi_harness.c build/fourbar_step.c -lm -o build/harness
 start=$($PY -c 'from common import start; print(*start())')
 read -r ns _ < <(./build/harness build/casadi_c.csv $start)
-$PY casadi_c_errors.py build/casadi_c.csv "$ns" >> "$out"
+$PY casadi_c_errors.py build/casadi_c.csv "$ns" "CasADi generated C as its users write it (sin/cos per sample)" >> "$out"
+echo "CasADi generated C with carried sines and cosines ..." >&2
+$PY casadi_pose.py
+gcc -O3 -I build casadi_pose_harness.c build/fourbar_pose.c -lm -o build/pose_harness
+read -r ns _ < <(./build/pose_harness carried build/carried.csv $start)
+$PY casadi_c_errors.py build/carried.csv "$ns" "CasADi generated C, sin/cos carried (its own predictor)" >> "$out"
+read -r ns _ < <(./build/pose_harness ours build/ours.csv $start)
+$PY casadi_c_errors.py build/ours.csv "$ns" "CasADi generated C, sin/cos carried + linkage's lagged predictor and chord step" >> "$out"
 cat "$out"
+# The single-pose job of `analyze` (warm from the converged pose at
+# θ2 = 20°, cold from the README's guess), for the analyze table.
+pose=$($PY -c 'from common import pose20; print(*pose20())')
+./build/pose_harness pose $pose | head -1 | {
+  read -r warm cold iterations
+  echo "# Written by benches/peers/run.sh on $(date -u +%Y-%m-%d): CasADi's generated C for analyze's job at θ2 = 20°, median ns per call."
+  echo "job,ns_per_call,iterations"
+  echo "warm,$warm,1"
+  echo "cold,$cold,$iterations"
+} > ../results/casadi_pose.csv
+cat ../results/casadi_pose.csv
