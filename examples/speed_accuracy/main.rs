@@ -413,7 +413,7 @@ fn chart(results: &[Result], path: &Path) -> std::result::Result<(), Box<dyn std
         .iter()
         .filter(|r| r.workload == "four-bar")
         .collect();
-    let root = SVGBackend::new(path, (1260, 520)).into_drawing_area();
+    let root = SVGBackend::new(path, (1260, 640)).into_drawing_area();
     root.fill(&WHITE)?;
     let (top, body) = root.split_vertically(34);
     top.draw(&Text::new(
@@ -421,7 +421,9 @@ fn chart(results: &[Result], path: &Path) -> std::result::Result<(), Box<dyn std
         (14, 9),
         ("sans-serif", 17).into_font(),
     ))?;
-    let panels = body.split_evenly((1, 3));
+    let (plots, legend) = body.split_vertically(470);
+    let panels = plots.split_evenly((1, 3));
+    // One colour per method (the Newton curve is grey).
     let palette = [
         RGBColor(20, 20, 20),
         RGBColor(40, 110, 200),
@@ -429,9 +431,17 @@ fn chart(results: &[Result], path: &Path) -> std::result::Result<(), Box<dyn std
         RGBColor(40, 150, 70),
         RGBColor(200, 40, 40),
         RGBColor(140, 60, 170),
-        RGBColor(120, 120, 120),
+        RGBColor(140, 90, 40),
         RGBColor(0, 150, 160),
+        RGBColor(220, 90, 170),
+        RGBColor(130, 140, 30),
     ];
+    let grey = RGBColor(120, 120, 120);
+    let methods: Vec<&Result> = four
+        .iter()
+        .copied()
+        .filter(|r| !r.method.starts_with("Newton per sample"))
+        .collect();
     let x_min = four.iter().map(|r| r.ns).fold(f64::INFINITY, f64::min) / 2.0;
     let x_max = four.iter().map(|r| r.ns).fold(0.0, f64::max) * 2.0;
     for (kind, panel) in panels.iter().enumerate() {
@@ -456,35 +466,35 @@ fn chart(results: &[Result], path: &Path) -> std::result::Result<(), Box<dyn std
             .filter(|r| r.method.starts_with("Newton per sample"))
             .map(|r| (r.ns, r.errors[kind].max(1e-17)))
             .collect();
-        let grey = RGBColor(120, 120, 120);
-        c.draw_series(LineSeries::new(curve.clone(), grey.stroke_width(1)))?
-            .label("Newton per sample, tolerance swept")
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 14, y)], grey));
+        c.draw_series(LineSeries::new(curve.clone(), grey.stroke_width(1)))?;
         c.draw_series(curve.iter().map(|&p| Circle::new(p, 3, grey.filled())))?;
-        let mut colour = 0;
-        for r in four
-            .iter()
-            .filter(|r| !r.method.starts_with("Newton per sample"))
-        {
-            let col = palette[colour % palette.len()];
-            if colour == 6 {
-                colour += 1;
-            }
-            colour += 1;
+        for (i, r) in methods.iter().enumerate() {
+            let col = palette[i % palette.len()];
             let p = (r.ns, r.errors[kind].max(1e-17));
-            let label = r.method.clone();
-            c.draw_series(std::iter::once(TriangleMarker::new(p, 7, col.filled())))?
-                .label(label)
-                .legend(move |(x, y)| TriangleMarker::new((x + 7, y), 5, col.filled()));
+            c.draw_series(std::iter::once(TriangleMarker::new(p, 7, col.filled())))?;
         }
-        if kind == 0 {
-            c.configure_series_labels()
-                .position(SeriesLabelPosition::UpperRight)
-                .background_style(WHITE.mix(0.9))
-                .border_style(BLACK.mix(0.3))
-                .label_font(("sans-serif", 11))
-                .draw()?;
+    }
+    // The legend under the panels, in two columns.
+    let font = ("sans-serif", 13).into_font();
+    let mut entries: Vec<(String, Option<RGBColor>)> =
+        vec![("Newton per sample, tolerance swept (1e-4 … to convergence)".into(), None)];
+    entries.extend(
+        methods
+            .iter()
+            .enumerate()
+            .map(|(i, r)| (r.method.clone(), Some(palette[i % palette.len()]))),
+    );
+    let rows = entries.len().div_ceil(2);
+    for (i, (label, colour)) in entries.iter().enumerate() {
+        let (x, y) = (70 + 600 * (i / rows) as i32, 16 + 22 * (i % rows) as i32);
+        match colour {
+            Some(col) => legend.draw(&TriangleMarker::new((x, y), 6, col.filled()))?,
+            None => {
+                legend.draw(&PathElement::new(vec![(x - 9, y), (x + 9, y)], grey))?;
+                legend.draw(&Circle::new((x, y), 3, grey.filled()))?;
+            }
         }
+        legend.draw(&Text::new(label.as_str(), (x + 16, y - 7), font.clone()))?;
     }
     root.present()?;
     Ok(())
