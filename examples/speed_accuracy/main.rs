@@ -476,8 +476,10 @@ fn chart(results: &[Result], path: &Path) -> std::result::Result<(), Box<dyn std
     }
     // The legend under the panels, in two columns.
     let font = ("sans-serif", 13).into_font();
-    let mut entries: Vec<(String, Option<RGBColor>)> =
-        vec![("Newton per sample, tolerance swept (1e-4 … to convergence)".into(), None)];
+    let mut entries: Vec<(String, Option<RGBColor>)> = vec![(
+        "Newton per sample, tolerance swept (1e-4 … to convergence)".into(),
+        None,
+    )];
     entries.extend(
         methods
             .iter()
