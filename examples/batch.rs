@@ -23,6 +23,24 @@ struct Merit {
     max_alpha4: f64,
 }
 
+impl Merit {
+    /// Before the first pose.
+    fn new() -> Merit {
+        Merit {
+            min_transmission: 180.0,
+            max_alpha4: 0.0,
+        }
+    }
+
+    /// Folds one pose in: the transmission angle between coupler and
+    /// rocker, and the rocker's angular acceleration.
+    fn add(&mut self, pose: &SweepPose<2, 1>) {
+        let mu = (pose.u[0] - pose.u[1]).sin().abs().asin().to_degrees();
+        self.min_transmission = self.min_transmission.min(mu);
+        self.max_alpha4 = self.max_alpha4.max(pose.uddot[1].abs());
+    }
+}
+
 fn jobs() -> Vec<SweepJob<BareFourBar, 2, 1>> {
     let mut jobs = Vec::new();
     for i in 0..40 {
@@ -60,16 +78,8 @@ fn run(jobs: &[SweepJob<BareFourBar, 2, 1>], options: &SweepOptions) -> Vec<Meri
     batch::sweeps(
         jobs,
         options,
-        |_| Merit {
-            min_transmission: 180.0,
-            max_alpha4: 0.0,
-        },
-        |merit, pose| {
-            // The transmission angle between coupler and rocker.
-            let mu = (pose.u[0] - pose.u[1]).sin().abs().asin().to_degrees();
-            merit.min_transmission = merit.min_transmission.min(mu);
-            merit.max_alpha4 = merit.max_alpha4.max(pose.uddot[1].abs());
-        },
+        |_| Merit::new(),
+        |merit, pose| merit.add(pose),
     )
     .into_iter()
     .map(|r| r.expect("every design sweeps").value)
@@ -102,36 +112,32 @@ fn time(
 
 /// The same jobs as a plain loop of `sweep_each` calls on this thread,
 /// with the same work per pose, without the batch: the cost the batch
-/// machinery is measured against (median of `repeats`, seconds).
+/// machinery is measured against (median of `repeats`, seconds), and the
+/// results.
 fn time_plain_loop(
     jobs: &[SweepJob<BareFourBar, 2, 1>],
     options: &SweepOptions,
     repeats: usize,
-) -> f64 {
+) -> (f64, Vec<Merit>) {
+    let mut results = Vec::new();
     let mut times: Vec<f64> = (0..repeats)
         .map(|_| {
             let start = Instant::now();
             let mut merits = Vec::with_capacity(jobs.len());
             for job in jobs {
-                let mut merit = Merit {
-                    min_transmission: 180.0,
-                    max_alpha4: 0.0,
-                };
+                let mut merit = Merit::new();
                 job.model
-                    .sweep_each(&job.u0, &job.drive, options, |pose| {
-                        let mu = (pose.u[0] - pose.u[1]).sin().abs().asin().to_degrees();
-                        merit.min_transmission = merit.min_transmission.min(mu);
-                        merit.max_alpha4 = merit.max_alpha4.max(pose.uddot[1].abs());
-                    })
+                    .sweep_each(&job.u0, &job.drive, options, |pose| merit.add(pose))
                     .expect("every design sweeps");
                 merits.push(merit);
             }
-            std::hint::black_box(merits);
-            start.elapsed().as_secs_f64()
+            let elapsed = start.elapsed().as_secs_f64();
+            results = merits;
+            elapsed
         })
         .collect();
     times.sort_by(f64::total_cmp);
-    times[repeats / 2]
+    (times[repeats / 2], results)
 }
 
 fn main() -> std::io::Result<()> {
@@ -144,7 +150,8 @@ fn main() -> std::io::Result<()> {
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     let (one, serial) = time(&jobs, &options, 1, 5);
     let (all, parallel) = time(&jobs, &options, cores, 5);
-    let plain = time_plain_loop(&jobs, &options, 5);
+    let (plain, looped) = time_plain_loop(&jobs, &options, 5);
+    assert_eq!(serial, looped, "the batch gives what the plain loop gives");
     assert_eq!(
         serial, parallel,
         "the same results on any number of threads"
