@@ -27,28 +27,9 @@
 #include <string.h>
 #include <time.h>
 #include "fourbar_pose.h"
+#include "harness.h"
 
-#define N 1008000
-#define STRIDE 280
 #define W 64 /* work arrays, larger than any SZ_W of the three functions */
-
-static double theta2(long k) { return (6.283185307179586 * (double)k) / (double)N; }
-
-static double now(void) {
-  struct timespec t;
-  clock_gettime(CLOCK_MONOTONIC, &t);
-  return t.tv_sec * 1e9 + t.tv_nsec;
-}
-
-static int cmp(const void *a, const void *b) {
-  double x = *(const double *)a, y = *(const double *)b;
-  return (x > y) - (x < y);
-}
-
-static double median7(double *t) {
-  qsort(t, 7, sizeof(double), cmp);
-  return t[3];
-}
 
 /* ---- the single pose ---- */
 

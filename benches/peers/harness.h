@@ -1,0 +1,29 @@
+/* What the C harnesses share: the dense grid and the timing. */
+#ifndef HARNESS_H
+#define HARNESS_H
+#include <stdlib.h>
+#include <time.h>
+
+#define N 1008000
+#define STRIDE 280
+
+/* θ2 of sample k, computed as the reference script computes it. */
+static double theta2(long k) { return (6.283185307179586 * (double)k) / (double)N; }
+
+static double now(void) {
+  struct timespec t;
+  clock_gettime(CLOCK_MONOTONIC, &t);
+  return t.tv_sec * 1e9 + t.tv_nsec;
+}
+
+static int cmp(const void *a, const void *b) {
+  double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
+/* The median of 7 timings (sorts them). */
+static double median7(double *t) {
+  qsort(t, 7, sizeof(double), cmp);
+  return t[3];
+}
+#endif
