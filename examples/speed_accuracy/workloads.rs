@@ -3,7 +3,6 @@
 //! revolution, with their 50-digit references (every 280th sample).
 #![allow(dead_code)]
 
-use linkage::mechanisms::BareFourBar;
 use linkage::prelude::*;
 
 /// Samples per revolution of the dense sweep.
@@ -19,7 +18,26 @@ pub fn theta2(k: usize) -> f64 {
     (std::f64::consts::TAU * k as f64) / N as f64
 }
 
-pub const FOUR_BAR: BareFourBar = BareFourBar {
+// The mechanisms are written here, as a user writes a mechanism in their own
+// crate, so that the generated code is compiled where it is used; the
+// four-bar is `linkage::mechanisms::BareFourBar`'s equations.
+#[linkage::linkage(
+    u = [theta3, theta4],
+    v = [theta2],
+    closure = [
+        l2 * theta2.cos() + l3 * theta3.cos() + l4 * theta4.cos() - l1,
+        l2 * theta2.sin() + l3 * theta3.sin() + l4 * theta4.sin(),
+    ],
+)]
+#[derive(Clone, Copy, Debug)]
+pub struct FourBar {
+    pub l1: f64,
+    pub l2: f64,
+    pub l3: f64,
+    pub l4: f64,
+}
+
+pub const FOUR_BAR: FourBar = FourBar {
     l1: 80.0,
     l2: 20.0,
     l3: 50.0,

@@ -103,10 +103,13 @@ impl Generator<'_> {
         let ret = signature::output_type(q, &dims, false);
         let doc = doc_attributes(doc);
         let statements = &body.statements;
+        // No `#[inline]`: the kernels are compiled in the user's crate, where
+        // LLVM chooses; the hint made a Newton step (Ψ and Ψ_u inlined into
+        // the caller) ≈ 15 % slower (`cargo bench --bench kernels`,
+        // 2026-11-23). The trait's delegations carry it instead.
         quote! {
             #doc
             #[must_use]
-            #[inline]
             pub fn #name(&self, #(#args),*) -> #ret {
                 #(#statements)*
                 #result

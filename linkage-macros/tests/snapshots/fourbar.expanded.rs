@@ -22,7 +22,6 @@ const _: () = {
         /// [ l2·sin θ2 + l3·sin θ3 + l4·sin θ4      ]
         /// ```
         #[must_use]
-        #[inline]
         pub fn psi(&self, u: &SVector<f64, 2>, v: &SVector<f64, 1>) -> SVector<f64, 2> {
             let Self { l1, l2, l3, l4, .. } = *self;
             let (theta3, theta4) = (u[0], u[1]);
@@ -42,7 +41,6 @@ const _: () = {
         /// [  l3·cos θ3    l4·cos θ4    l2·cos θ2 ]
         /// ```
         #[must_use]
-        #[inline]
         pub fn psi_q(
             &self,
             u: &SVector<f64, 2>,
@@ -70,7 +68,6 @@ const _: () = {
         /// [  l3·cos θ3    l4·cos θ4 ]
         /// ```
         #[must_use]
-        #[inline]
         pub fn psi_u(
             &self,
             u: &SVector<f64, 2>,
@@ -94,7 +91,6 @@ const _: () = {
         /// [  l2·cos θ2 ]
         /// ```
         #[must_use]
-        #[inline]
         pub fn psi_v(
             &self,
             _u: &SVector<f64, 2>,
@@ -111,7 +107,6 @@ const _: () = {
         /// Ψ and Ψ_u together, sharing every sine, cosine and common subexpression: one
         /// Newton–Raphson step's evaluation (see [`Self::psi`] and [`Self::psi_u`]).
         #[must_use]
-        #[inline]
         pub fn psi_and_psi_u(
             &self,
             u: &SVector<f64, 2>,
@@ -145,7 +140,6 @@ const _: () = {
         /// [ -l3·sin θ3·θ̇3   -l4·sin θ4·θ̇4 ]
         /// ```
         #[must_use]
-        #[inline]
         pub fn psi_u_udot_u(
             &self,
             u: &SVector<f64, 2>,
@@ -172,7 +166,6 @@ const _: () = {
         /// [ 0 ]
         /// ```
         #[must_use]
-        #[inline]
         pub fn psi_u_udot_v(
             &self,
             _u: &SVector<f64, 2>,
@@ -189,7 +182,6 @@ const _: () = {
         /// [ 0   0 ]
         /// ```
         #[must_use]
-        #[inline]
         pub fn psi_v_vdot_u(
             &self,
             _u: &SVector<f64, 2>,
@@ -205,7 +197,6 @@ const _: () = {
         /// [ -l2·sin θ2·θ̇2 ]
         /// ```
         #[must_use]
-        #[inline]
         pub fn psi_v_vdot_v(
             &self,
             _u: &SVector<f64, 2>,
@@ -229,7 +220,6 @@ const _: () = {
         /// [ -l3·sin θ3·θ̇3   -l4·sin θ4·θ̇4 ]
         /// ```
         #[must_use]
-        #[inline]
         pub fn psi_u_dot(
             &self,
             u: &SVector<f64, 2>,
@@ -257,7 +247,6 @@ const _: () = {
         /// [ -l2·sin θ2·θ̇2 ]
         /// ```
         #[must_use]
-        #[inline]
         pub fn psi_v_dot(
             &self,
             _u: &SVector<f64, 2>,
@@ -285,7 +274,6 @@ const _: () = {
         /// [ -l3·sin θ3·θ̇3² - l4·sin θ4·θ̇4² - l2·sin θ2·θ̇2² ]
         /// ```
         #[must_use]
-        #[inline]
         pub fn gamma(
             &self,
             u: &SVector<f64, 2>,
@@ -325,7 +313,6 @@ const _: () = {
         /// G4.y = l2·sin θ2 + l3·sin θ3 + 0.5·l4·sin θ4
         /// ```
         #[must_use]
-        #[inline]
         pub fn point_positions(
             &self,
             u: &SVector<f64, 2>,
@@ -372,7 +359,6 @@ const _: () = {
         /// G4.y = l3·cos θ3·θ̇3 + 0.5·l4·cos θ4·θ̇4 + l2·cos θ2·θ̇2
         /// ```
         #[must_use]
-        #[inline]
         pub fn point_velocities(
             &self,
             u: &SVector<f64, 2>,
@@ -426,7 +412,6 @@ const _: () = {
         /// G4.y = -l3·sin θ3·θ̇3² - 0.5·l4·sin θ4·θ̇4² - l2·sin θ2·θ̇2² + l2·cos θ2·θ̈2 + l3·cos θ3·θ̈3 + 0.5·l4·cos θ4·θ̈4
         /// ```
         #[must_use]
-        #[inline]
         pub fn point_accelerations(
             &self,
             u: &SVector<f64, 2>,
