@@ -57,6 +57,8 @@ pub mod ground;
 pub mod machine;
 pub mod mechanisms;
 mod numerics;
+mod vectors;
+pub mod watch;
 
 pub use linkage_macros::linkage;
 pub use linkage_runtime::*;
@@ -64,15 +66,16 @@ pub use nalgebra;
 pub use num_dual;
 
 /// Everything a user of the attribute needs: the runtime's types, the
-/// `Linkage` trait (for the analyses) and nalgebra's vectors and matrices.
+/// `Linkage` trait (for the analyses), nalgebra's vector and matrix types,
+/// and [`vector!`](crate::vector) and [`matrix!`](crate::matrix), which
+/// resolve through linkage (no direct nalgebra dependency needed).
 pub mod prelude {
     pub use crate::linkage;
+    pub use crate::{matrix, vector};
     pub use linkage_runtime::{
         AccelerationMethod, Analysis, Drive, Error, Event, EventKind, Iterate, JacobianSource,
         Kinematics, Linkage, Options, Position, Stage, Sweep, SweepOptions, SweepPose,
         SweepSummary, SymbolicMatrix, SymbolicTable, Velocity,
     };
-    pub use nalgebra::{
-        Matrix2, SMatrix, SVector, Vector1, Vector2, Vector3, Vector4, matrix, vector,
-    };
+    pub use nalgebra::{Matrix2, SMatrix, SVector, Vector1, Vector2, Vector3, Vector4};
 }
