@@ -2,7 +2,7 @@
 //! rocker lengths on a grid), each swept over a revolution of the crank in
 //! 3 600 steps at ω2 = 400 rpm, each reduced to its smallest transmission
 //! angle and the largest angular acceleration of its rocker. Timed on one
-//! thread and on every core, and written to `benches/results/batch.csv`.
+//! thread and on every core, and written to `out/batch/batch.csv`.
 //!
 //!     cargo run --release --example batch
 
@@ -10,7 +10,9 @@ use linkage::batch::{self, SweepJob};
 use linkage::mechanisms::BareFourBar;
 use linkage::prelude::*;
 use std::f64::consts::TAU;
-use std::path::Path;
+
+#[path = "support/output.rs"]
+mod output;
 use std::time::Instant;
 
 const STEPS: usize = 3600;
@@ -184,7 +186,7 @@ fn main() -> std::io::Result<()> {
         "\nbest transmission: l3 = {}, l4 = {}: μ_min = {:.2}°, max |α4| = {:.0} rad/s²",
         best.1.model.l3, best.1.model.l4, best.0.min_transmission, best.0.max_alpha4
     );
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("benches/results/batch.csv");
+    let path = output::folder("batch")?.join("batch.csv");
     std::fs::write(
         &path,
         format!(

@@ -6,7 +6,7 @@
 //! is checked — its return stroke exceeds the pressure-angle limit — and
 //! the smallest cam that keeps within the limit is found numerically.
 //!
-//! Writes `docs/figures/cam/cam.svg` (the cam at its worst pressure angle),
+//! Writes to `out/cam/`: `cam.svg` (the cam at its worst pressure angle),
 //! `motion.svg`, `pressure.svg` and `profile.csv` (the profile and the pitch
 //! curve in millimetres, as the course project's x.txt and y.txt).
 //!
@@ -14,6 +14,8 @@
 
 #[path = "shaper/machine.rs"]
 mod machine;
+#[path = "support/output.rs"]
+mod output;
 
 use linkage::cam::{Cam, CamError, Follower, Law, Program, Rotation, Segment, smallest_rocker};
 use linkage::draw::diagrams::{Chart, Panel};
@@ -277,8 +279,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         roller * 1000.0,
         convex * 1000.0
     );
-    let folder = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/figures/cam");
-    std::fs::create_dir_all(&folder)?;
+    let folder = output::folder("cam")?;
     let mut csv = String::from(
         "# The cam of the shaping machine, the smallest within |θ| ≤ 35°, roller r_R = 0.25·r0, 720 points over a turn;\n\
          # written by `cargo run --release --example cam`. Coordinates in the cam's frame, mm.\n\

@@ -11,6 +11,9 @@ use linkage::mechanisms::FourBar;
 use linkage::prelude::*;
 use std::f64::consts::TAU;
 
+#[path = "support/output.rs"]
+mod output;
+
 /// What the worksheet printed (Maple, `Digits = 10`), for comparison.
 mod worksheet {
     /// Newton iterates u_1 … u_4 (θ3, θ4); Maple shows 18 digits of which
@@ -220,15 +223,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 
 /// The worksheet's drawing (θ2 = 20°, velocity scale 0.02, acceleration
 /// scale 0.0005), an animation of a revolution and the motion diagrams,
-/// written to `docs/figures/fourbar/`.
+/// written to `out/fourbar/`.
 fn pictures(
     bar: &FourBar,
     analysis: &Analysis<2, 1, [Vector2<f64>; 5]>,
     omega2: f64,
 ) -> Result<Vec<std::path::PathBuf>, Box<dyn std::error::Error>> {
     use linkage::draw::scene::{Frame, Scene};
-    let folder = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/figures/fourbar");
-    std::fs::create_dir_all(&folder)?;
+    let folder = output::folder("fourbar")?;
     // A revolution at ω2 = 400 rpm, by continuation from the worksheet's
     // pose.
     let drive = Drive::Line {

@@ -7,13 +7,15 @@
 //! 18×18 system of the joint reactions and the balancing moment — each
 //! number beside the one the course project printed and the 50-digit reference.
 //!
-//! Writes `docs/figures/shaper/diagrams.svg` (J, M, A, ΔT_I, ω1, ε1 over a
-//! cycle), `docs/figures/shaper/mechanism.svg` (the mechanism at f) and
-//! `docs/figures/shaper/hodographs.svg` (the reactions over a cycle).
+//! Writes to `out/shaper/`: `diagrams.svg` (J, M, A, ΔT_I, ω1, ε1 over a
+//! cycle), `mechanism.svg` (the mechanism at f) and `hodographs.svg` (the
+//! reactions over a cycle).
 //!
 //!     cargo run --release --example shaper
 
 mod machine;
+#[path = "../support/output.rs"]
+mod output;
 
 use linkage::draw::diagrams::{Chart, Panel};
 use linkage::draw::scene::{Frame, Scene};
@@ -265,8 +267,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     );
 
     // The diagrams.
-    let folder = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/figures/shaper");
-    std::fs::create_dir_all(&folder)?;
+    let folder = output::folder("shaper")?;
     let phis: Vec<f64> = (0..=720).map(|k| k as f64 * TAU / 720.0).collect();
     let reduced: Vec<_> = phis
         .iter()

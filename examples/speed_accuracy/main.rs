@@ -7,10 +7,13 @@
 //! cargo run --release --example speed_accuracy -- --chart  # chart the CSVs only
 //! ```
 //!
-//! It writes `benches/results/ours.csv`, reads the peers' results
-//! (`benches/results/peers.csv`, written by `benches/peers/run.sh`), prints the
-//! table and writes `docs/figures/speed_accuracy.svg`.
+//! It reads the peers' results (`benches/results/peers.csv`, written by
+//! `benches/peers/run.sh`), prints the table and writes `ours.csv` and
+//! `speed_accuracy.svg` to `out/speed_accuracy/`; `--chart` draws the
+//! committed `benches/results/ours.csv` without measuring.
 
+#[path = "../support/output.rs"]
+mod output;
 mod workloads;
 
 use linkage::closed_form;
@@ -504,8 +507,14 @@ fn chart(results: &[Result], path: &Path) -> std::result::Result<(), Box<dyn std
 
 fn main() -> std::result::Result<(), Box<dyn std::error::Error>> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let ours_path = root.join("benches/results/ours.csv");
+    let folder = output::folder("speed_accuracy")?;
+    // `--chart`: the chart of the committed measurements, without measuring.
     let chart_only = std::env::args().any(|a| a == "--chart");
+    let ours_path = if chart_only {
+        root.join("benches/results/ours.csv")
+    } else {
+        folder.join("ours.csv")
+    };
     let ours = if chart_only {
         read_csv(&ours_path)
     } else {
@@ -517,7 +526,7 @@ fn main() -> std::result::Result<(), Box<dyn std::error::Error>> {
     let mut all = ours;
     all.extend(peers);
     print_table(&all);
-    let figure = root.join("docs/figures/speed_accuracy.svg");
+    let figure = folder.join("speed_accuracy.svg");
     chart(&all, &figure)?;
     if chart_only {
         println!("\nread {}, wrote {}", ours_path.display(), figure.display());

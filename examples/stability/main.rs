@@ -6,10 +6,12 @@
 //! condition number of Ψ_u (actuator-driven boom).
 //!
 //! Run with `cargo run --release --example stability`; it prints the tables
-//! and writes the charts to `docs/figures/` (`stability_limit.svg`,
+//! and writes the charts to `out/stability/` (`stability_limit.svg`,
 //! `stability_branch.svg`, `stability_iterations.svg`,
 //! `stability_methods.svg`).
 
+#[path = "../support/output.rs"]
+mod output;
 mod study;
 
 use plotters::prelude::*;
@@ -280,8 +282,7 @@ fn methods_chart(
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let figures = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/figures");
-    std::fs::create_dir_all(&figures)?;
+    let figures = output::folder("stability")?;
     let limit = study::run(Case::Limit);
     let branch = study::run(Case::Branch);
     print_table(Case::Limit, &limit);

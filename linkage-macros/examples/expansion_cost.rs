@@ -8,8 +8,8 @@
 //! cargo run --release -p linkage-macros --example expansion_cost
 //! ```
 //!
-//! writes `docs/figures/expansion_cost.csv` and `.svg` and prints the
-//! table. `--no-compile` skips the (slow) compile-time column.
+//! writes `expansion_cost.csv` and `.svg` to `out/expansion_cost/` and
+//! prints the table (`docs/refresh.sh` refreshes the committed ones). `--no-compile` skips the (slow) compile-time column.
 #![allow(dead_code)]
 
 // The macro's item assembly, compiled into this program (a proc-macro
@@ -282,8 +282,11 @@ fn main() {
         .unwrap();
     }
     println!("{table}");
-    let figures = workspace.join("docs/figures");
-    std::fs::create_dir_all(&figures).expect("create docs/figures");
+    // `out/expansion_cost/` (ignored by git), or LINKAGE_OUT (docs/refresh.sh).
+    let figures = std::env::var_os("LINKAGE_OUT")
+        .map(std::path::PathBuf::from)
+        .unwrap_or_else(|| workspace.join("out/expansion_cost"));
+    std::fs::create_dir_all(&figures).expect("create the output folder");
     std::fs::write(figures.join("expansion_cost.csv"), csv).expect("write the CSV");
     chart(&rows, &figures.join("expansion_cost.svg"));
     println!("wrote {}", figures.join("expansion_cost.svg").display());

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Refreshes the committed figures and result tables: runs every example with
+# its output folder (LINKAGE_OUT) pointed at the tracked files. Running an
+# example by hand writes to out/ instead, which git ignores.
+#
+#     docs/refresh.sh            # the figures (a few minutes)
+#     docs/refresh.sh --speed    # and the speed tables: benches/speed_tables.sh
+#                                # (three runs of ours and the peers, ~20 minutes)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+run() { # example, folder, [cargo args]
+  local example=$1 folder=$2
+  shift 2
+  LINKAGE_OUT="$folder" cargo run --quiet --release "$@" --example "$example" > /dev/null
+  echo "refreshed $folder ($example)"
+}
+run fourbar docs/figures/fourbar
+run shaper docs/figures/shaper
+run cam docs/figures/cam
+run stability docs/figures
+run expansion_cost docs/figures -p linkage-macros
+if [[ ${1:-} == --speed ]]; then
+  benches/speed_tables.sh
+else
+  # The speed chart from the committed measurements.
+  LINKAGE_OUT=docs/figures cargo run --quiet --release --example speed_accuracy -- --chart > /dev/null
+  rm -f docs/figures/ours.csv
+  echo "refreshed docs/figures/speed_accuracy.svg"
+fi
