@@ -311,7 +311,34 @@ impl Emitter<'_> {
         }
     }
 
-    /// `c·Π fᵢ^eᵢ` as `c * a * b / (d * e.powi(2))`.
+    /// The named products within `factors`: products already bound to a
+    /// `let` whose factors (with their exponents, all positive) all occur in
+    /// `factors`, the largest first, disjoint; and the factors left over.
+    fn named_subproducts(&self, factors: &[(Id, i32)]) -> (Vec<Id>, Vec<(Id, i32)>) {
+        let mut rest = factors.to_vec();
+        let mut named = Vec::new();
+        loop {
+            let within = |sub: &[(Id, i32)]| {
+                sub.len() < rest.len() && sub.iter().all(|f| f.1 > 0 && rest.contains(f))
+            };
+            let best = self
+                .products
+                .iter()
+                .filter_map(|&p| match self.dag.node(p) {
+                    Node::Prod(sub) if within(sub) => Some((p, sub)),
+                    _ => None,
+                })
+                .max_by_key(|(p, sub)| (sub.len(), std::cmp::Reverse(*p)));
+            let Some((p, sub)) = best else {
+                return (named, rest);
+            };
+            rest.retain(|f| !sub.contains(f));
+            named.push(p);
+        }
+    }
+
+    /// `c·Π fᵢ^eᵢ` as `c * a * b / (d * e.powi(2))`, reusing the named
+    /// products within it (`l3_c_theta3 * theta3_dot.powi(2)`).
     pub(super) fn product(&self, c: f64, factors: &[(Id, i32)]) -> TokenStream {
         let power = |f: Id, e: u32| -> TokenStream {
             if e == 1 {
@@ -322,11 +349,17 @@ impl Emitter<'_> {
                 quote!(#base.powi(#e))
             }
         };
-        let factors = crate::display::factor_order(self.dag, factors);
-        let numerator: Vec<TokenStream> = factors
+        let (named, factors) = self.named_subproducts(factors);
+        let factors = crate::display::factor_order(self.dag, &factors);
+        let numerator: Vec<TokenStream> = named
             .iter()
-            .filter(|f| f.1 > 0)
-            .map(|&(f, e)| power(f, e.unsigned_abs()))
+            .map(|&p| self.operand(p, Prec::Atom))
+            .chain(
+                factors
+                    .iter()
+                    .filter(|f| f.1 > 0)
+                    .map(|&(f, e)| power(f, e.unsigned_abs())),
+            )
             .collect();
         let denominator: Vec<TokenStream> = factors
             .iter()

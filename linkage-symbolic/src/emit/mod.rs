@@ -83,6 +83,9 @@ struct Emitter<'a> {
     mode: Mode,
     /// Temporaries by node.
     bound: HashMap<Id, String>,
+    /// The bound products whose `let` is already written, which a later
+    /// product containing their factors reuses.
+    products: Vec<Id>,
 }
 
 /// Emits the straight-line code computing `roots`; `hints` names chosen
@@ -193,6 +196,7 @@ pub fn emit_phases(
         names,
         mode,
         bound: HashMap::new(),
+        products: Vec::new(),
     };
 
     // Sine and cosine of the same angle share one sin_cos, in the first
@@ -310,6 +314,9 @@ pub fn emit_phases(
             }
             let value = emitter.definition(id).0;
             statements.push(quote! { let #name = #value; });
+            if matches!(dag.node(id), Node::Prod(_)) {
+                emitter.products.push(id);
+            }
         }
         let values = roots
             .iter()
