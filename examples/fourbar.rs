@@ -264,7 +264,7 @@ fn pictures(
     let path = folder.join("scene.svg");
     std::fs::write(
         &path,
-        scene.render(&Frame::from_analysis::<FourBar, 2, 1>(analysis), &cycle)?,
+        scene.render(&Frame::from_analysis(bar, analysis), &cycle)?,
     )?;
     written.push(path);
     let path = folder.join("animation.svg");

@@ -129,7 +129,7 @@ fn the_worksheet_scene_is_drawn_where_the_kinematics_say() {
     let pose = worksheet_pose();
     let (_, cycle) = revolution(72);
     let svg = worksheet_scene()
-        .render(&Frame::from_analysis::<FourBar, 2, 1>(&pose), &cycle)
+        .render(&Frame::from_analysis(&FourBar::WORKSHEET, &pose), &cycle)
         .unwrap();
     let doc = parse(&svg);
     let back = Readback::new(&doc);
@@ -188,7 +188,7 @@ fn the_worksheet_scene_is_drawn_where_the_kinematics_say() {
 #[test]
 fn automatic_arrow_scales_fit_the_drawing() {
     let pose = worksheet_pose();
-    let frame = Frame::from_analysis::<FourBar, 2, 1>(&pose);
+    let frame = Frame::from_analysis(&FourBar::WORKSHEET, &pose);
     let svg = Scene::new()
         .ground("A", [0.0, 0.0])
         .ground("D", [FourBar::WORKSHEET.l1, 0.0])
@@ -340,7 +340,7 @@ fn a_slider_crank_scene_has_its_block_and_guide() {
 #[test]
 fn bad_scenes_are_typed_errors() {
     let pose = worksheet_pose();
-    let frame = Frame::from_analysis::<FourBar, 2, 1>(&pose);
+    let frame = Frame::from_analysis(&FourBar::WORKSHEET, &pose);
     let err = Scene::new()
         .link(["A", "Q"])
         .render(&frame, &[])

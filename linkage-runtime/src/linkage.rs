@@ -156,7 +156,8 @@ pub trait Linkage<const M: usize, const F: usize> {
         v: &SVector<D, F>,
     ) -> impl AsRef<[Vector2<D>]>;
 
-    /// The index of a named point.
+    /// The index of a named point, found at run time (the generated
+    /// constants, `FourBar::C`, give it at compile time).
     fn point_index(name: &str) -> Option<usize> {
         Self::POINT_NAMES.iter().position(|n| *n == name)
     }

@@ -35,7 +35,7 @@ fn frame(bar: &FourBar, n: &[u64; 8]) -> Frame {
                 &vector![0.0],
                 &Options::default(),
             )
-            .map(|a| Frame::from_analysis::<FourBar, 2, 1>(&a));
+            .map(|a| Frame::from_analysis(bar, &a));
         if let Ok(mut ordinary) = pose {
             if n[1] % 3 == 0 {
                 ordinary.positions[(n[2] % 5) as usize].x = x(3);
@@ -139,5 +139,5 @@ fn ordinary_frame(bar: &FourBar, theta2: f64) -> Option<Frame> {
             &options,
         )
         .ok()?;
-    Some(Frame::from_analysis::<FourBar, 2, 1>(&a))
+    Some(Frame::from_analysis(bar, &a))
 }

@@ -31,6 +31,13 @@ pub fn fallback(input: &Input) -> TokenStream {
         "#[linkage::linkage] on this struct has errors"
     ));
     let name = ty.to_string();
+    let names: Vec<String> = input
+        .points
+        .items
+        .iter()
+        .map(|p| p.name.to_string())
+        .collect();
+    let point_indices = super::point_indices(names.iter().map(String::as_str));
     let inherent = QUANTITIES.iter().filter(|q| q.function).map(|q| {
         let fn_name = format_ident!("{}", q.name);
         let generics = function_generics(q, &m, &f, &n);
@@ -72,6 +79,7 @@ pub fn fallback(input: &Input) -> TokenStream {
                 pub const U_NAMES: &'static [&'static str] = &[];
                 pub const V_NAMES: &'static [&'static str] = &[];
                 pub const POINT_NAMES: &'static [&'static str] = &[];
+                #point_indices
                 pub const SYMBOLIC: ::linkage::SymbolicTable = ::linkage::SymbolicTable {
                     name: #name,
                     u: &[],

@@ -23,7 +23,7 @@ use linkage_symbolic::errors::Errors;
 use linkage_symbolic::names::SymbolNames;
 use proc_macro2::{Literal, TokenStream};
 use quantities::{DocContext, QUANTITIES, Quantity, Scalar, Source};
-use quote::quote;
+use quote::{format_ident, quote};
 
 /// The whole expansion: the struct unchanged, and either the generated items
 /// or, if the attribute has mistakes, every error plus the fallback items
@@ -230,6 +230,7 @@ impl<'a> Generator<'a> {
             Literal::usize_unsuffixed(self.f),
             Literal::usize_unsuffixed(self.np),
         );
+        let point_indices = point_indices(self.model.points.iter().map(|p| p.name.as_str()));
         let symbolic = self.symbolic_table();
         let trait_impl = self.trait_impl();
         quote! {
@@ -245,6 +246,7 @@ impl<'a> Generator<'a> {
                     pub const V_NAMES: [&'static str; #fl] = [#(#v_names),*];
                     /// The named points, in order.
                     pub const POINT_NAMES: [&'static str; #npl] = [#(#point_names),*];
+                    #point_indices
 
                     #(#functions)*
 
@@ -256,6 +258,40 @@ impl<'a> Generator<'a> {
             };
         }
     }
+}
+
+/// One associated constant per named point, its index in the arrays of
+/// positions, velocities and accelerations: `pose.points[FourBar::C]`.
+/// (The error path emits them too, so that code naming points keeps
+/// type-checking while the attribute has mistakes.)
+///
+/// A name that is not an identifier, repeats, or is taken by another
+/// generated item (`SYMBOLIC`, …) gets none: on the error path the names
+/// have not been checked, and a bad one must not add an error of its own.
+pub(super) fn point_indices<'a>(names: impl Iterator<Item = &'a str>) -> TokenStream {
+    const TAKEN: [&str; 6] = [
+        "U_NAMES",
+        "V_NAMES",
+        "POINT_NAMES",
+        "SYMBOLIC",
+        "TRIG_U",
+        "TRIG_V",
+    ];
+    let mut seen = std::collections::HashSet::new();
+    let usable = |name: &str| syn::parse_str::<syn::Ident>(name).is_ok() && !TAKEN.contains(&name);
+    let consts = names.enumerate().filter_map(|(i, name)| {
+        if !usable(name) || !seen.insert(name.to_owned()) {
+            return None;
+        }
+        let ident = format_ident!("{}", name);
+        let doc = format!(" The index of the point `{name}`: `pose.points[Self::{name}]`.");
+        Some(quote! {
+            #[doc = #doc]
+            #[allow(non_upper_case_globals)]
+            pub const #ident: usize = #i;
+        })
+    });
+    quote!(#(#consts)*)
 }
 
 #[cfg(test)]
@@ -408,5 +444,79 @@ mod tests {
             );
         }
         assert!(text.contains("let (s_theta3, c_theta3) = theta3.sin_cos();"));
+    }
+
+    /// Shared subexpressions everywhere: in every function of the
+    /// expansion, a product bound to a `let` (`let l3_c_theta3 = l3 *
+    /// c_theta3;`) is written nowhere else in that function — a later
+    /// product containing its factors (γ's `l3·cos θ3·θ̇3²` in the fused
+    /// kernel) uses the name.
+    #[test]
+    fn a_named_product_is_never_written_out_again() {
+        let text = fourbar_expansion();
+        let mut checked = 0;
+        for body in text.split("pub fn ").skip(1) {
+            let body = body.split("\n        }\n").next().unwrap_or(body);
+            for line in body.lines() {
+                let Some((name, value)) = line
+                    .trim()
+                    .strip_prefix("let ")
+                    .and_then(|l| l.split_once(" = "))
+                else {
+                    continue;
+                };
+                let value = value.trim_end_matches(';');
+                let is_product = value.split(" * ").count() > 1
+                    && value
+                        .split(" * ")
+                        .all(|f| f.chars().all(|c| c.is_alphanumeric() || c == '_'));
+                if !is_product {
+                    continue;
+                }
+                assert_eq!(
+                    body.matches(value).count(),
+                    1,
+                    "`{value}` is bound to `{name}` but written out again in:\n{body}"
+                );
+                checked += 1;
+            }
+        }
+        assert!(checked >= 6, "only {checked} named products seen");
+        assert!(text.contains("gamma[0] = -l3_c_theta3 * theta3_dot.powi(2)"));
+    }
+
+    /// The excerpts of generated code in the guide (its `rust,ignore`
+    /// blocks) are the expansion's own lines, indentation aside: the guide
+    /// shows what the macro emits today.
+    #[test]
+    fn the_guides_excerpts_are_the_generated_code() {
+        let guide = std::fs::read_to_string(
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/guide.md"),
+        )
+        .expect("docs/guide.md");
+        let trimmed = |lines: &[&str]| -> Vec<String> {
+            lines
+                .iter()
+                .map(|l| l.trim().to_owned())
+                .filter(|l| !l.is_empty())
+                .collect()
+        };
+        let text = fourbar_expansion();
+        let expansion = trimmed(&text.lines().collect::<Vec<_>>());
+        let mut excerpts = 0;
+        let mut lines = guide.lines();
+        while lines.any(|l| l.starts_with("```rust,ignore")) {
+            let block: Vec<&str> = lines.by_ref().take_while(|l| *l != "```").collect();
+            let excerpt = trimmed(&block);
+            assert!(
+                expansion
+                    .windows(excerpt.len())
+                    .any(|w| w == excerpt.as_slice()),
+                "an excerpt of the guide is not in the expansion:\n{}",
+                excerpt.join("\n")
+            );
+            excerpts += 1;
+        }
+        assert_eq!(excerpts, 2, "the guide shows Ψ_u and γ");
     }
 }

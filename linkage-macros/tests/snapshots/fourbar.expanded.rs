@@ -15,6 +15,21 @@ const _: () = {
         pub const V_NAMES: [&'static str; 1] = ["theta2"];
         /// The named points, in order.
         pub const POINT_NAMES: [&'static str; 5] = ["B", "C", "G2", "G3", "G4"];
+        /// The index of the point `B`: `pose.points[Self::B]`.
+        #[allow(non_upper_case_globals)]
+        pub const B: usize = 0usize;
+        /// The index of the point `C`: `pose.points[Self::C]`.
+        #[allow(non_upper_case_globals)]
+        pub const C: usize = 1usize;
+        /// The index of the point `G2`: `pose.points[Self::G2]`.
+        #[allow(non_upper_case_globals)]
+        pub const G2: usize = 2usize;
+        /// The index of the point `G3`: `pose.points[Self::G3]`.
+        #[allow(non_upper_case_globals)]
+        pub const G3: usize = 3usize;
+        /// The index of the point `G4`: `pose.points[Self::G4]`.
+        #[allow(non_upper_case_globals)]
+        pub const G4: usize = 4usize;
         /// Ψ(u, v): the closure equations, zero at every assembled pose.
         ///
         /// ```text
@@ -510,12 +525,10 @@ const _: () = {
             let udot = -(inverse * (psi_v * vdot));
             let (theta3_dot, theta4_dot) = (udot[0], udot[1]);
             let mut gamma = SVector::<f64, 2>::zeros();
-            gamma[0] = -l3 * c_theta3 * theta3_dot.powi(2)
-                - l4 * c_theta4 * theta4_dot.powi(2)
-                - l2 * c_theta2 * theta2_dot.powi(2);
-            gamma[1] = -l3 * s_theta3 * theta3_dot.powi(2)
-                - l4 * s_theta4 * theta4_dot.powi(2)
-                - l2 * s_theta2 * theta2_dot.powi(2);
+            gamma[0] = -l3_c_theta3 * theta3_dot.powi(2)
+                - l4_c_theta4 * theta4_dot.powi(2) - l2_c_theta2 * theta2_dot.powi(2);
+            gamma[1] = -l3_s_theta3 * theta3_dot.powi(2)
+                - l4_s_theta4 * theta4_dot.powi(2) - l2_s_theta2 * theta2_dot.powi(2);
             let uddot = -(inverse * (psi_v * vddot + gamma));
             ::linkage::Kinematics {
                 psi,
@@ -579,12 +592,10 @@ const _: () = {
             let udot = -(inverse * (psi_v * vdot));
             let (theta3_dot, theta4_dot) = (udot[0], udot[1]);
             let mut gamma = SVector::<f64, 2>::zeros();
-            gamma[0] = -l3 * c_theta3 * theta3_dot.powi(2)
-                - l4 * c_theta4 * theta4_dot.powi(2)
-                - l2 * c_theta2 * theta2_dot.powi(2);
-            gamma[1] = -l3 * s_theta3 * theta3_dot.powi(2)
-                - l4 * s_theta4 * theta4_dot.powi(2)
-                - l2 * s_theta2 * theta2_dot.powi(2);
+            gamma[0] = -l3_c_theta3 * theta3_dot.powi(2)
+                - l4_c_theta4 * theta4_dot.powi(2) - l2_c_theta2 * theta2_dot.powi(2);
+            gamma[1] = -l3_s_theta3 * theta3_dot.powi(2)
+                - l4_s_theta4 * theta4_dot.powi(2) - l2_s_theta2 * theta2_dot.powi(2);
             let uddot = -(inverse * (psi_v * vddot + gamma));
             ::linkage::Kinematics {
                 psi,

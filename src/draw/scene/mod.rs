@@ -39,7 +39,7 @@
 //!     .link(["B", "C"])
 //!     .link(["C", "D"])
 //!     .velocities(["B", "C"]);
-//! let svg = scene.render(&Frame::from_analysis::<FourBar, 2, 1>(&pose), &[])?;
+//! let svg = scene.render(&Frame::from_analysis(&bar, &pose), &[])?;
 //! assert!(svg.starts_with("<svg"));
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
@@ -109,8 +109,10 @@ pub struct Frame {
 }
 
 impl Frame {
-    /// The points of a whole analysis ([`Linkage::analyze`]).
+    /// The points of a whole analysis ([`Linkage::analyze`]) of `model`
+    /// (which names the points).
     pub fn from_analysis<L: Linkage<M, F>, const M: usize, const F: usize>(
+        _model: &L,
         analysis: &Analysis<M, F, L::Points>,
     ) -> Frame {
         Frame {
