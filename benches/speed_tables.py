@@ -1,4 +1,4 @@
-"""Summarises the runs of benches/speed_tables.sh into the README's speed
+"""Summarises the runs of benches/speed_tables.sh into docs/performance.md's speed
 tables: the median of the runs and their spread (min–max), with the commit
 and the date.
 

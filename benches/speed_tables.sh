@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Re-measures every speed table of the README in one session: three runs,
+# Re-measures every speed table of docs/performance.md in one session: three runs,
 # each of them ours (`speed_accuracy`), the peers (benches/peers/run.sh), the
 # criterion benchmarks of analyze and the sweep, and the batch, back to back
 # so that they share the machine's state; then prints the tables with the

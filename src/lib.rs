@@ -2,11 +2,16 @@
 //!
 //! Planar mechanisms from their loop-closure equations. Write the equations
 //! Ψ(u, v) = 0 as Rust expressions in an attribute on a struct of
-//! parameters; the `#[linkage::linkage(...)]` macro differentiates them
-//! symbolically at compile time and emits straight-line Rust for Ψ, its
-//! Jacobians Ψ_q, Ψ_u, Ψ_v, the second-order terms of both acceleration
-//! methods and the kinematics of named points. The runtime solves positions
-//! by Newton–Raphson, then velocities and accelerations.
+//! parameters; the [`#[linkage::linkage(...)]`](macro@linkage) macro
+//! differentiates them symbolically at compile time and emits straight-line
+//! Rust for Ψ, its Jacobians Ψ_q, Ψ_u, Ψ_v, the second-order terms of both
+//! acceleration methods and the kinematics of named points. The runtime
+//! solves positions by Newton–Raphson, then velocities and accelerations.
+//!
+//! ## A first mechanism
+//!
+//! In `Cargo.toml`, `linkage` is the only dependency needed (nalgebra's
+//! types and the [`vector!`] and [`matrix!`] macros come through it).
 //!
 //! ```
 //! use linkage::prelude::*;
@@ -37,12 +42,53 @@
 //!     &Options::default(),
 //! )?;
 //! assert!((pose.u[0].to_degrees() - 70.55076547).abs() < 1e-8);
+//! let c = pose.points[FourBar::C]; // each named point's index, generated
+//! assert!((c.x - 35.44242865).abs() < 1e-8);
 //! # Ok::<(), linkage::Error>(())
 //! ```
 //!
-//! The attribute must be written with its path, `#[linkage::linkage(...)]`:
-//! rustc has a built-in attribute named `linkage`, so a bare `#[linkage]`
-//! is ambiguous (error E0659).
+//! The attribute's grammar — its keys, what an expression may use, the
+//! notation — is documented on [the attribute itself](macro@linkage).
+//!
+//! ## What you get
+//!
+//! - On the struct: the generated functions (`psi`, `psi_u`, `gamma`,
+//!   `point_positions`, …, each documented with its formula), one
+//!   constant per named point (its index: `pose.points[FourBar::C]`) and an
+//!   implementation of [`Linkage`], whose provided methods are the
+//!   analyses: [`Linkage::solve_position`], [`Linkage::velocity`],
+//!   [`Linkage::acceleration`], [`Linkage::analyze`] (all of one pose),
+//!   [`Linkage::sweep`] and [`Linkage::sweep_each`] (continuation along a
+//!   drive, through singular poses).
+//! - [`watch`]: the dead centres, strokes and extremes along a sweep,
+//!   located in the driver to rounding.
+//! - [`batch`]: many designs or drives at once, in parallel.
+//! - `draw` (feature, default): pictures of poses, animations, motion
+//!   diagrams; [`machine`] and [`cam`]: reduced dynamics, flywheel, joint
+//!   reactions, cam design; [`mechanisms`]: the worksheet's four-bar, ready.
+//!
+//! ## The defaults
+//!
+//! [`Options::default`] (one pose): Newton stops at ‖Ψ‖∞ ≤ 1e-9 and a step
+//! ‖Δu‖∞ ≤ 1e-10·max(1, ‖u‖∞), at most 50 steps; a result must keep a
+//! relative accuracy of 1e-6 or the solve returns [`Error::Singular`]; γ in
+//! fused form, Jacobians from the generated code, plain (undamped) Newton.
+//!
+//! [`SweepOptions::default`] (a sweep): those options, and **`speed` 1**:
+//! the poses' `udot` and `uddot` are then the kinematic analogs du/dv and
+//! d²u/dv², not velocities — set `speed` to the driver's speed (ω2 in rad/s)
+//! for velocities and accelerations in time.
+//!
+//! Every analysis returns a typed [`Error`] rather than panic, and never a
+//! NaN or an infinity inside `Ok`.
+//!
+//! ## Where to go next
+//!
+//! The repository's `docs/guide.md` walks through the generated code
+//! (`cargo expand`), compile-time mistakes, sweeps and singular poses,
+//! extremes and pictures; `cargo run --release --example fourbar`
+//! reproduces the Maple worksheet, `--example shaper` and `--example cam`
+//! the Mathcad course project of a shaping machine.
 #![forbid(unsafe_code)]
 
 extern crate self as linkage;
@@ -60,18 +106,45 @@ mod numerics;
 mod vectors;
 pub mod watch;
 
+#[doc(inline)]
+#[doc = include_str!("../docs/attribute.md")]
 pub use linkage_macros::linkage;
+// Not inlined: rustdoc shows an inlined item from another crate with its
+// type aliases expanded (`Matrix<f64, Const<M>, …>` for `SVector<f64, M>`);
+// linked, the runtime's pages show the signatures as written.
+#[doc(no_inline)]
 pub use linkage_runtime::*;
 pub use nalgebra;
 pub use num_dual;
+
+/// The code blocks of the README and of the pages in docs/, compiled and
+/// run with the doctests, so that what they show cannot rot.
+#[cfg(doctest)]
+mod documentation {
+    #[doc = include_str!("../README.md")]
+    struct Readme;
+    #[doc = include_str!("../docs/attribute.md")]
+    struct Attribute;
+    #[cfg(feature = "draw")]
+    #[doc = include_str!("../docs/guide.md")]
+    struct Guide;
+    #[doc = include_str!("../docs/reproductions.md")]
+    struct Reproductions;
+    #[doc = include_str!("../docs/performance.md")]
+    struct Performance;
+    #[doc = include_str!("../docs/reliability.md")]
+    struct Reliability;
+}
 
 /// Everything a user of the attribute needs: the runtime's types, the
 /// `Linkage` trait (for the analyses), nalgebra's vector and matrix types,
 /// and [`vector!`](crate::vector) and [`matrix!`](crate::matrix), which
 /// resolve through linkage (no direct nalgebra dependency needed).
 pub mod prelude {
+    #[doc(no_inline)]
     pub use crate::linkage;
     pub use crate::{matrix, vector};
+    #[doc(no_inline)]
     pub use linkage_runtime::{
         AccelerationMethod, Analysis, Drive, Error, Event, EventKind, Iterate, JacobianSource,
         Kinematics, Linkage, Options, Position, Stage, Sweep, SweepOptions, SweepPose,

@@ -21,9 +21,8 @@ mod run_emitted;
 
 use proc_macro::TokenStream;
 
-/// Generates Ψ, its Jacobians, the second-order terms of both acceleration
-/// methods, the points' kinematics and an implementation of
-/// `linkage::Linkage` from closure equations. See the `linkage` crate.
+// Documented where users meet it, on the `linkage` crate's re-export
+// (docs/attribute.md).
 #[proc_macro_attribute]
 pub fn linkage(attr: TokenStream, item: TokenStream) -> TokenStream {
     expand::expand(attr.into(), item.into()).into()

@@ -32,7 +32,10 @@ pub enum JacobianSource {
     FiniteDifference,
 }
 
-/// Tolerances and choices of the solvers.
+/// Tolerances and choices of the solvers. The defaults: `residual_tol`
+/// 1e-9, `step_tol` 1e-10, `max_iterations` 50, `accuracy` 1e-6, `method`
+/// [`AccelerationMethod::Fused`], `jacobian` [`JacobianSource::Generated`],
+/// `damped` false.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Options {
     /// Newton–Raphson stops when ‖Ψ‖∞ ≤ `residual_tol` (in the units of the
@@ -83,7 +86,7 @@ impl Default for Options {
 
 impl Options {
     /// That every setting is in its range: tolerances ≥ 0, the accuracy
-    /// > 0 (∞ allowed), nothing NaN.
+    /// positive (∞ allowed), nothing NaN.
     pub fn check(&self) -> Result<(), Error> {
         let invalid = |argument, value, why| {
             Err(Error::InvalidInput {

@@ -85,7 +85,12 @@ pub enum Drive<const F: usize> {
     },
 }
 
-/// The choices of a sweep.
+/// The choices of a sweep. The defaults: [`Options::default`], `speed`
+/// 1 (so the poses' `udot` and `uddot` are the kinematic analogs du/dv and
+/// d²u/dv², not velocities: set `speed` to the driver's speed, e.g. ω2 in
+/// rad/s, for velocities and accelerations), `second_order` true,
+/// `continuity` 0.5, `min_substep` 1e-12, `max_move` 0.1, `max_substeps`
+/// 100 000.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SweepOptions {
     /// Newton's tolerances and the other solver choices.
