@@ -2,14 +2,16 @@
 //! drawn element, looping.
 
 use super::layout::Placed;
-use super::symbols::ground_symbol;
+use super::symbols::{ground_symbol, guide_symbol};
 use super::{Frame, Scene, SceneError, positive, resolve};
 use crate::draw::svg::{Writer, fmt};
 
 impl Scene {
     /// An animation of `cycle` (its frames at equal time steps, looping
     /// over `seconds`), as SVG with SMIL animations: self-contained, played
-    /// by any browser.
+    /// by any browser. Titled by [`Scene::animation_title`] (not by
+    /// [`Scene::title`], which names a pose); automatic arrow scales are
+    /// chosen over the whole cycle, as [`Scene::render`] chooses them.
     pub fn animate(&self, cycle: &[Frame], seconds: f64) -> Result<String, SceneError> {
         if cycle.len() < 2 {
             return Err(SceneError::TooFewFrames {
@@ -17,10 +19,14 @@ impl Scene {
             });
         }
         positive("the animation's duration", seconds)?;
-        let layout = self.layout(cycle, cycle)?;
-        let mut w = layout.open(self);
-        self.draw_traces(&mut w, &layout, cycle)?;
-        self.draw_guides(&mut w, &layout, cycle, cycle)?;
+        let layout = self.layout(cycle, cycle, self.animation_title.as_deref())?;
+        let mut w = layout.open();
+        let traces = self.trace_paths(&layout, cycle)?;
+        self.draw_traces(&mut w, &traces);
+        let guides = self.guides(&layout, cycle, cycle)?;
+        for guide in &guides {
+            guide_symbol(&mut w, guide);
+        }
         for (name, _) in &self.ground {
             let at = resolve(&cycle[0], name, &self.ground)?;
             ground_symbol(&mut w, layout.screen(at));
@@ -38,7 +44,8 @@ impl Scene {
         self.draw_points(&mut w, &frames[0], Some(&motion));
         self.draw_arrows(&mut w, &layout, &cycle[0], Some((cycle, seconds)))?;
         if self.labels {
-            let obstacles = self.obstacles(&layout, &cycle[0], &frames[0]);
+            let arrows = self.arrows(&layout, &cycle[0])?;
+            let obstacles = self.obstacles(&layout, &frames[0], &arrows, &guides, &traces);
             self.draw_labels(&mut w, &frames[0], Some(&motion), &obstacles);
         }
         self.draw_legend(&mut w, &layout, true);

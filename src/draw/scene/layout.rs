@@ -1,17 +1,20 @@
 //! The layout of a scene: the scale fitted to everything drawn, the
-//! screen positions of the points, and where the labels go (clear of the
-//! bars, arrows, symbols and one another).
+//! arrows' scales, and the screen positions of the points.
 
-use super::animation::Motion;
-use super::symbols::style;
-use super::{Frame, Scene, SceneError, Shape, Slideway, finite, resolve, unknown};
+use super::arrows::Kind;
+use super::style;
+use super::{Frame, Scene, SceneError, finite, resolve, unknown};
 use crate::draw::svg::{Writer, fmt};
-use linkage_symbolic::names::textbook;
 use nalgebra::Vector2;
 
 impl Scene {
     /// The scale of the drawing and the arrows, fitted to every frame.
-    pub(super) fn layout(&self, frames: &[Frame], cycle: &[Frame]) -> Result<Layout, SceneError> {
+    pub(super) fn layout(
+        &self,
+        frames: &[Frame],
+        cycle: &[Frame],
+        title: Option<&str>,
+    ) -> Result<Layout, SceneError> {
         if !(200.0..=20_000.0).contains(&self.width) {
             return Err(SceneError::BadSetting {
                 what: "the width",
@@ -44,7 +47,7 @@ impl Scene {
         let lookup = |frame: &Frame, name: &str| -> Result<Vector2<f64>, SceneError> {
             resolve(frame, name, &self.ground)
         };
-        // The mechanism's extent (arrows excluded) sets the automatic scales.
+        // The mechanism (arrows excluded) as drawn.
         let mut bounds = Bounds::default();
         for frame in frames {
             for name in self.names() {
@@ -72,45 +75,13 @@ impl Scene {
                 }
             }
         }
-        let extent = bounds.extent().max(f64::MIN_POSITIVE);
-        let longest = |kinds: &[String], pick: fn(&Frame) -> Option<&Vec<Vector2<f64>>>, what| {
-            let mut longest: f64 = 0.0;
-            for frame in frames {
-                for name in kinds {
-                    let vectors = pick(frame).ok_or(SceneError::MissingKinematics { what })?;
-                    let k = frame.index(name).ok_or_else(|| unknown(frame, name))?;
-                    let vector = vectors[k];
-                    finite(vector, what, name)?;
-                    longest = longest.max(vector.norm());
-                }
-            }
-            Ok::<f64, SceneError>(longest)
-        };
-        let auto = |given: Option<f64>, longest: f64| {
-            given.unwrap_or_else(|| {
-                if longest > 0.0 {
-                    nice_below(style::ARROW_FRACTION * extent / longest)
-                } else {
-                    1.0
-                }
-            })
-        };
-        let velocity_scale = auto(
-            self.velocity_scale,
-            longest(
-                &self.velocity_arrows,
-                |f| f.velocities.as_ref(),
-                "velocities",
-            )?,
-        );
-        let acceleration_scale = auto(
-            self.acceleration_scale,
-            longest(
-                &self.acceleration_arrows,
-                |f| f.accelerations.as_ref(),
-                "accelerations",
-            )?,
-        );
+        let velocity_scale = self
+            .velocity_scale
+            .map_or_else(|| self.automatic_scale(Kind::Velocity, frames, cycle), Ok)?;
+        let acceleration_scale = self.acceleration_scale.map_or_else(
+            || self.automatic_scale(Kind::Acceleration, frames, cycle),
+            Ok,
+        )?;
         // Everything drawn: the arrows' tips too.
         for frame in frames {
             for (names, vectors, scale) in [
@@ -151,7 +122,7 @@ impl Scene {
         Ok(Layout::fit(
             &bounds,
             self.width,
-            self.title.is_some(),
+            title,
             legend_lines,
             velocity_scale,
             acceleration_scale,
@@ -177,136 +148,65 @@ impl Scene {
         Ok(placed)
     }
 
-    /// Names beside the points, each where it is farthest from the bars,
-    /// arrows, points and the labels already placed (chosen on the first
-    /// frame; an animated label keeps its offset from its point).
-    pub(super) fn draw_labels(
+    /// The scale of the arrows of `kind` when none is given: the longest
+    /// such arrow over the frames and the cycle drawn as long as
+    /// `style::ARROW_FRACTION` of the mechanism's extent over them, the
+    /// scale rounded down to 1, 2 or 5 × 10ᵏ. A still and an animation
+    /// of one motion so get the same scales. (The cycle's frames count
+    /// where they can be drawn: one without the vectors, or with a point
+    /// not finite, is passed over.)
+    fn automatic_scale(
         &self,
-        w: &mut Writer,
-        at: &Placed,
-        motion: Option<&Motion>,
-        obstacles: &[(Vector2<f64>, Vector2<f64>)],
-    ) {
-        let mut taken: Vec<Vector2<f64>> = Vec::new();
-        for (name, p) in &at.points {
-            let mut best = (f64::NEG_INFINITY, Vector2::new(12.0, -12.0));
-            for radius in [14.0, 20.0] {
-                for k in 0..16 {
-                    // From the upper right, counter-clockwise on the screen.
-                    let angle =
-                        std::f64::consts::FRAC_PI_4 + k as f64 * std::f64::consts::TAU / 16.0;
-                    let offset = Vector2::new(angle.cos(), -angle.sin()) * radius;
-                    let c = p + offset;
-                    let mut clearance = f64::INFINITY;
-                    for (a, b) in obstacles {
-                        clearance = clearance.min(segment_distance(c, *a, *b) - 8.0);
-                    }
-                    for (_, q) in &at.points {
-                        clearance = clearance.min((c - q).norm() - 9.0);
-                    }
-                    for q in &taken {
-                        clearance = clearance.min((c - q).norm() - 16.0);
-                    }
-                    // Near is better, once clear.
-                    let score = clearance.min(6.0) - 0.05 * radius;
-                    if score > best.0 {
-                        best = (score, offset);
-                    }
-                }
-            }
-            let offset = best.1;
-            taken.push(p + offset);
-            // Centred on the spot: anchored in the middle, baseline 5 px
-            // below the centre.
-            let spot = |q: Vector2<f64>| q + offset + Vector2::new(0.0, 5.0);
-            let q = spot(*p);
-            w.open(
-                "text",
-                &[
-                    ("class", "label"),
-                    ("x", &fmt(q.x)),
-                    ("y", &fmt(q.y)),
-                    ("text-anchor", "middle"),
-                    ("font-family", style::FONT),
-                    ("font-style", "italic"),
-                    ("font-size", "15"),
-                    ("fill", style::INK),
-                ],
-            );
-            if let Some(m) = motion {
-                m.animate(w, "x", |f| fmt(spot(f.get(name)).x));
-                m.animate(w, "y", |f| fmt(spot(f.get(name)).y));
-            }
-            w.text(&textbook(name));
-            w.close("text");
-        }
-    }
-
-    /// The segments a label should keep clear of: bars, plate edges,
-    /// arrows, ground symbols and slider blocks, on the screen.
-    pub(super) fn obstacles(
-        &self,
-        layout: &Layout,
-        frame: &Frame,
-        at: &Placed,
-    ) -> Vec<(Vector2<f64>, Vector2<f64>)> {
-        let mut out = Vec::new();
-        for body in &self.shapes {
-            match body {
-                Shape::Bar([a, b]) => out.push((at.get(a), at.get(b))),
-                Shape::Plate(corners) => {
-                    for (i, a) in corners.iter().enumerate() {
-                        let b = &corners[(i + 1) % corners.len()];
-                        out.push((at.get(a), at.get(b)));
-                    }
-                }
+        kind: Kind,
+        frames: &[Frame],
+        cycle: &[Frame],
+    ) -> Result<f64, SceneError> {
+        let names = match kind {
+            Kind::Velocity => &self.velocity_arrows,
+            Kind::Acceleration => &self.acceleration_arrows,
+        };
+        let mut longest: f64 = 0.0;
+        let mut extent = Bounds::default();
+        for frame in frames {
+            for name in names {
+                let k = frame.index(name).ok_or_else(|| unknown(frame, name))?;
+                let vector = kind.vectors(frame)?[k];
+                finite(vector, kind.plural(), name)?;
+                longest = longest.max(vector.norm());
             }
         }
-        for (name, _) in &self.ground {
-            let p = at.get(name);
-            out.push((p, p + Vector2::new(0.0, style::GROUND_HEIGHT + 6.0)));
-        }
-        for slider in &self.sliders {
-            // The block's outline (30 × 18 px).
-            let p = at.get(&slider.point);
-            let along = match &slider.guide {
-                Slideway::Link([a, b]) => (at.get(b) - at.get(a))
-                    .try_normalize(1e-12)
-                    .unwrap_or(Vector2::x()),
-                _ => Vector2::new(slider.angle.cos(), -slider.angle.sin()),
+        for frame in cycle {
+            let Ok(vectors) = kind.vectors(frame) else {
+                continue;
             };
-            let across = Vector2::new(-along.y, along.x);
-            let corners = [(-15.0, -9.0), (15.0, -9.0), (15.0, 9.0), (-15.0, 9.0)]
-                .map(|(a, c)| p + along * a + across * c);
-            for i in 0..4 {
-                out.push((corners[i], corners[(i + 1) % 4]));
-            }
-        }
-        for (names, vectors, scale) in [
-            (
-                &self.velocity_arrows,
-                &frame.velocities,
-                layout.velocity_scale,
-            ),
-            (
-                &self.acceleration_arrows,
-                &frame.accelerations,
-                layout.acceleration_scale,
-            ),
-        ] {
-            if let Some(vectors) = vectors {
-                for name in names {
-                    if let Some(k) = frame.index(name) {
-                        let base = frame.positions[k];
-                        out.push((
-                            layout.screen(base),
-                            layout.screen(base + vectors[k] * scale),
-                        ));
+            for name in names {
+                if let Some(vector) = frame.index(name).and_then(|k| vectors.get(k)) {
+                    if vector.x.is_finite() && vector.y.is_finite() {
+                        longest = longest.max(vector.norm());
                     }
                 }
             }
         }
-        out
+        for frame in frames.iter().chain(cycle) {
+            for name in self.names().chain(self.ground.iter().map(|(n, _)| n)) {
+                if let Ok(p) = resolve(frame, name, &self.ground) {
+                    extent.add(p);
+                }
+            }
+        }
+        if extent.is_empty() {
+            for frame in frames {
+                for p in &frame.positions {
+                    extent.add(*p);
+                }
+            }
+        }
+        let extent = extent.extent().max(f64::MIN_POSITIVE);
+        Ok(if longest > 0.0 {
+            nice_below(style::ARROW_FRACTION * extent / longest)
+        } else {
+            1.0
+        })
     }
 }
 
@@ -347,17 +247,6 @@ pub(super) fn nice_below(x: f64) -> f64 {
         1.0
     };
     nice * decade
-}
-
-/// The distance from c to the segment ab.
-fn segment_distance(c: Vector2<f64>, a: Vector2<f64>, b: Vector2<f64>) -> f64 {
-    let ab = b - a;
-    let t = if ab.norm_squared() > 0.0 {
-        ((c - a).dot(&ab) / ab.norm_squared()).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (a + ab * t - c).norm()
 }
 
 /// A scale or a length as a reader would write it: 0.02, 0.0005, 2000;
@@ -408,6 +297,7 @@ pub(super) struct Layout {
     pub(super) width: f64,
     pub(super) height: f64,
     pub(super) legend_top: f64,
+    pub(super) title: Option<String>,
     pub(super) velocity_scale: f64,
     pub(super) acceleration_scale: f64,
 }
@@ -416,7 +306,7 @@ impl Layout {
     fn fit(
         bounds: &Bounds,
         width: f64,
-        titled: bool,
+        title: Option<&str>,
         legend_lines: usize,
         velocity_scale: f64,
         acceleration_scale: f64,
@@ -430,7 +320,7 @@ impl Layout {
         // Not taller than wide by more than 1.4: a tall mechanism is drawn
         // smaller.
         let scale = (inner / size.x).min(1.4 * inner / size.y);
-        let top = style::MARGIN + if titled { 34.0 } else { 0.0 };
+        let top = style::MARGIN + if title.is_some() { 34.0 } else { 0.0 };
         let drawing = size.y * scale;
         // Room under the drawing for the ground symbols, then the legend.
         let legend_top = top + drawing + style::GROUND_HEIGHT + 50.0;
@@ -444,6 +334,7 @@ impl Layout {
             width,
             height,
             legend_top,
+            title: title.map(String::from),
             velocity_scale,
             acceleration_scale,
         }
@@ -458,13 +349,14 @@ impl Layout {
         )
     }
 
-    pub(super) fn open(&self, scene: &Scene) -> Writer {
+    /// The document, its background and its title, if any.
+    pub(super) fn open(&self) -> Writer {
         let mut w = Writer::svg(self.width, self.height);
         w.element(
             "rect",
             &[("width", "100%"), ("height", "100%"), ("fill", "white")],
         );
-        if let Some(title) = &scene.title {
+        if let Some(title) = &self.title {
             w.open(
                 "text",
                 &[

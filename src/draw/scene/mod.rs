@@ -47,22 +47,32 @@
 //! Drawing conventions: x to the right and y up, one scale for both axes,
 //! fitted to the picture; ground pivots hatched; links as bars, joints as
 //! open circles, other points as dots; velocities green and accelerations
-//! red (as in the Maple worksheet), each with its scale in the legend.
+//! red (as in the Maple worksheet), each with its scale in the legend,
+//! drawn above the links with a white outline, arrows that would lie on
+//! one another moved apart sideways; each traced path in its own colour
+//! and dash pattern; labels where they overlap nothing drawn.
 //!
 //! The area's files: the description (here: [`Scene`], [`Frame`], the
-//! checks), the layout (`layout.rs`: the scale, the screen positions, where
-//! labels go), the drawing symbols (`symbols.rs`: links, sliders, arrows,
-//! ground and guides, the legend) and the animation (`animation.rs`).
+//! checks), the layout (`layout.rs`: the scale, the arrows' scales, the
+//! screen positions), the look (`style.rs`), the drawing symbols
+//! (`symbols.rs`: traces, guides, links, sliders, points, ground), the
+//! arrows (`arrows.rs`), the labels (`labels.rs`, on `geometry.rs`), the
+//! legend (`legend.rs`) and the animation (`animation.rs`).
 
 mod animation;
+mod arrows;
+mod geometry;
+mod labels;
 mod layout;
+mod legend;
+mod style;
 mod symbols;
 
 use crate::error::{NameKind, UnknownName};
 use crate::ground::Ground;
 use linkage_runtime::{Analysis, Linkage, SweepPose};
 use nalgebra::{SVector, Vector2};
-use symbols::ground_symbol;
+use symbols::{ground_symbol, guide_symbol};
 
 /// What went wrong drawing a scene.
 #[derive(Clone, Debug, PartialEq)]
@@ -223,6 +233,7 @@ pub struct Scene {
     traces: Vec<String>,
     labels: bool,
     title: Option<String>,
+    animation_title: Option<String>,
     length_unit: String,
     time_unit: String,
     width: f64,
@@ -248,6 +259,7 @@ impl Scene {
             traces: Vec::new(),
             labels: true,
             title: None,
+            animation_title: None,
             length_unit: "mm".into(),
             time_unit: "s".into(),
             width: 720.0,
@@ -357,9 +369,18 @@ impl Scene {
         self
     }
 
-    /// A title above the drawing.
+    /// A title above the still picture ([`Scene::render`]): it may name
+    /// the pose. An animation does not carry it (see
+    /// [`Scene::animation_title`]).
     pub fn title(mut self, title: &str) -> Scene {
         self.title = Some(title.into());
+        self
+    }
+
+    /// A title above the animation ([`Scene::animate`]), which shows a
+    /// whole cycle (so it should not name a pose); none if not set.
+    pub fn animation_title(mut self, title: &str) -> Scene {
+        self.animation_title = Some(title.into());
         self
     }
 
@@ -378,12 +399,20 @@ impl Scene {
     }
 
     /// The pose `frame` as SVG, with the traced paths over `cycle` (frames
-    /// of the whole motion; may be empty).
+    /// of the whole motion; may be empty). Automatic arrow scales are
+    /// chosen over the frame and the cycle, as [`Scene::animate`] chooses
+    /// them over the cycle: a still of a pose of the cycle and the
+    /// animation share their scales.
     pub fn render(&self, frame: &Frame, cycle: &[Frame]) -> Result<String, SceneError> {
-        let layout = self.layout(std::slice::from_ref(frame), cycle)?;
-        let mut w = layout.open(self);
-        self.draw_traces(&mut w, &layout, cycle)?;
-        self.draw_guides(&mut w, &layout, std::slice::from_ref(frame), cycle)?;
+        let frames = std::slice::from_ref(frame);
+        let layout = self.layout(frames, cycle, self.title.as_deref())?;
+        let mut w = layout.open();
+        let traces = self.trace_paths(&layout, cycle)?;
+        self.draw_traces(&mut w, &traces);
+        let guides = self.guides(&layout, frames, cycle)?;
+        for guide in &guides {
+            guide_symbol(&mut w, guide);
+        }
         for (name, _) in &self.ground {
             let at = resolve(frame, name, &self.ground)?;
             ground_symbol(&mut w, layout.screen(at));
@@ -394,7 +423,8 @@ impl Scene {
         self.draw_points(&mut w, &placed, None);
         self.draw_arrows(&mut w, &layout, frame, None)?;
         if self.labels {
-            let obstacles = self.obstacles(&layout, frame, &placed);
+            let arrows = self.arrows(&layout, frame)?;
+            let obstacles = self.obstacles(&layout, &placed, &arrows, &guides, &traces);
             self.draw_labels(&mut w, &placed, None, &obstacles);
         }
         self.draw_legend(&mut w, &layout, !cycle.is_empty());

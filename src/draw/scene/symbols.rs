@@ -1,56 +1,79 @@
-//! The drawing symbols of a scene: traces, guides, links and plates,
-//! slider blocks, joints and points, velocity and acceleration arrows,
-//! ground pivots, and the legend.
-//!
-//! Over 600 lines, as one idea: every element a scene draws, each a short
-//! function that writes its SVG in the scene's style (the `style` module);
-//! split further, the pieces would only share that style and the `Arrow`.
+//! The drawing symbols of a scene: traced paths, guides, links and
+//! plates, slider blocks, joints and points, ground pivots. (Arrows are in
+//! `arrows.rs`, labels in `labels.rs`, the legend in `legend.rs`.)
 
-use super::animation::{Motion, animate_values};
-use super::layout::{Layout, Placed, nice_below, number};
-use super::{Frame, Scene, SceneError, Shape, Slideway, resolve, unknown};
+use super::animation::Motion;
+use super::geometry::{Capsule, Rect};
+use super::layout::{Layout, Placed};
+use super::style;
+use super::{Frame, Scene, SceneError, Shape, Slideway, resolve};
 use crate::draw::svg::{Writer, fmt};
-use linkage_symbolic::names::textbook;
 use nalgebra::Vector2;
 use std::fmt::Write as _;
 
-pub(super) mod style {
-    pub const INK: &str = "#1b1b1b";
-    pub const BAR: &str = "#3a4a5c";
-    pub const PLATE_FILL: &str = "#dbe4ee";
-    pub const VELOCITY: &str = "#2e7d32";
-    pub const ACCELERATION: &str = "#c62828";
-    pub const TRACE: &str = "#7b8794";
-    pub const BAR_WIDTH: f64 = 5.0;
-    pub const JOINT_RADIUS: f64 = 4.5;
-    pub const DOT_RADIUS: f64 = 3.2;
-    pub const ARROW_WIDTH: f64 = 2.2;
-    pub const HEAD_LENGTH: f64 = 11.0;
-    pub const HEAD_HALF_WIDTH: f64 = 4.2;
-    pub const GROUND_HEIGHT: f64 = 14.0;
-    pub const GROUND_HALF_WIDTH: f64 = 11.0;
-    pub const MARGIN: f64 = 46.0;
-    pub const LEGEND_LINE: f64 = 18.0;
-    pub const FONT: &str = "DejaVu Serif, Georgia, 'Times New Roman', serif";
-    /// The longest arrow of each kind, when its scale is chosen
-    /// automatically, as a fraction of the mechanism's extent.
-    pub const ARROW_FRACTION: f64 = 0.3;
+/// A straight guide on the screen: the path of its block's centre from
+/// `a` to `b`, hatched on the side `normal` points to.
+pub(super) struct Guide {
+    point: String,
+    a: Vector2<f64>,
+    b: Vector2<f64>,
+    normal: Vector2<f64>,
+}
+
+impl Guide {
+    fn new(point: &str, a: Vector2<f64>, b: Vector2<f64>) -> Guide {
+        let dir = (b - a).try_normalize(1e-12).unwrap_or(Vector2::x());
+        // The side away from the block: below on the screen for a level
+        // guide.
+        let mut normal = Vector2::new(-dir.y, dir.x);
+        if normal.y < 0.0 {
+            normal = -normal;
+        }
+        Guide {
+            point: point.into(),
+            a,
+            b,
+            normal,
+        }
+    }
+
+    /// The band the guide's line and hatching cover.
+    pub(super) fn hatched_band(&self) -> Capsule {
+        let middle = self.normal * (style::GUIDE_OFFSET + style::GUIDE_HATCH / 2.0);
+        Capsule {
+            a: self.a + middle,
+            b: self.b + middle,
+            radius: style::GUIDE_HATCH / 2.0 + 1.5,
+        }
+    }
 }
 
 impl Scene {
-    pub(super) fn draw_traces(
+    /// Each traced point's path over the cycle, on the screen.
+    pub(super) fn trace_paths(
         &self,
-        w: &mut Writer,
         layout: &Layout,
         cycle: &[Frame],
-    ) -> Result<(), SceneError> {
+    ) -> Result<Vec<Vec<Vector2<f64>>>, SceneError> {
         if cycle.is_empty() {
-            return Ok(());
+            return Ok(Vec::new());
         }
-        for name in &self.traces {
+        self.traces
+            .iter()
+            .map(|name| {
+                cycle
+                    .iter()
+                    .map(|frame| Ok(layout.screen(resolve(frame, name, &self.ground)?)))
+                    .collect()
+            })
+            .collect()
+    }
+
+    /// The traced paths, each in its own style (`style::trace`).
+    pub(super) fn draw_traces(&self, w: &mut Writer, paths: &[Vec<Vector2<f64>>]) {
+        for (k, (name, path)) in self.traces.iter().zip(paths).enumerate() {
             let mut d = String::new();
-            for (i, frame) in cycle.iter().enumerate() {
-                let p = layout.screen(resolve(frame, name, &self.ground)?);
+            for (i, p) in path.iter().enumerate() {
                 let _ = write!(
                     d,
                     "{}{} {} ",
@@ -59,6 +82,7 @@ impl Scene {
                     fmt(p.y)
                 );
             }
+            let look = style::trace(k);
             w.element(
                 "path",
                 &[
@@ -66,24 +90,22 @@ impl Scene {
                     ("class", "trace"),
                     ("d", d.trim_end()),
                     ("fill", "none"),
-                    ("stroke", style::TRACE),
-                    ("stroke-width", "1.2"),
-                    ("stroke-dasharray", "5 3"),
+                    ("stroke", look.colour),
+                    ("stroke-width", &fmt(style::TRACE_WIDTH)),
+                    ("stroke-dasharray", look.dashes),
                 ],
             );
         }
-        Ok(())
     }
 
-    /// Each slider's guide, long enough for its whole stroke, hatched on
-    /// one side.
-    pub(super) fn draw_guides(
+    /// Each slider's guide, long enough for its whole stroke.
+    pub(super) fn guides(
         &self,
-        w: &mut Writer,
         layout: &Layout,
         frames: &[Frame],
         cycle: &[Frame],
-    ) -> Result<(), SceneError> {
+    ) -> Result<Vec<Guide>, SceneError> {
+        let mut guides = Vec::new();
         for slider in self.sliders.iter().filter(|s| s.guide == Slideway::Ground) {
             let dir = Vector2::new(slider.angle.cos(), slider.angle.sin());
             let mut range = (f64::INFINITY, f64::NEG_INFINITY);
@@ -98,9 +120,9 @@ impl Scene {
             let pad = 26.0 / layout.scale;
             let a = layout.screen(o + dir * (range.0 - pad));
             let b = layout.screen(o + dir * (range.1 + pad));
-            guide_symbol(w, a, b, &slider.point);
+            guides.push(Guide::new(&slider.point, a, b));
         }
-        Ok(())
+        Ok(guides)
     }
 
     pub(super) fn draw_links(&self, w: &mut Writer, at: &Placed, motion: Option<&Motion>) {
@@ -232,13 +254,14 @@ impl Scene {
                     ],
                 );
             }
+            let (half_length, half_height) = style::BLOCK_HALF;
             w.element(
                 "rect",
                 &[
-                    ("x", "-15"),
-                    ("y", "-9"),
-                    ("width", "30"),
-                    ("height", "18"),
+                    ("x", &fmt(-half_length)),
+                    ("y", &fmt(-half_height)),
+                    ("width", &fmt(2.0 * half_length)),
+                    ("height", &fmt(2.0 * half_height)),
                     ("rx", "2"),
                     ("fill", style::PLATE_FILL),
                     ("stroke", style::BAR),
@@ -292,239 +315,6 @@ impl Scene {
             w.close("circle");
         }
     }
-
-    pub(super) fn draw_arrows(
-        &self,
-        w: &mut Writer,
-        layout: &Layout,
-        frame: &Frame,
-        motion: Option<(&[Frame], f64)>,
-    ) -> Result<(), SceneError> {
-        for (kind, names, colour, scale) in [
-            (
-                "velocity",
-                &self.velocity_arrows,
-                style::VELOCITY,
-                layout.velocity_scale,
-            ),
-            (
-                "acceleration",
-                &self.acceleration_arrows,
-                style::ACCELERATION,
-                layout.acceleration_scale,
-            ),
-        ] {
-            for name in names {
-                let geometry = |f: &Frame| -> Result<Arrow, SceneError> {
-                    let k = f.index(name).ok_or_else(|| unknown(f, name))?;
-                    let vectors = if kind == "velocity" {
-                        f.velocities.as_ref()
-                    } else {
-                        f.accelerations.as_ref()
-                    };
-                    let vector = vectors.ok_or(SceneError::MissingKinematics {
-                        what: if kind == "velocity" {
-                            "velocities"
-                        } else {
-                            "accelerations"
-                        },
-                    })?[k];
-                    let base = f.positions[k];
-                    Ok(Arrow::new(
-                        layout.screen(base),
-                        layout.screen(base + vector * scale),
-                    ))
-                };
-                let arrow = geometry(frame)?;
-                w.open(
-                    "g",
-                    &[
-                        ("id", &format!("{kind}-{name}")),
-                        ("class", &format!("arrow {kind}")),
-                        ("fill", colour),
-                        ("stroke", colour),
-                    ],
-                );
-                w.open(
-                    "line",
-                    &[
-                        ("x1", &fmt(arrow.base.x)),
-                        ("y1", &fmt(arrow.base.y)),
-                        ("x2", &fmt(arrow.neck.x)),
-                        ("y2", &fmt(arrow.neck.y)),
-                        ("stroke-width", &fmt(style::ARROW_WIDTH)),
-                        ("stroke-linecap", "round"),
-                    ],
-                );
-                let arrows: Vec<Arrow> = match motion {
-                    Some((cycle, _)) => cycle.iter().map(&geometry).collect::<Result<_, _>>()?,
-                    None => Vec::new(),
-                };
-                if let Some((_, seconds)) = motion {
-                    let values = |f: &dyn Fn(&Arrow) -> String| {
-                        arrows.iter().map(f).collect::<Vec<_>>().join(";")
-                    };
-                    animate_values(w, "x1", &values(&|a| fmt(a.base.x)), seconds);
-                    animate_values(w, "y1", &values(&|a| fmt(a.base.y)), seconds);
-                    animate_values(w, "x2", &values(&|a| fmt(a.neck.x)), seconds);
-                    animate_values(w, "y2", &values(&|a| fmt(a.neck.y)), seconds);
-                }
-                w.close("line");
-                w.open(
-                    "polygon",
-                    &[
-                        ("points", &arrow.head()),
-                        ("stroke-width", "0.8"),
-                        ("stroke-linejoin", "round"),
-                    ],
-                );
-                if let Some((_, seconds)) = motion {
-                    let values: Vec<String> = arrows.iter().map(Arrow::head).collect();
-                    animate_values(w, "points", &values.join(";"), seconds);
-                }
-                w.close("polygon");
-                w.close("g");
-            }
-        }
-        Ok(())
-    }
-
-    pub(super) fn draw_legend(&self, w: &mut Writer, layout: &Layout, traced: bool) {
-        let mut y = layout.legend_top;
-        let x = style::MARGIN;
-        let (l, t) = (&self.length_unit, &self.time_unit);
-        let mut line = |w: &mut Writer, colour: &str, text: String| {
-            let arrow = Arrow::new(Vector2::new(x, y - 4.0), Vector2::new(x + 34.0, y - 4.0));
-            w.element(
-                "line",
-                &[
-                    ("x1", &fmt(arrow.base.x)),
-                    ("y1", &fmt(arrow.base.y)),
-                    ("x2", &fmt(arrow.neck.x)),
-                    ("y2", &fmt(arrow.neck.y)),
-                    ("stroke", colour),
-                    ("stroke-width", &fmt(style::ARROW_WIDTH)),
-                ],
-            );
-            w.element("polygon", &[("points", &arrow.head()), ("fill", colour)]);
-            legend_text(w, x + 44.0, y, &text);
-            y += style::LEGEND_LINE;
-        };
-        w.open("g", &[("id", "legend"), ("class", "legend")]);
-        if !self.velocity_arrows.is_empty() {
-            let s = layout.velocity_scale;
-            line(
-                w,
-                style::VELOCITY,
-                format!(
-                    "velocity, scale {}: 1 {l} drawn = {} {l}/{t}",
-                    number(s),
-                    number(1.0 / s)
-                ),
-            );
-        }
-        if !self.acceleration_arrows.is_empty() {
-            let s = layout.acceleration_scale;
-            line(
-                w,
-                style::ACCELERATION,
-                format!(
-                    "acceleration, scale {}: 1 {l} drawn = {} {l}/{t}²",
-                    number(s),
-                    number(1.0 / s)
-                ),
-            );
-        }
-        for name in self.traces.iter().filter(|_| traced) {
-            w.element(
-                "line",
-                &[
-                    ("x1", &fmt(x)),
-                    ("y1", &fmt(y - 4.0)),
-                    ("x2", &fmt(x + 34.0)),
-                    ("y2", &fmt(y - 4.0)),
-                    ("stroke", style::TRACE),
-                    ("stroke-width", "1.2"),
-                    ("stroke-dasharray", "5 3"),
-                ],
-            );
-            legend_text(
-                w,
-                x + 44.0,
-                y,
-                &format!("path of {} over the cycle", textbook(name)),
-            );
-            y += style::LEGEND_LINE;
-        }
-        // A bar of a round length.
-        let length = nice_below(120.0 / layout.scale);
-        let pixels = length * layout.scale;
-        let bar_y = y - 4.0;
-        w.element(
-            "path",
-            &[
-                ("id", "scale-bar"),
-                (
-                    "d",
-                    &format!(
-                        "M{} {} v-4 v8 v-4 h{} v-4 v8",
-                        fmt(x),
-                        fmt(bar_y),
-                        fmt(pixels)
-                    ),
-                ),
-                ("fill", "none"),
-                ("stroke", style::INK),
-                ("stroke-width", "1.4"),
-            ],
-        );
-        legend_text(w, x + pixels + 10.0, y, &format!("{} {l}", number(length)));
-        w.close("g");
-    }
-}
-
-/// An arrow in screen coordinates: from `base` to `tip`, the shaft ending
-/// where the head begins.
-struct Arrow {
-    base: Vector2<f64>,
-    neck: Vector2<f64>,
-    tip: Vector2<f64>,
-    side: Vector2<f64>,
-}
-
-impl Arrow {
-    fn new(base: Vector2<f64>, tip: Vector2<f64>) -> Arrow {
-        let along = tip - base;
-        let length = along.norm();
-        let dir = if length > 0.0 {
-            along / length
-        } else {
-            Vector2::new(1.0, 0.0)
-        };
-        // Short arrows get a smaller head, never longer than the arrow.
-        let head = style::HEAD_LENGTH.min(0.6 * length);
-        let half = style::HEAD_HALF_WIDTH * head / style::HEAD_LENGTH;
-        Arrow {
-            base,
-            neck: tip - dir * head,
-            tip,
-            side: Vector2::new(-dir.y, dir.x) * half,
-        }
-    }
-
-    /// The head's triangle, its apex (the arrow's tip) first.
-    fn head(&self) -> String {
-        let (a, b) = (self.neck + self.side, self.neck - self.side);
-        format!(
-            "{},{} {},{} {},{}",
-            fmt(self.tip.x),
-            fmt(self.tip.y),
-            fmt(a.x),
-            fmt(a.y),
-            fmt(b.x),
-            fmt(b.y)
-        )
-    }
 }
 
 /// A fixed pivot: a triangle under the joint on a hatched base.
@@ -546,9 +336,10 @@ pub(super) fn ground_symbol(w: &mut Writer, at: Vector2<f64>) {
         fmt(base_y),
         fmt(at.x + b + 5.0)
     );
-    let mut x = at.x - b - 5.0;
-    while x < at.x + b + 5.0 {
-        let _ = write!(hatch, " M{} {} l-6 7", fmt(x + 6.0), fmt(base_y));
+    // Strokes down to the left, every 5 px, within the base line's ends.
+    let mut x = at.x - b + 1.0;
+    while x <= at.x + b + 5.0 {
+        let _ = write!(hatch, " M{} {} l-6 7", fmt(x), fmt(base_y));
         x += 5.0;
     }
     d.push(' ');
@@ -575,23 +366,28 @@ pub(super) fn ground_symbol(w: &mut Writer, at: Vector2<f64>) {
     );
 }
 
-/// A straight guide from `a` to `b`, hatched on its lower side.
-pub(super) fn guide_symbol(w: &mut Writer, a: Vector2<f64>, b: Vector2<f64>, point: &str) {
-    let along = b - a;
+/// The box a ground symbol at `at` covers (its triangle and hatching).
+pub(super) fn ground_extent(at: Vector2<f64>) -> Rect {
+    let (h, b) = (style::GROUND_HEIGHT, style::GROUND_HALF_WIDTH);
+    Rect {
+        min: Vector2::new(at.x - b - 6.0, at.y + 2.0),
+        max: Vector2::new(at.x + b + 6.0, at.y + h + 8.0),
+    }
+}
+
+/// A straight guide: its line, hatched on the side away from the block.
+pub(super) fn guide_symbol(w: &mut Writer, guide: &Guide) {
+    let along = guide.b - guide.a;
     let length = along.norm().max(1e-9);
     let dir = along / length;
-    // The side away from the block: below on the screen for a level guide.
-    let mut normal = Vector2::new(-dir.y, dir.x);
-    if normal.y < 0.0 {
-        normal = -normal;
-    }
-    let offset = normal * 10.0;
-    let (a, b) = (a + offset, b + offset);
+    let normal = guide.normal;
+    let offset = normal * style::GUIDE_OFFSET;
+    let (a, b) = (guide.a + offset, guide.b + offset);
     let mut hatch = format!("M{} {} L{} {}", fmt(a.x), fmt(a.y), fmt(b.x), fmt(b.y));
     let mut s = 4.0;
     while s < length {
         let p = a + dir * s;
-        let q = p + normal * 7.0 - dir * 6.0;
+        let q = p + normal * style::GUIDE_HATCH - dir * 6.0;
         let _ = write!(
             hatch,
             " M{} {} L{} {}",
@@ -605,7 +401,7 @@ pub(super) fn guide_symbol(w: &mut Writer, a: Vector2<f64>, b: Vector2<f64>, poi
     w.element(
         "path",
         &[
-            ("id", &format!("guide-{point}")),
+            ("id", &format!("guide-{}", guide.point)),
             ("class", "guide"),
             ("d", &hatch),
             ("fill", "none"),
@@ -613,32 +409,4 @@ pub(super) fn guide_symbol(w: &mut Writer, a: Vector2<f64>, b: Vector2<f64>, poi
             ("stroke-width", "1.2"),
         ],
     );
-}
-
-pub(super) fn legend_text(w: &mut Writer, x: f64, y: f64, text: &str) {
-    w.open(
-        "text",
-        &[
-            ("x", &fmt(x)),
-            ("y", &fmt(y)),
-            ("font-family", style::FONT),
-            ("font-size", "13"),
-            ("fill", style::INK),
-        ],
-    );
-    w.text(text);
-    w.close("text");
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn arrows_end_at_their_tips() {
-        let a = Arrow::new(Vector2::new(0.0, 0.0), Vector2::new(100.0, 0.0));
-        assert_eq!(a.tip, Vector2::new(100.0, 0.0));
-        assert!(a.neck.x < 100.0 && a.neck.x > 80.0);
-        assert!(a.head().starts_with("100,0 "));
-    }
 }

@@ -1,0 +1,146 @@
+//! The legend under the drawing: an entry per kind of arrow (with its
+//! scale) and per traced path, each with a swatch drawn exactly as what it
+//! describes, then a scale bar.
+//!
+//! Each entry is a group `class="legend-entry"` whose `data-for` names what
+//! it describes: the class of the arrows (`velocity`, `acceleration`) or
+//! the id of the traced path (`trace-A`).
+
+use super::Scene;
+use super::arrows::{Arrow, Kind};
+use super::layout::{Layout, nice_below, number};
+use super::style;
+use crate::draw::svg::{Writer, fmt};
+use linkage_symbolic::names::textbook;
+use nalgebra::Vector2;
+
+/// The swatch's length.
+const SWATCH: f64 = 34.0;
+
+impl Scene {
+    pub(super) fn draw_legend(&self, w: &mut Writer, layout: &Layout, traced: bool) {
+        let x = style::MARGIN;
+        let mut y = layout.legend_top;
+        let (l, t) = (&self.length_unit, &self.time_unit);
+        w.open("g", &[("id", "legend"), ("class", "legend")]);
+        for (kind, shown, scale, unit) in [
+            (
+                Kind::Velocity,
+                !self.velocity_arrows.is_empty(),
+                layout.velocity_scale,
+                format!("{l}/{t}"),
+            ),
+            (
+                Kind::Acceleration,
+                !self.acceleration_arrows.is_empty(),
+                layout.acceleration_scale,
+                format!("{l}/{t}²"),
+            ),
+        ] {
+            if !shown {
+                continue;
+            }
+            w.open("g", &[("class", "legend-entry"), ("data-for", kind.name())]);
+            let arrow = Arrow::new(Vector2::new(x, y - 4.0), Vector2::new(x + SWATCH, y - 4.0));
+            w.element(
+                "line",
+                &[
+                    ("class", "swatch"),
+                    ("x1", &fmt(arrow.base.x)),
+                    ("y1", &fmt(arrow.base.y)),
+                    ("x2", &fmt(arrow.neck.x)),
+                    ("y2", &fmt(arrow.neck.y)),
+                    ("stroke", kind.colour()),
+                    ("stroke-width", &fmt(style::ARROW_WIDTH)),
+                ],
+            );
+            w.element(
+                "polygon",
+                &[("points", &arrow.head()), ("fill", kind.colour())],
+            );
+            legend_text(
+                w,
+                x + SWATCH + 10.0,
+                y,
+                &format!(
+                    "{}, scale {}: 1 {l} drawn = {} {unit}",
+                    kind.name(),
+                    number(scale),
+                    number(1.0 / scale)
+                ),
+            );
+            w.close("g");
+            y += style::LEGEND_LINE;
+        }
+        for (k, name) in self.traces.iter().enumerate().filter(|_| traced) {
+            let look = style::trace(k);
+            w.open(
+                "g",
+                &[
+                    ("class", "legend-entry"),
+                    ("data-for", &format!("trace-{name}")),
+                ],
+            );
+            w.element(
+                "line",
+                &[
+                    ("class", "swatch"),
+                    ("x1", &fmt(x)),
+                    ("y1", &fmt(y - 4.0)),
+                    ("x2", &fmt(x + SWATCH)),
+                    ("y2", &fmt(y - 4.0)),
+                    ("stroke", look.colour),
+                    ("stroke-width", &fmt(style::TRACE_WIDTH)),
+                    ("stroke-dasharray", look.dashes),
+                ],
+            );
+            legend_text(
+                w,
+                x + SWATCH + 10.0,
+                y,
+                &format!("path of {} over the cycle", textbook(name)),
+            );
+            w.close("g");
+            y += style::LEGEND_LINE;
+        }
+        // A bar of a round length.
+        let length = nice_below(120.0 / layout.scale);
+        let pixels = length * layout.scale;
+        let bar_y = y - 4.0;
+        w.element(
+            "path",
+            &[
+                ("id", "scale-bar"),
+                (
+                    "d",
+                    &format!(
+                        "M{} {} v-4 v8 v-4 h{} v-4 v8",
+                        fmt(x),
+                        fmt(bar_y),
+                        fmt(pixels)
+                    ),
+                ),
+                ("fill", "none"),
+                ("stroke", style::INK),
+                ("stroke-width", "1.4"),
+            ],
+        );
+        legend_text(w, x + pixels + 10.0, y, &format!("{} {l}", number(length)));
+        w.close("g");
+    }
+}
+
+fn legend_text(w: &mut Writer, x: f64, y: f64, text: &str) {
+    w.open(
+        "text",
+        &[
+            ("x", &fmt(x)),
+            ("y", &fmt(y)),
+            ("font-family", style::FONT),
+            ("font-size", "13"),
+            ("fill", style::INK),
+        ],
+    );
+    w.text(text);
+    w.close("text");
+}
