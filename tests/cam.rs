@@ -543,3 +543,122 @@ fn bad_settings_are_typed_errors() {
 fn rocker_cam(program: &Program) -> Cam {
     rocker(program, 0.2973, 54.0)
 }
+
+/// The drawing names everything it draws. Each legend swatch is drawn with
+/// the stroke, dash and width of exactly one element of the picture (a
+/// solid swatch for dashed curves, or one swatch for two curves, fails);
+/// every other stroked element has a label `label-{id}` inside the picture;
+/// and the scale bar is a round number of mm whose length in pixels agrees
+/// with the picture's scale, read off the base circle's radius.
+#[cfg(feature = "draw")]
+#[test]
+fn the_drawing_names_what_it_draws_and_has_a_true_scale_bar() {
+    let program = course_program();
+    let limit = 35f64.to_radians();
+    let cams = [
+        smallest_rocker(&program, ARM, -FRAC_PI_2, Rotation::CounterClockwise, limit).unwrap(),
+        smallest_translating(&program, FRAC_PI_2, Rotation::Clockwise, limit).unwrap(),
+    ];
+    for (cam, phi, width) in [(&cams[0], 1.0, 640.0), (&cams[1], 0.7, 420.0)] {
+        let roller = 0.25 * cam.base_radius();
+        let svg = cam.drawing(roller, phi, "a cam", width).unwrap();
+        check_drawing(&svg, 1000.0 * (cam.base_radius() - roller));
+    }
+}
+
+/// The checks of the test above on one drawing, whose base circle has the
+/// radius `base_circle_mm`.
+#[cfg(feature = "draw")]
+fn check_drawing(svg: &str, base_circle_mm: f64) {
+    use roxmltree::{Document, Node};
+    let doc = Document::parse(svg).unwrap();
+    let by_id = |id: &str| {
+        doc.descendants()
+            .find(|n| n.attribute("id") == Some(id))
+            .unwrap_or_else(|| panic!("no element {id:?} in\n{svg}"))
+    };
+    let number = |n: Node, name: &str| -> f64 {
+        n.attribute(name)
+            .and_then(|v| v.parse().ok())
+            .unwrap_or_else(|| panic!("{name} of {n:?}"))
+    };
+    /// How an element is stroked: colour, dash pattern, width.
+    fn style<'a>(n: Node<'a, '_>) -> [Option<&'a str>; 3] {
+        [
+            n.attribute("stroke"),
+            n.attribute("stroke-dasharray"),
+            n.attribute("stroke-width"),
+        ]
+    }
+    let legend = by_id("legend");
+    let drawn: Vec<Node> = doc
+        .descendants()
+        .filter(|n| n.has_attribute("stroke") && !n.ancestors().any(|a| a == legend))
+        .collect();
+    let swatches: Vec<Node> = legend
+        .descendants()
+        .filter(|n| n.attribute("class") == Some("swatch"))
+        .collect();
+    assert!(swatches.len() >= 5, "{} swatches", swatches.len());
+    for swatch in &swatches {
+        let matching: Vec<_> = drawn
+            .iter()
+            .filter(|d| style(**d) == style(*swatch))
+            .map(|d| d.attribute("id"))
+            .collect();
+        assert_eq!(
+            matching.len(),
+            1,
+            "the swatch drawn as {:?} matches {matching:?}",
+            style(*swatch)
+        );
+    }
+    let (width, height) = (
+        number(doc.root_element(), "width"),
+        number(doc.root_element(), "height"),
+    );
+    for element in &drawn {
+        if swatches.iter().any(|s| style(*s) == style(*element)) {
+            continue;
+        }
+        let id = element
+            .attribute("id")
+            .unwrap_or_else(|| panic!("an unnamed element {element:?}"));
+        let label = by_id(&format!("label-{id}"));
+        assert!(
+            label.text().is_some_and(|t| !t.trim().is_empty()),
+            "{id}'s label is empty"
+        );
+        let (x, y) = (number(label, "x"), number(label, "y"));
+        assert!(
+            (0.0..width).contains(&x) && (0.0..height).contains(&y),
+            "{id}'s label at ({x}, {y}) is off the picture"
+        );
+    }
+    // The scale bar: "M x y v-4 v8 v-4 h<length> v-4 v8" and "<n> mm".
+    let bar = by_id("scale-bar").attribute("d").unwrap();
+    let pixels: f64 = bar
+        .split_whitespace()
+        .find_map(|step| step.strip_prefix('h'))
+        .and_then(|h| h.parse().ok())
+        .unwrap_or_else(|| panic!("no horizontal stroke in the scale bar {bar:?}"));
+    let text = by_id("scale-label").text().unwrap().trim().to_string();
+    let mm: f64 = text
+        .strip_suffix(" mm")
+        .and_then(|n| n.parse().ok())
+        .unwrap_or_else(|| panic!("the scale bar reads {text:?}"));
+    let decade = 10f64.powf(mm.log10().floor());
+    assert!(
+        [1.0, 2.0, 5.0]
+            .iter()
+            .any(|m| (mm / decade - m).abs() < 1e-9),
+        "{mm} mm is not a round length"
+    );
+    let px_per_mm = number(by_id("base-circle"), "r") / base_circle_mm;
+    assert!(
+        (pixels / px_per_mm - mm).abs() < 1e-3 * mm,
+        "the bar of {pixels} px stands for {} mm, not {mm} mm",
+        pixels / px_per_mm
+    );
+    assert!((20.0..=150.0).contains(&pixels), "a bar of {pixels} px");
+}

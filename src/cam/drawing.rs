@@ -1,9 +1,15 @@
 //! The cam drawn at one angle: its profile, base circle and pitch curve,
 //! the roller and the follower in their true position, and the pressure
-//! angle at the contact.
+//! angle at the contact. The cam, its centre O, the roller, the arm and the
+//! pivot are labelled where they are drawn; the circles, the pitch curve
+//! and the two lines at the contact are named in a legend whose swatches
+//! are drawn with their own strokes; a scale bar gives the scale.
+
+mod labels;
 
 use super::{Cam, CamError, Follower, ProfilePoint, perp, rotate};
 use crate::draw::svg::{Writer, fmt};
+use labels::Labels;
 use nalgebra::Vector2;
 
 const INK: &str = "#1b1b1b";
@@ -12,6 +18,77 @@ const FOLLOWER: &str = "#3a4a5c";
 const PITCH: &str = "#7b8794";
 const NORMAL: &str = "#c62828";
 const MOTION: &str = "#2e7d32";
+const SERIF: &str = "DejaVu Serif, Georgia, serif";
+
+/// How a line of the legend is drawn, in the picture and in its swatch
+/// alike.
+#[derive(Clone, Copy)]
+struct Stroke {
+    colour: &'static str,
+    width: f64,
+    dash: Option<&'static str>,
+}
+
+const BASE_CIRCLE: Stroke = Stroke {
+    colour: PITCH,
+    width: 1.0,
+    dash: Some("6 4"),
+};
+const PITCH_BASE_CIRCLE: Stroke = Stroke {
+    colour: PITCH,
+    width: 1.0,
+    dash: Some("2 4"),
+};
+/// Dash-dot, as a centre line: the path of the roller's centre.
+const PITCH_CURVE: Stroke = Stroke {
+    colour: PITCH,
+    width: 1.3,
+    dash: Some("12 4 2 4"),
+};
+const NORMAL_LINE: Stroke = Stroke {
+    colour: NORMAL,
+    width: 1.6,
+    dash: None,
+};
+const MOTION_LINE: Stroke = Stroke {
+    colour: MOTION,
+    width: 1.6,
+    dash: None,
+};
+
+impl Stroke {
+    /// Writes the element `name` with its `geometry`, unfilled, in this
+    /// stroke.
+    fn draw(self, w: &mut Writer, name: &str, geometry: &[(&str, &str)]) {
+        let width = fmt(self.width);
+        let mut attributes: Vec<(&str, &str)> = geometry.to_vec();
+        attributes.extend([
+            ("fill", "none"),
+            ("stroke", self.colour),
+            ("stroke-width", &width),
+        ]);
+        if let Some(dash) = self.dash {
+            attributes.push(("stroke-dasharray", dash));
+        }
+        w.element(name, &attributes);
+    }
+}
+
+/// A line of the legend's text at (`x`, `y`), its baseline.
+fn legend_text(w: &mut Writer, x: f64, y: f64, id: Option<&str>, text: &str) {
+    let (x, y) = (fmt(x), fmt(y));
+    let mut attributes = vec![
+        ("x", x.as_str()),
+        ("y", y.as_str()),
+        ("font-family", SERIF),
+        ("font-size", "13"),
+        ("fill", INK),
+    ];
+    attributes.extend(id.map(|id| ("id", id)));
+    w.open("text", &attributes);
+    w.text(text);
+    w.close("text");
+}
 
 /// A length in metres as a reader wants it: in millimetres where that is
 /// ordinary, else in metres in scientific notation.
@@ -22,6 +99,26 @@ fn metres(x: f64) -> String {
     } else {
         format!("{x:.4e} m")
     }
+}
+
+/// The length of the scale bar: the largest 1, 2 or 5 × 10ᵏ m not above
+/// `most` metres, and how it reads ("50 mm").
+fn round_length(most: f64) -> (f64, String) {
+    let k = most.log10().floor();
+    let decade = 10f64.powf(k);
+    let nice = [5.0, 2.0, 1.0]
+        .into_iter()
+        .find(|&n| n * decade <= most)
+        .unwrap_or(1.0);
+    let length = nice * decade;
+    // In mm, with as many decimals as a length under a millimetre needs.
+    let mm_decade = k + 3.0;
+    let text = if (-3.0..7.0).contains(&mm_decade) {
+        format!("{:.*} mm", (-mm_decade).max(0.0) as usize, 1000.0 * length)
+    } else {
+        format!("{length:e} m")
+    };
+    (length, text)
 }
 
 impl Cam {
@@ -77,8 +174,11 @@ impl Cam {
         grow(Vector2::zeros());
         let margin = 40.0;
         let scale = (width - 2.0 * margin) / (hi.x - lo.x).max(hi.y - lo.y);
-        let height = (hi.y - lo.y) * scale + 2.0 * margin + 70.0;
         let top = 40.0;
+        // The legend below the picture: five lines and the scale bar.
+        let row = 18.0;
+        let legend_top = top + (hi.y - lo.y) * scale + margin;
+        let height = legend_top + 6.0 * row + 10.0;
         let screen = |p: Vector2<f64>| {
             Vector2::new(
                 margin
@@ -87,10 +187,9 @@ impl Cam {
                 top + (hi.y - p.y) * scale,
             )
         };
-        let path = |points: &mut dyn Iterator<Item = Vector2<f64>>| {
+        let path = |points: &[Vector2<f64>]| {
             let mut d = String::new();
-            for (i, p) in points.enumerate() {
-                let s = screen(p);
+            for (i, s) in points.iter().enumerate() {
                 d.push_str(&format!(
                     "{}{} {} ",
                     if i == 0 { "M" } else { "L" },
@@ -101,6 +200,11 @@ impl Cam {
             d.push('Z');
             d
         };
+        // Labels go below the title and above the legend.
+        let mut labels = Labels::new(
+            Vector2::new(4.0, 34.0),
+            Vector2::new(width - 4.0, legend_top - 6.0),
+        );
         let mut w = Writer::svg(width, height);
         w.element(
             "rect",
@@ -109,10 +213,11 @@ impl Cam {
         w.open(
             "text",
             &[
+                ("id", "title"),
                 ("x", &fmt(width / 2.0)),
                 ("y", "26"),
                 ("text-anchor", "middle"),
-                ("font-family", "DejaVu Serif, Georgia, serif"),
+                ("font-family", SERIF),
                 ("font-size", "17"),
                 ("fill", INK),
             ],
@@ -120,50 +225,46 @@ impl Cam {
         w.text(title);
         w.close("text");
         // The cam.
+        let outline: Vec<_> = profile
+            .iter()
+            .map(|p: &ProfilePoint| screen(at(p.profile)))
+            .collect();
         w.element(
             "path",
             &[
                 ("id", "profile"),
-                (
-                    "d",
-                    &path(&mut profile.iter().map(|p: &ProfilePoint| at(p.profile))),
-                ),
+                ("d", &path(&outline)),
                 ("fill", CAM_FILL),
                 ("stroke", INK),
                 ("stroke-width", "1.8"),
             ],
         );
+        labels.avoid_polyline(&outline, true, 1.8);
         let r0 = self.base_radius();
         let o = screen(Vector2::zeros());
-        for (id, radius, dash) in [
-            ("base-circle", r0 - roller, "6 4"),
-            ("pitch-base-circle", r0, "2 4"),
+        for (id, radius, stroke) in [
+            ("base-circle", r0 - roller, BASE_CIRCLE),
+            ("pitch-base-circle", r0, PITCH_BASE_CIRCLE),
         ] {
-            w.element(
+            stroke.draw(
+                &mut w,
                 "circle",
                 &[
                     ("id", id),
                     ("cx", &fmt(o.x)),
                     ("cy", &fmt(o.y)),
                     ("r", &fmt(radius * scale)),
-                    ("fill", "none"),
-                    ("stroke", PITCH),
-                    ("stroke-width", "1"),
-                    ("stroke-dasharray", dash),
                 ],
             );
+            labels.avoid_circle(o, radius * scale, stroke.width);
         }
-        w.element(
+        let pitch_curve: Vec<_> = profile.iter().map(|p| screen(at(p.pitch))).collect();
+        PITCH_CURVE.draw(
+            &mut w,
             "path",
-            &[
-                ("id", "pitch-curve"),
-                ("d", &path(&mut profile.iter().map(|p| at(p.pitch)))),
-                ("fill", "none"),
-                ("stroke", PITCH),
-                ("stroke-width", "1.2"),
-                ("stroke-dasharray", "5 3"),
-            ],
+            &[("id", "pitch-curve"), ("d", &path(&pitch_curve))],
         );
+        labels.avoid_polyline(&pitch_curve, true, PITCH_CURVE.width);
         // The follower.
         let ks = screen(k);
         let end = screen(arm_end);
@@ -180,18 +281,21 @@ impl Cam {
                 ("stroke-linecap", "round"),
             ],
         );
+        labels.avoid_polyline(&[ks, end], false, 6.0);
+        let roller_px = roller * scale;
         w.element(
             "circle",
             &[
                 ("id", "roller"),
                 ("cx", &fmt(ks.x)),
                 ("cy", &fmt(ks.y)),
-                ("r", &fmt(roller * scale)),
+                ("r", &fmt(roller_px)),
                 ("fill", "white"),
                 ("stroke", FOLLOWER),
                 ("stroke-width", "2.2"),
             ],
         );
+        labels.avoid_circle(ks, roller_px, 2.2);
         // The pressure angle: the common normal and the direction of
         // motion at K.
         let mut normal = perp(pitch.dk).normalize();
@@ -199,12 +303,13 @@ impl Cam {
             normal = -normal;
         }
         let length = 0.45 * r0;
-        for (id, dir, colour) in [
-            ("normal", at(normal), NORMAL),
-            ("motion", at(pitch.motion), MOTION),
+        for (id, dir, stroke) in [
+            ("normal", at(normal), NORMAL_LINE),
+            ("motion", at(pitch.motion), MOTION_LINE),
         ] {
             let (a, b) = (screen(k - dir * (0.3 * length)), screen(k + dir * length));
-            w.element(
+            stroke.draw(
+                &mut w,
                 "line",
                 &[
                     ("id", id),
@@ -212,67 +317,114 @@ impl Cam {
                     ("y1", &fmt(a.y)),
                     ("x2", &fmt(b.x)),
                     ("y2", &fmt(b.y)),
-                    ("stroke", colour),
-                    ("stroke-width", "1.6"),
                 ],
             );
+            labels.avoid_polyline(&[a, b], false, stroke.width);
         }
-        // Pivots.
-        for p in std::iter::once(Vector2::zeros()).chain(pivot) {
-            let s = screen(p);
+        // The cam's centre and the rocker's pivot.
+        let dot = 4.5;
+        let centres: Vec<_> = std::iter::once(("centre", o))
+            .chain(pivot.map(|g| ("pivot", screen(g))))
+            .collect();
+        for &(id, s) in &centres {
             w.element(
                 "circle",
                 &[
+                    ("id", id),
                     ("cx", &fmt(s.x)),
                     ("cy", &fmt(s.y)),
-                    ("r", "4.5"),
+                    ("r", &fmt(dot)),
                     ("fill", "white"),
                     ("stroke", INK),
                     ("stroke-width", "1.8"),
                 ],
             );
+            labels.avoid_circle(s, dot, 1.8);
         }
+        // The labels, once everything they keep clear of is drawn.
+        for (id, s) in centres {
+            let name = if id == "centre" { "O" } else { "pivot" };
+            labels.place(&mut w, id, name, s, dot + 0.9);
+        }
+        labels.place(&mut w, "profile", "cam", o, 0.35 * (r0 - roller) * scale);
+        labels.place(&mut w, "roller", "roller", ks, roller_px + 1.1);
+        // The arm between the roller's rim and its far end.
+        let rim = ks + (end - ks).normalize() * roller_px;
+        let arm_name = if pivot.is_some() { "arm" } else { "follower" };
+        labels.place(&mut w, "follower", arm_name, (rim + end) * 0.5, 3.0);
         // The legend.
+        w.open("g", &[("id", "legend")]);
         let lines = [
             (
-                PITCH,
+                BASE_CIRCLE,
                 format!(
-                    "base circle r0 − r = {}, pitch curve (dashed)",
-                    metres(r0 - roller)
+                    "base circle r0 − r = {}, roller r = {}",
+                    metres(r0 - roller),
+                    metres(roller)
                 ),
             ),
-            (NORMAL, "common normal at the contact".to_string()),
             (
-                MOTION,
+                PITCH_BASE_CIRCLE,
+                format!("the pitch curve's base circle r0 = {}", metres(r0)),
+            ),
+            (
+                PITCH_CURVE,
+                "pitch curve (the roller centre's path)".to_string(),
+            ),
+            (NORMAL_LINE, "common normal at the contact".to_string()),
+            (
+                MOTION_LINE,
                 format!("the roller centre's motion: pressure angle {theta:.2}°"),
             ),
         ];
-        for (i, (colour, text)) in lines.iter().enumerate() {
-            let y = height - 60.0 + 18.0 * i as f64;
-            w.element(
+        let swatch = (40.0, 76.0);
+        for (i, (stroke, text)) in lines.iter().enumerate() {
+            let y = legend_top + 13.0 + row * i as f64;
+            stroke.draw(
+                &mut w,
                 "line",
                 &[
-                    ("x1", "40"),
+                    ("class", "swatch"),
+                    ("x1", &fmt(swatch.0)),
                     ("y1", &fmt(y - 4.0)),
-                    ("x2", "70"),
+                    ("x2", &fmt(swatch.1)),
                     ("y2", &fmt(y - 4.0)),
-                    ("stroke", colour),
-                    ("stroke-width", "2"),
                 ],
             );
-            w.open(
-                "text",
-                &[
-                    ("x", "80"),
-                    ("y", &fmt(y)),
-                    ("font-family", "DejaVu Serif, Georgia, serif"),
-                    ("font-size", "13"),
-                    ("fill", INK),
-                ],
-            );
-            w.text(text);
-            w.close("text");
+            legend_text(&mut w, swatch.1 + 10.0, y, None, text);
         }
+        // A scale bar of a round length, about 120 px long at most.
+        let (bar, bar_text) = round_length(120.0 / scale);
+        let bar_px = bar * scale;
+        if bar_px.is_finite() && bar_px > 0.0 {
+            let y = legend_top + 13.0 + row * lines.len() as f64;
+            w.element(
+                "path",
+                &[
+                    ("id", "scale-bar"),
+                    (
+                        "d",
+                        &format!(
+                            "M{} {} v-4 v8 v-4 h{} v-4 v8",
+                            fmt(swatch.0),
+                            fmt(y - 4.0),
+                            fmt(bar_px)
+                        ),
+                    ),
+                    ("fill", "none"),
+                    ("stroke", INK),
+                    ("stroke-width", "1.4"),
+                ],
+            );
+            legend_text(
+                &mut w,
+                swatch.0 + bar_px + 10.0,
+                y,
+                Some("scale-label"),
+                &bar_text,
+            );
+        }
+        w.close("g");
         Ok(w.finish())
     }
 }
