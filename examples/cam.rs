@@ -331,10 +331,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .size(900, 320)
         .panel(
             Panel::new("θ [°]")
-                .line("the course project's (a_w 0.2973, φ20 54°)", curve(&|p| Ok(deg(drawn_cam.pressure_angle(p)?)))?)
+                .line("the course project's (a_w = 0.2973 m, φ_20 = 54°)", curve(&|p| Ok(deg(drawn_cam.pressure_angle(p)?)))?)
                 .line("the smallest within the limit", curve(&|p| Ok(deg(best.pressure_angle(p)?)))?)
-                .dashed("+35°", curve(&|_| Ok(35.0))?)
-                .dashed("−35°", curve(&|_| Ok(-35.0))?),
+                .levels("the limit, ±35°", &[35.0, -35.0]),
         );
     let pressure_path = folder.join("pressure.svg");
     std::fs::write(&pressure_path, pressure.render()?)?;

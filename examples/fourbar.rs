@@ -273,7 +273,7 @@ fn pictures(
         &path,
         scene
             .clone()
-            .title("A revolution of the crank, slowed down")
+            .animation_title("A revolution of the crank, slowed down")
             .animate(&frames, 4.0)?,
     )?;
     written.push(path);

@@ -7,7 +7,7 @@
 //! 18×18 system of the joint reactions and the balancing moment — each
 //! number beside the one the course project printed and the 50-digit reference.
 //!
-//! Writes to `out/shaper/`: `diagrams.svg` (J, M, A, ΔT_I, ω1, ε1 over a
+//! Writes to `out/shaper/`: `diagrams.svg` (J, dJ/dφ, M, A, ΔT_I, ω1, ε1 over a
 //! cycle), `mechanism.svg` (the mechanism at f) and `hodographs.svg` (the
 //! reactions over a cycle).
 //!
@@ -310,9 +310,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     .columns(2)
     .size(1180, 250)
     .panel(
-        Panel::new("J [kg·m²]")
+        Panel::new("J_II [kg·m²]")
             .line("J_II(φ)", curve(&|k| reduced[k].inertia))
-            .dashed("dJ_II/dφ", curve(&|k| reduced[k].inertia_derivative))
+            .mark(working, "end of the working stroke"),
+    )
+    .panel(
+        Panel::new("dJ_II/dφ [kg·m²/rad]")
+            .line("dJ_II/dφ", curve(&|k| reduced[k].inertia_derivative))
             .mark(working, "end of the working stroke"),
     )
     .panel(
@@ -334,13 +338,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .mark(deg(e.minimum.0), "min")
             .mark(deg(e.maximum.0), "max"),
     )
+    // The real motion dashed over the energy method's, which it nearly
+    // covers.
     .panel(
-        Panel::new("ω1 [rad/s]")
+        Panel::new("ω_1 [rad/s]")
             .line("energy method", curve(&|k| omega_e[k]))
-            .line("real motion", real_omega),
+            .dashed("real motion", real_omega),
     )
     .panel(
-        Panel::new("ε1 [rad/s²]")
+        Panel::new("ε_1 [rad/s²]")
             .line("energy method", curve(&|k| eps_e[k]))
             .dashed("real motion", real_eps),
     );
@@ -368,11 +374,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .slider_on("A", ["C", "D"])
         .block("D", PI / 2.0)
         .slider("S5", 0.0)
-        .velocities(["A", "D", "S3"])
+        .velocities(["A", "S3", "S5"])
         .accelerations(["S3", "S5"])
         .trace(["A", "D"])
         .units("m", "s")
-        .title("The shaper at f (crank at 60°), ω1 = 7.646 rad/s");
+        .title("The shaper at f (crank at 60°), ω₁ = 7.646 rad/s");
     let cycle: Vec<Frame> = (0..=72)
         .map(|k| {
             let phi = k as f64 * TAU / 72.0;
@@ -466,10 +472,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         worst.0, worst.1
     );
     let labels = [
-        "F10: ground on crank, at O",
-        "F12: block 2 on crank, at A",
-        "F30: ground on rocker, at C",
-        "F34: block 4 on rocker, at D",
+        "F_10: ground on crank, at O",
+        "F_12: block 2 on crank, at A",
+        "F_30: ground on rocker, at C",
+        "F_34: block 4 on rocker, at D",
     ];
     let mut chart = linkage::draw::diagrams::Hodographs::new(
         "Hodographs of the joint reactions over a cycle (the red vector: at f)",

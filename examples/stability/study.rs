@@ -1,8 +1,9 @@
 //! The stability study: each method, approaching a singular pose of a
 //! four-bar, against the 50-digit reference of `tests/data/`.
 //!
-//! Shared by `cargo run --release --example stability` (the charts) and
-//! `tests/stability_near_singular.rs` (the assertions).
+//! Shared by `cargo run --release --example stability` (the charts),
+//! `tests/stability_near_singular.rs` (the assertions) and
+//! `tests/diagrams.rs` (the charts' legends).
 #![allow(dead_code)]
 
 use linkage::closed_form;
@@ -34,8 +35,8 @@ impl Case {
 
     pub fn name(self) -> &'static str {
         match self {
-            Case::Limit => "limit position (non-Grashof, l2 = 45)",
-            Case::Branch => "branch point (change-point, l2 = 40)",
+            Case::Limit => "limit position (non-Grashof, l₂ = 45)",
+            Case::Branch => "branch point (change-point, l₂ = 40)",
         }
     }
 
@@ -103,6 +104,8 @@ pub struct Row {
     /// `None` for a typed error (its message in `error`).
     pub iterations: Option<usize>,
     pub error: Option<String>,
+    /// Whether the error is [`Error::Singular`] (the conditioning check).
+    pub singular: bool,
     /// Absolute error of θ3, θ4 (rad); errors of the analogs ω, α relative
     /// to their size (at least 1).
     pub position: f64,
@@ -154,6 +157,7 @@ pub fn run(case: Case) -> Vec<Row> {
                 method,
                 iterations: None,
                 error: None,
+                singular: false,
                 position: f64::NAN,
                 velocity: f64::NAN,
                 acceleration: f64::NAN,
@@ -231,7 +235,10 @@ pub fn run(case: Case) -> Vec<Row> {
                     row.velocity = relative([x[2], x[3]], [w3, w4]);
                     row.acceleration = relative([x[4], x[5]], [a3, a4]);
                 }
-                Err(e) => row.error = Some(e.to_string()),
+                Err(e) => {
+                    row.singular = matches!(e, Error::Singular { .. });
+                    row.error = Some(e.to_string());
+                }
             }
             rows.push(row);
         }

@@ -6,7 +6,10 @@
 //! (each with its units), as the mechanism has them. A coordinate is taken
 //! for an angle when the closure equations take its sine or cosine
 //! ([`Linkage::TRIG_U`]); [`Diagrams::kind`] overrides that. Angles are
-//! drawn in degrees, their rates in rad/s and rad/s².
+//! drawn in degrees, their rates in rad/s and rad/s². A sweep of one
+//! revolution of an angular driver back to the pose it started from is a
+//! period of the motion: it is drawn over 0…360° whatever angle it started
+//! at.
 //!
 //! ```
 //! use linkage::prelude::*;
@@ -32,10 +35,14 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 //!
+//! In every title, label and name of the diagrams, charts and hodographs
+//! `_` starts a subscript: `J_II`, `ω_1` are drawn J with II below the
+//! line, ω₁. Every legend's swatch is drawn in the style of its curve.
+//!
 //! The area's files: the motion diagrams of a sweep (here), [`Chart`]s of
 //! panels (`chart.rs`), [`Hodographs`] (`hodographs.rs`), and what they
-//! share (`plot.rs`: the checks of sizes and values, the page, the axes'
-//! ranges and ticks).
+//! share (`plot.rs`: the checks of sizes and values, the page with its
+//! dashes and subscripts, the legends, the axes' ranges and ticks).
 
 mod chart;
 mod hodographs;
@@ -256,6 +263,11 @@ impl Diagrams {
         } else {
             Vec::new()
         };
+        let (xs, curves, events) = if driver_kind == Some(Kind::Angle) {
+            one_period(xs, curves, events)
+        } else {
+            (xs, curves, events)
+        };
         let columns: Vec<Kind> = [Kind::Angle, Kind::Length]
             .into_iter()
             .filter(|k| curves.iter().any(|c| c.kind == *k))
@@ -284,21 +296,19 @@ impl Diagrams {
             top.draw(&title_text(title.clone(), 10))?;
         }
         // One legend for every panel, at the top right.
-        let mut x = self.width as i32 - 16 - 70 * curves.len() as i32;
-        for (i, curve) in curves.iter().enumerate() {
-            let colour = PALETTE[i % PALETTE.len()];
-            let y = (title_height as i32 / 2).max(12);
-            top.draw(&PathElement::new(
-                vec![(x, y), (x + 24, y)],
-                colour.stroke_width(3),
-            ))?;
-            top.draw(&Text::new(
-                curve.name.clone(),
-                (x + 30, y - 9),
-                ("serif", 17).into_font().color(&BLACK),
-            ))?;
-            x += 70;
-        }
+        let legend = Legend(
+            curves
+                .iter()
+                .enumerate()
+                .map(|(i, c)| (c.name.clone(), curve_style(i)))
+                .collect(),
+        );
+        let right = self.width as i32 - 16;
+        legend.row(
+            &top,
+            right - legend.row_width(),
+            (title_height as i32 / 2).max(12),
+        )?;
         let panels = body.split_evenly((3, columns.len()));
         let (l, t) = (&self.length_unit, &self.time_unit);
         let x_range = span(xs.iter().copied());
@@ -345,12 +355,10 @@ impl Diagrams {
                     )))?;
                 }
                 for &(x, what) in events {
-                    let dashes = dashed(x, y_range, 14);
-                    chart.draw_series(
-                        dashes
-                            .into_iter()
-                            .map(|d| PathElement::new(d, RGBColor(120, 120, 120).stroke_width(1))),
-                    )?;
+                    chart.draw_series(std::iter::once(PathElement::new(
+                        vec![(x, y_range.0), (x, y_range.1)],
+                        stroke(MARK, 1, true),
+                    )))?;
                     if row == 0 {
                         // Written towards the middle, so as not to leave the
                         // panel at its edges.
@@ -376,14 +384,183 @@ impl Diagrams {
                         .iter()
                         .position(|c| c.name == curve.name)
                         .unwrap_or(0);
-                    let colour = PALETTE[index % PALETTE.len()];
                     chart.draw_series(LineSeries::new(
                         xs.iter().zip(&curve.values).map(|(&x, v)| (x, v[row])),
-                        colour.stroke_width(2),
+                        curve_style(index),
                     ))?;
                 }
             }
         }
         Ok(())
+    }
+}
+
+/// The style of the `i`th coordinate's curves, and of its legend swatch.
+fn curve_style(i: usize) -> ShapeStyle {
+    stroke(PALETTE[i % PALETTE.len()], 2, false)
+}
+
+/// The abscissae, curves and events of a sweep of an angular driver (in
+/// degrees), as one period over 0…360° when the sweep is one: one
+/// revolution of the driver back to the pose it started from. The poses
+/// past the driver's wrap-around (360°, or 0° turning back) are moved to
+/// their place in 0…360° (their angles less what they gained over the
+/// revolution, so that each curve runs on through the start), and the
+/// curves are closed at 0° and 360° by interpolation. Any other sweep is
+/// returned as it is.
+fn one_period(
+    xs: Vec<f64>,
+    curves: Vec<Curve>,
+    events: Vec<(f64, &'static str)>,
+) -> (Vec<f64>, Vec<Curve>, Vec<(f64, &'static str)>) {
+    let n = xs.len();
+    let revolution = n >= 3 && ((xs[n - 1] - xs[0]).abs() - 360.0).abs() < 1e-6;
+    // What each coordinate gains over the revolution: whole turns for an
+    // angle, nothing for a length.
+    let gains: Vec<f64> = curves
+        .iter()
+        .map(|c| c.values[n - 1][0] - c.values[0][0])
+        .collect();
+    let periodic = curves.iter().zip(&gains).all(|(c, &gain)| match c.kind {
+        Kind::Angle => (gain - 360.0 * (gain / 360.0).round()).abs() < 1e-4,
+        Kind::Length => {
+            let size = c.values.iter().fold(1.0_f64, |m, v| m.max(v[0].abs()));
+            gain.abs() < 1e-6 * size
+        }
+    });
+    if !(revolution && periodic) {
+        return (xs, curves, events);
+    }
+    // The driver within [0, 360), and the turn it is in.
+    let wrap = |x: f64| {
+        let w = x.rem_euclid(360.0);
+        if 360.0 - w < 1e-9 { 0.0 } else { w }
+    };
+    let turn = |x: f64| ((x - wrap(x)) / 360.0).round();
+    let first_turn = turn(xs[0]);
+    let direction = (xs[n - 1] - xs[0]).signum();
+    // The last pose is the first again.
+    let mut order: Vec<usize> = (0..n - 1).collect();
+    order.sort_by(|&a, &b| wrap(xs[a]).total_cmp(&wrap(xs[b])));
+    let (low, high) = (order[0], order[n - 2]);
+    let (x_low, x_high) = (wrap(xs[low]), wrap(xs[high]));
+    // Where 0° (and 360°) falls between the last pose and the first.
+    let t = (360.0 - x_high) / (x_low + 360.0 - x_high);
+    let mut wrapped = Vec::with_capacity(n + 1);
+    if x_low > 0.0 {
+        wrapped.push(0.0);
+    }
+    wrapped.extend(order.iter().map(|&k| wrap(xs[k])));
+    wrapped.push(360.0);
+    let curves = curves
+        .into_iter()
+        .zip(gains)
+        .map(|(curve, gain)| {
+            let gain = if curve.kind == Kind::Angle { gain } else { 0.0 };
+            let value = |k: usize| {
+                let mut v = curve.values[k];
+                if turn(xs[k]) != first_turn {
+                    v[0] -= gain;
+                }
+                v
+            };
+            // What it gains from 0° to 360° (the sweep may turn backwards).
+            let per_turn = gain * direction;
+            let (a, mut b) = (value(high), value(low));
+            b[0] += per_turn;
+            let at_360: [f64; 3] = std::array::from_fn(|i| a[i] + t * (b[i] - a[i]));
+            let mut values = Vec::with_capacity(n + 1);
+            if x_low > 0.0 {
+                values.push([at_360[0] - per_turn, at_360[1], at_360[2]]);
+            }
+            values.extend(order.iter().map(|&k| value(k)));
+            values.push(at_360);
+            Curve { values, ..curve }
+        })
+        .collect();
+    let mut events: Vec<(f64, &'static str)> = events
+        .into_iter()
+        .map(|(x, what)| (wrap(x), what))
+        .collect();
+    events.sort_by(|a, b| a.0.total_cmp(&b.0));
+    events.dedup_by(|a, b| (a.0 - b.0).abs() < 1e-9 && a.1 == b.1);
+    (wrapped, curves, events)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A revolution of the driver from `start`° in steps of `step`° (down
+    /// if negative): an angle gaining a turn, and a length.
+    fn revolution(start: f64, step: f64) -> (Vec<f64>, Vec<Curve>) {
+        let n = (360.0 / step.abs()).round() as usize;
+        let xs: Vec<f64> = (0..=n).map(|i| start + step * i as f64).collect();
+        let angle = |x: f64| x + 30.0;
+        let length = |x: f64| x.to_radians().sin();
+        let curve = |name: &str, kind, f: &dyn Fn(f64) -> f64| Curve {
+            name: name.into(),
+            kind,
+            values: xs.iter().map(|&x| [f(x), 1.0, 0.0]).collect(),
+        };
+        let curves = vec![
+            curve("angle", Kind::Angle, &angle),
+            curve("length", Kind::Length, &length),
+        ];
+        (xs, curves)
+    }
+
+    fn check_one_period(start: f64, step: f64) {
+        let (xs, curves) = revolution(start, step);
+        let events = vec![(start + 100.0 * step.signum(), "limit position")];
+        let (xs, curves, events) = one_period(xs, curves, events);
+        assert_eq!((xs[0], xs[xs.len() - 1]), (0.0, 360.0));
+        assert!(xs.windows(2).all(|w| w[0] < w[1]), "{xs:?}");
+        // The angle runs on through the old start (by whole turns the same
+        // at every pose); the length repeats.
+        let turns = curves[0].values[0][0] - 30.0;
+        assert!((turns / 360.0 - (turns / 360.0).round()).abs() < 1e-12);
+        for (k, &x) in xs.iter().enumerate() {
+            let [angle, rate, _] = curves[0].values[k];
+            assert!((angle - (x + 30.0 + turns)).abs() < 1e-9, "at {x}: {angle}");
+            assert_eq!(rate, 1.0);
+            let length = curves[1].values[k][0];
+            assert!(
+                (length - x.to_radians().sin()).abs() < 2e-3,
+                "at {x}: {length}"
+            );
+        }
+        let event = (start + 100.0 * step.signum()).rem_euclid(360.0);
+        assert!((events[0].0 - event).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_revolution_is_drawn_over_0_to_360_degrees() {
+        check_one_period(20.0, 1.0);
+        check_one_period(20.5, 1.0);
+        check_one_period(-170.0, 2.0);
+        check_one_period(20.0, -1.0);
+        check_one_period(0.0, 1.0);
+    }
+
+    #[test]
+    fn other_sweeps_are_drawn_as_they_are() {
+        // Half a revolution.
+        let (xs, curves) = revolution(20.0, 1.0);
+        let half = xs[..=180].to_vec();
+        let cut: Vec<Curve> = curves
+            .into_iter()
+            .map(|c| Curve {
+                values: c.values[..=180].to_vec(),
+                ..c
+            })
+            .collect();
+        let (same, _, _) = one_period(half.clone(), cut, Vec::new());
+        assert_eq!(same, half);
+        // A revolution that does not come back to its pose.
+        let (xs, mut curves) = revolution(20.0, 1.0);
+        curves[1].values[360][0] += 0.5;
+        let (same, _, _) = one_period(xs.clone(), curves, Vec::new());
+        assert_eq!(same, xs);
     }
 }

@@ -95,6 +95,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .link(["B", "P"])
         .slider("P", 0.0)
         .velocities(["B", "P"])
+        .velocity_scale(0.02)
         .accelerations(["P"])
         .trace(["P"])
         .units("m", "s")
