@@ -21,11 +21,12 @@ for r in $(seq 1 "$runs"); do
   cp benches/results/peers.csv "$out/peers.$r.csv"
   cp benches/results/casadi_pose.csv "$out/casadi_pose.$r.csv"
   cargo bench --quiet --bench kernels -- 'analyze|sweep' > /dev/null 2>&1
+  { echo "group,benchmark,median_ns"
   for f in target/criterion/*/*/new/estimates.json; do
     group=$(basename "$(dirname "$(dirname "$(dirname "$f")")")")
     name=$(basename "$(dirname "$(dirname "$f")")")
     python3 -c 'import json,sys; print(sys.argv[2], sys.argv[3], json.load(open(sys.argv[1]))["median"]["point_estimate"], sep=",")' "$f" "$group" "$name"
-  done > "$out/kernels.$r.csv"
+  done; } > "$out/kernels.$r.csv"
   LINKAGE_OUT=out/batch cargo run --quiet --release --example batch > /dev/null
   cp out/batch/batch.csv "$out/batch.$r.csv"
 done
