@@ -185,11 +185,12 @@ fn a_sweep_run_backwards_finds_the_same_extrema() {
     let backwards = sweep_of(&c, u0, TAU, 0.0, 40, 1.0);
     let watch = || Watch::coordinate("s", Of::Position).extrema();
     let options = Options::default();
-    let mut f = locate(&c, &forwards, &[watch()], &options).unwrap();
-    let b = locate(&c, &backwards, &[watch()], &options).unwrap();
-    f.sort_by(|x, y| x.v[0].total_cmp(&y.v[0]));
-    let mut b = b;
-    b.sort_by(|x, y| x.v[0].total_cmp(&y.v[0]));
+    let by_angle = |sweep: &Sweep<2, 1>| {
+        let mut found = locate(&c, sweep, &[watch()], &options).unwrap();
+        found.sort_by(|x, y| x.v[0].total_cmp(&y.v[0]));
+        found
+    };
+    let (f, b) = (by_angle(&forwards), by_angle(&backwards));
     assert_eq!(f.len(), 2);
     assert_eq!(b.len(), 2);
     for (x, y) in f.iter().zip(&b) {

@@ -386,7 +386,7 @@ fn node<L: Linkage<M, F>, const M: usize, const F: usize>(
         v: *v,
         direction: *direction,
         speed,
-        det: linkage_runtime::determinant(&psi_u),
+        det: inverse.det,
     })
 }
 
@@ -424,10 +424,17 @@ fn refine<L: Linkage<M, F>, const M: usize, const F: usize>(
         }
         Ok(b)
     };
+    // The last trial pose, which is usually the root's: not solved twice.
+    let mut last: Option<(f64, Node<M, F>)> = None;
     let mut g = |x: f64| -> Result<f64, WatchError> {
-        let g = quantity.at(&at(x)?.pose);
+        let node = at(x)?;
+        let g = quantity.at(&node.pose);
+        last = Some((x, node));
         Ok(if extremum { g.eps } else { g.re })
     };
     let x = root(&mut g, start, start + length)?;
-    at(x)
+    match last {
+        Some((tried, node)) if tried == x => Ok(node),
+        _ => at(x),
+    }
 }
