@@ -8,16 +8,14 @@
 mod labels;
 
 use super::{Cam, CamError, Follower, ProfilePoint, perp, rotate};
-use crate::draw::svg::{Writer, fmt};
+use crate::draw::palette::{
+    ACCELERATION as NORMAL, BAR as FOLLOWER, INK, PLATE_FILL as CAM_FILL, VELOCITY as MOTION,
+};
+use crate::draw::svg::{Writer, fmt, nice_below, scale_bar};
 use labels::Labels;
 use nalgebra::Vector2;
 
-const INK: &str = "#1b1b1b";
-const CAM_FILL: &str = "#dbe4ee";
-const FOLLOWER: &str = "#3a4a5c";
 const PITCH: &str = "#7b8794";
-const NORMAL: &str = "#c62828";
-const MOTION: &str = "#2e7d32";
 const SERIF: &str = "DejaVu Serif, Georgia, serif";
 
 /// How a line of the legend is drawn, in the picture and in its swatch
@@ -101,24 +99,15 @@ fn metres(x: f64) -> String {
     }
 }
 
-/// The length of the scale bar: the largest 1, 2 or 5 × 10ᵏ m not above
-/// `most` metres, and how it reads ("50 mm").
-fn round_length(most: f64) -> (f64, String) {
-    let k = most.log10().floor();
-    let decade = 10f64.powf(k);
-    let nice = [5.0, 2.0, 1.0]
-        .into_iter()
-        .find(|&n| n * decade <= most)
-        .unwrap_or(1.0);
-    let length = nice * decade;
-    // In mm, with as many decimals as a length under a millimetre needs.
-    let mm_decade = k + 3.0;
-    let text = if (-3.0..7.0).contains(&mm_decade) {
+/// A length in metres as the scale bar reads it ("50 mm"), with as many
+/// decimals as a length under a millimetre needs.
+fn millimetres(length: f64) -> String {
+    let mm_decade = length.log10().floor() + 3.0;
+    if (-3.0..7.0).contains(&mm_decade) {
         format!("{:.*} mm", (-mm_decade).max(0.0) as usize, 1000.0 * length)
     } else {
         format!("{length:e} m")
-    };
-    (length, text)
+    }
 }
 
 impl Cam {
@@ -394,34 +383,17 @@ impl Cam {
             legend_text(&mut w, swatch.1 + 10.0, y, None, text);
         }
         // A scale bar of a round length, about 120 px long at most.
-        let (bar, bar_text) = round_length(120.0 / scale);
+        let bar = nice_below(120.0 / scale);
         let bar_px = bar * scale;
         if bar_px.is_finite() && bar_px > 0.0 {
             let y = legend_top + 13.0 + row * lines.len() as f64;
-            w.element(
-                "path",
-                &[
-                    ("id", "scale-bar"),
-                    (
-                        "d",
-                        &format!(
-                            "M{} {} v-4 v8 v-4 h{} v-4 v8",
-                            fmt(swatch.0),
-                            fmt(y - 4.0),
-                            fmt(bar_px)
-                        ),
-                    ),
-                    ("fill", "none"),
-                    ("stroke", INK),
-                    ("stroke-width", "1.4"),
-                ],
-            );
+            scale_bar(&mut w, swatch.0, y - 4.0, bar_px);
             legend_text(
                 &mut w,
                 swatch.0 + bar_px + 10.0,
                 y,
                 Some("scale-label"),
-                &bar_text,
+                &millimetres(bar),
             );
         }
         w.close("g");

@@ -4,5 +4,6 @@
 //! the `draw` feature (on by default).
 
 pub mod diagrams;
+pub(crate) mod palette;
 pub mod scene;
 pub(crate) mod svg;

@@ -89,6 +89,41 @@ fn escape(text: &str) -> String {
     out
 }
 
+/// The largest 1, 2 or 5 × 10ᵏ not above x (1 for anything not positive
+/// and finite): arrow scales and scale-bar lengths a reader can use.
+pub(crate) fn nice_below(x: f64) -> f64 {
+    if !(x.is_finite() && x > 0.0) {
+        return 1.0;
+    }
+    let decade = 10f64.powf(x.log10().floor());
+    let mantissa = x / decade;
+    let nice = if mantissa >= 5.0 {
+        5.0
+    } else if mantissa >= 2.0 {
+        2.0
+    } else {
+        1.0
+    };
+    nice * decade
+}
+
+/// A scale bar `pixels` long from (x, y), with end ticks: `⊢——⊣`.
+pub(crate) fn scale_bar(w: &mut Writer, x: f64, y: f64, pixels: f64) {
+    w.element(
+        "path",
+        &[
+            ("id", "scale-bar"),
+            (
+                "d",
+                &format!("M{} {} v-4 v8 v-4 h{} v-4 v8", fmt(x), fmt(y), fmt(pixels)),
+            ),
+            ("fill", "none"),
+            ("stroke", crate::draw::palette::INK),
+            ("stroke-width", "1.4"),
+        ],
+    );
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -100,5 +135,14 @@ mod tests {
         assert_eq!(fmt(5.0), "5");
         assert_eq!(fmt(-2.255), "-2.25");
         assert_eq!(escape(r#"a<b & "c""#), "a&lt;b &amp; &quot;c&quot;");
+    }
+
+    #[test]
+    fn round_numbers_below() {
+        assert_eq!(nice_below(0.0234), 0.02);
+        assert_eq!(nice_below(0.00071), 0.0005);
+        assert_eq!(nice_below(3.0), 2.0);
+        assert_eq!(nice_below(1.0), 1.0);
+        assert_eq!(nice_below(-1.0), 1.0);
     }
 }

@@ -4,7 +4,7 @@
 use super::arrows::Kind;
 use super::style;
 use super::{Frame, Scene, SceneError, finite, resolve, unknown};
-use crate::draw::svg::{Writer, fmt};
+use crate::draw::svg::{Writer, fmt, nice_below};
 use nalgebra::Vector2;
 
 impl Scene {
@@ -232,23 +232,6 @@ impl Placed {
     }
 }
 
-/// The largest 1, 2 or 5 × 10ᵏ not above x.
-pub(super) fn nice_below(x: f64) -> f64 {
-    if !(x.is_finite() && x > 0.0) {
-        return 1.0;
-    }
-    let decade = 10f64.powf(x.log10().floor());
-    let mantissa = x / decade;
-    let nice = if mantissa >= 5.0 {
-        5.0
-    } else if mantissa >= 2.0 {
-        2.0
-    } else {
-        1.0
-    };
-    nice * decade
-}
-
 /// A scale or a length as a reader would write it: 0.02, 0.0005, 2000;
 /// very small or very large ones as 3e-12 or 4.5e15.
 pub(super) fn number(x: f64) -> String {
@@ -380,11 +363,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn nice_numbers() {
-        assert_eq!(nice_below(0.0234), 0.02);
-        assert_eq!(nice_below(0.00071), 0.0005);
-        assert_eq!(nice_below(3.0), 2.0);
-        assert_eq!(nice_below(1.0), 1.0);
+    fn numbers_as_a_reader_writes_them() {
         assert_eq!(number(0.0005), "0.0005");
         assert_eq!(number(2000.0), "2000");
         assert_eq!(number(3e-12), "3e-12");

@@ -8,9 +8,9 @@
 
 use super::Scene;
 use super::arrows::{Arrow, Kind};
-use super::layout::{Layout, nice_below, number};
+use super::layout::{Layout, number};
 use super::style;
-use crate::draw::svg::{Writer, fmt};
+use crate::draw::svg::{Writer, fmt, nice_below, scale_bar};
 use linkage_symbolic::names::textbook;
 use nalgebra::Vector2;
 
@@ -106,25 +106,7 @@ impl Scene {
         // A bar of a round length.
         let length = nice_below(120.0 / layout.scale);
         let pixels = length * layout.scale;
-        let bar_y = y - 4.0;
-        w.element(
-            "path",
-            &[
-                ("id", "scale-bar"),
-                (
-                    "d",
-                    &format!(
-                        "M{} {} v-4 v8 v-4 h{} v-4 v8",
-                        fmt(x),
-                        fmt(bar_y),
-                        fmt(pixels)
-                    ),
-                ),
-                ("fill", "none"),
-                ("stroke", style::INK),
-                ("stroke-width", "1.4"),
-            ],
-        );
+        scale_bar(w, x, y - 4.0, pixels);
         legend_text(w, x + pixels + 10.0, y, &format!("{} {l}", number(length)));
         w.close("g");
     }

@@ -1,11 +1,7 @@
 //! The look of a scene: colours, stroke widths, sizes, the font, and the
 //! styles of the traced paths, shared by the drawing and its legend.
 
-pub const INK: &str = "#1b1b1b";
-pub const BAR: &str = "#3a4a5c";
-pub const PLATE_FILL: &str = "#dbe4ee";
-pub const VELOCITY: &str = "#2e7d32";
-pub const ACCELERATION: &str = "#c62828";
+pub use crate::draw::palette::{ACCELERATION, BAR, INK, PLATE_FILL, VELOCITY};
 /// The outline that keeps an arrow visible over a bar or another arrow.
 pub const HALO: &str = "white";
 pub const BAR_WIDTH: f64 = 5.0;
