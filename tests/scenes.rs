@@ -272,32 +272,36 @@ fn the_animation_moves_every_part_through_every_frame() {
     }
 }
 
-#[test]
-fn a_slider_crank_scene_has_its_block_and_guide() {
+/// A slider-crank (r = 50, l = 200, e = 10) over a revolution in 60 steps
+/// at 10 rad/s.
+fn slider_crank_cycle() -> Vec<Frame> {
     let crank = SliderCrank {
         r: 50.0,
         l: 200.0,
         e: 10.0,
     };
+    let drive = Drive::Line {
+        from: vector![0.0],
+        to: vector![TAU],
+        steps: 60,
+    };
+    let options = SweepOptions {
+        speed: 10.0,
+        ..SweepOptions::default()
+    };
     let sweep = crank
-        .sweep(
-            &vector![-0.05, 250.0],
-            &Drive::Line {
-                from: vector![0.0],
-                to: vector![TAU],
-                steps: 60,
-            },
-            &SweepOptions {
-                speed: 10.0,
-                ..SweepOptions::default()
-            },
-        )
+        .sweep(&vector![-0.05, 250.0], &drive, &options)
         .unwrap();
-    let cycle: Vec<Frame> = sweep
+    sweep
         .poses
         .iter()
         .map(|p| Frame::from_sweep_pose(&crank, p))
-        .collect();
+        .collect()
+}
+
+#[test]
+fn a_slider_crank_scene_has_its_block_and_guide() {
+    let cycle = slider_crank_cycle();
     let scene = Scene::new()
         .ground("O", [0.0, 0.0])
         .link(["O", "B"])
@@ -584,30 +588,7 @@ fn shaper() -> (Scene, Frame, Vec<Frame>) {
 /// its cycle, and a pose where P's velocity and acceleration point the
 /// same way along the guide.
 fn slider_crank() -> (Scene, Frame, Vec<Frame>) {
-    let crank = SliderCrank {
-        r: 50.0,
-        l: 200.0,
-        e: 10.0,
-    };
-    let sweep = crank
-        .sweep(
-            &vector![-0.05, 250.0],
-            &Drive::Line {
-                from: vector![0.0],
-                to: vector![TAU],
-                steps: 60,
-            },
-            &SweepOptions {
-                speed: 10.0,
-                ..SweepOptions::default()
-            },
-        )
-        .unwrap();
-    let cycle: Vec<Frame> = sweep
-        .poses
-        .iter()
-        .map(|p| Frame::from_sweep_pose(&crank, p))
-        .collect();
+    let cycle = slider_crank_cycle();
     let k = SliderCrank::point_index("P").unwrap();
     let same_way = cycle
         .iter()
