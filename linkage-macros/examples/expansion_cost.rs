@@ -363,7 +363,12 @@ fn chart(rows: &[Row], path: &Path) {
         .margin(16)
         .x_label_area_size(44)
         .y_label_area_size(56)
-        .build_cartesian_2d((1f64..40f64).log_scale(), (0.5f64..2000f64).log_scale())
+        .build_cartesian_2d(
+            (1f64..40f64)
+                .log_scale()
+                .with_key_points(vec![1.0, 2.0, 4.0, 8.0, 16.0, 32.0]),
+            (0.5f64..2000f64).log_scale(),
+        )
         .expect("chart");
     c.configure_mesh()
         .light_line_style(WHITE)
