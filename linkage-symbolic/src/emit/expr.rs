@@ -321,9 +321,10 @@ impl Emitter<'_> {
             let within = |sub: &[(Id, i32)]| {
                 sub.len() < rest.len() && sub.iter().all(|f| f.1 > 0 && rest.contains(f))
             };
-            let best = self
-                .products
+            let best = rest
                 .iter()
+                .filter_map(|f| self.products.get(f))
+                .flatten()
                 .filter_map(|&p| match self.dag.node(p) {
                     Node::Prod(sub) if within(sub) => Some((p, sub)),
                     _ => None,

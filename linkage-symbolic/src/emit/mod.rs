@@ -84,8 +84,10 @@ struct Emitter<'a> {
     /// Temporaries by node.
     bound: HashMap<Id, String>,
     /// The bound products whose `let` is already written, which a later
-    /// product containing their factors reuses.
-    products: Vec<Id>,
+    /// product containing their factors reuses, by their first factor (a
+    /// product within another has its first factor there too, so only
+    /// these few are candidates).
+    products: HashMap<(Id, i32), Vec<Id>>,
 }
 
 /// Emits the straight-line code computing `roots`; `hints` names chosen
@@ -196,7 +198,7 @@ pub fn emit_phases(
         names,
         mode,
         bound: HashMap::new(),
-        products: Vec::new(),
+        products: HashMap::new(),
     };
 
     // Sine and cosine of the same angle share one sin_cos, in the first
@@ -314,8 +316,10 @@ pub fn emit_phases(
             }
             let value = emitter.definition(id).0;
             statements.push(quote! { let #name = #value; });
-            if matches!(dag.node(id), Node::Prod(_)) {
-                emitter.products.push(id);
+            if let Node::Prod(factors) = dag.node(id)
+                && let Some(&first) = factors.first()
+            {
+                emitter.products.entry(first).or_default().push(id);
             }
         }
         let values = roots
