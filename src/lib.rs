@@ -147,8 +147,8 @@ pub mod prelude {
     #[doc(no_inline)]
     pub use linkage_runtime::{
         AccelerationMethod, Analysis, Drive, Error, Event, EventKind, Iterate, JacobianSource,
-        Kinematics, Linkage, Options, Position, Stage, Sweep, SweepOptions, SweepPose,
-        SweepSummary, SymbolicMatrix, SymbolicTable, Velocity,
+        Kinematics, Linkage, Motion, Options, Position, Sensitivities, Sensitivity, Stage, Sweep,
+        SweepOptions, SweepPose, SweepSummary, SymbolicMatrix, SymbolicTable, Velocity,
     };
     pub use nalgebra::{Matrix2, SMatrix, SVector, Vector1, Vector2, Vector3, Vector4};
 }

@@ -14,6 +14,9 @@ pub enum Stage {
     Acceleration,
     /// The points' kinematics.
     Points,
+    /// The sensitivities to the parameters, Ψ_u u_p = −Ψ_p and its time
+    /// derivatives.
+    Sensitivity,
 }
 
 impl fmt::Display for Stage {
@@ -23,6 +26,7 @@ impl fmt::Display for Stage {
             Stage::Velocity => "velocity",
             Stage::Acceleration => "acceleration",
             Stage::Points => "points",
+            Stage::Sensitivity => "sensitivity",
         })
     }
 }

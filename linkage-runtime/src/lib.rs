@@ -24,6 +24,8 @@
 //   newton    positions: Newton–Raphson
 //   solve     velocities and accelerations
 //   sweep     continuation along a drive
+//   sensitivities  the derivatives by the parameters: a trait on top of
+//             Linkage, its provided methods delegating to its own solve
 mod checks;
 mod error;
 mod linalg;
@@ -31,6 +33,7 @@ mod linkage;
 mod newton;
 mod options;
 mod results;
+mod sensitivities;
 mod solve;
 mod sources;
 mod sweep;
@@ -42,5 +45,6 @@ pub use linalg::{Inverse, determinant, invert, scaled_svd};
 pub use linkage::Linkage;
 pub use options::{AccelerationMethod, JacobianSource, Options};
 pub use results::{Analysis, Iterate, Kinematics, Position, Velocity};
+pub use sensitivities::{Motion, Sensitivities, Sensitivity, SensitivityTerms};
 pub use sweep::{Drive, Event, EventKind, Sweep, SweepOptions, SweepPose, SweepSummary};
 pub use symbolic::{SymbolicMatrix, SymbolicTable};

@@ -20,7 +20,7 @@ use num_dual::DualNum;
 pub trait Linkage<const M: usize, const F: usize> {
     /// The points' positions, velocities or accelerations: one 2-vector per
     /// named point, in the order of [`Linkage::POINT_NAMES`].
-    type Points: Copy + core::fmt::Debug + PartialEq + AsRef<[Vector2<f64>]>;
+    type Points: Copy + core::fmt::Debug + PartialEq + AsRef<[Vector2<f64>]> + AsMut<[Vector2<f64>]>;
     const U_NAMES: [&'static str; M];
     const V_NAMES: [&'static str; F];
     const POINT_NAMES: &'static [&'static str];

@@ -116,13 +116,15 @@ impl Options {
 
     /// The smallest reciprocal condition number of Ψ_u with which `stage`
     /// keeps [`Options::accuracy`]: (ε/accuracy)^(1/k) with k = 1 for
-    /// positions, 2 for velocities, 3 for accelerations and points.
+    /// positions, 2 for velocities, 3 for accelerations and points, 4 for
+    /// the sensitivities to the parameters (ü_p holds Ψ_u⁻¹ once more than ü).
     pub fn min_rcond(&self, stage: Stage) -> f64 {
         let ratio = f64::EPSILON / self.accuracy;
         match stage {
             Stage::Position => ratio,
             Stage::Velocity => ratio.sqrt(),
             Stage::Acceleration | Stage::Points => ratio.cbrt(),
+            Stage::Sensitivity => ratio.sqrt().sqrt(),
         }
     }
 
@@ -144,6 +146,7 @@ impl Options {
             Stage::Position => rcond,
             Stage::Velocity => rcond * rcond,
             Stage::Acceleration | Stage::Points => rcond * rcond * rcond,
+            Stage::Sensitivity => (rcond * rcond) * (rcond * rcond),
         };
         power >= ratio
     }

@@ -47,12 +47,15 @@ pub struct Input {
     pub v: List<Ident>,
     pub points: List<PointDef>,
     pub closure: List<Expr>,
+    /// The parameters to differentiate by, as written (`None`: every `f64`
+    /// field the equations use).
+    pub params: Option<List<Ident>>,
     /// Whether `u`, `v` and `closure` were all given and well-formed (if
     /// not, the errors say why and the lists above are empty).
     pub complete: bool,
 }
 
-const KEYS: [&str; 4] = ["u", "v", "points", "closure"];
+const KEYS: [&str; 5] = ["u", "v", "points", "closure", "params"];
 
 impl Input {
     /// Parses the attribute and the struct; every problem found is recorded
@@ -74,6 +77,7 @@ impl Input {
         let mut v = None;
         let mut points = None;
         let mut closure = None;
+        let mut params = None;
         let mut seen: Vec<(String, Span)> = Vec::new();
         // Keys written, even malformed, or suggested for a misspelt key: no
         // "missing" error for them, the error on the key itself says it all.
@@ -104,6 +108,7 @@ impl Input {
                 "v" => v = parse_list(&key, value, errors, parse_ident),
                 "points" => points = parse_list(&key, value, errors, parse_point),
                 "closure" => closure = parse_list(&key, value, errors, parse_expr),
+                "params" => params = parse_list(&key, value, errors, parse_param),
                 other => {
                     let hint = match crate::suggest::closest(other, KEYS.iter().copied()) {
                         Some(k) => format!("; did you mean `{k}`?"),
@@ -113,7 +118,7 @@ impl Input {
                         key.span(),
                         format!(
                             "unknown key `{other}`: the attribute takes `u = [...]`, `v = [...]`, \
-                             `closure = [...]` and optionally `points = [...]`{hint}"
+                             `closure = [...]` and optionally `points = [...]` and `params = [...]`{hint}"
                         ),
                     ));
                 }
@@ -142,6 +147,7 @@ impl Input {
             v: v.unwrap_or_else(List::empty),
             points,
             closure: closure.unwrap_or_else(List::empty),
+            params,
             complete,
         })
     }
@@ -205,7 +211,7 @@ fn parse_entry(chunk: &TokenStream, errors: &mut Errors) -> Option<(Ident, Vec<T
         _ => {
             errors.push(syn::Error::new_spanned(
                 chunk,
-                "expected `key = [...]` with a key among `u`, `v`, `points`, `closure`",
+                "expected `key = [...]` with a key among `u`, `v`, `points`, `closure`, `params`",
             ));
             return None;
         }
@@ -260,6 +266,19 @@ fn parse_ident(chunk: TokenStream, errors: &mut Errors) -> Option<Ident> {
             errors.push(syn::Error::new_spanned(
                 chunk,
                 "a coordinate is a plain name, e.g. `theta3`",
+            ));
+            None
+        }
+    }
+}
+
+fn parse_param(chunk: TokenStream, errors: &mut Errors) -> Option<Ident> {
+    match syn::parse2::<Ident>(chunk.clone()) {
+        Ok(i) => Some(i),
+        Err(_) => {
+            errors.push(syn::Error::new_spanned(
+                chunk,
+                "a parameter is the name of an `f64` field of the struct, e.g. `l2`",
             ));
             None
         }

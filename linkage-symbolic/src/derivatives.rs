@@ -7,7 +7,11 @@
 //! * method B: the Jacobians of Ψ_u u̇ and Ψ_v v̇ with respect to u and v;
 //! * method A: Ψ̇_u = Σₖ ∂Ψ_u/∂qₖ q̇ₖ and Ψ̇_v likewise;
 //! * γ = (Ψ_q q̇)_q q̇, the fused second-order term;
-//! * for each point P: P, Ṗ = P_q q̇ and P̈ = P_q q̈ + (P_q q̇)_q q̇.
+//! * for each point P: P, Ṗ = P_q q̇ and P̈ = P_q q̈ + (P_q q̇)_q q̇;
+//! * for the sensitivities to the parameters p: Ψ_p, and the explicit
+//!   partial derivatives by u and by p of Ψ̇ = Ψ_q q̇ and Ψ̈ = Ψ_q q̈ + γ
+//!   (which are the time derivatives of Ψ_u and Ψ_p: Ψ̇_u, Ψ̇_p, Ψ̈_u, Ψ̈_p),
+//!   and likewise of every point's P, Ṗ and P̈.
 
 use crate::dag::{Dag, Id, Symbol};
 use crate::lower::Lowered;
@@ -54,6 +58,12 @@ pub struct PointKinematics {
     pub position: [Id; 2],
     pub velocity: [Id; 2],
     pub acceleration: [Id; 2],
+    /// P_u, Ṗ_u and P̈_u (2 × m, rows x and y): the explicit derivatives by
+    /// u of the position, velocity and acceleration, which are P_u and its
+    /// first and second time derivatives.
+    pub by_u: [Matrix; 3],
+    /// P_p, Ṗ_p and P̈_p (2 × k), likewise by the parameters.
+    pub by_p: [Matrix; 3],
 }
 
 /// Every output of the macro, as DAG nodes.
@@ -70,6 +80,14 @@ pub struct Derivatives {
     pub psi_u_dot: Matrix,
     pub psi_v_dot: Matrix,
     pub gamma: Matrix,
+    /// Ψ_p (m × k).
+    pub psi_p: Matrix,
+    /// Ψ̇_p = (Ψ_q q̇)_p (m × k).
+    pub psi_p_dot: Matrix,
+    /// Ψ̈_u = (Ψ_q q̈ + γ)_u (m × m).
+    pub psi_u_ddot: Matrix,
+    /// Ψ̈_p = (Ψ_q q̈ + γ)_p (m × k).
+    pub psi_p_ddot: Matrix,
     pub points: Vec<PointKinematics>,
     /// det Ψ_u, expanded symbolically for m ≤ 4 (for the text table).
     pub det_psi_u: Option<Id>,
@@ -120,6 +138,21 @@ impl Derivatives {
             .collect();
         let gamma = Matrix::column(h.iter().map(|&hi| dag.directional(hi, &q_dot)).collect());
 
+        // The sensitivities' terms: the derivatives by u and by p of Ψ,
+        // Ψ̇ = Ψ_q q̇ and Ψ̈ = Ψ_q q̈ + γ.
+        let by_param: Vec<Symbol> = lowered.design.iter().map(|&k| Symbol::Param(k)).collect();
+        let k = by_param.len();
+        let second: Vec<Id> = (0..m)
+            .map(|i| {
+                let ddot = dag.directional(psi.entries[i], &q_ddot);
+                dag.add(ddot, gamma.entries[i])
+            })
+            .collect();
+        let psi_p = Matrix::from_fn(m, k, |i, j| dag.diff(psi.entries[i], by_param[j]));
+        let psi_p_dot = Matrix::from_fn(m, k, |i, j| dag.diff(h[i], by_param[j]));
+        let psi_u_ddot = Matrix::from_fn(m, m, |i, j| dag.diff(second[i], coord(j)));
+        let psi_p_ddot = Matrix::from_fn(m, k, |i, j| dag.diff(second[i], by_param[j]));
+
         let mut points = Vec::new();
         for (name, x, y) in &lowered.points {
             let position = [*x, *y];
@@ -129,11 +162,16 @@ impl Derivatives {
                 let second = dag.directional(velocity[c], &q_dot);
                 dag.add(first, second)
             });
+            let levels = [position, velocity, acceleration];
+            let by_u = levels.map(|e| Matrix::from_fn(2, m, |c, j| dag.diff(e[c], coord(j))));
+            let by_p = levels.map(|e| Matrix::from_fn(2, k, |c, j| dag.diff(e[c], by_param[j])));
             points.push(PointKinematics {
                 name: crate::lower::unraw(name),
                 position,
                 velocity,
                 acceleration,
+                by_u,
+                by_p,
             });
         }
 
@@ -190,6 +228,10 @@ impl Derivatives {
             psi_u_dot,
             psi_v_dot,
             gamma,
+            psi_p,
+            psi_p_dot,
+            psi_u_ddot,
+            psi_p_ddot,
             points,
             det_psi_u,
             methods_agree,
@@ -202,6 +244,11 @@ impl Derivatives {
 
     pub fn f(&self) -> usize {
         self.lowered.f
+    }
+
+    /// The number of parameters differentiated by.
+    pub fn k(&self) -> usize {
+        self.lowered.design.len()
     }
 
     pub fn dag(&self) -> &Dag {

@@ -300,6 +300,7 @@ mod tests {
             vec!["l3".into(), "l4".into()],
             vec!["theta3".into(), "theta4".into()],
             2,
+            vec![0, 1],
         );
         let f = Formatter {
             dag: &dag,

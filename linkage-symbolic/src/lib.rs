@@ -7,6 +7,7 @@
 //! 1. [`ast`]: the attribute and the struct, parsed with their spans;
 //! 2. [`lower`]: names resolved, expressions lowered into the hash-consed
 //!    DAG of [`dag`]; [`valid`]: counts and structural rank checked;
+//!    [`params`]: the parameters to differentiate by;
 //! 3. [`derivatives`]: every derivative built with the rules of [`diff`],
 //!    the two acceleration methods compared in the normal form of
 //!    [`normal`];
@@ -43,6 +44,8 @@ pub mod lower;
 pub mod names;
 pub mod normal;
 #[cfg(feature = "syntax")]
+pub mod params;
+#[cfg(feature = "syntax")]
 mod suggest;
 #[cfg(feature = "syntax")]
 pub mod valid;
@@ -69,6 +72,7 @@ mod pipeline {
             return None;
         }
         crate::valid::check_structure(input, &mut lowered, errors);
+        crate::params::resolve(input, &mut lowered, errors);
         if !errors.is_empty() {
             return None;
         }

@@ -28,7 +28,7 @@ enum Binding {
 
 /// Names of the generated functions' arguments, which a coordinate or a
 /// point may not take.
-const RESERVED: [&str; 7] = ["u", "v", "udot", "vdot", "uddot", "vddot", "self"];
+const RESERVED: [&str; 8] = ["u", "v", "udot", "vdot", "uddot", "vddot", "params", "self"];
 
 /// The supported functions, for messages.
 pub const SUPPORTED: &str = "sin, cos, tan, asin, acos, atan, atan2, sinh, cosh, tanh, sqrt, exp, ln, \
@@ -39,6 +39,9 @@ pub struct Lowered {
     pub dag: Dag,
     /// The `f64` fields, in order: `Symbol::Param(k)` is `params[k]`.
     pub params: Vec<Ident>,
+    /// The parameters p to differentiate by, as indices into `params`
+    /// (set by [`crate::params::resolve`]; empty until then).
+    pub design: Vec<u16>,
     /// u then v: `Symbol::Coord(k)` is `coords[k]`.
     pub coords: Vec<Ident>,
     pub m: usize,
@@ -188,6 +191,7 @@ pub fn lower(input: &Input, errors: &mut Errors) -> Option<Lowered> {
     Some(Lowered {
         dag: lowerer.dag,
         params,
+        design: Vec::new(),
         coords,
         m,
         f,
@@ -623,6 +627,7 @@ impl Lowered {
             (0..self.params.len()).map(|k| self.param_name(k)).collect(),
             (0..self.coords.len()).map(|k| self.coord_name(k)).collect(),
             self.m,
+            self.design.clone(),
         )
     }
 }

@@ -97,12 +97,47 @@ pub struct SymbolNames {
     coords: Vec<String>,
     /// How many coordinates are dependent (u); the rest are driving (v).
     m: usize,
+    /// The parameters p differentiated by, as indices into `params`.
+    design: Vec<u16>,
 }
 
 impl SymbolNames {
     /// The names as written by the user (raw identifiers without `r#`).
-    pub fn new(params: Vec<String>, coords: Vec<String>, m: usize) -> SymbolNames {
-        SymbolNames { params, coords, m }
+    pub fn new(
+        params: Vec<String>,
+        coords: Vec<String>,
+        m: usize,
+        design: Vec<u16>,
+    ) -> SymbolNames {
+        SymbolNames {
+            params,
+            coords,
+            m,
+            design,
+        }
+    }
+
+    /// The position in p of the parameter `Symbol::Param(k)`, if it is one
+    /// of the parameters differentiated by.
+    pub fn design_index(&self, k: u16) -> Option<usize> {
+        self.design.iter().position(|&d| d == k)
+    }
+
+    /// The parameters differentiated by, in the order of p, as a formula
+    /// writes them.
+    pub fn design_display(&self) -> Vec<String> {
+        self.design
+            .iter()
+            .map(|&k| greek(&self.params[k as usize]))
+            .collect()
+    }
+
+    /// The parameters differentiated by, in the order of p, as written.
+    pub fn design_code(&self) -> Vec<String> {
+        self.design
+            .iter()
+            .map(|&k| self.params[k as usize].clone())
+            .collect()
     }
 
     /// How many coordinates are dependent.

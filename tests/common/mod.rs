@@ -1,6 +1,8 @@
 //! Mechanisms and helpers shared by the integration tests.
 #![allow(dead_code)]
 
+pub mod sensitivity;
+
 #[allow(unused_imports)] // not every test binary uses it
 pub use linkage::mechanisms::FourBar;
 use linkage::num_dual::{Dual2_64, Dual64};

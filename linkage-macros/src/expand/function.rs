@@ -4,7 +4,7 @@
 use super::Generator;
 use super::docs::doc_attributes;
 use super::quantities::{Arg, Quantity};
-use super::signature::{self, Dims};
+use super::signature;
 use linkage_symbolic::dag::{Dag, Id, Node, Symbol};
 use linkage_symbolic::derivatives::Matrix;
 use linkage_symbolic::emit::{Body, Mode, Reads, emit};
@@ -31,6 +31,7 @@ pub fn reads(r: &Reads, arg: Arg) -> bool {
         Arg::Uddot => r.uddot,
         Arg::Vddot => r.vddot,
         Arg::TrigU | Arg::TrigV => true,
+        Arg::Params => r.p,
     }
 }
 
@@ -98,7 +99,7 @@ impl Generator<'_> {
                 quote!([#(#vectors),*])
             }
         };
-        let dims = Dims::known(self.m, self.f, self.np);
+        let dims = self.dims();
         let args = signature::args(q, &dims, |a| reads(&body.reads, a));
         let ret = signature::output_type(q, &dims, false);
         let doc = doc_attributes(doc);

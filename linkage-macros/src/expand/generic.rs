@@ -1,12 +1,13 @@
 //! The functions of the table on any dual number of num-dual: Ψ
 //! (`psi_generic`) and the point positions (`point_positions_generic`), for
-//! derivatives by automatic differentiation.
+//! derivatives by automatic differentiation; with `_params`, the
+//! parameters given as dual numbers too.
 
 use super::Generator;
 use super::docs::doc_attributes;
 use super::function::{assemble, reads};
-use super::quantities::Quantity;
-use super::signature::{self, Dims};
+use super::quantities::{Arg, Quantity};
+use super::signature;
 use linkage_symbolic::dag::{Dag, Id};
 use linkage_symbolic::derivatives::Matrix;
 use linkage_symbolic::emit::{Body, Mode, emit};
@@ -21,7 +22,11 @@ impl Generator<'_> {
         doc: &[String],
         matrix: &Matrix,
     ) -> TokenStream {
-        let result = self.free_name(q.name.trim_end_matches("_generic"));
+        let result = self.free_name(
+            q.name
+                .trim_end_matches("_params")
+                .trim_end_matches("_generic"),
+        );
         let roots: Vec<Id> = matrix
             .entries
             .iter()
@@ -34,7 +39,7 @@ impl Generator<'_> {
             &roots,
             &[],
             std::slice::from_ref(&result),
-            Mode::Generic,
+            mode(q),
         );
         let mut values = body.values.iter();
         let (stmts, value, _) = assemble(matrix, &result, &mut values, quote!(D));
@@ -55,7 +60,7 @@ impl Generator<'_> {
                 ]
             })
             .collect();
-        let body = emit(self.dag(), &self.names, &roots, &hints, &[], Mode::Generic);
+        let body = emit(self.dag(), &self.names, &roots, &hints, &[], mode(q));
         let mut values = body.values.iter();
         let vectors = points.iter().map(|_| {
             let x = values.next();
@@ -74,7 +79,7 @@ impl Generator<'_> {
         result: TokenStream,
     ) -> TokenStream {
         let name = format_ident!("{}", q.name);
-        let dims = Dims::known(self.m, self.f, self.np);
+        let dims = self.dims();
         let generics = signature::generics(q);
         let args = signature::args(q, &dims, |a| reads(&body.reads, a));
         let ret = signature::output_type(q, &dims, false);
@@ -89,5 +94,12 @@ impl Generator<'_> {
                 #result
             }
         }
+    }
+}
+
+/// Generic code, reading the parameters from `params` if the function takes them.
+fn mode(q: &Quantity) -> Mode {
+    Mode::Generic {
+        params_from_p: q.args.contains(&Arg::Params),
     }
 }

@@ -10,6 +10,7 @@ mod function;
 mod generic;
 mod kinematics;
 pub mod quantities;
+mod sensitivity;
 mod signature;
 mod symbolic_table;
 mod trait_impl;
@@ -79,6 +80,8 @@ struct Generator<'a> {
     m: usize,
     f: usize,
     np: usize,
+    /// The number of parameters differentiated by.
+    k: usize,
 }
 
 impl<'a> Generator<'a> {
@@ -90,7 +93,12 @@ impl<'a> Generator<'a> {
             m: model.m(),
             f: model.f(),
             np: model.points.len(),
+            k: model.k(),
         }
+    }
+
+    fn dims(&self) -> signature::Dims {
+        signature::Dims::known(self.m, self.f, self.np, self.k)
     }
 
     fn dag(&self) -> &Dag {
@@ -137,6 +145,8 @@ impl<'a> Generator<'a> {
                 .map(|p| p.name.as_str())
                 .collect::<Vec<_>>()
                 .join(", "),
+            p_list: self.names.design_display().join(", "),
+            k: self.k,
             agreement: agreement.to_owned(),
         }
     }
@@ -199,7 +209,9 @@ impl<'a> Generator<'a> {
                 self.generic_formula(q, &doc, matrix(self.model))
             }
             (Scalar::Dual, Source::Points(_)) => self.generic_points(q, &doc),
-            (Scalar::Dual, Source::PsiAndPsiU) | (_, Source::Determinant) => quote!(),
+            (_, Source::SensitivityTerms) => self.sensitivity_terms_function(q, &doc),
+            (Scalar::Dual, Source::PsiAndPsiU)
+            | (_, Source::Determinant | Source::PointsByParams(_)) => quote!(),
         }
     }
 
@@ -225,6 +237,8 @@ impl<'a> Generator<'a> {
             .iter()
             .map(linkage_symbolic::lower::unraw);
         let point_names = self.model.points.iter().map(|p| p.name.as_str());
+        let param_names = self.names.design_code();
+        let kl = Literal::usize_unsuffixed(self.k);
         let (ml, fl, npl) = (
             Literal::usize_unsuffixed(self.m),
             Literal::usize_unsuffixed(self.f),
@@ -246,6 +260,8 @@ impl<'a> Generator<'a> {
                     pub const V_NAMES: [&'static str; #fl] = [#(#v_names),*];
                     /// The named points, in order.
                     pub const POINT_NAMES: [&'static str; #npl] = [#(#point_names),*];
+                    /// The parameters p the sensitivities differentiate by, in order.
+                    pub const PARAM_NAMES: [&'static str; #kl] = [#(#param_names),*];
                     #point_indices
 
                     #(#functions)*
@@ -269,8 +285,9 @@ impl<'a> Generator<'a> {
 /// generated item (`SYMBOLIC`, …) gets none: on the error path the names
 /// have not been checked, and a bad one must not add an error of its own.
 pub(super) fn point_indices<'a>(names: impl Iterator<Item = &'a str>) -> TokenStream {
-    const TAKEN: [&str; 6] = [
+    const TAKEN: [&str; 7] = [
         "U_NAMES",
+        "PARAM_NAMES",
         "V_NAMES",
         "POINT_NAMES",
         "SYMBOLIC",
@@ -297,14 +314,20 @@ pub(super) fn point_indices<'a>(names: impl Iterator<Item = &'a str>) -> TokenSt
 #[cfg(test)]
 mod tests {
     use super::expand;
-    use super::quantities::QUANTITIES;
+    use super::quantities::{QUANTITIES, Trait};
     use quote::quote;
-    use std::collections::BTreeSet;
+    use std::collections::{BTreeMap, BTreeSet};
 
-    /// The names of the functions of every inherent impl and of every
-    /// `Linkage` impl in an expansion, and the keys of its symbolic table.
-    fn inventory(file: &syn::File) -> (BTreeSet<String>, BTreeSet<String>, BTreeSet<String>) {
-        let (mut inherent, mut in_trait) = (BTreeSet::new(), BTreeSet::new());
+    /// The functions of an expansion: of its inherent impls, of each trait
+    /// impl by the trait's name, and the keys of its symbolic table.
+    type Inventory = (
+        BTreeSet<String>,
+        BTreeMap<String, BTreeSet<String>>,
+        BTreeSet<String>,
+    );
+
+    fn inventory(file: &syn::File) -> Inventory {
+        let (mut inherent, mut in_trait) = (BTreeSet::new(), BTreeMap::new());
         let mut impls = Vec::new();
         for item in &file.items {
             if let syn::Item::Const(c) = item {
@@ -322,8 +345,12 @@ mod tests {
                 syn::ImplItem::Fn(f) => Some(f.sig.ident.to_string()),
                 _ => None,
             });
-            if i.trait_.is_some() {
-                in_trait.extend(names);
+            if let Some((_, path, _)) = &i.trait_ {
+                let name = path.segments.last().map(|s| s.ident.to_string());
+                in_trait
+                    .entry(name.unwrap_or_default())
+                    .or_insert_with(BTreeSet::new)
+                    .extend(names);
             } else {
                 inherent.extend(names);
             }
@@ -339,9 +366,10 @@ mod tests {
     }
 
     /// Adding a quantity is one entry of the table: every entry appears,
-    /// as its flags say, in the inherent items, the trait impl, the
-    /// fallback's inherent items and trait impl, and the symbolic table —
-    /// and nothing else does.
+    /// as its flags say, in the inherent items, its trait's impl, the
+    /// fallback's inherent items and trait impls, and the symbolic table —
+    /// and nothing else does (but the parameters' getter and setter, which
+    /// are the struct's fields rather than formulas).
     #[test]
     fn every_quantity_of_the_table_is_generated_everywhere() {
         let good = syn::parse_str::<syn::File>(&fourbar_expansion()).unwrap();
@@ -363,11 +391,19 @@ mod tests {
             .filter(|q| q.function)
             .map(|q| q.name.to_owned())
             .collect();
-        let in_trait: BTreeSet<String> = QUANTITIES
-            .iter()
-            .filter(|q| q.in_trait)
-            .map(|q| q.name.to_owned())
-            .collect();
+        let of = |which: Trait| -> BTreeSet<String> {
+            QUANTITIES
+                .iter()
+                .filter(|q| q.in_trait == Some(which))
+                .map(|q| q.name.to_owned())
+                .collect()
+        };
+        let mut sensitivities = of(Trait::Sensitivities);
+        sensitivities.extend(["params".to_owned(), "set_params".to_owned()]);
+        let in_trait = BTreeMap::from([
+            ("Linkage".to_owned(), of(Trait::Linkage)),
+            ("Sensitivities".to_owned(), sensitivities),
+        ]);
         let keys: BTreeSet<String> = QUANTITIES
             .iter()
             .filter_map(|q| q.key.map(str::to_owned))
@@ -473,9 +509,20 @@ mod tests {
                 if !is_product {
                     continue;
                 }
+                // The product itself, not part of longer factors
+                // (`l3_s_theta3 * theta3_dot` in `l3_s_theta3 * theta3_dot.powi(2)`,
+                // `s_theta3 * theta3_dot` in `l3_s_theta3 * theta3_dot`).
+                let whole = body
+                    .match_indices(value)
+                    .filter(|(at, _)| {
+                        let previous = body[..*at].chars().next_back();
+                        let next = body[at + value.len()..].chars().next();
+                        !previous.is_some_and(|c| c.is_alphanumeric() || c == '_')
+                            && !next.is_some_and(|c| c.is_alphanumeric() || c == '_' || c == '.')
+                    })
+                    .count();
                 assert_eq!(
-                    body.matches(value).count(),
-                    1,
+                    whole, 1,
                     "`{value}` is bound to `{name}` but written out again in:\n{body}"
                 );
                 checked += 1;

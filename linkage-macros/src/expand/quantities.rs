@@ -20,6 +20,19 @@ pub enum Arg {
     TrigU,
     /// (sin vₖ, cos vₖ) per driving coordinate.
     TrigV,
+    /// The parameters p, on dual numbers.
+    Params,
+}
+
+/// How many entries an argument has.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Length {
+    /// One per dependent coordinate (m).
+    M,
+    /// One per driving coordinate (f).
+    F,
+    /// One per parameter (k).
+    K,
 }
 
 impl Arg {
@@ -33,13 +46,17 @@ impl Arg {
             Arg::Vddot => "vddot",
             Arg::TrigU => "trig_u",
             Arg::TrigV => "trig_v",
+            Arg::Params => "params",
         }
     }
 
-    /// Whether the argument has one entry per dependent coordinate (else
-    /// one per driving coordinate).
-    pub fn is_dependent(self) -> bool {
-        matches!(self, Arg::U | Arg::Udot | Arg::Uddot | Arg::TrigU)
+    /// How many entries the argument has.
+    pub fn length(self) -> Length {
+        match self {
+            Arg::U | Arg::Udot | Arg::Uddot | Arg::TrigU => Length::M,
+            Arg::V | Arg::Vdot | Arg::Vddot | Arg::TrigV => Length::F,
+            Arg::Params => Length::K,
+        }
     }
 }
 
@@ -60,6 +77,19 @@ pub enum Shape {
     Points,
     /// `linkage::Kinematics<m, f>`.
     Kinematics,
+    /// m × k (Jacobians with respect to the parameters).
+    ByParams,
+    /// `linkage::SensitivityTerms<m, k, points>`.
+    SensitivityTerms,
+}
+
+/// The trait a generated function belongs to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Trait {
+    /// `linkage::Linkage<m, f>`: the kinematics.
+    Linkage,
+    /// `linkage::Sensitivities<m, f, k>`: the derivatives by the parameters.
+    Sensitivities,
 }
 
 /// The number type of a function: `f64`, or any dual number of num-dual
@@ -83,6 +113,11 @@ pub enum Source {
     Kinematics { with_trig: bool },
     /// det Ψ_u: in the symbolic table only.
     Determinant,
+    /// Every derivative by u and p the sensitivities need, in one evaluation.
+    SensitivityTerms,
+    /// The points' explicit derivatives by the parameters: positions (0),
+    /// velocities (1), accelerations (2); in the symbolic table only.
+    PointsByParams(usize),
 }
 
 /// The text a quantity's documentation is written from.
@@ -94,6 +129,9 @@ pub struct DocContext {
     pub v_list: String,
     pub q_list: String,
     pub point_list: String,
+    /// The parameters p, as a list of formula names.
+    pub p_list: String,
+    pub k: usize,
     /// Whether the two acceleration methods expand to the same polynomial.
     pub agreement: String,
 }
@@ -111,8 +149,8 @@ pub struct Quantity {
     pub source: Source,
     /// Whether the struct gets a function (false: a table entry only).
     pub function: bool,
-    /// Whether the `Linkage` trait has it.
-    pub in_trait: bool,
+    /// The trait that has it, if any.
+    pub in_trait: Option<Trait>,
     /// Its key in the symbolic table, if it is listed there.
     pub key: Option<&'static str>,
     /// The first paragraph of its documentation (formulas follow).
@@ -125,6 +163,7 @@ const U_V_VDOT: &[Arg] = &[Arg::U, Arg::V, Arg::Vdot];
 const U_V_QDOT: &[Arg] = &[Arg::U, Arg::V, Arg::Udot, Arg::Vdot];
 const U_V_QDOT_QDDOT: &[Arg] = &[Arg::U, Arg::V, Arg::Udot, Arg::Vdot, Arg::Uddot, Arg::Vddot];
 const U_V_VDOT_VDDOT: &[Arg] = &[Arg::U, Arg::V, Arg::Vdot, Arg::Vddot];
+const P_U_V: &[Arg] = &[Arg::Params, Arg::U, Arg::V];
 const U_V_TRIG_VDOT_VDDOT: &[Arg] = &[
     Arg::U,
     Arg::V,
@@ -151,7 +190,7 @@ const fn formula(
         scalar: Scalar::F64,
         source: Source::Formula(matrix),
         function: true,
-        in_trait: true,
+        in_trait: Some(Trait::Linkage),
         key: Some(name),
         doc,
     }
@@ -168,7 +207,7 @@ pub const QUANTITIES: &[Quantity] = &[
         |_| "Ψ(u, v): the closure equations, zero at every assembled pose.".to_owned(),
     ),
     Quantity {
-        in_trait: false,
+        in_trait: None,
         ..formula(
             "psi_q",
             "Ψ_q",
@@ -220,7 +259,7 @@ pub const QUANTITIES: &[Quantity] = &[
         scalar: Scalar::F64,
         source: Source::PsiAndPsiU,
         function: true,
-        in_trait: true,
+        in_trait: Some(Trait::Linkage),
         key: None,
         doc: |_| {
             "Ψ and Ψ_u together, sharing every sine, cosine and common subexpression: \
@@ -236,7 +275,7 @@ pub const QUANTITIES: &[Quantity] = &[
         scalar: Scalar::F64,
         source: Source::Determinant,
         function: false,
-        in_trait: false,
+        in_trait: None,
         key: Some("det_psi_u"),
         doc: |_| "det Ψ_u".to_owned(),
     },
@@ -364,7 +403,7 @@ pub const QUANTITIES: &[Quantity] = &[
         scalar: Scalar::F64,
         source: Source::Kinematics { with_trig: false },
         function: true,
-        in_trait: true,
+        in_trait: Some(Trait::Linkage),
         key: None,
         doc: |_| {
             "Everything at one pose in one pass: Ψ, Ψ_u and Ψ_v; the velocity \
@@ -383,7 +422,7 @@ pub const QUANTITIES: &[Quantity] = &[
         scalar: Scalar::F64,
         source: Source::Kinematics { with_trig: true },
         function: true,
-        in_trait: true,
+        in_trait: Some(Trait::Linkage),
         key: None,
         doc: |_| {
             "[`Self::kinematics`] with the sines and cosines of the coordinates \
@@ -402,7 +441,7 @@ pub const QUANTITIES: &[Quantity] = &[
         scalar: Scalar::Dual,
         source: Source::Formula(|d| &d.psi),
         function: true,
-        in_trait: true,
+        in_trait: Some(Trait::Linkage),
         key: None,
         doc: |_| {
             "Ψ(u, v) on any dual number of `num_dual`: the same closure equations as \
@@ -419,7 +458,7 @@ pub const QUANTITIES: &[Quantity] = &[
         scalar: Scalar::Dual,
         source: Source::Points(0),
         function: true,
-        in_trait: true,
+        in_trait: Some(Trait::Linkage),
         key: None,
         doc: |_| {
             "The point positions P(q) on any dual number of `num_dual` (see \
@@ -427,7 +466,145 @@ pub const QUANTITIES: &[Quantity] = &[
                 .to_owned()
         },
     },
+    Quantity {
+        in_trait: Some(Trait::Sensitivities),
+        ..formula(
+            "psi_p",
+            "Ψ_p",
+            U_V,
+            Shape::ByParams,
+            |d| &d.psi_p,
+            |c| {
+                format!(
+                    "Ψ_p = ∂Ψ/∂p, the {}×{} Jacobian with respect to the parameters p = [{}]: \
+                     the position sensitivities are u_p = −Ψ_u⁻¹Ψ_p.",
+                    c.m, c.k, c.p_list
+                )
+            },
+        )
+    },
+    table_only("psi_p_dot", "Ψ̇_p = (Ψ_q q̇)_p", Shape::ByParams, |d| {
+        &d.psi_p_dot
+    }),
+    table_only(
+        "psi_u_ddot",
+        "Ψ̈_u = (Ψ_q q̈ + γ)_u",
+        Shape::Square,
+        |d| &d.psi_u_ddot,
+    ),
+    table_only(
+        "psi_p_ddot",
+        "Ψ̈_p = (Ψ_q q̈ + γ)_p",
+        Shape::ByParams,
+        |d| &d.psi_p_ddot,
+    ),
+    points_by_params("points_p", "P_p", 0),
+    points_by_params("point_velocities_p", "Ṗ_p", 1),
+    points_by_params("point_accelerations_p", "P̈_p", 2),
+    Quantity {
+        name: "sensitivity_terms",
+        symbol: "Ψ_u, Ψ_p, Ψ̇_u, Ψ̇_p, Ψ̈_u, Ψ̈_p, P_u, P_p, …",
+        args: U_V_QDOT_QDDOT,
+        shape: Shape::SensitivityTerms,
+        scalar: Scalar::F64,
+        source: Source::SensitivityTerms,
+        function: true,
+        in_trait: Some(Trait::Sensitivities),
+        key: None,
+        doc: |c| {
+            format!(
+                "Every term the sensitivities to the parameters p = [{}] need, at a pose in \
+                 motion, in one pass sharing each sine, cosine and subexpression: Ψ_u, Ψ_p, \
+                 their first and second time derivatives Ψ̇_u = (Ψ_q q̇)_u, Ψ̇_p = (Ψ_q q̇)_p, \
+                 Ψ̈_u = (Ψ_q q̈ + γ)_u, Ψ̈_p = (Ψ_q q̈ + γ)_p, and the same of every point \
+                 (P_u, Ṗ_u, P̈_u and P_p, Ṗ_p, P̈_p, the explicit derivatives of P, Ṗ, P̈). \
+                 Differentiating Ψ_u u_p + Ψ_p = 0 in time twice gives the sensitivities \
+                 (see `linkage::Sensitivities`):\n\n\
+                 ```text\n\
+                 u_p = −Ψ_u⁻¹ Ψ_p\n\
+                 u̇_p = −Ψ_u⁻¹ (Ψ̇_u u_p + Ψ̇_p)\n\
+                 ü_p = −Ψ_u⁻¹ (Ψ̈_u u_p + 2 Ψ̇_u u̇_p + Ψ̈_p)\n\
+                 ```",
+                c.p_list
+            )
+        },
+    },
+    Quantity {
+        name: "psi_generic_params",
+        symbol: "Ψ",
+        args: P_U_V,
+        shape: Shape::Column,
+        scalar: Scalar::Dual,
+        source: Source::Formula(|d| &d.psi),
+        function: true,
+        in_trait: Some(Trait::Sensitivities),
+        key: None,
+        doc: |c| {
+            format!(
+                "Ψ(u, v) on any dual number of `num_dual`, with the parameters p = [{}] given \
+                 as dual numbers too (`params`): derivatives by the parameters by automatic \
+                 differentiation (see [`Self::psi_generic`]).",
+                c.p_list
+            )
+        },
+    },
+    Quantity {
+        name: "point_positions_generic_params",
+        symbol: "P",
+        args: P_U_V,
+        shape: Shape::Points,
+        scalar: Scalar::Dual,
+        source: Source::Points(0),
+        function: true,
+        in_trait: Some(Trait::Sensitivities),
+        key: None,
+        doc: |c| {
+            format!(
+                "The point positions P(q) on any dual number of `num_dual`, with the \
+                 parameters p = [{}] given as dual numbers (see [`Self::point_positions`]).",
+                c.p_list
+            )
+        },
+    },
 ];
+
+/// A matrix of formulas listed in the symbolic table only.
+const fn table_only(
+    key: &'static str,
+    symbol: &'static str,
+    shape: Shape,
+    matrix: fn(&Derivatives) -> &Matrix,
+) -> Quantity {
+    Quantity {
+        name: key,
+        symbol,
+        args: U_V_QDOT_QDDOT,
+        shape,
+        scalar: Scalar::F64,
+        source: Source::Formula(matrix),
+        function: false,
+        in_trait: None,
+        key: Some(key),
+        doc: |_| String::new(),
+    }
+}
+
+/// The points' explicit derivatives by the parameters, in the symbolic
+/// table only.
+const fn points_by_params(key: &'static str, symbol: &'static str, pick: usize) -> Quantity {
+    Quantity {
+        name: key,
+        symbol,
+        args: U_V_QDOT_QDDOT,
+        shape: Shape::Points,
+        scalar: Scalar::F64,
+        source: Source::PointsByParams(pick),
+        function: false,
+        in_trait: None,
+        key: Some(key),
+        doc: |_| String::new(),
+    }
+}
 
 /// An f64 function of the points, in the trait and the table.
 const fn points(
@@ -446,7 +623,7 @@ const fn points(
         scalar: Scalar::F64,
         source: Source::Points(pick),
         function: true,
-        in_trait: true,
+        in_trait: Some(Trait::Linkage),
         key: Some(key),
         doc,
     }

@@ -3,7 +3,7 @@
 //! dimensions are the model's numbers (the items, the trait impl) or
 //! generic parameters (the error-path fallback).
 
-use super::quantities::{Arg, Quantity, Scalar, Shape};
+use super::quantities::{Arg, Length, Quantity, Scalar, Shape};
 use proc_macro2::{Ident, Literal, TokenStream};
 use quote::{format_ident, quote};
 
@@ -32,22 +32,24 @@ impl Dim {
 }
 
 /// The dimensions of a model: m dependent coordinates, f driving ones, m +
-/// f in all, np named points.
+/// f in all, np named points, k parameters.
 #[derive(Clone)]
 pub struct Dims {
     pub m: Dim,
     pub f: Dim,
     pub n: Dim,
     pub np: Dim,
+    pub k: Dim,
 }
 
 impl Dims {
-    pub fn known(m: usize, f: usize, np: usize) -> Dims {
+    pub fn known(m: usize, f: usize, np: usize, k: usize) -> Dims {
         Dims {
             m: Dim::known(m),
             f: Dim::known(f),
             n: Dim::known(m + f),
             np: Dim::known(np),
+            k: Dim::known(k),
         }
     }
 }
@@ -79,7 +81,11 @@ fn matrix(rows: &Dim, cols: &Dim, s: Scalar) -> TokenStream {
 
 /// The type of an argument.
 pub fn arg_type(arg: Arg, dims: &Dims, s: Scalar) -> TokenStream {
-    let dim = if arg.is_dependent() { &dims.m } else { &dims.f };
+    let dim = match arg.length() {
+        Length::M => &dims.m,
+        Length::F => &dims.f,
+        Length::K => &dims.k,
+    };
     let (d, s) = (&dim.tokens, scalar(s));
     match arg {
         Arg::TrigU | Arg::TrigV => quote!(&[(f64, f64); #d]),
@@ -112,6 +118,11 @@ pub fn output_type(q: &Quantity, dims: &Dims, in_trait: bool) -> TokenStream {
         Shape::Kinematics => {
             let (m, f) = (&dims.m.tokens, &dims.f.tokens);
             quote!(::linkage::Kinematics<#m, #f>)
+        }
+        Shape::ByParams => matrix(&dims.m, &dims.k, s),
+        Shape::SensitivityTerms => {
+            let (m, k, np) = (&dims.m.tokens, &dims.k.tokens, &dims.np.tokens);
+            quote!(::linkage::SensitivityTerms<#m, #k, [Vector2<f64>; #np]>)
         }
     }
 }

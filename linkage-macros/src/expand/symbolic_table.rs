@@ -22,6 +22,12 @@ impl Generator<'_> {
         let v_labels: Vec<String> = (m..m + f).map(|k| self.names.coord(k)).collect();
         let q_labels: Vec<String> = (0..m + f).map(|k| self.names.coord(k)).collect();
         let point_labels: Vec<String> = model.points.iter().map(|p| p.name.clone()).collect();
+        let p_labels = self.names.design_display();
+        let point_xy_labels: Vec<String> = model
+            .points
+            .iter()
+            .flat_map(|p| [format!("{}.x", p.name), format!("{}.y", p.name)])
+            .collect();
         let xy = ["x".to_owned(), "y".to_owned()];
         let one = ["".to_owned()];
         let mut entries: Vec<TokenStream> = Vec::new();
@@ -34,7 +40,10 @@ impl Generator<'_> {
                     Some(det) => Matrix::column(vec![det]),
                     None => continue,
                 },
-                Source::PsiAndPsiU | Source::Kinematics { .. } => continue,
+                Source::PointsByParams(level) => self.points_by_params_matrix(level),
+                Source::PsiAndPsiU | Source::Kinematics { .. } | Source::SensitivityTerms => {
+                    continue;
+                }
             };
             let (rows, cols): (&[String], &[String]) = match (q.source, q.shape) {
                 (Source::Determinant, _) => (&one, &one),
@@ -42,8 +51,12 @@ impl Generator<'_> {
                 (_, Shape::Square) => (&eq_labels, &u_labels),
                 (_, Shape::Wide) => (&eq_labels, &v_labels),
                 (_, Shape::Full) => (&eq_labels, &q_labels),
+                (_, Shape::ByParams) => (&eq_labels, &p_labels),
+                (Source::PointsByParams(_), Shape::Points) => (&point_xy_labels, &p_labels),
                 (_, Shape::Points) => (&point_labels, &xy),
-                (_, Shape::ColumnAndSquare | Shape::Kinematics) => continue,
+                (_, Shape::ColumnAndSquare | Shape::Kinematics | Shape::SensitivityTerms) => {
+                    continue;
+                }
             };
             let nonzero = matrix
                 .entries
@@ -88,6 +101,22 @@ impl Generator<'_> {
                 matrices: &[#(#entries),*],
                 methods_agree: #agree,
             }
+        }
+    }
+
+    /// The explicit derivatives by the parameters of the points' positions
+    /// (0), velocities (1) or accelerations (2): a row per coordinate (B.x,
+    /// B.y, …), a column per parameter.
+    fn points_by_params_matrix(&self, level: usize) -> Matrix {
+        let points = &self.model.points;
+        let entries: Vec<Id> = points
+            .iter()
+            .flat_map(|p| p.by_p[level].entries.iter().copied())
+            .collect();
+        Matrix {
+            rows: 2 * points.len(),
+            cols: self.k,
+            entries,
         }
     }
 

@@ -1,9 +1,10 @@
-//! The `Linkage` impl: every quantity of the table that the trait has,
-//! delegating to the inherent function of the same name.
+//! The `Linkage` and `Sensitivities` impls: every quantity of the table
+//! that the trait has, delegating to the inherent function of the same
+//! name.
 
 use super::Generator;
-use super::quantities::{QUANTITIES, Source};
-use super::signature::{self, Dims};
+use super::quantities::{QUANTITIES, Source, Trait};
+use super::signature;
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 
@@ -17,29 +18,45 @@ impl Generator<'_> {
             Literal::usize_unsuffixed(self.f),
             Literal::usize_unsuffixed(self.np),
         );
-        let dims = Dims::known(self.m, self.f, self.np);
-        let functions = QUANTITIES.iter().filter(|q| q.in_trait).map(|q| {
-            let name = format_ident!("{}", q.name);
-            let generics = signature::generics(q);
-            let args = signature::args(q, &dims, |_| true);
-            let ret = signature::output_type(q, &dims, true);
-            let call = signature::delegate(q);
-            let prefix = match q.source {
-                Source::Kinematics { with_trig: false } => quote!(#[inline]),
-                Source::Kinematics { with_trig: true } => quote! {
-                    const TRIG_U: [bool; #m] = Self::TRIG_U;
-                    const TRIG_V: [bool; #f] = Self::TRIG_V;
-                    #[inline(always)]
-                },
-                _ => quote!(#[inline]),
-            };
-            quote! {
-                #prefix
-                fn #name #generics(&self, #(#args),*) -> #ret {
-                    #call
-                }
-            }
-        });
+        let k = Literal::usize_unsuffixed(self.k);
+        let dims = self.dims();
+        let functions = |which: Trait| {
+            QUANTITIES
+                .iter()
+                .filter(move |q| q.in_trait == Some(which))
+                .map(|q| {
+                    let name = format_ident!("{}", q.name);
+                    let generics = signature::generics(q);
+                    let args = signature::args(q, &dims, |_| true);
+                    let ret = signature::output_type(q, &dims, true);
+                    let call = signature::delegate(q);
+                    let prefix = match q.source {
+                        Source::Kinematics { with_trig: false } => quote!(#[inline]),
+                        Source::Kinematics { with_trig: true } => quote! {
+                            const TRIG_U: [bool; #m] = Self::TRIG_U;
+                            const TRIG_V: [bool; #f] = Self::TRIG_V;
+                            #[inline(always)]
+                        },
+                        _ => quote!(#[inline]),
+                    };
+                    quote! {
+                        #prefix
+                        fn #name #generics(&self, #(#args),*) -> #ret {
+                            #call
+                        }
+                    }
+                })
+                .collect::<Vec<_>>()
+        };
+        let (kinematics, sensitivities) =
+            (functions(Trait::Linkage), functions(Trait::Sensitivities));
+        let lowered = &self.model.lowered;
+        let param_idents: Vec<_> = lowered
+            .design
+            .iter()
+            .map(|&k| &lowered.params[k as usize])
+            .collect();
+        let indices = (0..param_idents.len()).map(Literal::usize_unsuffixed);
         quote! {
             #[automatically_derived]
             impl #impl_generics ::linkage::Linkage<#m, #f> for #ty #ty_generics #where_clause {
@@ -48,7 +65,21 @@ impl Generator<'_> {
                 const V_NAMES: [&'static str; #f] = Self::V_NAMES;
                 const POINT_NAMES: &'static [&'static str] = &Self::POINT_NAMES;
                 const SYMBOLIC: ::linkage::SymbolicTable = Self::SYMBOLIC;
-                #(#functions)*
+                #(#kinematics)*
+            }
+
+            #[automatically_derived]
+            impl #impl_generics ::linkage::Sensitivities<#m, #f, #k> for #ty #ty_generics #where_clause {
+                const PARAM_NAMES: [&'static str; #k] = Self::PARAM_NAMES;
+                #[inline]
+                fn params(&self) -> SVector<f64, #k> {
+                    SVector::<f64, #k>::from([#(self.#param_idents),*])
+                }
+                #[inline]
+                fn set_params(&mut self, params: &SVector<f64, #k>) {
+                    #(self.#param_idents = params[#indices];)*
+                }
+                #(#sensitivities)*
             }
         }
     }

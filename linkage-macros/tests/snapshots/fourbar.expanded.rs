@@ -15,6 +15,8 @@ const _: () = {
         pub const V_NAMES: [&'static str; 1] = ["theta2"];
         /// The named points, in order.
         pub const POINT_NAMES: [&'static str; 5] = ["B", "C", "G2", "G3", "G4"];
+        /// The parameters p the sensitivities differentiate by, in order.
+        pub const PARAM_NAMES: [&'static str; 4] = ["l1", "l2", "l3", "l4"];
         /// The index of the point `B`: `pose.points[Self::B]`.
         #[allow(non_upper_case_globals)]
         pub const B: usize = 0usize;
@@ -417,14 +419,14 @@ const _: () = {
         /// ```text
         /// B.x = -l2·(cos θ2·θ̇2² + sin θ2·θ̈2)
         /// B.y = -l2·(sin θ2·θ̇2² - cos θ2·θ̈2)
-        /// C.x = -l3·cos θ3·θ̇3² - l2·cos θ2·θ̇2² - l2·sin θ2·θ̈2 - l3·sin θ3·θ̈3
-        /// C.y = -l3·sin θ3·θ̇3² - l2·sin θ2·θ̇2² + l2·cos θ2·θ̈2 + l3·cos θ3·θ̈3
+        /// C.x = -l3·cos θ3·θ̇3² - l2·cos θ2·θ̇2² - l3·sin θ3·θ̈3 - l2·sin θ2·θ̈2
+        /// C.y = -l3·sin θ3·θ̇3² - l2·sin θ2·θ̇2² + l3·cos θ3·θ̈3 + l2·cos θ2·θ̈2
         /// G2.x = -0.5·l2·(cos θ2·θ̇2² + sin θ2·θ̈2)
         /// G2.y = -0.5·l2·(sin θ2·θ̇2² - cos θ2·θ̈2)
-        /// G3.x = -0.5·l3·cos θ3·θ̇3² - l2·cos θ2·θ̇2² - l2·sin θ2·θ̈2 - 0.5·l3·sin θ3·θ̈3
-        /// G3.y = -0.5·l3·sin θ3·θ̇3² - l2·sin θ2·θ̇2² + l2·cos θ2·θ̈2 + 0.5·l3·cos θ3·θ̈3
-        /// G4.x = -l3·cos θ3·θ̇3² - 0.5·l4·cos θ4·θ̇4² - l2·cos θ2·θ̇2² - l2·sin θ2·θ̈2 - l3·sin θ3·θ̈3 - 0.5·l4·sin θ4·θ̈4
-        /// G4.y = -l3·sin θ3·θ̇3² - 0.5·l4·sin θ4·θ̇4² - l2·sin θ2·θ̇2² + l2·cos θ2·θ̈2 + l3·cos θ3·θ̈3 + 0.5·l4·cos θ4·θ̈4
+        /// G3.x = -0.5·l3·cos θ3·θ̇3² - l2·cos θ2·θ̇2² - 0.5·l3·sin θ3·θ̈3 - l2·sin θ2·θ̈2
+        /// G3.y = -0.5·l3·sin θ3·θ̇3² - l2·sin θ2·θ̇2² + 0.5·l3·cos θ3·θ̈3 + l2·cos θ2·θ̈2
+        /// G4.x = -l3·cos θ3·θ̇3² - 0.5·l4·cos θ4·θ̇4² - l2·cos θ2·θ̇2² - l3·sin θ3·θ̈3 - 0.5·l4·sin θ4·θ̈4 - l2·sin θ2·θ̈2
+        /// G4.y = -l3·sin θ3·θ̇3² - 0.5·l4·sin θ4·θ̇4² - l2·sin θ2·θ̇2² + l3·cos θ3·θ̈3 + 0.5·l4·cos θ4·θ̈4 + l2·cos θ2·θ̈2
         /// ```
         #[must_use]
         pub fn point_accelerations(
@@ -450,32 +452,32 @@ const _: () = {
             let l2_c_theta2_theta2_dot_sq = l2 * c_theta2 * theta2_dot.powi(2);
             let l3_s_theta3_theta3_dot_sq = l3 * s_theta3 * theta3_dot.powi(2);
             let l2_s_theta2_theta2_dot_sq = l2 * s_theta2 * theta2_dot.powi(2);
-            let l2_s_theta2_theta2_ddot = l2 * s_theta2 * theta2_ddot;
-            let b_x_ddot = -l2_c_theta2_theta2_dot_sq - l2_s_theta2_theta2_ddot;
-            let l2_c_theta2_theta2_ddot = l2 * c_theta2 * theta2_ddot;
-            let b_y_ddot = -l2_s_theta2_theta2_dot_sq + l2_c_theta2_theta2_ddot;
             let l3_s_theta3_theta3_ddot = l3 * s_theta3 * theta3_ddot;
-            let c_x_ddot = -l3_c_theta3_theta3_dot_sq - l2_c_theta2_theta2_dot_sq
-                - l2_s_theta2_theta2_ddot - l3_s_theta3_theta3_ddot;
+            let l2_s_theta2_theta2_ddot = l2 * s_theta2 * theta2_ddot;
             let l3_c_theta3_theta3_ddot = l3 * c_theta3 * theta3_ddot;
+            let l2_c_theta2_theta2_ddot = l2 * c_theta2 * theta2_ddot;
+            let b_x_ddot = -l2_c_theta2_theta2_dot_sq - l2_s_theta2_theta2_ddot;
+            let b_y_ddot = -l2_s_theta2_theta2_dot_sq + l2_c_theta2_theta2_ddot;
+            let c_x_ddot = -l3_c_theta3_theta3_dot_sq - l2_c_theta2_theta2_dot_sq
+                - l3_s_theta3_theta3_ddot - l2_s_theta2_theta2_ddot;
             let c_y_ddot = -l3_s_theta3_theta3_dot_sq - l2_s_theta2_theta2_dot_sq
-                + l2_c_theta2_theta2_ddot + l3_c_theta3_theta3_ddot;
+                + l3_c_theta3_theta3_ddot + l2_c_theta2_theta2_ddot;
             let g2_x_ddot = -0.5 * l2_c_theta2_theta2_dot_sq
                 - 0.5 * l2_s_theta2_theta2_ddot;
             let g2_y_ddot = -0.5 * l2_s_theta2_theta2_dot_sq
                 + 0.5 * l2_c_theta2_theta2_ddot;
             let g3_x_ddot = -0.5 * l3_c_theta3_theta3_dot_sq - l2_c_theta2_theta2_dot_sq
-                - l2_s_theta2_theta2_ddot - 0.5 * l3_s_theta3_theta3_ddot;
+                - 0.5 * l3_s_theta3_theta3_ddot - l2_s_theta2_theta2_ddot;
             let g3_y_ddot = -0.5 * l3_s_theta3_theta3_dot_sq - l2_s_theta2_theta2_dot_sq
-                + l2_c_theta2_theta2_ddot + 0.5 * l3_c_theta3_theta3_ddot;
+                + 0.5 * l3_c_theta3_theta3_ddot + l2_c_theta2_theta2_ddot;
             let g4_x_ddot = -l3_c_theta3_theta3_dot_sq
                 - 0.5 * l4 * c_theta4 * theta4_dot.powi(2) - l2_c_theta2_theta2_dot_sq
-                - l2_s_theta2_theta2_ddot - l3_s_theta3_theta3_ddot
-                - 0.5 * l4 * s_theta4 * theta4_ddot;
+                - l3_s_theta3_theta3_ddot - 0.5 * l4 * s_theta4 * theta4_ddot
+                - l2_s_theta2_theta2_ddot;
             let g4_y_ddot = -l3_s_theta3_theta3_dot_sq
                 - 0.5 * l4 * s_theta4 * theta4_dot.powi(2) - l2_s_theta2_theta2_dot_sq
-                + l2_c_theta2_theta2_ddot + l3_c_theta3_theta3_ddot
-                + 0.5 * l4 * c_theta4 * theta4_ddot;
+                + l3_c_theta3_theta3_ddot + 0.5 * l4 * c_theta4 * theta4_ddot
+                + l2_c_theta2_theta2_ddot;
             [
                 Vector2::new(b_x_ddot, b_y_ddot),
                 Vector2::new(c_x_ddot, c_y_ddot),
@@ -646,6 +648,397 @@ const _: () = {
             let l2 = D::from(self.l2);
             let l3 = D::from(self.l3);
             let l4 = D::from(self.l4);
+            let (theta3, theta4) = (u[0], u[1]);
+            let theta2 = v[0];
+            let (s_theta2, c_theta2) = theta2.sin_cos();
+            let b_x = l2 * c_theta2;
+            let b_y = l2 * s_theta2;
+            let (s_theta3, c_theta3) = theta3.sin_cos();
+            let l3_c_theta3 = l3 * c_theta3;
+            let c_x = b_x + l3_c_theta3;
+            let l3_s_theta3 = l3 * s_theta3;
+            let c_y = b_y + l3_s_theta3;
+            let g2_x = b_x * 0.5;
+            let g2_y = b_y * 0.5;
+            let g3_x = b_x + l3_c_theta3 * 0.5;
+            let g3_y = b_y + l3_s_theta3 * 0.5;
+            let (s_theta4, c_theta4) = theta4.sin_cos();
+            let g4_x = b_x + l3_c_theta3 + l4 * c_theta4 * 0.5;
+            let g4_y = b_y + l3_s_theta3 + l4 * s_theta4 * 0.5;
+            [
+                Vector2::new(b_x, b_y),
+                Vector2::new(c_x, c_y),
+                Vector2::new(g2_x, g2_y),
+                Vector2::new(g3_x, g3_y),
+                Vector2::new(g4_x, g4_y),
+            ]
+        }
+        /// Ψ_p = ∂Ψ/∂p, the 2×4 Jacobian with respect to the parameters p = [l1, l2, l3, l4]: the
+        /// position sensitivities are u_p = −Ψ_u⁻¹Ψ_p.
+        ///
+        /// ```text
+        /// [ -1   cos θ2   cos θ3   cos θ4 ]
+        /// [  0   sin θ2   sin θ3   sin θ4 ]
+        /// ```
+        #[must_use]
+        pub fn psi_p(
+            &self,
+            u: &SVector<f64, 2>,
+            v: &SVector<f64, 1>,
+        ) -> SMatrix<f64, 2, 4> {
+            let (theta3, theta4) = (u[0], u[1]);
+            let theta2 = v[0];
+            let (s_theta2, c_theta2) = theta2.sin_cos();
+            let (s_theta3, c_theta3) = theta3.sin_cos();
+            let (s_theta4, c_theta4) = theta4.sin_cos();
+            let mut psi_p = SMatrix::<f64, 2, 4>::zeros();
+            psi_p[(0, 0)] = -1.0;
+            psi_p[(0, 1)] = c_theta2;
+            psi_p[(0, 2)] = c_theta3;
+            psi_p[(0, 3)] = c_theta4;
+            psi_p[(1, 1)] = s_theta2;
+            psi_p[(1, 2)] = s_theta3;
+            psi_p[(1, 3)] = s_theta4;
+            psi_p
+        }
+        /// Every term the sensitivities to the parameters p = [l1, l2, l3, l4] need, at a pose in
+        /// motion, in one pass sharing each sine, cosine and subexpression: Ψ_u, Ψ_p, their first and
+        /// second time derivatives Ψ̇_u = (Ψ_q q̇)_u, Ψ̇_p = (Ψ_q q̇)_p, Ψ̈_u = (Ψ_q q̈ + γ)_u, Ψ̈_p
+        /// = (Ψ_q q̈ + γ)_p, and the same of every point (P_u, Ṗ_u, P̈_u and P_p, Ṗ_p, P̈_p, the
+        /// explicit derivatives of P, Ṗ, P̈). Differentiating Ψ_u u_p + Ψ_p = 0 in time twice gives
+        /// the sensitivities (see `linkage::Sensitivities`):
+        ///
+        /// ```text
+        /// u_p = −Ψ_u⁻¹ Ψ_p
+        /// u̇_p = −Ψ_u⁻¹ (Ψ̇_u u_p + Ψ̇_p)
+        /// ü_p = −Ψ_u⁻¹ (Ψ̈_u u_p + 2 Ψ̇_u u̇_p + Ψ̈_p)
+        /// ```
+        #[must_use]
+        #[allow(clippy::too_many_arguments)]
+        pub fn sensitivity_terms(
+            &self,
+            u: &SVector<f64, 2>,
+            v: &SVector<f64, 1>,
+            udot: &SVector<f64, 2>,
+            vdot: &SVector<f64, 1>,
+            uddot: &SVector<f64, 2>,
+            vddot: &SVector<f64, 1>,
+        ) -> ::linkage::SensitivityTerms<2, 4, [Vector2<f64>; 5]> {
+            let Self { l3, l4, .. } = *self;
+            let (theta3, theta4) = (u[0], u[1]);
+            let theta2 = v[0];
+            let (theta3_dot, theta4_dot) = (udot[0], udot[1]);
+            let theta2_dot = vdot[0];
+            let (theta3_ddot, theta4_ddot) = (uddot[0], uddot[1]);
+            let theta2_ddot = vddot[0];
+            let (s_theta2, c_theta2) = theta2.sin_cos();
+            let (s_theta3, c_theta3) = theta3.sin_cos();
+            let l3_c_theta3 = l3 * c_theta3;
+            let l3_s_theta3 = l3 * s_theta3;
+            let (s_theta4, c_theta4) = theta4.sin_cos();
+            let l4_c_theta4 = l4 * c_theta4;
+            let l4_s_theta4 = l4 * s_theta4;
+            let l3_s_theta3_theta3_dot = l3_s_theta3 * theta3_dot;
+            let l4_s_theta4_theta4_dot = l4_s_theta4 * theta4_dot;
+            let l3_c_theta3_theta3_dot = l3_c_theta3 * theta3_dot;
+            let l4_c_theta4_theta4_dot = l4_c_theta4 * theta4_dot;
+            let l3_c_theta3_theta3_dot_sq = l3_c_theta3 * theta3_dot.powi(2);
+            let l4_c_theta4_theta4_dot_sq = l4_c_theta4 * theta4_dot.powi(2);
+            let l3_s_theta3_theta3_dot_sq = l3_s_theta3 * theta3_dot.powi(2);
+            let l4_s_theta4_theta4_dot_sq = l4_s_theta4 * theta4_dot.powi(2);
+            let l3_s_theta3_theta3_ddot = l3_s_theta3 * theta3_ddot;
+            let l4_s_theta4_theta4_ddot = l4_s_theta4 * theta4_ddot;
+            let l3_c_theta3_theta3_ddot = l3_c_theta3 * theta3_ddot;
+            let l4_c_theta4_theta4_ddot = l4_c_theta4 * theta4_ddot;
+            let s_theta2_theta2_dot = s_theta2 * theta2_dot;
+            let s_theta3_theta3_dot = s_theta3 * theta3_dot;
+            let s_theta4_theta4_dot = s_theta4 * theta4_dot;
+            let c_theta2_theta2_dot = c_theta2 * theta2_dot;
+            let c_theta3_theta3_dot = c_theta3 * theta3_dot;
+            let c_theta4_theta4_dot = c_theta4 * theta4_dot;
+            let sum = l3_s_theta3_theta3_dot_sq - l3_c_theta3_theta3_ddot;
+            let sum_2 = -l3_c_theta3_theta3_dot_sq - l3_s_theta3_theta3_ddot;
+            let c_theta2_theta2_dot_sq = c_theta2 * theta2_dot.powi(2);
+            let s_theta2_theta2_ddot = s_theta2 * theta2_ddot;
+            let sum_3 = -c_theta2_theta2_dot_sq - s_theta2_theta2_ddot;
+            let c_theta3_theta3_dot_sq = c_theta3 * theta3_dot.powi(2);
+            let s_theta3_theta3_ddot = s_theta3 * theta3_ddot;
+            let sum_4 = -c_theta3_theta3_dot_sq - s_theta3_theta3_ddot;
+            let c_theta4_theta4_dot_sq = c_theta4 * theta4_dot.powi(2);
+            let s_theta4_theta4_ddot = s_theta4 * theta4_ddot;
+            let s_theta2_theta2_dot_sq = s_theta2 * theta2_dot.powi(2);
+            let c_theta2_theta2_ddot = c_theta2 * theta2_ddot;
+            let sum_5 = -s_theta2_theta2_dot_sq + c_theta2_theta2_ddot;
+            let s_theta3_theta3_dot_sq = s_theta3 * theta3_dot.powi(2);
+            let c_theta3_theta3_ddot = c_theta3 * theta3_ddot;
+            let sum_6 = -s_theta3_theta3_dot_sq + c_theta3_theta3_ddot;
+            let s_theta4_theta4_dot_sq = s_theta4 * theta4_dot.powi(2);
+            let c_theta4_theta4_ddot = c_theta4 * theta4_ddot;
+            let mut psi_u = SMatrix::<f64, 2, 2>::zeros();
+            psi_u[(0, 0)] = -l3_s_theta3;
+            psi_u[(0, 1)] = -l4_s_theta4;
+            psi_u[(1, 0)] = l3_c_theta3;
+            psi_u[(1, 1)] = l4_c_theta4;
+            let mut psi_p = SMatrix::<f64, 2, 4>::zeros();
+            psi_p[(0, 0)] = -1.0;
+            psi_p[(0, 1)] = c_theta2;
+            psi_p[(0, 2)] = c_theta3;
+            psi_p[(0, 3)] = c_theta4;
+            psi_p[(1, 1)] = s_theta2;
+            psi_p[(1, 2)] = s_theta3;
+            psi_p[(1, 3)] = s_theta4;
+            let mut psi_u_dot = SMatrix::<f64, 2, 2>::zeros();
+            psi_u_dot[(0, 0)] = -l3_c_theta3_theta3_dot;
+            psi_u_dot[(0, 1)] = -l4_c_theta4_theta4_dot;
+            psi_u_dot[(1, 0)] = -l3_s_theta3_theta3_dot;
+            psi_u_dot[(1, 1)] = -l4_s_theta4_theta4_dot;
+            let mut psi_p_dot = SMatrix::<f64, 2, 4>::zeros();
+            psi_p_dot[(0, 1)] = -s_theta2_theta2_dot;
+            psi_p_dot[(0, 2)] = -s_theta3_theta3_dot;
+            psi_p_dot[(0, 3)] = -s_theta4_theta4_dot;
+            psi_p_dot[(1, 1)] = c_theta2_theta2_dot;
+            psi_p_dot[(1, 2)] = c_theta3_theta3_dot;
+            psi_p_dot[(1, 3)] = c_theta4_theta4_dot;
+            let mut psi_u_ddot = SMatrix::<f64, 2, 2>::zeros();
+            psi_u_ddot[(0, 0)] = sum;
+            psi_u_ddot[(0, 1)] = l4_s_theta4_theta4_dot_sq - l4_c_theta4_theta4_ddot;
+            psi_u_ddot[(1, 0)] = sum_2;
+            psi_u_ddot[(1, 1)] = -l4_c_theta4_theta4_dot_sq - l4_s_theta4_theta4_ddot;
+            let mut psi_p_ddot = SMatrix::<f64, 2, 4>::zeros();
+            psi_p_ddot[(0, 1)] = sum_3;
+            psi_p_ddot[(0, 2)] = sum_4;
+            psi_p_ddot[(0, 3)] = -c_theta4_theta4_dot_sq - s_theta4_theta4_ddot;
+            psi_p_ddot[(1, 1)] = sum_5;
+            psi_p_ddot[(1, 2)] = sum_6;
+            psi_p_ddot[(1, 3)] = -s_theta4_theta4_dot_sq + c_theta4_theta4_ddot;
+            ::linkage::SensitivityTerms {
+                psi_u,
+                psi_p,
+                psi_u_dot,
+                psi_p_dot,
+                psi_u_ddot,
+                psi_p_ddot,
+                points_u: [
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(-l3_s_theta3, l3_c_theta3),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(-0.5 * l3_s_theta3, 0.5 * l3_c_theta3),
+                        Vector2::new(-l3_s_theta3, l3_c_theta3),
+                    ],
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(-0.5 * l4_s_theta4, 0.5 * l4_c_theta4),
+                    ],
+                ],
+                points_p: [
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                    ],
+                    [
+                        Vector2::new(c_theta2, s_theta2),
+                        Vector2::new(c_theta2, s_theta2),
+                        Vector2::new(0.5 * c_theta2, 0.5 * s_theta2),
+                        Vector2::new(c_theta2, s_theta2),
+                        Vector2::new(c_theta2, s_theta2),
+                    ],
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(c_theta3, s_theta3),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.5 * c_theta3, 0.5 * s_theta3),
+                        Vector2::new(c_theta3, s_theta3),
+                    ],
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.5 * c_theta4, 0.5 * s_theta4),
+                    ],
+                ],
+                point_velocities_u: [
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(-l3_c_theta3_theta3_dot, -l3_s_theta3_theta3_dot),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(
+                            -0.5 * l3_c_theta3_theta3_dot,
+                            -0.5 * l3_s_theta3_theta3_dot,
+                        ),
+                        Vector2::new(-l3_c_theta3_theta3_dot, -l3_s_theta3_theta3_dot),
+                    ],
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(
+                            -0.5 * l4_c_theta4_theta4_dot,
+                            -0.5 * l4_s_theta4_theta4_dot,
+                        ),
+                    ],
+                ],
+                point_velocities_p: [
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                    ],
+                    [
+                        Vector2::new(-s_theta2_theta2_dot, c_theta2_theta2_dot),
+                        Vector2::new(-s_theta2_theta2_dot, c_theta2_theta2_dot),
+                        Vector2::new(
+                            -0.5 * s_theta2_theta2_dot,
+                            0.5 * c_theta2_theta2_dot,
+                        ),
+                        Vector2::new(-s_theta2_theta2_dot, c_theta2_theta2_dot),
+                        Vector2::new(-s_theta2_theta2_dot, c_theta2_theta2_dot),
+                    ],
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(-s_theta3_theta3_dot, c_theta3_theta3_dot),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(
+                            -0.5 * s_theta3_theta3_dot,
+                            0.5 * c_theta3_theta3_dot,
+                        ),
+                        Vector2::new(-s_theta3_theta3_dot, c_theta3_theta3_dot),
+                    ],
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(
+                            -0.5 * s_theta4_theta4_dot,
+                            0.5 * c_theta4_theta4_dot,
+                        ),
+                    ],
+                ],
+                point_accelerations_u: [
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(sum, sum_2),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(
+                            0.5 * l3_s_theta3_theta3_dot_sq
+                                - 0.5 * l3_c_theta3_theta3_ddot,
+                            -0.5 * l3_c_theta3_theta3_dot_sq
+                                - 0.5 * l3_s_theta3_theta3_ddot,
+                        ),
+                        Vector2::new(sum, sum_2),
+                    ],
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(
+                            0.5 * l4_s_theta4_theta4_dot_sq
+                                - 0.5 * l4_c_theta4_theta4_ddot,
+                            -0.5 * l4_c_theta4_theta4_dot_sq
+                                - 0.5 * l4_s_theta4_theta4_ddot,
+                        ),
+                    ],
+                ],
+                point_accelerations_p: [
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                    ],
+                    [
+                        Vector2::new(sum_3, sum_5),
+                        Vector2::new(sum_3, sum_5),
+                        Vector2::new(
+                            -0.5 * c_theta2_theta2_dot_sq - 0.5 * s_theta2_theta2_ddot,
+                            -0.5 * s_theta2_theta2_dot_sq + 0.5 * c_theta2_theta2_ddot,
+                        ),
+                        Vector2::new(sum_3, sum_5),
+                        Vector2::new(sum_3, sum_5),
+                    ],
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(sum_4, sum_6),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(
+                            -0.5 * c_theta3_theta3_dot_sq - 0.5 * s_theta3_theta3_ddot,
+                            -0.5 * s_theta3_theta3_dot_sq + 0.5 * c_theta3_theta3_ddot,
+                        ),
+                        Vector2::new(sum_4, sum_6),
+                    ],
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(
+                            -0.5 * c_theta4_theta4_dot_sq - 0.5 * s_theta4_theta4_ddot,
+                            -0.5 * s_theta4_theta4_dot_sq + 0.5 * c_theta4_theta4_ddot,
+                        ),
+                    ],
+                ],
+            }
+        }
+        /// Ψ(u, v) on any dual number of `num_dual`, with the parameters p = [l1, l2, l3, l4] given
+        /// as dual numbers too (`params`): derivatives by the parameters by automatic differentiation
+        /// (see [`Self::psi_generic`]).
+        ///
+        /// ```text
+        /// [ l2·cos θ2 + l3·cos θ3 + l4·cos θ4 - l1 ]
+        /// [ l2·sin θ2 + l3·sin θ3 + l4·sin θ4      ]
+        /// ```
+        #[must_use]
+        #[inline]
+        pub fn psi_generic_params<
+            D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy,
+        >(
+            &self,
+            params: &SVector<D, 4>,
+            u: &SVector<D, 2>,
+            v: &SVector<D, 1>,
+        ) -> SVector<D, 2> {
+            let l1 = params[0];
+            let l2 = params[1];
+            let l3 = params[2];
+            let l4 = params[3];
+            let (theta3, theta4) = (u[0], u[1]);
+            let theta2 = v[0];
+            let (s_theta2, c_theta2) = theta2.sin_cos();
+            let (s_theta3, c_theta3) = theta3.sin_cos();
+            let (s_theta4, c_theta4) = theta4.sin_cos();
+            let mut psi = SVector::<D, 2>::zeros();
+            psi[0] = l2 * c_theta2 + l3 * c_theta3 + l4 * c_theta4 - l1;
+            psi[1] = l2 * s_theta2 + l3 * s_theta3 + l4 * s_theta4;
+            psi
+        }
+        /// The point positions P(q) on any dual number of `num_dual`, with the parameters p = [l1,
+        /// l2, l3, l4] given as dual numbers (see [`Self::point_positions`]).
+        #[must_use]
+        #[inline]
+        pub fn point_positions_generic_params<
+            D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy,
+        >(
+            &self,
+            params: &SVector<D, 4>,
+            u: &SVector<D, 2>,
+            v: &SVector<D, 1>,
+        ) -> [Vector2<D>; 5] {
+            let l2 = params[1];
+            let l3 = params[2];
+            let l4 = params[3];
             let (theta3, theta4) = (u[0], u[1]);
             let theta2 = v[0];
             let (s_theta2, c_theta2) = theta2.sin_cos();
@@ -892,12 +1285,12 @@ const _: () = {
                         (
                             1,
                             0,
-                            "-l3·cos θ3·θ\u{307}3² - l2·cos θ2·θ\u{307}2² - l2·sin θ2·θ\u{308}2 - l3·sin θ3·θ\u{308}3",
+                            "-l3·cos θ3·θ\u{307}3² - l2·cos θ2·θ\u{307}2² - l3·sin θ3·θ\u{308}3 - l2·sin θ2·θ\u{308}2",
                         ),
                         (
                             1,
                             1,
-                            "-l3·sin θ3·θ\u{307}3² - l2·sin θ2·θ\u{307}2² + l2·cos θ2·θ\u{308}2 + l3·cos θ3·θ\u{308}3",
+                            "-l3·sin θ3·θ\u{307}3² - l2·sin θ2·θ\u{307}2² + l3·cos θ3·θ\u{308}3 + l2·cos θ2·θ\u{308}2",
                         ),
                         (
                             2,
@@ -912,23 +1305,203 @@ const _: () = {
                         (
                             3,
                             0,
-                            "-0.5·l3·cos θ3·θ\u{307}3² - l2·cos θ2·θ\u{307}2² - l2·sin θ2·θ\u{308}2 - 0.5·l3·sin θ3·θ\u{308}3",
+                            "-0.5·l3·cos θ3·θ\u{307}3² - l2·cos θ2·θ\u{307}2² - 0.5·l3·sin θ3·θ\u{308}3 - l2·sin θ2·θ\u{308}2",
                         ),
                         (
                             3,
                             1,
-                            "-0.5·l3·sin θ3·θ\u{307}3² - l2·sin θ2·θ\u{307}2² + l2·cos θ2·θ\u{308}2 + 0.5·l3·cos θ3·θ\u{308}3",
+                            "-0.5·l3·sin θ3·θ\u{307}3² - l2·sin θ2·θ\u{307}2² + 0.5·l3·cos θ3·θ\u{308}3 + l2·cos θ2·θ\u{308}2",
                         ),
                         (
                             4,
                             0,
-                            "-l3·cos θ3·θ\u{307}3² - 0.5·l4·cos θ4·θ\u{307}4² - l2·cos θ2·θ\u{307}2² - l2·sin θ2·θ\u{308}2 - l3·sin θ3·θ\u{308}3 - 0.5·l4·sin θ4·θ\u{308}4",
+                            "-l3·cos θ3·θ\u{307}3² - 0.5·l4·cos θ4·θ\u{307}4² - l2·cos θ2·θ\u{307}2² - l3·sin θ3·θ\u{308}3 - 0.5·l4·sin θ4·θ\u{308}4 - l2·sin θ2·θ\u{308}2",
                         ),
                         (
                             4,
                             1,
-                            "-l3·sin θ3·θ\u{307}3² - 0.5·l4·sin θ4·θ\u{307}4² - l2·sin θ2·θ\u{307}2² + l2·cos θ2·θ\u{308}2 + l3·cos θ3·θ\u{308}3 + 0.5·l4·cos θ4·θ\u{308}4",
+                            "-l3·sin θ3·θ\u{307}3² - 0.5·l4·sin θ4·θ\u{307}4² - l2·sin θ2·θ\u{307}2² + l3·cos θ3·θ\u{308}3 + 0.5·l4·cos θ4·θ\u{308}4 + l2·cos θ2·θ\u{308}2",
                         ),
+                    ],
+                },
+                ::linkage::SymbolicMatrix {
+                    key: "psi_p",
+                    title: "Ψ_p",
+                    rows: 2,
+                    cols: 4,
+                    row_labels: &["Ψ₁", "Ψ₂"],
+                    col_labels: &["l1", "l2", "l3", "l4"],
+                    nonzero: &[
+                        (0, 0, "-1"),
+                        (0, 1, "cos θ2"),
+                        (0, 2, "cos θ3"),
+                        (0, 3, "cos θ4"),
+                        (1, 1, "sin θ2"),
+                        (1, 2, "sin θ3"),
+                        (1, 3, "sin θ4"),
+                    ],
+                },
+                ::linkage::SymbolicMatrix {
+                    key: "psi_p_dot",
+                    title: "Ψ\u{307}_p = (Ψ_q q\u{307})_p",
+                    rows: 2,
+                    cols: 4,
+                    row_labels: &["Ψ₁", "Ψ₂"],
+                    col_labels: &["l1", "l2", "l3", "l4"],
+                    nonzero: &[
+                        (0, 1, "-sin θ2·θ\u{307}2"),
+                        (0, 2, "-sin θ3·θ\u{307}3"),
+                        (0, 3, "-sin θ4·θ\u{307}4"),
+                        (1, 1, "cos θ2·θ\u{307}2"),
+                        (1, 2, "cos θ3·θ\u{307}3"),
+                        (1, 3, "cos θ4·θ\u{307}4"),
+                    ],
+                },
+                ::linkage::SymbolicMatrix {
+                    key: "psi_u_ddot",
+                    title: "Ψ\u{308}_u = (Ψ_q q\u{308} + γ)_u",
+                    rows: 2,
+                    cols: 2,
+                    row_labels: &["Ψ₁", "Ψ₂"],
+                    col_labels: &["θ3", "θ4"],
+                    nonzero: &[
+                        (0, 0, "l3·(sin θ3·θ\u{307}3² - cos θ3·θ\u{308}3)"),
+                        (0, 1, "l4·(sin θ4·θ\u{307}4² - cos θ4·θ\u{308}4)"),
+                        (1, 0, "-l3·(cos θ3·θ\u{307}3² + sin θ3·θ\u{308}3)"),
+                        (1, 1, "-l4·(cos θ4·θ\u{307}4² + sin θ4·θ\u{308}4)"),
+                    ],
+                },
+                ::linkage::SymbolicMatrix {
+                    key: "psi_p_ddot",
+                    title: "Ψ\u{308}_p = (Ψ_q q\u{308} + γ)_p",
+                    rows: 2,
+                    cols: 4,
+                    row_labels: &["Ψ₁", "Ψ₂"],
+                    col_labels: &["l1", "l2", "l3", "l4"],
+                    nonzero: &[
+                        (0, 1, "-cos θ2·θ\u{307}2² - sin θ2·θ\u{308}2"),
+                        (0, 2, "-cos θ3·θ\u{307}3² - sin θ3·θ\u{308}3"),
+                        (0, 3, "-cos θ4·θ\u{307}4² - sin θ4·θ\u{308}4"),
+                        (1, 1, "-sin θ2·θ\u{307}2² + cos θ2·θ\u{308}2"),
+                        (1, 2, "-sin θ3·θ\u{307}3² + cos θ3·θ\u{308}3"),
+                        (1, 3, "-sin θ4·θ\u{307}4² + cos θ4·θ\u{308}4"),
+                    ],
+                },
+                ::linkage::SymbolicMatrix {
+                    key: "points_p",
+                    title: "P_p",
+                    rows: 10,
+                    cols: 4,
+                    row_labels: &[
+                        "B.x",
+                        "B.y",
+                        "C.x",
+                        "C.y",
+                        "G2.x",
+                        "G2.y",
+                        "G3.x",
+                        "G3.y",
+                        "G4.x",
+                        "G4.y",
+                    ],
+                    col_labels: &["l1", "l2", "l3", "l4"],
+                    nonzero: &[
+                        (0, 1, "cos θ2"),
+                        (1, 1, "sin θ2"),
+                        (2, 1, "cos θ2"),
+                        (2, 2, "cos θ3"),
+                        (3, 1, "sin θ2"),
+                        (3, 2, "sin θ3"),
+                        (4, 1, "0.5·cos θ2"),
+                        (5, 1, "0.5·sin θ2"),
+                        (6, 1, "cos θ2"),
+                        (6, 2, "0.5·cos θ3"),
+                        (7, 1, "sin θ2"),
+                        (7, 2, "0.5·sin θ3"),
+                        (8, 1, "cos θ2"),
+                        (8, 2, "cos θ3"),
+                        (8, 3, "0.5·cos θ4"),
+                        (9, 1, "sin θ2"),
+                        (9, 2, "sin θ3"),
+                        (9, 3, "0.5·sin θ4"),
+                    ],
+                },
+                ::linkage::SymbolicMatrix {
+                    key: "point_velocities_p",
+                    title: "Ṗ_p",
+                    rows: 10,
+                    cols: 4,
+                    row_labels: &[
+                        "B.x",
+                        "B.y",
+                        "C.x",
+                        "C.y",
+                        "G2.x",
+                        "G2.y",
+                        "G3.x",
+                        "G3.y",
+                        "G4.x",
+                        "G4.y",
+                    ],
+                    col_labels: &["l1", "l2", "l3", "l4"],
+                    nonzero: &[
+                        (0, 1, "-sin θ2·θ\u{307}2"),
+                        (1, 1, "cos θ2·θ\u{307}2"),
+                        (2, 1, "-sin θ2·θ\u{307}2"),
+                        (2, 2, "-sin θ3·θ\u{307}3"),
+                        (3, 1, "cos θ2·θ\u{307}2"),
+                        (3, 2, "cos θ3·θ\u{307}3"),
+                        (4, 1, "-0.5·sin θ2·θ\u{307}2"),
+                        (5, 1, "0.5·cos θ2·θ\u{307}2"),
+                        (6, 1, "-sin θ2·θ\u{307}2"),
+                        (6, 2, "-0.5·sin θ3·θ\u{307}3"),
+                        (7, 1, "cos θ2·θ\u{307}2"),
+                        (7, 2, "0.5·cos θ3·θ\u{307}3"),
+                        (8, 1, "-sin θ2·θ\u{307}2"),
+                        (8, 2, "-sin θ3·θ\u{307}3"),
+                        (8, 3, "-0.5·sin θ4·θ\u{307}4"),
+                        (9, 1, "cos θ2·θ\u{307}2"),
+                        (9, 2, "cos θ3·θ\u{307}3"),
+                        (9, 3, "0.5·cos θ4·θ\u{307}4"),
+                    ],
+                },
+                ::linkage::SymbolicMatrix {
+                    key: "point_accelerations_p",
+                    title: "P\u{308}_p",
+                    rows: 10,
+                    cols: 4,
+                    row_labels: &[
+                        "B.x",
+                        "B.y",
+                        "C.x",
+                        "C.y",
+                        "G2.x",
+                        "G2.y",
+                        "G3.x",
+                        "G3.y",
+                        "G4.x",
+                        "G4.y",
+                    ],
+                    col_labels: &["l1", "l2", "l3", "l4"],
+                    nonzero: &[
+                        (0, 1, "-cos θ2·θ\u{307}2² - sin θ2·θ\u{308}2"),
+                        (1, 1, "-sin θ2·θ\u{307}2² + cos θ2·θ\u{308}2"),
+                        (2, 1, "-cos θ2·θ\u{307}2² - sin θ2·θ\u{308}2"),
+                        (2, 2, "-cos θ3·θ\u{307}3² - sin θ3·θ\u{308}3"),
+                        (3, 1, "-sin θ2·θ\u{307}2² + cos θ2·θ\u{308}2"),
+                        (3, 2, "-sin θ3·θ\u{307}3² + cos θ3·θ\u{308}3"),
+                        (4, 1, "-0.5·cos θ2·θ\u{307}2² - 0.5·sin θ2·θ\u{308}2"),
+                        (5, 1, "-0.5·sin θ2·θ\u{307}2² + 0.5·cos θ2·θ\u{308}2"),
+                        (6, 1, "-cos θ2·θ\u{307}2² - sin θ2·θ\u{308}2"),
+                        (6, 2, "-0.5·cos θ3·θ\u{307}3² - 0.5·sin θ3·θ\u{308}3"),
+                        (7, 1, "-sin θ2·θ\u{307}2² + cos θ2·θ\u{308}2"),
+                        (7, 2, "-0.5·sin θ3·θ\u{307}3² + 0.5·cos θ3·θ\u{308}3"),
+                        (8, 1, "-cos θ2·θ\u{307}2² - sin θ2·θ\u{308}2"),
+                        (8, 2, "-cos θ3·θ\u{307}3² - sin θ3·θ\u{308}3"),
+                        (8, 3, "-0.5·cos θ4·θ\u{307}4² - 0.5·sin θ4·θ\u{308}4"),
+                        (9, 1, "-sin θ2·θ\u{307}2² + cos θ2·θ\u{308}2"),
+                        (9, 2, "-sin θ3·θ\u{307}3² + cos θ3·θ\u{308}3"),
+                        (9, 3, "-0.5·sin θ4·θ\u{307}4² + 0.5·cos θ4·θ\u{308}4"),
                     ],
                 },
             ],
@@ -1095,6 +1668,57 @@ const _: () = {
             D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy,
         >(&self, u: &SVector<D, 2>, v: &SVector<D, 1>) -> impl AsRef<[Vector2<D>]> {
             Self::point_positions_generic(self, u, v)
+        }
+    }
+    #[automatically_derived]
+    impl ::linkage::Sensitivities<2, 1, 4> for FourBar {
+        const PARAM_NAMES: [&'static str; 4] = Self::PARAM_NAMES;
+        #[inline]
+        fn params(&self) -> SVector<f64, 4> {
+            SVector::<f64, 4>::from([self.l1, self.l2, self.l3, self.l4])
+        }
+        #[inline]
+        fn set_params(&mut self, params: &SVector<f64, 4>) {
+            self.l1 = params[0];
+            self.l2 = params[1];
+            self.l3 = params[2];
+            self.l4 = params[3];
+        }
+        #[inline]
+        fn psi_p(&self, u: &SVector<f64, 2>, v: &SVector<f64, 1>) -> SMatrix<f64, 2, 4> {
+            Self::psi_p(self, u, v)
+        }
+        #[inline]
+        fn sensitivity_terms(
+            &self,
+            u: &SVector<f64, 2>,
+            v: &SVector<f64, 1>,
+            udot: &SVector<f64, 2>,
+            vdot: &SVector<f64, 1>,
+            uddot: &SVector<f64, 2>,
+            vddot: &SVector<f64, 1>,
+        ) -> ::linkage::SensitivityTerms<2, 4, [Vector2<f64>; 5]> {
+            Self::sensitivity_terms(self, u, v, udot, vdot, uddot, vddot)
+        }
+        #[inline]
+        fn psi_generic_params<D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy>(
+            &self,
+            params: &SVector<D, 4>,
+            u: &SVector<D, 2>,
+            v: &SVector<D, 1>,
+        ) -> SVector<D, 2> {
+            Self::psi_generic_params(self, params, u, v)
+        }
+        #[inline]
+        fn point_positions_generic_params<
+            D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy,
+        >(
+            &self,
+            params: &SVector<D, 4>,
+            u: &SVector<D, 2>,
+            v: &SVector<D, 1>,
+        ) -> impl AsRef<[Vector2<D>]> {
+            Self::point_positions_generic_params(self, params, u, v)
         }
     }
 };

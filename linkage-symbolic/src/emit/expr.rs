@@ -10,11 +10,13 @@ impl Emitter<'_> {
         let mut out = Vec::new();
         let m = self.names.m();
         let mut params = Vec::new();
+        let mut param_symbols: Vec<u16> = Vec::new();
         let mut sources: [(Vec<TokenStream>, Vec<TokenStream>); 6] = Default::default();
         for &s in symbols {
             let name = ident(&self.names.code(s));
             let (source, k) = match s {
-                Symbol::Param(_) => {
+                Symbol::Param(k) => {
+                    param_symbols.push(k);
                     params.push(name);
                     continue;
                 }
@@ -55,7 +57,31 @@ impl Emitter<'_> {
         if !params.is_empty() {
             let line = match self.mode {
                 Mode::F64 => quote! { let Self { #(#params,)* .. } = *self; },
-                Mode::Generic => quote! { #(let #params = D::from(self.#params);)* },
+                Mode::Generic {
+                    params_from_p: false,
+                } => {
+                    quote! { #(let #params = D::from(self.#params);)* }
+                }
+                Mode::Generic {
+                    params_from_p: true,
+                } => {
+                    // A field called `params` shadows the argument: bound last.
+                    let mut order: Vec<(u16, &syn::Ident)> =
+                        param_symbols.iter().copied().zip(&params).collect();
+                    order.sort_by_key(|(_, name)| *name == "params");
+                    let mut lines = Vec::new();
+                    for (k, name) in order {
+                        lines.push(match self.names.design_index(k) {
+                            Some(i) => {
+                                reads.p = true;
+                                let i = Literal::usize_unsuffixed(i);
+                                quote! { let #name = params[#i]; }
+                            }
+                            None => quote! { let #name = D::from(self.#name); },
+                        });
+                    }
+                    quote! { #(#lines)* }
+                }
             };
             out.insert(0, line);
         }
@@ -173,14 +199,14 @@ impl Emitter<'_> {
         let tokens = match self.mode {
             Mode::F64 if c < 0.0 => quote!(-#lit),
             Mode::F64 => quote!(#lit),
-            Mode::Generic if c < 0.0 => quote!(D::from(-#lit)),
-            Mode::Generic => quote!(D::from(#lit)),
+            Mode::Generic { .. } if c < 0.0 => quote!(D::from(-#lit)),
+            Mode::Generic { .. } => quote!(D::from(#lit)),
         };
         let prec = match self.mode {
             Mode::F64 if c < 0.0 => Prec::Unary,
             // A bare float literal cannot receive a method call.
             Mode::F64 => Prec::Product,
-            Mode::Generic => Prec::Atom,
+            Mode::Generic { .. } => Prec::Atom,
         };
         (tokens, prec)
     }
@@ -209,7 +235,9 @@ impl Emitter<'_> {
                 let name = format_ident!("{}", c.name());
                 match self.mode {
                     Mode::F64 => (quote!(::core::f64::consts::#name), Prec::Atom),
-                    Mode::Generic => (quote!(D::from(::core::f64::consts::#name)), Prec::Atom),
+                    Mode::Generic { .. } => {
+                        (quote!(D::from(::core::f64::consts::#name)), Prec::Atom)
+                    }
                 }
             }
             Node::Sym(s) => {
@@ -234,7 +262,7 @@ impl Emitter<'_> {
                         let y = self.operand(*b, Prec::Sum);
                         quote!(#x.hypot(#y))
                     }
-                    (Func2::Hypot, Mode::Generic) => {
+                    (Func2::Hypot, Mode::Generic { .. }) => {
                         let y = self.operand(*b, Prec::Atom);
                         quote!((#x.powi(2) + #y.powi(2)).sqrt())
                     }
@@ -242,7 +270,7 @@ impl Emitter<'_> {
                         let y = self.operand(*b, Prec::Sum);
                         quote!(#x.powf(#y))
                     }
-                    (Func2::Powf, Mode::Generic) => match self.dag.as_const(*b) {
+                    (Func2::Powf, Mode::Generic { .. }) => match self.dag.as_const(*b) {
                         Some(c) => {
                             let c = Literal::f64_unsuffixed(c.abs());
                             let c = if self.dag.as_const(*b).is_some_and(|c| c < 0.0) {
@@ -307,7 +335,7 @@ impl Emitter<'_> {
         let lit = Literal::f64_unsuffixed(c);
         match self.mode {
             Mode::F64 => quote!(#lit * #operand),
-            Mode::Generic => quote!(#operand * #lit),
+            Mode::Generic { .. } => quote!(#operand * #lit),
         }
     }
 
@@ -373,8 +401,8 @@ impl Emitter<'_> {
             (Mode::F64, true, _) => quote!(#lit),
             (Mode::F64, false, true) => numerator.clone(),
             (Mode::F64, false, false) => quote!(#lit * #numerator),
-            (Mode::Generic, true, _) => quote!(D::from(#lit)),
-            (Mode::Generic, false, _) => numerator.clone(),
+            (Mode::Generic { .. }, true, _) => quote!(D::from(#lit)),
+            (Mode::Generic { .. }, false, _) => numerator.clone(),
         };
         match denominator.len() {
             0 => {}
@@ -387,7 +415,7 @@ impl Emitter<'_> {
                 num = quote!(#num / (#d));
             }
         }
-        if self.mode == Mode::Generic && c != 1.0 && !numerator.is_empty() {
+        if matches!(self.mode, Mode::Generic { .. }) && c != 1.0 && !numerator.is_empty() {
             num = quote!(#num * #lit);
         }
         num

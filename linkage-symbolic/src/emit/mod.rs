@@ -19,8 +19,10 @@ mod expr;
 pub enum Mode {
     /// `f64`, with literals and methods of `f64`.
     F64,
-    /// A generic `D: num_dual::DualNum<Primitive = f64> + Copy`.
-    Generic,
+    /// A generic `D: num_dual::DualNum<Primitive = f64> + Copy`; the
+    /// parameters differentiated by are read from the argument `params` if
+    /// `params_from_p`, else every parameter from `self`.
+    Generic { params_from_p: bool },
 }
 
 /// The argument vectors a function reads.
@@ -32,6 +34,8 @@ pub struct Reads {
     pub vdot: bool,
     pub uddot: bool,
     pub vddot: bool,
+    /// The parameter vector `params` (generic functions of the parameters).
+    pub p: bool,
 }
 
 /// The emitted body of one function.
@@ -191,7 +195,12 @@ pub fn emit_phases(
         .collect();
 
     let mut taken: HashSet<String> = names.all_code().collect();
-    taken.extend(["u", "v", "udot", "vdot", "uddot", "vddot", "self", "D"].map(str::to_owned));
+    taken.extend(
+        [
+            "u", "v", "udot", "vdot", "uddot", "vddot", "params", "self", "D",
+        ]
+        .map(str::to_owned),
+    );
     taken.extend(reserved.iter().cloned());
     let mut emitter = Emitter {
         dag,

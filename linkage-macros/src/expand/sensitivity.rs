@@ -1,0 +1,120 @@
+//! `sensitivity_terms`: every derivative by u and by the parameters p that
+//! the sensitivities need, in one function sharing each sine, cosine and
+//! subexpression — Ψ_u, Ψ_p and their first and second time derivatives,
+//! and the same of every point.
+
+use super::Generator;
+use super::docs::doc_attributes;
+use super::function::{assemble, reads};
+use super::quantities::Quantity;
+use super::signature;
+use linkage_symbolic::dag::{Dag, Id};
+use linkage_symbolic::derivatives::Matrix;
+use linkage_symbolic::emit::{Mode, emit};
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+
+impl Generator<'_> {
+    pub(super) fn sensitivity_terms_function(&self, q: &Quantity, doc: &[String]) -> TokenStream {
+        let model = self.model;
+        let matrices: [(&str, &Matrix); 6] = [
+            ("psi_u", &model.psi_u),
+            ("psi_p", &model.psi_p),
+            ("psi_u_dot", &model.psi_u_dot),
+            ("psi_p_dot", &model.psi_p_dot),
+            ("psi_u_ddot", &model.psi_u_ddot),
+            ("psi_p_ddot", &model.psi_p_ddot),
+        ];
+        // The points' derivatives: [level][by u, by p], each a list of
+        // columns, each column one (x, y) per point.
+        let point_columns = |level: usize, by_params: bool| -> Vec<Vec<[Id; 2]>> {
+            let cols = if by_params { self.k } else { self.m };
+            (0..cols)
+                .map(|j| {
+                    model
+                        .points
+                        .iter()
+                        .map(|p| {
+                            let matrix = if by_params {
+                                &p.by_p[level]
+                            } else {
+                                &p.by_u[level]
+                            };
+                            [matrix.get(0, j), matrix.get(1, j)]
+                        })
+                        .collect()
+                })
+                .collect()
+        };
+        let point_parts: Vec<(&str, Vec<Vec<[Id; 2]>>)> = vec![
+            ("points_u", point_columns(0, false)),
+            ("points_p", point_columns(0, true)),
+            ("point_velocities_u", point_columns(1, false)),
+            ("point_velocities_p", point_columns(1, true)),
+            ("point_accelerations_u", point_columns(2, false)),
+            ("point_accelerations_p", point_columns(2, true)),
+        ];
+        let mut roots: Vec<Id> = Vec::new();
+        for (_, matrix) in &matrices {
+            roots.extend(matrix.entries.iter().copied().filter(|&e| e != Dag::ZERO));
+        }
+        for (_, columns) in &point_parts {
+            for column in columns {
+                for xy in column {
+                    roots.extend(xy.iter().copied().filter(|&e| e != Dag::ZERO));
+                }
+            }
+        }
+        let reserved: Vec<String> = matrices.iter().map(|(n, _)| self.free_name(n)).collect();
+        let body = emit(self.dag(), &self.names, &roots, &[], &reserved, Mode::F64);
+        let mut values = body.values.iter();
+        let mut statements = Vec::new();
+        let mut fields = Vec::new();
+        for ((field, matrix), name) in matrices.iter().zip(&reserved) {
+            let (stmts, value, _) = assemble(matrix, name, &mut values, quote!(f64));
+            statements.extend(stmts);
+            let field = format_ident!("{}", field);
+            // `psi_u` rather than `psi_u: psi_u`.
+            let shorthand = field == value.to_string();
+            fields.push(if shorthand {
+                quote!(#field)
+            } else {
+                quote!(#field: #value)
+            });
+        }
+        for (field, columns) in &point_parts {
+            let columns = columns.iter().map(|column| {
+                let points = column.iter().map(|xy| {
+                    let [x, y] = xy.map(|e| {
+                        if e == Dag::ZERO {
+                            quote!(0.0)
+                        } else {
+                            let value = values.next();
+                            quote!(#value)
+                        }
+                    });
+                    quote!(Vector2::new(#x, #y))
+                });
+                quote!([#(#points),*])
+            });
+            let field = format_ident!("{}", field);
+            fields.push(quote!(#field: [#(#columns),*]));
+        }
+        let name = format_ident!("{}", q.name);
+        let dims = self.dims();
+        let args = signature::args(q, &dims, |a| reads(&body.reads, a));
+        let ret = signature::output_type(q, &dims, false);
+        let doc = doc_attributes(doc);
+        let prologue = &body.statements;
+        quote! {
+            #doc
+            #[must_use]
+            #[allow(clippy::too_many_arguments)]
+            pub fn #name(&self, #(#args),*) -> #ret {
+                #(#prologue)*
+                #(#statements)*
+                ::linkage::SensitivityTerms { #(#fields),* }
+            }
+        }
+    }
+}

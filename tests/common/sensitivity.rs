@@ -1,0 +1,205 @@
+//! Sensitivities computed another way, for the tests: by num-dual with the
+//! parameters as dual numbers through the generated generic functions
+//! (`psi_generic_params`, `point_positions_generic_params`), and by central
+//! finite differences of whole analyses.
+
+use linkage::num_dual::{Dual2, Dual64};
+use linkage::prelude::*;
+
+/// Every sensitivity of a pose to one parameter, as flat lists: u_p, u̇_p,
+/// ü_p, then for each point (x, y) of P, Ṗ, P̈.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Column {
+    pub u: Vec<f64>,
+    pub udot: Vec<f64>,
+    pub uddot: Vec<f64>,
+    pub points: Vec<[f64; 6]>,
+}
+
+impl Column {
+    /// The column `j` of the library's result.
+    pub fn of<const M: usize, const K: usize, P: AsRef<[Vector2<f64>]>>(
+        s: &Sensitivity<M, K, P>,
+        j: usize,
+    ) -> Column {
+        let points = (0..s.points[j].as_ref().len())
+            .map(|c| {
+                let (p, v, a) = (
+                    s.points[j].as_ref()[c],
+                    s.point_velocities[j].as_ref()[c],
+                    s.point_accelerations[j].as_ref()[c],
+                );
+                [p.x, p.y, v.x, v.y, a.x, a.y]
+            })
+            .collect();
+        Column {
+            u: s.u.column(j).iter().copied().collect(),
+            udot: s.udot.column(j).iter().copied().collect(),
+            uddot: s.uddot.column(j).iter().copied().collect(),
+            points,
+        }
+    }
+
+    /// The worst relative difference from `reference`, of each group (u,
+    /// u̇, ü, points), each relative to the size of its group in the
+    /// reference (with `floor`).
+    pub fn difference(&self, reference: &Column, floor: f64) -> [f64; 4] {
+        let flat = |p: &[[f64; 6]], k: usize| -> Vec<f64> {
+            p.iter().flat_map(|x| [x[2 * k], x[2 * k + 1]]).collect()
+        };
+        let points = (0..3)
+            .map(|k| super::rel_norm(&flat(&self.points, k), &flat(&reference.points, k), floor))
+            .fold(0.0, f64::max);
+        [
+            super::rel_norm(&self.u, &reference.u, floor),
+            super::rel_norm(&self.udot, &reference.udot, floor),
+            super::rel_norm(&self.uddot, &reference.uddot, floor),
+            points,
+        ]
+    }
+}
+
+type Jet = Dual2<Dual64>;
+
+/// The sensitivities to parameter `j` by num-dual: the parameters dual in
+/// direction j; the pose re-solved on those numbers (one Newton step with
+/// Ψ_u⁻¹ gives the exact derivative part); then the velocity and the
+/// acceleration as the first and second time derivatives of Ψ along the
+/// motion, on second-order numbers whose parts are themselves dual in p,
+/// each solved order by order (u̇ and ü enter the residual linearly,
+/// through Ψ_u, so a few fixed-point steps with the f64 inverse are exact).
+pub fn by_dual<L, const M: usize, const F: usize, const K: usize>(
+    model: &L,
+    motion: &Motion<M, F>,
+    j: usize,
+) -> Column
+where
+    L: Sensitivities<M, F, K>,
+{
+    let p = model.params();
+    let pd = SVector::<Dual64, K>::from_fn(|i, _| {
+        let x = Dual64::from(p[i]);
+        if i == j { x.derivative() } else { x }
+    });
+    let inverse = model
+        .psi_u(&motion.u, &motion.v)
+        .try_inverse()
+        .expect("a regular pose");
+    let lift = |x: &SVector<f64, M>| x.map(Dual64::from);
+    let solve = |x: SVector<Dual64, M>| -> SVector<Dual64, M> {
+        SVector::from_fn(|i, _| {
+            (0..M).fold(Dual64::from(0.0), |acc, k| acc + x[k] * inverse[(i, k)])
+        })
+    };
+    // The position, its derivative part exact after one step.
+    let mut u = lift(&motion.u);
+    let vd = motion.v.map(Dual64::from);
+    for _ in 0..2 {
+        let r = model.psi_generic_params(&pd, &u, &vd);
+        u -= solve(r);
+    }
+    // The velocity and the acceleration, order by order.
+    let mut udot = SVector::<Dual64, M>::zeros();
+    let mut uddot = SVector::<Dual64, M>::zeros();
+    let jet = |u: &SVector<Dual64, M>, udot: &SVector<Dual64, M>, uddot: &SVector<Dual64, M>| {
+        SVector::<Jet, M>::from_fn(|i, _| Jet::new(u[i], udot[i], uddot[i]))
+    };
+    let vj = SVector::<Jet, F>::from_fn(|i, _| {
+        Jet::new(
+            Dual64::from(motion.v[i]),
+            Dual64::from(motion.vdot[i]),
+            Dual64::from(motion.vddot[i]),
+        )
+    });
+    let pj = pd.map(Jet::from_re);
+    for order in 1..=2 {
+        for _ in 0..3 {
+            let r = model.psi_generic_params(&pj, &jet(&u, &udot, &uddot), &vj);
+            if order == 1 {
+                udot -= solve(r.map(|x| x.v1));
+            } else {
+                uddot -= solve(r.map(|x| x.v2));
+            }
+        }
+    }
+    let points = model
+        .point_positions_generic_params(&pj, &jet(&u, &udot, &uddot), &vj)
+        .as_ref()
+        .iter()
+        .map(|q| {
+            [
+                q.x.re.eps, q.y.re.eps, q.x.v1.eps, q.y.v1.eps, q.x.v2.eps, q.y.v2.eps,
+            ]
+        })
+        .collect();
+    Column {
+        u: u.iter().map(|x| x.eps).collect(),
+        udot: udot.iter().map(|x| x.eps).collect(),
+        uddot: uddot.iter().map(|x| x.eps).collect(),
+        points,
+    }
+}
+
+/// The sensitivities to parameter `j` by central finite differences of
+/// whole analyses, with the relative step `h` (each side re-solved from the
+/// pose).
+pub fn by_differences<L, const M: usize, const F: usize, const K: usize>(
+    model: &L,
+    motion: &Motion<M, F>,
+    j: usize,
+    h: f64,
+) -> Column
+where
+    L: Sensitivities<M, F, K> + Clone,
+{
+    let p = model.params();
+    let step = h * p[j].abs().max(1.0);
+    let analyse = |sign: f64| {
+        let mut shifted = model.clone();
+        let mut q = p;
+        q[j] += sign * step;
+        shifted.set_params(&q);
+        shifted
+            .analyze(
+                &motion.u,
+                &motion.v,
+                &motion.vdot,
+                &motion.vddot,
+                &Options::default(),
+            )
+            .expect("the shifted design assembles")
+    };
+    let (plus, minus) = (analyse(1.0), analyse(-1.0));
+    let d = |a: f64, b: f64| (a - b) / (2.0 * step);
+    let dv = |a: &SVector<f64, M>, b: &SVector<f64, M>| -> Vec<f64> {
+        (0..M).map(|i| d(a[i], b[i])).collect()
+    };
+    let points = (0..plus.points.as_ref().len())
+        .map(|c| {
+            let (pp, mp) = (&plus, &minus);
+            let (a, b) = (pp.points.as_ref()[c], mp.points.as_ref()[c]);
+            let (av, bv) = (
+                pp.point_velocities.as_ref()[c],
+                mp.point_velocities.as_ref()[c],
+            );
+            let (aa, ba) = (
+                pp.point_accelerations.as_ref()[c],
+                mp.point_accelerations.as_ref()[c],
+            );
+            [
+                d(a.x, b.x),
+                d(a.y, b.y),
+                d(av.x, bv.x),
+                d(av.y, bv.y),
+                d(aa.x, ba.x),
+                d(aa.y, ba.y),
+            ]
+        })
+        .collect();
+    Column {
+        u: dv(&plus.u, &minus.u),
+        udot: dv(&plus.udot, &minus.udot),
+        uddot: dv(&plus.uddot, &minus.uddot),
+        points,
+    }
+}
