@@ -192,3 +192,140 @@ fn scaling_every_length_changes_no_angle() {
         }
     }
 }
+
+/// One mechanism's rows of `tests/data/sensitivities.csv`: the driver's
+/// position, speed and acceleration, and per (quantity, parameter) the
+/// value, velocity and acceleration (parameter "-") or their derivatives.
+struct Reference {
+    driver: [f64; 3],
+    rows: Vec<(String, String, [f64; 3])>,
+}
+
+fn reference(mechanism: &str) -> Reference {
+    let text = include_str!("data/sensitivities.csv");
+    let mut driver = None;
+    let mut rows = Vec::new();
+    for line in text.lines().filter(|l| !l.starts_with('#')).skip(1) {
+        let fields: Vec<&str> = line.split(',').collect();
+        if fields[0] != mechanism {
+            continue;
+        }
+        let values = [3, 4, 5].map(|k| fields[k].parse::<f64>().expect("a number"));
+        if fields[1] == "driver" {
+            driver = Some(values);
+        } else {
+            rows.push((fields[1].to_owned(), fields[2].to_owned(), values));
+        }
+    }
+    Reference {
+        driver: driver.expect("the mechanism's driver row"),
+        rows,
+    }
+}
+
+/// The library's sensitivities of `model` against the 50-digit references:
+/// the pose first (so that the branch is the reference's), then every
+/// derivative of every coordinate and point by every parameter, each to
+/// 1e-12 of the largest term of its row (the quantity's derivatives by all
+/// the parameters at that order). Returns the worst figure.
+fn against_reference<L, const M: usize, const K: usize>(
+    model: &L,
+    mechanism: &str,
+    u_guess: SVector<f64, M>,
+) -> f64
+where
+    L: Sensitivities<M, 1, K>,
+{
+    let r = reference(mechanism);
+    let [v, vdot, vddot] = r.driver;
+    let (motion, s) = at(model, u_guess, vector![v], vector![vdot], vector![vddot]);
+    let analysis = model
+        .analyze(
+            &u_guess,
+            &vector![v],
+            &vector![vdot],
+            &vector![vddot],
+            &Options::default(),
+        )
+        .unwrap();
+    // Ours: (value, velocity, acceleration) and, per parameter, their derivatives.
+    let ours = |quantity: &str, param: Option<usize>| -> [f64; 3] {
+        if let Some(i) = L::U_NAMES.iter().position(|n| *n == quantity) {
+            return match param {
+                None => [motion.u[i], motion.udot[i], motion.uddot[i]],
+                Some(j) => [s.u[(i, j)], s.udot[(i, j)], s.uddot[(i, j)]],
+            };
+        }
+        let (point, axis) = quantity.split_once('.').expect("a point coordinate");
+        let c = L::point_index(point).expect("a point of the model");
+        let a = usize::from(axis == "y");
+        match param {
+            None => [
+                analysis.points.as_ref()[c][a],
+                analysis.point_velocities.as_ref()[c][a],
+                analysis.point_accelerations.as_ref()[c][a],
+            ],
+            Some(j) => [
+                s.point(c)[(a, j)],
+                s.point_velocity(c)[(a, j)],
+                s.point_acceleration(c)[(a, j)],
+            ],
+        }
+    };
+    let mut worst = 0.0f64;
+    let mut checked = 0;
+    for (quantity, param, expected) in &r.rows {
+        let j = (param != "-").then(|| {
+            L::param_index(param).unwrap_or_else(|| panic!("{mechanism} has no parameter {param}"))
+        });
+        let got = ours(quantity, j);
+        // The row's scale: the largest of the quantity's terms at each order.
+        let scale = |order: usize| {
+            r.rows
+                .iter()
+                .filter(|(q, p, _)| q == quantity && (p == "-") == j.is_none())
+                .map(|(_, _, x)| x[order].abs())
+                .fold(f64::MIN_POSITIVE, f64::max)
+        };
+        for order in 0..3 {
+            let error = (got[order] - expected[order]).abs() / scale(order);
+            assert!(
+                error <= 1e-12,
+                "{mechanism}: {quantity} by {param}, order {order}: {} against {} ({error:.1e} of its terms)",
+                got[order],
+                expected[order]
+            );
+            worst = worst.max(error);
+            checked += 1;
+        }
+    }
+    assert_eq!(checked, 3 * r.rows.len());
+    assert!(
+        r.rows.len() > 3 * K,
+        "{mechanism}: only {} rows",
+        r.rows.len()
+    );
+    worst
+}
+
+#[test]
+fn the_worksheets_fourbar_against_the_50_digit_references() {
+    let worst = against_reference(&FourBar::WORKSHEET, "fourbar", vector![1.2, -0.9]);
+    assert!(worst <= 1e-12);
+}
+
+#[test]
+fn the_slider_crank_against_the_50_digit_references() {
+    against_reference(&SLIDER_CRANK, "slider_crank", vector![0.0, 0.24]);
+}
+
+#[test]
+fn the_actuator_driven_boom_against_the_50_digit_references() {
+    against_reference(&BOOM, "boom", vector![1.0, 1.2]);
+}
+
+#[test]
+fn the_two_loop_six_bar_against_the_50_digit_references() {
+    // The dyad's branch of the references (σ = +1): F to the left of E→G.
+    against_reference(&SIX_BAR, "six_bar", vector![1.2, -0.9, 2.4, 3.1]);
+}

@@ -5,10 +5,10 @@ Everything is computed with mpmath at 50 significant digits, from the closed
 forms of the mechanisms, at driver values that are exactly representable as
 f64 (the value the Rust code is given), and written as CSV under tests/data/.
 
-    python3 benches/reference/make_reference.py [--bench | --all]
+    python3 benches/reference/make_reference.py [--bench | --all | --sensitivities]
 
 (the near-singular references; --bench the dense-sweep references of the
-benchmarks; --all both) creates its own virtual environment (benches/reference/.venv) with mpmath from
+benchmarks; --all both; --sensitivities the sensitivities to the parameters) creates its own virtual environment (benches/reference/.venv) with mpmath from
 PyPI on first use, then reruns itself inside it.
 """
 import os
@@ -224,8 +224,108 @@ def dense_six_bar():
     ], rows)
 
 
+# The sensitivities: every coordinate and point of four mechanisms as
+# closed forms X(v, p) of the driver v and the parameters p; the motion's
+# velocity and acceleration Ẋ = X_v v̇, Ẍ = X_vv v̇² + X_v v̈ (one driver);
+# and their derivatives by each parameter, X_p, X_vp v̇, X_vvp v̇² + X_vp v̈,
+# by mpmath's diff (mixed partial derivatives at extra precision).
+
+
+def fourbar_pose(v, p):
+    l1, l2, l3, l4 = p
+    t3, t4 = fourbar(l1, l2, l3, l4, v, 1)[:2]
+    B = (l2 * mp.cos(v), l2 * mp.sin(v))
+    C = (B[0] + l3 * mp.cos(t3), B[1] + l3 * mp.sin(t3))
+    G4 = (C[0] + l4 * mp.cos(t4) / 2, C[1] + l4 * mp.sin(t4) / 2)
+    return {"theta3": t3, "theta4": t4, "B.x": B[0], "B.y": B[1], "C.x": C[0], "C.y": C[1],
+            "G2.x": B[0] / 2, "G2.y": B[1] / 2, "G3.x": (B[0] + C[0]) / 2,
+            "G3.y": (B[1] + C[1]) / 2, "G4.x": G4[0], "G4.y": G4[1]}
+
+
+def slider_crank_pose(v, p):
+    r, l, e = p
+    t3 = mp.asin((e - r * mp.sin(v)) / l)
+    s = r * mp.cos(v) + l * mp.cos(t3)
+    B = (r * mp.cos(v), r * mp.sin(v))
+    return {"theta3": t3, "s": s, "B.x": B[0], "B.y": B[1], "P.x": s, "P.y": e,
+            "G3.x": B[0] + l * mp.cos(t3) / 2, "G3.y": B[1] + l * mp.sin(t3) / 2}
+
+
+def boom_pose(v, p):
+    ax, ay, b, lb = p
+    theta, phi = boom(v, ax, ay, b)
+    return {"theta": theta, "phi": phi, "K.x": b * mp.cos(theta), "K.y": b * mp.sin(theta),
+            "T.x": lb * mp.cos(theta), "T.y": lb * mp.sin(theta)}
+
+
+def six_bar_pose(v, p):
+    l1, l2, l3, l4, e, beta, l5, l6, gx, gy = p
+    t3, t4 = fourbar(l1, l2, l3, l4, v, 1)[:2]
+    B = (l2 * mp.cos(v), l2 * mp.sin(v))
+    C = (B[0] + l3 * mp.cos(t3), B[1] + l3 * mp.sin(t3))
+    E = (B[0] + e * mp.cos(t3 + beta), B[1] + e * mp.sin(t3 + beta))
+    Fp = circle(E, l5, (gx, gy), l6, 1)
+    t5 = mp.atan2(Fp[1] - E[1], Fp[0] - E[0])
+    t6 = mp.atan2(Fp[1] - gy, Fp[0] - gx)
+    return {"theta3": t3, "theta4": t4, "theta5": t5, "theta6": t6, "B.x": B[0], "B.y": B[1],
+            "C.x": C[0], "C.y": C[1], "E.x": E[0], "E.y": E[1], "F.x": Fp[0], "F.y": Fp[1]}
+
+
+def sensitivity_rows(name, pose, names, params, v, vdot, vddot):
+    """The rows of one mechanism: its driver, every quantity's value,
+    velocity and acceleration, then its derivatives by each parameter."""
+    p = [mp.mpf(x) for x in params]
+    v, vdot, vddot = mp.mpf(v), mp.mpf(vdot), mp.mpf(vddot)
+    rows = [[name, "driver", "-", repr(float(v)), repr(float(vdot)), repr(float(vddot))]]
+    for quantity in pose(v, p):
+        def at(x, j=None, y=None):
+            q = list(p)
+            if j is not None:
+                q[j] = y
+            return pose(x, q)[quantity]
+        d1 = mp.diff(lambda x: at(x), v)
+        d2 = mp.diff(lambda x: at(x), v, 2)
+        rows.append([name, quantity, "-", fmt(at(v)), fmt(d1 * vdot),
+                     fmt(d2 * vdot ** 2 + d1 * vddot)])
+        for j, pname in enumerate(names):
+            f = lambda x, y, j=j: at(x, j, y)
+            dp = mp.diff(f, (v, p[j]), (0, 1))
+            dvp = mp.diff(f, (v, p[j]), (1, 1))
+            dvvp = mp.diff(f, (v, p[j]), (2, 1))
+            rows.append([name, quantity, pname, fmt(dp), fmt(dvp * vdot),
+                         fmt(dvvp * vdot ** 2 + dvp * vddot)])
+    return rows
+
+
+def sensitivities():
+    omega2 = 400.0 * (2 * 3.141592653589793) / 60.0  # OMEGA2, as in Rust
+    theta2 = 20.0 * (3.141592653589793 / 180.0)  # 20f64.to_radians()
+    rows = [["mechanism", "quantity", "param", "by_param", "dot_by_param", "ddot_by_param"]]
+    rows += sensitivity_rows("fourbar", fourbar_pose, ["l1", "l2", "l3", "l4"],
+                             [80, 20, 50, 70], theta2, omega2, 0.0)
+    rows += sensitivity_rows("slider_crank", slider_crank_pose, ["r", "l", "e"],
+                             ["0.05", "0.2", "0.01"], 1.0, omega2, -2.0)
+    rows += sensitivity_rows("boom", boom_pose, ["ax", "ay", "b", "lb"],
+                             ["0.4", "-0.3", "1", "2.5"], 1.1, 0.1, 0.02)
+    beta = float(mp.pi / 6)  # PI / 6.0 in f64
+    rows += sensitivity_rows("six_bar", six_bar_pose,
+                             ["l1", "l2", "l3", "l4", "e", "beta", "l5", "l6", "gx", "gy"],
+                             [80, 20, 50, 70, 40, beta, 60, 50, 20, 90], 0.5, 1.0, 0.5)
+    write("sensitivities.csv", [
+        "Sensitivities to the parameters of the worksheet's four-bar (theta2 = 20 deg, 400 rpm, alpha2 = 0), the offset",
+        "slider-crank, the actuator-driven boom and the two-loop six-bar of the tests, at the driver position, speed and",
+        "acceleration of each 'driver' row (f64 values). Rows with param '-': the quantity X, its velocity and acceleration;",
+        "other rows: dX/dp, d(Xdot)/dp, d(Xddot)/dp. Written by benches/reference/make_reference.py --sensitivities",
+        "(mpmath, 50 digits, 40 kept): each quantity in closed form X(v, p), its motion X_v vdot and X_vv vdot^2 + X_v vddot,",
+        "and the mixed partial derivatives by mpmath's diff.",
+    ], rows)
+
+
 def main():
     global DIGITS
+    if "--sensitivities" in sys.argv:
+        sensitivities()
+        return
     if "--bench" in sys.argv or "--all" in sys.argv:
         # 22 digits are plenty to measure f64 errors, and keep the files small.
         mp.mp.dps, DIGITS = 40, 22

@@ -3,6 +3,7 @@
 //! (`psi_generic_params`, `point_positions_generic_params`), and by central
 //! finite differences of whole analyses.
 
+use linkage::SensitivityTerms;
 use linkage::num_dual::{Dual2, Dual64};
 use linkage::prelude::*;
 
@@ -40,6 +41,33 @@ impl Column {
         }
     }
 
+    /// The largest absolute difference from `other`, of each group (u, u̇,
+    /// ü, points).
+    pub fn distance(&self, other: &Column) -> [f64; 4] {
+        let max = |a: &[f64], b: &[f64]| {
+            a.iter()
+                .zip(b)
+                .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()))
+        };
+        let flat = |p: &[[f64; 6]]| -> Vec<f64> { p.iter().flatten().copied().collect() };
+        [
+            max(&self.u, &other.u),
+            max(&self.udot, &other.udot),
+            max(&self.uddot, &other.uddot),
+            max(&flat(&self.points), &flat(&other.points)),
+        ]
+    }
+
+    /// Whether every number is finite.
+    pub fn is_finite(&self) -> bool {
+        self.u
+            .iter()
+            .chain(&self.udot)
+            .chain(&self.uddot)
+            .chain(self.points.iter().flatten())
+            .all(|x| x.is_finite())
+    }
+
     /// The worst relative difference from `reference`, of each group (u,
     /// u̇, ü, points), each relative to the size of its group in the
     /// reference (with `floor`).
@@ -62,12 +90,14 @@ impl Column {
 type Jet = Dual2<Dual64>;
 
 /// The sensitivities to parameter `j` by num-dual: the parameters dual in
-/// direction j; the pose re-solved on those numbers (one Newton step with
-/// Ψ_u⁻¹ gives the exact derivative part); then the velocity and the
-/// acceleration as the first and second time derivatives of Ψ along the
-/// motion, on second-order numbers whose parts are themselves dual in p,
-/// each solved order by order (u̇ and ü enter the residual linearly,
-/// through Ψ_u, so a few fixed-point steps with the f64 inverse are exact).
+/// direction j; the derivative parts of the pose solved on those numbers
+/// (Newton steps with Ψ_u⁻¹ on the derivative parts, the values kept as
+/// given: the derivatives at this pose, as the library's); then the
+/// velocity and the acceleration as the first and second time derivatives
+/// of Ψ along the motion, on second-order numbers whose parts are
+/// themselves dual in p, each solved order by order (u̇ and ü enter the
+/// residual linearly, through Ψ_u, so a few fixed-point steps with the f64
+/// inverse are exact).
 pub fn by_dual<L, const M: usize, const F: usize, const K: usize>(
     model: &L,
     motion: &Motion<M, F>,
@@ -76,31 +106,47 @@ pub fn by_dual<L, const M: usize, const F: usize, const K: usize>(
 where
     L: Sensitivities<M, F, K>,
 {
+    try_by_dual(model, motion, j).expect("a regular pose")
+}
+
+/// [`by_dual`], `None` where Ψ_u has no inverse.
+pub fn try_by_dual<L, const M: usize, const F: usize, const K: usize>(
+    model: &L,
+    motion: &Motion<M, F>,
+    j: usize,
+) -> Option<Column>
+where
+    L: Sensitivities<M, F, K>,
+{
     let p = model.params();
     let pd = SVector::<Dual64, K>::from_fn(|i, _| {
         let x = Dual64::from(p[i]);
         if i == j { x.derivative() } else { x }
     });
-    let inverse = model
-        .psi_u(&motion.u, &motion.v)
-        .try_inverse()
-        .expect("a regular pose");
+    let inverse = model.psi_u(&motion.u, &motion.v).try_inverse()?;
     let lift = |x: &SVector<f64, M>| x.map(Dual64::from);
     let solve = |x: SVector<Dual64, M>| -> SVector<Dual64, M> {
         SVector::from_fn(|i, _| {
             (0..M).fold(Dual64::from(0.0), |acc, k| acc + x[k] * inverse[(i, k)])
         })
     };
-    // The position, its derivative part exact after one step.
+    // Derivative parts solved, values kept: x.re stays the given value.
+    let keep = |x: &mut SVector<Dual64, M>, values: &SVector<f64, M>| {
+        for i in 0..M {
+            x[i] = Dual64::new(values[i], x[i].eps);
+        }
+    };
+    // The position's derivative part, exact after one step.
     let mut u = lift(&motion.u);
     let vd = motion.v.map(Dual64::from);
     for _ in 0..2 {
         let r = model.psi_generic_params(&pd, &u, &vd);
         u -= solve(r);
+        keep(&mut u, &motion.u);
     }
     // The velocity and the acceleration, order by order.
-    let mut udot = SVector::<Dual64, M>::zeros();
-    let mut uddot = SVector::<Dual64, M>::zeros();
+    let mut udot = lift(&motion.udot);
+    let mut uddot = lift(&motion.uddot);
     let jet = |u: &SVector<Dual64, M>, udot: &SVector<Dual64, M>, uddot: &SVector<Dual64, M>| {
         SVector::<Jet, M>::from_fn(|i, _| Jet::new(u[i], udot[i], uddot[i]))
     };
@@ -117,8 +163,10 @@ where
             let r = model.psi_generic_params(&pj, &jet(&u, &udot, &uddot), &vj);
             if order == 1 {
                 udot -= solve(r.map(|x| x.v1));
+                keep(&mut udot, &motion.udot);
             } else {
                 uddot -= solve(r.map(|x| x.v2));
+                keep(&mut uddot, &motion.uddot);
             }
         }
     }
@@ -132,12 +180,56 @@ where
             ]
         })
         .collect();
-    Column {
+    Some(Column {
         u: u.iter().map(|x| x.eps).collect(),
         udot: udot.iter().map(|x| x.eps).collect(),
         uddot: uddot.iter().map(|x| x.eps).collect(),
         points,
-    }
+    })
+}
+
+/// The size of the terms each group of sensitivities to parameter `j` is
+/// made of, before they cancel (u, u̇, ü, points): ‖Ψ_u⁻¹‖ times the sizes
+/// of the right-hand sides, and for the points the sizes of their sums.
+pub fn term_sizes<const M: usize, const K: usize, P: AsRef<[Vector2<f64>]>>(
+    terms: &SensitivityTerms<M, K, P>,
+    s: &Sensitivity<M, K, P>,
+    j: usize,
+) -> [f64; 4] {
+    let inverse = linkage::invert(&terms.psi_u).inverse.amax() * M as f64;
+    let (u, udot, uddot) = (
+        s.u.column(j).amax(),
+        s.udot.column(j).amax(),
+        s.uddot.column(j).amax(),
+    );
+    let size = |points: &[P]| -> f64 {
+        points
+            .iter()
+            .flat_map(|p| p.as_ref().iter().map(|x| x.amax()))
+            .fold(0.0, f64::max)
+    };
+    let by_u = |points: &[P; M]| size(points.as_slice()) * M as f64;
+    let by_p = |points: &[P; K]| size(&points[j..j + 1]);
+    [
+        inverse * terms.psi_p.column(j).amax(),
+        inverse * (terms.psi_u_dot.amax() * u + terms.psi_p_dot.column(j).amax()),
+        inverse
+            * (terms.psi_u_ddot.amax() * u
+                + 2.0 * terms.psi_u_dot.amax() * udot
+                + terms.psi_p_ddot.column(j).amax()),
+        (by_u(&terms.points_u) * u + by_p(&terms.points_p))
+            .max(
+                by_u(&terms.point_velocities_u) * u
+                    + by_u(&terms.points_u) * udot
+                    + by_p(&terms.point_velocities_p),
+            )
+            .max(
+                by_u(&terms.point_accelerations_u) * u
+                    + 2.0 * by_u(&terms.point_velocities_u) * udot
+                    + by_u(&terms.points_u) * uddot
+                    + by_p(&terms.point_accelerations_p),
+            ),
+    ]
 }
 
 /// The sensitivities to parameter `j` by central finite differences of

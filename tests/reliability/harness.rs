@@ -2,6 +2,7 @@
 //! awkward numbers, the tally, the closed-form truth of an assembly, and
 //! the properties one analysis of one world must have.
 
+use crate::common::sensitivity::{Column, term_sizes, try_by_dual};
 use linkage::prelude::*;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed, TestCaseError, TestRunner};
@@ -78,6 +79,12 @@ pub(crate) struct Tally {
     checked_closed_form: usize,
     /// Cases where the closed form and a near guess demand an `Ok`.
     expected_ok: usize,
+    /// Sensitivities returned `Ok`.
+    sensitivities_ok: usize,
+    /// Of those, checked against num-dual (every number within 10^±100).
+    sensitivities_compared: usize,
+    /// Sensitivities refused (`Err`) at an analysed pose.
+    sensitivities_err: usize,
 }
 
 impl Tally {
@@ -164,7 +171,7 @@ pub(crate) fn all_finite(xs: impl IntoIterator<Item = f64>) -> bool {
 
 /// The properties of one analysis of one world.
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn check<L: Linkage<M, 1>, const M: usize>(
+pub(crate) fn check<L: Sensitivities<M, 1, K>, const M: usize, const K: usize>(
     model: &L,
     guess: SVector<f64, M>,
     v: f64,
@@ -272,6 +279,7 @@ pub(crate) fn check<L: Linkage<M, 1>, const M: usize>(
                 }
                 (x, y) => prop_assert!(false, "the methods disagree on success: {x:?} vs {y:?}"),
             }
+            check_sensitivities(model, &Motion::of_analysis(&a, &v, &vdot, &vddot), tally)?;
         }
         Err(e) => {
             t.error(&e);
@@ -318,19 +326,111 @@ pub(crate) fn check<L: Linkage<M, 1>, const M: usize>(
         if let Ok(acc) = model.acceleration(&u, &v, &udot, &vdot, &vddot, &options) {
             fine &= all_finite(acc.iter().copied());
         }
+        // At a pose that need not close, with made-up rates.
+        let motion = Motion {
+            u,
+            v,
+            udot,
+            vdot,
+            uddot: udot,
+            vddot,
+        };
+        if let Ok(s) = model.sensitivities(&motion, &options) {
+            fine &= (0..K).all(|j| Column::of(&s, j).is_finite()) && s.rcond.is_finite();
+        }
         fine
     }))
     .map_err(|_| TestCaseError::fail("an entry point panicked"))?;
     prop_assert!(
         entry,
-        "NaN or ∞ inside an Ok of solve_position, velocity or acceleration"
+        "NaN or ∞ inside an Ok of solve_position, velocity, acceleration or sensitivities"
     );
+    Ok(())
+}
+
+/// The sensitivities at an analysed pose: no panic, no NaN in `Ok`, and an
+/// `Ok` agrees with num-dual (parameters as dual numbers) to the accuracy
+/// promised, relative to the size of the terms each result is made of.
+fn check_sensitivities<L: Sensitivities<M, 1, K>, const M: usize, const K: usize>(
+    model: &L,
+    motion: &Motion<M, 1>,
+    tally: &RefCell<Tally>,
+) -> Result<(), TestCaseError> {
+    let options = Options::default();
+    let result = catch_unwind(AssertUnwindSafe(|| model.sensitivities(motion, &options)))
+        .map_err(|_| TestCaseError::fail("sensitivities panicked"))?;
+    let s = match result {
+        Ok(s) => s,
+        Err(e) => {
+            tally.borrow_mut().sensitivities_err += 1;
+            prop_assert!(
+                matches!(e, Error::Singular { .. } | Error::NonFiniteValue { .. }),
+                "sensitivities at an analysed pose: {e}"
+            );
+            return Ok(());
+        }
+    };
+    tally.borrow_mut().sensitivities_ok += 1;
+    // num-dual's products underflow or overflow in worlds of extreme scale
+    // (1e300 lengths times 1e-300 rates) where the library's do not: it is
+    // a reference only where every number is within 10^±100.
+    let scale_ok = |x: f64| x == 0.0 || (1e-100..=1e100).contains(&x.abs());
+    let params = model.params();
+    let numbers = params.iter().copied().chain(
+        motion
+            .u
+            .iter()
+            .chain(&motion.v)
+            .chain(&motion.udot)
+            .chain(&motion.vdot)
+            .chain(&motion.uddot)
+            .chain(&motion.vddot)
+            .copied(),
+    );
+    let comparable = numbers.into_iter().all(scale_ok);
+    tally.borrow_mut().sensitivities_compared += usize::from(comparable);
+    let terms = model.sensitivity_terms(
+        &motion.u,
+        &motion.v,
+        &motion.udot,
+        &motion.vdot,
+        &motion.uddot,
+        &motion.vddot,
+    );
+    for j in 0..K {
+        let ours = Column::of(&s, j);
+        prop_assert!(ours.is_finite(), "NaN or ∞ inside Ok: {s:?}");
+        if !comparable {
+            continue;
+        }
+        let dual = catch_unwind(AssertUnwindSafe(|| try_by_dual(model, motion, j)))
+            .map_err(|_| TestCaseError::fail("num-dual's sensitivities panicked"))?;
+        let Some(dual) = dual.filter(Column::is_finite) else {
+            continue;
+        };
+        let sizes = term_sizes(&terms, &s, j);
+        let distance = ours.distance(&dual);
+        for g in 0..4 {
+            prop_assert!(
+                distance[g] <= options.accuracy * sizes[g] + 1e-300,
+                "sensitivity group {g} by {}: ours {ours:?}, num-dual {dual:?} (terms {sizes:?})",
+                L::PARAM_NAMES[j]
+            );
+        }
+    }
     Ok(())
 }
 
 pub(crate) fn report(name: &str, tally: &Tally, seconds: f64) {
     eprintln!(
-        "{name}: {} cases in {seconds:.1} s, {} Ok, errors {:?}, {} checked against the closed form, {} of them clear and guessed near so that only Ok will do; panics 0, NaN in Ok 0, wrong Ok 0, wrong Err 0",
-        tally.cases, tally.ok, tally.errors, tally.checked_closed_form, tally.expected_ok
+        "{name}: {} cases in {seconds:.1} s, {} Ok, errors {:?}, {} checked against the closed form, {} of them clear and guessed near so that only Ok will do; sensitivities {} Ok ({} checked against num-dual), {} refused; panics 0, NaN in Ok 0, wrong Ok 0, wrong Err 0",
+        tally.cases,
+        tally.ok,
+        tally.errors,
+        tally.checked_closed_form,
+        tally.expected_ok,
+        tally.sensitivities_ok,
+        tally.sensitivities_compared,
+        tally.sensitivities_err
     );
 }

@@ -10,7 +10,9 @@
 //! - nothing panics;
 //! - no NaN or ∞ inside an `Ok`;
 //! - an `Ok` is right: ‖Ψ‖∞ meets the tolerance, Ψ_u u̇ + Ψ_v v̇ = 0 and
-//!   method A = method B to the accuracy promised, and a four-bar or
+//!   method A = method B to the accuracy promised, the sensitivities to the
+//!   parameters agree with num-dual's (parameters as dual numbers) to it
+//!   too, and a four-bar or
 //!   slider-crank the law of cosines says cannot be assembled is never
 //!   `Ok`;
 //! - an `Err` is of the right kind: `NonFiniteInput` exactly when an input
