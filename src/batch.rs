@@ -47,7 +47,10 @@
 //! }
 //! ```
 
-use linkage_runtime::{Analysis, Drive, Error, Linkage, Options, SweepOptions, SweepSummary};
+use linkage_runtime::{
+    Analysis, Drive, Error, Linkage, Motion, Options, Sensitivities, Sensitivity, SweepOptions,
+    SweepPose, SweepSummary,
+};
 use nalgebra::SVector;
 #[cfg(feature = "parallel")]
 use rayon::prelude::*;
@@ -98,7 +101,7 @@ where
     L: Linkage<M, F> + Sync,
     A: Send,
     I: Fn(usize) -> A + Sync,
-    P: Fn(&mut A, &linkage_runtime::SweepPose<M, F>) + Sync,
+    P: Fn(&mut A, &SweepPose<M, F>) + Sync,
 {
     each(jobs)
         .enumerate()
@@ -137,6 +140,61 @@ where
         .map(|job| {
             job.model
                 .analyze(&job.u_guess, &job.v, &job.vdot, &job.vddot, options)
+        })
+        .collect()
+}
+
+/// [`sweeps`] with the sensitivities of every pose to the parameters
+/// ([`Sensitivities::sweep_sensitivities_each`]): `on_pose` gets each pose
+/// with its sensitivities, or the reason they are refused there (next to a
+/// singular pose).
+#[allow(clippy::type_complexity)]
+pub fn sweeps_with_sensitivities<L, A, I, P, const M: usize, const F: usize, const K: usize>(
+    jobs: &[SweepJob<L, M, F>],
+    options: &SweepOptions,
+    init: I,
+    on_pose: P,
+) -> Vec<Result<Swept<A, M, F>, Error>>
+where
+    L: Sensitivities<M, F, K> + Sync,
+    A: Send,
+    I: Fn(usize) -> A + Sync,
+    P: Fn(&mut A, &SweepPose<M, F>, Result<Sensitivity<M, K, L::Points>, Error>) + Sync,
+{
+    each(jobs)
+        .enumerate()
+        .map(|(k, job)| {
+            let mut value = init(k);
+            let summary = job.model.sweep_sensitivities_each(
+                &job.u0,
+                &job.drive,
+                options,
+                |pose, sensitivity| on_pose(&mut value, pose, sensitivity),
+            )?;
+            Ok(Swept { value, summary })
+        })
+        .collect()
+}
+
+/// Runs every job's [`Linkage::analyze`] and then
+/// [`Sensitivities::sensitivities`] at the pose found, in parallel.
+#[allow(clippy::type_complexity)]
+pub fn analyses_with_sensitivities<L, const M: usize, const F: usize, const K: usize>(
+    jobs: &[AnalysisJob<L, M, F>],
+    options: &Options,
+) -> Vec<Result<(Analysis<M, F, L::Points>, Sensitivity<M, K, L::Points>), Error>>
+where
+    L: Sensitivities<M, F, K> + Sync,
+    L::Points: Send,
+{
+    each(jobs)
+        .map(|job| {
+            let analysis =
+                job.model
+                    .analyze(&job.u_guess, &job.v, &job.vdot, &job.vddot, options)?;
+            let motion = Motion::of_analysis(&analysis, &job.v, &job.vdot, &job.vddot);
+            let sensitivity = job.model.sensitivities(&motion, options)?;
+            Ok((analysis, sensitivity))
         })
         .collect()
 }

@@ -143,3 +143,69 @@ fn batch_analyses_equal_single_analyses() {
     }
     assert!(batch[7].is_err() && batch[0].is_ok());
 }
+
+/// Sensitivities in a batch: each job's equal, to the bit, what the same
+/// design gives alone; the design that cannot be assembled fails alone.
+#[test]
+fn batch_sensitivities_equal_single_ones() {
+    let designs = designs();
+    let sweeps = batch::sweeps_with_sensitivities(
+        &jobs(),
+        &sweep_options(),
+        |_| (0usize, 0.0f64),
+        |acc, _pose, s| {
+            if let Ok(s) = s {
+                acc.0 += 1;
+                acc.1 += s.u.sum() + s.udot.sum() + s.uddot.sum();
+            }
+        },
+    );
+    for (k, (result, model)) in sweeps.iter().zip(&designs).enumerate() {
+        if k == 7 {
+            assert!(result.is_err());
+            continue;
+        }
+        let job = &jobs()[k];
+        let mut alone = (0usize, 0.0f64);
+        model
+            .sweep_sensitivities_each(&job.u0, &job.drive, &sweep_options(), |_, s| {
+                if let Ok(s) = s {
+                    alone.0 += 1;
+                    alone.1 += s.u.sum() + s.udot.sum() + s.uddot.sum();
+                }
+            })
+            .unwrap();
+        let value = &result.as_ref().unwrap().value;
+        assert!(
+            value.0 > 700,
+            "design {k}: {} poses with sensitivities",
+            value.0
+        );
+        assert_eq!(value.0, alone.0);
+        assert_eq!(value.1.to_bits(), alone.1.to_bits());
+    }
+    let jobs: Vec<AnalysisJob<FourBar, 2, 1>> = designs
+        .iter()
+        .map(|&model| AnalysisJob {
+            model,
+            u_guess: vector![1.2, -0.8],
+            v: vector![0.4],
+            vdot: vector![OMEGA2],
+            vddot: vector![1.0],
+        })
+        .collect();
+    let options = Options::damped();
+    for (k, result) in batch::analyses_with_sensitivities(&jobs, &options)
+        .into_iter()
+        .enumerate()
+    {
+        if k == 7 {
+            assert!(result.is_err());
+            continue;
+        }
+        let (analysis, s) = result.unwrap();
+        let job = &jobs[k];
+        let motion = Motion::of_analysis(&analysis, &job.v, &job.vdot, &job.vddot);
+        assert_eq!(s, job.model.sensitivities(&motion, &options).unwrap());
+    }
+}
