@@ -60,6 +60,10 @@
 //!   [`Linkage::acceleration`], [`Linkage::analyze`] (all of one pose),
 //!   [`Linkage::sweep`] and [`Linkage::sweep_each`] (continuation along a
 //!   drive, through singular poses).
+//! - An implementation of [`Sensitivities`]: the exact derivatives of
+//!   every position, velocity and acceleration, of the coordinates and of
+//!   the points, by each parameter (the struct's `f64` fields, or those
+//!   named by `params = [...]`), at a pose or along a sweep.
 //! - [`watch`]: the dead centres, strokes and extremes along a sweep,
 //!   located in the driver to rounding.
 //! - [`batch`]: many designs or drives at once, in parallel.
