@@ -63,7 +63,7 @@ fn the_worksheets_fourbar_agrees_with_num_dual_around_the_cycle() {
         let theta2 = step as f64 * 10f64.to_radians() + 0.05;
         let (motion, s) = at(&model, u, vector![theta2], vector![OMEGA2], vector![3.0]);
         u = motion.u;
-        agrees_with_dual(&model, &motion, &s, 1e-13);
+        agrees_with_dual(&model, &motion, &s, 2e-14);
     }
 }
 
@@ -78,7 +78,7 @@ fn the_slider_crank_boom_six_bar_and_five_bar_agree_with_num_dual() {
             vector![OMEGA2],
             vector![-2.0],
         );
-        agrees_with_dual(&SLIDER_CRANK, &motion, &s, 1e-13);
+        agrees_with_dual(&SLIDER_CRANK, &motion, &s, 2e-14);
         let (motion, s) = at(
             &SIX_BAR,
             vector![1.2, -0.9, 0.5, -1.0],
@@ -86,7 +86,7 @@ fn the_slider_crank_boom_six_bar_and_five_bar_agree_with_num_dual() {
             vector![1.0],
             vector![0.5],
         );
-        agrees_with_dual(&SIX_BAR, &motion, &s, 1e-13);
+        agrees_with_dual(&SIX_BAR, &motion, &s, 2e-14);
         let (motion, s) = at(
             &FIVE_BAR,
             vector![1.0, 2.0],
@@ -94,7 +94,7 @@ fn the_slider_crank_boom_six_bar_and_five_bar_agree_with_num_dual() {
             vector![1.0, -0.5],
             vector![0.3, 0.2],
         );
-        agrees_with_dual(&FIVE_BAR, &motion, &s, 1e-13);
+        agrees_with_dual(&FIVE_BAR, &motion, &s, 2e-14);
     }
     for length in [0.8, 1.0, 1.2, 1.4] {
         let (motion, s) = at(
@@ -104,13 +104,13 @@ fn the_slider_crank_boom_six_bar_and_five_bar_agree_with_num_dual() {
             vector![0.1],
             vector![0.02],
         );
-        agrees_with_dual(&BOOM, &motion, &s, 1e-13);
+        agrees_with_dual(&BOOM, &motion, &s, 2e-14);
     }
 }
 
 /// Central differences agree to what their step leaves (truncation h²
-/// against rounding ε/h): about 1e-9 of the term at h = 1e-5, and far
-/// worse at a step too small or too large — the digits exact derivatives
+/// against rounding ε/h): 7e-11 to 7e-10 of the terms at h = 1e-5 (measured
+/// 2026-11-23), 7e-5 to 7e-4 at h = 1e-2 — the digits exact derivatives
 /// keep.
 #[test]
 fn central_differences_agree_to_their_own_error() {
@@ -167,18 +167,15 @@ fn scaling_every_length_changes_no_angle() {
         u = a.u;
         let motion = Motion::of_analysis(&a, &vector![theta2], &vector![OMEGA2], &vector![2.0]);
         let s = model.sensitivities(&motion, &options).unwrap();
-        for (name, matrix, scale) in [
-            ("θ", s.u, 1.0),
-            ("ω", s.udot, OMEGA2),
-            ("α", s.uddot, OMEGA2 * OMEGA2),
-        ] {
+        for (name, matrix) in [("θ", s.u), ("ω", s.udot), ("α", s.uddot)] {
             let sum = matrix * l;
-            // Each term lᵢ ∂θ/∂lᵢ is of order one (per unit of the rate).
+            // To rounding of the largest term lᵢ ∂θ/∂lᵢ (measured: at most
+            // 3ε of it).
             let terms = (0..4)
                 .map(|j| (matrix.column(j) * l[j]).amax())
                 .fold(0.0, f64::max);
             assert!(
-                sum.amax() <= 4.0 * f64::EPSILON * terms.max(scale),
+                sum.amax() <= 6.0 * f64::EPSILON * terms,
                 "Σ l ∂{name}/∂l = {sum:?} at θ2 = {theta2} (terms {terms})"
             );
         }
@@ -226,8 +223,9 @@ fn reference(mechanism: &str) -> Reference {
 /// The library's sensitivities of `model` against the 50-digit references:
 /// the pose first (so that the branch is the reference's), then every
 /// derivative of every coordinate and point by every parameter, each to
-/// 1e-12 of the largest term of its row (the quantity's derivatives by all
-/// the parameters at that order). Returns the worst figure.
+/// 1e-13 of the largest term of its row (the quantity's derivatives by all
+/// the parameters at that order; the accuracy table's policy is 1e-12, the
+/// worst measured 1.8e-14). Returns the worst figure.
 fn against_reference<L, const M: usize, const K: usize>(
     model: &L,
     mechanism: &str,
@@ -290,7 +288,7 @@ where
         for order in 0..3 {
             let error = (got[order] - expected[order]).abs() / scale(order);
             assert!(
-                error <= 1e-12,
+                error <= 1e-13,
                 "{mechanism}: {quantity} by {param}, order {order}: {} against {} ({error:.1e} of its terms)",
                 got[order],
                 expected[order]
@@ -311,7 +309,7 @@ where
 #[test]
 fn the_worksheets_fourbar_against_the_50_digit_references() {
     let worst = against_reference(&FourBar::WORKSHEET, "fourbar", vector![1.2, -0.9]);
-    assert!(worst <= 1e-12);
+    assert!(worst <= 1e-14, "{worst:e}");
 }
 
 #[test]

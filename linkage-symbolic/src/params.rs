@@ -10,9 +10,7 @@ use crate::lower::{Lowered, unraw};
 /// Sets `lowered.design`; every mistake of `params` is recorded in
 /// `errors` with the span of the name.
 pub fn resolve(input: &Input, lowered: &mut Lowered, errors: &mut Errors) {
-    let used: Vec<bool> = (0..lowered.params.len())
-        .map(|k| uses(lowered, k as u16))
-        .collect();
+    let used = used_params(lowered);
     let Some(list) = &input.params else {
         lowered.design = (0..lowered.params.len() as u16)
             .filter(|&k| used[k as usize])
@@ -92,15 +90,19 @@ pub fn resolve(input: &Input, lowered: &mut Lowered, errors: &mut Errors) {
     lowered.design = design;
 }
 
-/// Whether the closure equations or a point depend on the parameter.
-fn uses(lowered: &mut Lowered, k: u16) -> bool {
+/// Which parameters the closure equations or a point depend on.
+fn used_params(lowered: &mut Lowered) -> Vec<bool> {
     let roots: Vec<_> = lowered
         .closure
         .iter()
         .copied()
         .chain(lowered.points.iter().flat_map(|(_, x, y)| [*x, *y]))
         .collect();
-    roots
-        .into_iter()
-        .any(|r| lowered.dag.diff(r, Symbol::Param(k)) != Dag::ZERO)
+    (0..lowered.params.len() as u16)
+        .map(|k| {
+            roots
+                .iter()
+                .any(|&r| lowered.dag.diff(r, Symbol::Param(k)) != Dag::ZERO)
+        })
+        .collect()
 }
