@@ -67,6 +67,18 @@ fn each<T>(jobs: &[T]) -> std::slice::Iter<'_, T> {
     jobs.iter()
 }
 
+/// Runs `f` on every job in parallel, the results in the jobs' order: the
+/// general form of the functions below, for work of your own on many
+/// designs (a Monte Carlo sample each, an objective per candidate).
+pub fn map<T, R, G>(jobs: &[T], f: G) -> Vec<R>
+where
+    T: Sync,
+    R: Send,
+    G: Fn(&T) -> R + Send + Sync,
+{
+    each(jobs).map(f).collect()
+}
+
 /// One sweep of a batch: a model (a parameter set), the guess of its
 /// starting pose and its drive.
 #[derive(Clone, Debug, PartialEq)]

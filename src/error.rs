@@ -14,6 +14,8 @@ pub enum NameKind {
     Coordinate,
     /// A body of a force analysis.
     Body,
+    /// A parameter of the model (`params = [...]`).
+    Parameter,
 }
 
 impl fmt::Display for NameKind {
@@ -22,6 +24,7 @@ impl fmt::Display for NameKind {
             NameKind::Point => "point",
             NameKind::Coordinate => "coordinate",
             NameKind::Body => "body",
+            NameKind::Parameter => "parameter",
         })
     }
 }

@@ -1,0 +1,191 @@
+//! The Monte Carlo check of the linear estimate: designs drawn within the
+//! tolerances, analysed in parallel through [`batch`](crate::batch).
+
+use super::output::{Resolved, TolerancePose};
+use super::{Output, Statistics, ToleranceError, Tolerances};
+use crate::batch;
+use linkage_runtime::{Drive, Error, Event, Motion, Sensitivities, SweepOptions};
+use nalgebra::SVector;
+
+/// A Monte Carlo run: how many samples, and the seed they are drawn from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct MonteCarlo {
+    pub samples: usize,
+    pub seed: u64,
+}
+
+impl MonteCarlo {
+    /// Sample `index` of the run: `model` with its parameters moved by
+    /// [`Tolerances::deviation`].
+    pub fn sample<L, const M: usize, const F: usize, const K: usize>(
+        &self,
+        model: &L,
+        tolerances: &Tolerances<K>,
+        index: usize,
+    ) -> L
+    where
+        L: Sensitivities<M, F, K> + Clone,
+    {
+        let mut sample = model.clone();
+        sample.set_params(&(model.params() + tolerances.deviation(self.seed, index)));
+        sample
+    }
+}
+
+/// Runs `evaluate` on every sample of the run, in parallel; the results
+/// come in the samples' order. The general form, for a quantity of your
+/// own (the stroke: a sweep and [`locate`](crate::watch::locate) per
+/// sample).
+pub fn monte_carlo<L, T, G, const M: usize, const F: usize, const K: usize>(
+    model: &L,
+    tolerances: &Tolerances<K>,
+    run: &MonteCarlo,
+    evaluate: G,
+) -> Result<Vec<T>, ToleranceError>
+where
+    L: Sensitivities<M, F, K> + Clone + Sync,
+    T: Send,
+    G: Fn(&L) -> T + Send + Sync,
+{
+    if run.samples == 0 {
+        return Err(ToleranceError::NoSamples);
+    }
+    let indices: Vec<usize> = (0..run.samples).collect();
+    Ok(batch::map(&indices, |&i| {
+        evaluate(&run.sample(model, tolerances, i))
+    }))
+}
+
+/// Why a sample was left out of a cycle's statistics.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Failure<const M: usize, const F: usize> {
+    /// It cannot be assembled, or its sweep failed.
+    Kinematics(Error),
+    /// It does not follow the drive as the nominal design does: a limit
+    /// position ends it, or it meets singular poses the nominal does not
+    /// (the first such event).
+    Singular(Option<Event<M, F>>),
+}
+
+/// The Monte Carlo statistics of every output at every step of the drive.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CycleSamples<const M: usize, const F: usize> {
+    /// The outputs' names.
+    pub names: Vec<String>,
+    /// The nominal design's driver at each step (`None` at a step it has
+    /// no pose for).
+    pub v: Vec<Option<SVector<f64, F>>>,
+    /// `statistics[o][k]`: output `o` at step `k`, over the samples that
+    /// pass (non-finite values left out).
+    pub statistics: Vec<Vec<Statistics>>,
+    /// The samples drawn.
+    pub samples: usize,
+    /// The samples left out, by index, and why.
+    pub failures: Vec<(usize, Failure<M, F>)>,
+}
+
+/// The samples analysed together (their values held before they are
+/// folded, in order, into the statistics).
+const CHUNK: usize = 1024;
+
+/// Sweeps every sample of the run along the nominal design's drive and
+/// gathers each output's statistics at each step, to set beside
+/// [`cycle`](super::cycle)'s linear estimate. A path's deviation is
+/// measured from the nominal point at the same step. The result is the
+/// same on any number of threads.
+pub fn monte_carlo_cycle<L, const M: usize, const F: usize, const K: usize>(
+    model: &L,
+    u0: &SVector<f64, M>,
+    drive: &Drive<F>,
+    options: &SweepOptions,
+    outputs: &[Output<'_, M, F, K>],
+    tolerances: &Tolerances<K>,
+    run: &MonteCarlo,
+) -> Result<CycleSamples<M, F>, ToleranceError>
+where
+    L: Sensitivities<M, F, K> + Clone + Sync,
+{
+    if run.samples == 0 {
+        return Err(ToleranceError::NoSamples);
+    }
+    let resolved = outputs
+        .iter()
+        .map(|o| o.resolve::<L>())
+        .collect::<Result<Vec<_>, _>>()?;
+    let sweep = model.sweep(u0, drive, options)?;
+    let steps = sweep.poses.iter().map(|p| p.step + 1).max().unwrap_or(0);
+    let mut nominal: Vec<Option<TolerancePose<M, F, K>>> = vec![None; steps];
+    for pose in &sweep.poses {
+        nominal[pose.step] = Some(TolerancePose::plain(model, &Motion::of_sweep_pose(pose)));
+    }
+    let mut statistics = vec![vec![Statistics::default(); steps]; outputs.len()];
+    let mut failures = Vec::new();
+    let indices: Vec<usize> = (0..run.samples).collect();
+    for chunk in indices.chunks(CHUNK) {
+        let values = batch::map(chunk, |&i| {
+            let sample = run.sample(model, tolerances, i);
+            sample_values(
+                &sample,
+                u0,
+                drive,
+                options,
+                &resolved,
+                &nominal,
+                sweep.events.len(),
+            )
+        });
+        for (&i, values) in chunk.iter().zip(values) {
+            match values {
+                Ok(values) => {
+                    for (k, at_step) in values.chunks(outputs.len()).enumerate() {
+                        for (o, &y) in at_step.iter().enumerate() {
+                            if y.is_finite() {
+                                statistics[o][k].push(y);
+                            }
+                        }
+                    }
+                }
+                Err(why) => failures.push((i, why)),
+            }
+        }
+    }
+    Ok(CycleSamples {
+        names: outputs.iter().map(|o| o.name().to_owned()).collect(),
+        v: nominal.iter().map(|p| p.as_ref().map(|p| p.v)).collect(),
+        statistics,
+        samples: run.samples,
+        failures,
+    })
+}
+
+/// One sample's outputs at every step (`outputs` values per step, NaN
+/// where it or the nominal has no pose), or why it is left out.
+fn sample_values<L, const M: usize, const F: usize, const K: usize>(
+    sample: &L,
+    u0: &SVector<f64, M>,
+    drive: &Drive<F>,
+    options: &SweepOptions,
+    outputs: &[Resolved<'_, M, F, K>],
+    nominal: &[Option<TolerancePose<M, F, K>>],
+    nominal_events: usize,
+) -> Result<Vec<f64>, Failure<M, F>>
+where
+    L: Sensitivities<M, F, K>,
+{
+    let mut values = vec![f64::NAN; nominal.len() * outputs.len()];
+    let summary = sample
+        .sweep_each(u0, drive, options, |pose| {
+            let Some(Some(reference)) = nominal.get(pose.step) else {
+                return;
+            };
+            let at = TolerancePose::plain(sample, &Motion::of_sweep_pose(pose));
+            for (o, output) in outputs.iter().enumerate() {
+                values[pose.step * outputs.len() + o] = output.at(&at, reference).re;
+            }
+        })
+        .map_err(Failure::Kinematics)?;
+    if !summary.complete || summary.events.len() != nominal_events {
+        return Err(Failure::Singular(summary.events.into_iter().next()));
+    }
+    Ok(values)
+}
