@@ -17,6 +17,7 @@ run() { # example, folder, [cargo args]
 run fourbar docs/figures/fourbar
 run shaper docs/figures/shaper
 run cam docs/figures/cam
+run tolerance docs/figures/tolerance
 run stability docs/figures
 run expansion_cost docs/figures -p linkage-macros
 if [[ ${1:-} == --speed ]]; then

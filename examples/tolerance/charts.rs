@@ -7,6 +7,8 @@ use linkage::mechanisms::FourBar;
 use linkage::prelude::*;
 use linkage::tolerance::Band;
 use plotters::coord::Shift;
+use plotters::coord::ranged1d::ValueFormatter;
+use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 
 type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
@@ -354,7 +356,8 @@ fn sigma_panel(area: &Area<'_>, study: &CycleStudy, name: &str, label: &str, sca
     let top = values().fold(0.0, f64::max);
     let bottom = values().fold(f64::INFINITY, f64::min);
     let failed = study.samples.failures.len();
-    let mut chart = ChartBuilder::on(area)
+    let mut builder = ChartBuilder::on(area);
+    builder
         .caption(
             format!(
                 "{} ({failed} of {} designs lock up)",
@@ -364,8 +367,29 @@ fn sigma_panel(area: &Area<'_>, study: &CycleStudy, name: &str, label: &str, sca
         )
         .margin(12)
         .x_label_area_size(40)
-        .y_label_area_size(64)
-        .build_cartesian_2d(0.0..360.0, (bottom * 0.7..top * 1.6).log_scale())?;
+        .y_label_area_size(64);
+    // A log axis where σ spans a decade or more, else a linear one (whose
+    // ticks can be read).
+    if top / bottom > 10.0 {
+        let chart =
+            builder.build_cartesian_2d(0.0..360.0, (bottom * 0.7..top * 1.6).log_scale())?;
+        sigma_series(chart, label, linear, sampled)
+    } else {
+        let chart = builder.build_cartesian_2d(0.0..360.0, 0.0..top * 1.25)?;
+        sigma_series(chart, label, linear, sampled)
+    }
+}
+
+/// The linear σ as a line and the Monte Carlo σ as circles, on `chart`.
+fn sigma_series<'a, Y>(
+    mut chart: ChartContext<'a, SVGBackend<'a>, Cartesian2d<RangedCoordf64, Y>>,
+    label: &str,
+    linear: Vec<(f64, f64)>,
+    sampled: Vec<(f64, f64)>,
+) -> Drawn
+where
+    Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
+{
     chart
         .configure_mesh()
         .light_line_style(WHITE)

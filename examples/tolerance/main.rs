@@ -37,7 +37,7 @@ use studies::{CycleStudy, Located};
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let folder = output::folder("tolerance")?;
     let worksheet = studies::four_bar("the worksheet's four-bar", 50.0)?;
-    let near_limit = studies::four_bar("coupler 30.3 mm, near the Grashof limit", 30.3)?;
+    let near_limit = studies::four_bar("coupler 30.3 mm: near the Grashof limit", 30.3)?;
     let shaper = studies::shaper()?;
 
     println!("{}", report(&worksheet));
@@ -152,7 +152,7 @@ fn csv(studies: &[&CycleStudy]) -> String {
                 let mc = &study.samples.statistics[o][k];
                 let _ = writeln!(
                     out,
-                    "{},{},{:.1},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{}",
+                    "{},{},{:.1},{:.9e},{:.6e},{:.6e},{:.6e},{:.9e},{:.6e},{:.9e},{:.9e},{}",
                     study.name,
                     band.name,
                     v[0].to_degrees(),
