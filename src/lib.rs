@@ -107,6 +107,7 @@ pub mod ground;
 pub mod machine;
 pub mod mechanisms;
 mod numerics;
+mod random;
 pub mod tolerance;
 mod vectors;
 pub mod watch;

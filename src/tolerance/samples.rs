@@ -2,50 +2,12 @@
 //! alone, so that a run gives the same samples on any number of threads
 //! and any sample can be drawn again by itself.
 //!
-//! A SplitMix64 stream per sample (Steele, Lea and Flood 2014: a 64-bit
-//! counter through a bijective mixer, the generator that seeds the
-//! xoshiro family), started at a state mixed from the seed and the index;
-//! uniform numbers in (0, 1) from its top 53 bits, normal ones by the
-//! Box–Muller transform.
+//! A SplitMix64 stream per sample ([`crate::random`]), started at a state
+//! mixed from the seed and the index.
 
 use super::{Tolerance, Tolerances};
+use crate::random::SplitMix64;
 use nalgebra::SVector;
-use std::f64::consts::TAU;
-
-/// The SplitMix64 generator.
-struct SplitMix64(u64);
-
-impl SplitMix64 {
-    const GOLDEN: u64 = 0x9e37_79b9_7f4a_7c15;
-
-    /// The stream of sample `index` of the run `seed`.
-    fn of_sample(seed: u64, index: u64) -> SplitMix64 {
-        let mut mixer = SplitMix64(seed);
-        let start = mixer.next() ^ index.wrapping_mul(Self::GOLDEN);
-        let mut stream = SplitMix64(start);
-        stream.next();
-        stream
-    }
-
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(Self::GOLDEN);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in the open interval (0, 1).
-    fn uniform(&mut self) -> f64 {
-        ((self.next() >> 11) as f64 + 0.5) * (1.0 / (1u64 << 53) as f64)
-    }
-
-    /// Standard normal (Box–Muller, one of the pair).
-    fn normal(&mut self) -> f64 {
-        let (a, b) = (self.uniform(), self.uniform());
-        (-2.0 * a.ln()).sqrt() * (TAU * b).cos()
-    }
-}
 
 impl<const K: usize> Tolerances<K> {
     /// The deviation of the parameters in Monte Carlo sample `index` of the
@@ -62,17 +24,6 @@ impl<const K: usize> Tolerances<K> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn splitmix64_gives_the_reference_sequence() {
-        // The first outputs of SplitMix64 from state 0 (0xe220a8397b1dcdaf
-        // is the commonly quoted first one; the others from a Python
-        // transcription of the authors' splitmix64.c).
-        let mut g = SplitMix64(0);
-        assert_eq!(g.next(), 0xe220_a839_7b1d_cdaf);
-        assert_eq!(g.next(), 0x6e78_9e6a_a1b9_65f4);
-        assert_eq!(g.next(), 0x06c4_5d18_8009_454f);
-    }
 
     #[test]
     fn samples_fill_their_bands_with_the_right_moments() {
