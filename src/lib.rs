@@ -108,6 +108,7 @@ pub mod machine;
 pub mod mechanisms;
 mod numerics;
 mod random;
+pub mod synthesis;
 pub mod tolerance;
 mod vectors;
 pub mod watch;

@@ -1,0 +1,296 @@
+//! A Levenberg–Marquardt least-squares solver with bounds, driven by exact
+//! Jacobians.
+//!
+//! Why our own: the `levenberg-marquardt` crate (the nalgebra-native one)
+//! is built on nalgebra 0.34 while linkage is on 0.35 (num-dual's), so
+//! every residual and Jacobian would cross between two nalgebras, and it
+//! has no bounds; `argmin` has Gauss–Newton but no bounded
+//! Levenberg–Marquardt. The problems here are small (tens of unknowns),
+//! so a dense solver is the right tool.
+//!
+//! The method (Moré 1978, "The Levenberg–Marquardt algorithm:
+//! implementation and theory", with Nielsen's damping update): minimise
+//! ½‖r(x)‖² for lower ≤ x ≤ upper. At x, with J = ∂r/∂x and g = Jᵀr, the
+//! unknowns held at a bound by the gradient (at the lower bound with
+//! g > 0, at the upper with g < 0) are fixed; the others take the step
+//! (JᵀJ + λ D) δ = −g, D the largest diagonal of JᵀJ seen (scale
+//! invariance); the trial x + δ is projected onto the bounds and accepted
+//! if the actual reduction is at least 1e-4 of the one the model predicts.
+//! λ shrinks by max(1/3, 1 − (2ρ − 1)³) after a success and doubles
+//! (doubling its factor) after a failure. A trial the model cannot be
+//! evaluated at (a design that does not assemble) is a failure.
+
+use nalgebra::{DMatrix, DVector};
+
+/// The residuals and their Jacobian at a point, and whatever the
+/// evaluation carries to the next (the poses, to start the next solves
+/// from).
+pub(crate) struct Evaluation<S> {
+    pub residuals: DVector<f64>,
+    pub jacobian: DMatrix<f64>,
+    pub state: S,
+}
+
+/// When to stop.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Stopping {
+    /// Stop when ½‖r‖² falls to this.
+    pub cost: f64,
+    /// Stop when the projected gradient's largest entry falls to this
+    /// times max(1, ‖r‖).
+    pub gradient: f64,
+    /// Stop when a step changes no unknown by more than this, relative to
+    /// max(1, |x|).
+    pub step: f64,
+    /// The most evaluations.
+    pub evaluations: usize,
+}
+
+impl Default for Stopping {
+    fn default() -> Stopping {
+        Stopping {
+            cost: 1e-30,
+            gradient: 1e-14,
+            step: 1e-15,
+            evaluations: 400,
+        }
+    }
+}
+
+/// Where the solver stopped.
+pub(crate) struct Minimum<S> {
+    pub x: DVector<f64>,
+    pub cost: f64,
+    pub residuals: DVector<f64>,
+    pub state: S,
+    pub evaluations: usize,
+}
+
+/// Minimises ½‖r(x)‖² within the bounds from `x0` (projected onto them),
+/// whose evaluation is `first`; `None` if no evaluation succeeds.
+pub(crate) fn minimize<S>(
+    first: Evaluation<S>,
+    x0: DVector<f64>,
+    lower: &DVector<f64>,
+    upper: &DVector<f64>,
+    stopping: &Stopping,
+    mut evaluate: impl FnMut(&DVector<f64>, &S) -> Option<Evaluation<S>>,
+) -> Minimum<S> {
+    let n = x0.len();
+    let mut x = x0;
+    let mut at = first;
+    let mut cost = 0.5 * at.residuals.norm_squared();
+    let mut scale = DVector::<f64>::zeros(n);
+    let (mut lambda, mut growth) = (None::<f64>, 2.0);
+    let mut evaluations = 1;
+    let mut iterations = 0;
+    while evaluations < stopping.evaluations && cost > stopping.cost {
+        let j = &at.jacobian;
+        let jtj = j.transpose() * j;
+        let g = j.transpose() * &at.residuals;
+        for i in 0..n {
+            scale[i] = scale[i].max(jtj[(i, i)]).max(f64::MIN_POSITIVE);
+        }
+        // The projected gradient: what the bounds let the descent use.
+        let projected = DVector::from_fn(n, |i, _| x[i] - (x[i] - g[i]).clamp(lower[i], upper[i]));
+        if projected.amax() <= stopping.gradient * at.residuals.norm().max(1.0) {
+            break;
+        }
+        let held = |i: usize| (x[i] <= lower[i] && g[i] > 0.0) || (x[i] >= upper[i] && g[i] < 0.0);
+        let mut free: Vec<usize> = (0..n).filter(|&i| !held(i)).collect();
+        let lam = *lambda.get_or_insert_with(|| 1e-3 * scale.max());
+        // The step on the free unknowns; an unknown at a bound that the step
+        // would push out is held too, and the step taken again without it.
+        let step = loop {
+            let Some(step) = damped_step(&jtj, &g, &scale, lam, &free, n) else {
+                break None;
+            };
+            let before = free.len();
+            free.retain(|&i| {
+                !((x[i] <= lower[i] && step[i] < 0.0) || (x[i] >= upper[i] && step[i] > 0.0))
+            });
+            if free.len() == before {
+                break Some(step);
+            }
+        };
+        let Some(step) = step else {
+            lambda = Some(lam * growth);
+            growth *= 2.0;
+            continue;
+        };
+        let promise = |s: &DVector<f64>| -(g.dot(s) + 0.5 * s.dot(&(&jtj * s)));
+        let s = within_bounds(&x, &step, lower, upper, &promise);
+        let trial = &x + &s;
+        let predicted = promise(&s);
+        let small =
+            |s: &DVector<f64>| (0..n).all(|i| s[i].abs() <= stopping.step * x[i].abs().max(1.0));
+        // A step too small to change x, or one that promises no reduction:
+        // converged, once λ is as small as it goes (a step is small because λ
+        // is large only until λ drops). The reduction itself is computed
+        // without cancellation (below), so tiny promises are still tested.
+        if small(&s) || predicted <= 0.0 {
+            if lam <= 1e-12 * scale.max() {
+                break;
+            }
+            lambda = Some((lam * 1e-3).max(1e-12 * scale.max()));
+            iterations += 1;
+            if iterations > 4 * stopping.evaluations {
+                break;
+            }
+            continue;
+        }
+        evaluations += 1;
+        let accepted = evaluate(&trial, &at.state).and_then(|next| {
+            let trial_cost = 0.5 * next.residuals.norm_squared();
+            // ½(‖r‖² − ‖r₊‖²) as ½(r − r₊)·(r + r₊): the reduction without
+            // the cancellation of two nearly equal costs.
+            let reduction =
+                0.5 * (&at.residuals - &next.residuals).dot(&(&at.residuals + &next.residuals));
+            let rho = reduction / predicted;
+            (predicted > 0.0 && rho > 1e-4 && trial_cost.is_finite())
+                .then_some((next, trial_cost, rho))
+        });
+        match accepted {
+            Some((next, trial_cost, rho)) => {
+                x = trial;
+                at = next;
+                cost = trial_cost;
+                lambda = Some(lam * (1.0 / 3.0f64).max(1.0 - (2.0 * rho - 1.0).powi(3)));
+                growth = 2.0;
+            }
+            None => {
+                lambda = Some(lam * growth);
+                growth *= 2.0;
+            }
+        }
+    }
+    Minimum {
+        x,
+        cost,
+        residuals: at.residuals,
+        state: at.state,
+        evaluations,
+    }
+}
+
+/// The step kept within the bounds, projected onto them or cut short at
+/// the first it meets, whichever the model promises more from (a projected
+/// Gauss–Newton step can turn uphill where a bound cuts it; the cut-short
+/// one stays on the step's descent direction).
+fn within_bounds(
+    x: &DVector<f64>,
+    step: &DVector<f64>,
+    lower: &DVector<f64>,
+    upper: &DVector<f64>,
+    promise: &impl Fn(&DVector<f64>) -> f64,
+) -> DVector<f64> {
+    let n = x.len();
+    let projected = DVector::from_fn(n, |i, _| (x[i] + step[i]).clamp(lower[i], upper[i]) - x[i]);
+    let fraction = (0..n)
+        .map(|i| {
+            let room = if step[i] > 0.0 {
+                upper[i] - x[i]
+            } else {
+                lower[i] - x[i]
+            };
+            if step[i] != 0.0 {
+                (room / step[i]).clamp(0.0, 1.0)
+            } else {
+                1.0
+            }
+        })
+        .fold(1.0, f64::min);
+    let cut = step * fraction;
+    if promise(&cut) > promise(&projected) {
+        cut
+    } else {
+        projected
+    }
+}
+
+/// The step on the free unknowns: (JᵀJ + λD) δ = −g restricted to them,
+/// zero on the held ones; `None` if the system is not positive definite.
+fn damped_step(
+    jtj: &DMatrix<f64>,
+    g: &DVector<f64>,
+    scale: &DVector<f64>,
+    lambda: f64,
+    free: &[usize],
+    n: usize,
+) -> Option<DVector<f64>> {
+    let k = free.len();
+    let system = DMatrix::from_fn(k, k, |a, b| {
+        jtj[(free[a], free[b])] + if a == b { lambda * scale[free[a]] } else { 0.0 }
+    });
+    let rhs = DVector::from_fn(k, |a, _| -g[free[a]]);
+    let solved = system.cholesky()?.solve(&rhs);
+    let mut step = DVector::zeros(n);
+    for (a, &i) in free.iter().enumerate() {
+        step[i] = solved[a];
+    }
+    step.iter().all(|x| x.is_finite()).then_some(step)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Rosenbrock's function as least squares: r = (10(x₂ − x₁²), 1 − x₁).
+    fn rosenbrock(x: &DVector<f64>, _: &()) -> Option<Evaluation<()>> {
+        Some(Evaluation {
+            residuals: DVector::from_vec(vec![10.0 * (x[1] - x[0] * x[0]), 1.0 - x[0]]),
+            jacobian: DMatrix::from_row_slice(2, 2, &[-20.0 * x[0], 10.0, -1.0, 0.0]),
+            state: (),
+        })
+    }
+
+    #[test]
+    fn finds_rosenbrocks_minimum_from_the_classic_start() {
+        let x0 = DVector::from_vec(vec![-1.2, 1.0]);
+        let wide = DVector::from_element(2, 1e9);
+        let first = rosenbrock(&x0, &()).unwrap();
+        let found = minimize(first, x0, &-&wide, &wide, &Stopping::default(), rosenbrock);
+        assert!(
+            (found.x[0] - 1.0).abs() < 1e-12 && (found.x[1] - 1.0).abs() < 1e-12,
+            "{}",
+            found.x
+        );
+        assert!(found.evaluations < 100, "{}", found.evaluations);
+    }
+
+    #[test]
+    fn stops_on_an_active_bound_at_the_constrained_minimum() {
+        // With x₁ ≤ 0.5 the minimum is on the bound: x₁ = 0.5, x₂ = 0.25.
+        let x0 = DVector::from_vec(vec![-1.2, 1.0]);
+        let lower = DVector::from_element(2, -10.0);
+        let upper = DVector::from_vec(vec![0.5, 10.0]);
+        let first = rosenbrock(&x0, &()).unwrap();
+        let found = minimize(first, x0, &lower, &upper, &Stopping::default(), rosenbrock);
+        assert_eq!(found.x[0], 0.5);
+        assert!(
+            (found.x[1] - 0.25).abs() < 1e-12,
+            "{} after {}",
+            found.x,
+            found.evaluations
+        );
+        assert!((found.cost - 0.125).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_trial_that_cannot_be_evaluated_only_shortens_the_step() {
+        // The residual is undefined for x < 0.2 (a design that does not
+        // assemble): the solver must still find the root x = 0.25 of x² − 1/16.
+        let evaluate = |x: &DVector<f64>, _: &()| {
+            (x[0] >= 0.2).then(|| Evaluation {
+                residuals: DVector::from_element(1, x[0] * x[0] - 0.0625),
+                jacobian: DMatrix::from_element(1, 1, 2.0 * x[0]),
+                state: (),
+            })
+        };
+        let x0 = DVector::from_element(1, 3.0);
+        let wide = DVector::from_element(1, 1e9);
+        let first = evaluate(&x0, &()).unwrap();
+        let found = minimize(first, x0, &-&wide, &wide, &Stopping::default(), evaluate);
+        assert!((found.x[0] - 0.25).abs() < 1e-14, "{}", found.x);
+    }
+}

@@ -1,0 +1,5 @@
+//! Synthesis: mechanisms designed by exact gradients.
+
+mod least_squares;
+
+pub use least_squares::Stopping;
