@@ -60,7 +60,6 @@ impl Default for Stopping {
 /// Where the solver stopped.
 pub(crate) struct Minimum<S> {
     pub x: DVector<f64>,
-    pub cost: f64,
     pub residuals: DVector<f64>,
     pub state: S,
     pub evaluations: usize,
@@ -166,7 +165,6 @@ pub(crate) fn minimize<S>(
     }
     Minimum {
         x,
-        cost,
         residuals: at.residuals,
         state: at.state,
         evaluations,
@@ -273,7 +271,7 @@ mod tests {
             found.x,
             found.evaluations
         );
-        assert!((found.cost - 0.125).abs() < 1e-12);
+        assert!((0.5 * found.residuals.norm_squared() - 0.125).abs() < 1e-12);
     }
 
     #[test]

@@ -1,5 +1,77 @@
-//! Synthesis: mechanisms designed by exact gradients.
+//! Synthesis: mechanisms designed by exact gradients, for any mechanism
+//! written with the attribute.
+//!
+//! A [`Problem`] says what is matched — a point's path through target
+//! points ([`Problem::path`]), a coordinate as a function of the driver
+//! ([`Problem::function`]), a body's position and angle
+//! ([`Problem::motion`]) — which parameters are free and within which
+//! bounds ([`Problem::free`]), and whether the driver at each target is
+//! prescribed or free ([`Timing`]). Its residuals have exact Jacobians:
+//! each target's pose is solved by Newton, and the sensitivities
+//! ([`Sensitivities`](crate::Sensitivities)) give the columns of the free
+//! parameters, the velocity at unit driver speed the column of a free
+//! driver.
+//!
+//! [`synthesize`] solves it from many random starts in parallel (through
+//! [`batch`](crate::batch)) with a bounded Levenberg–Marquardt solver, and
+//! returns only **certified** designs: a continuation sweep over the whole
+//! driver range ([`Requirements`]) must assemble everywhere, meet no
+//! singular pose, reach every target on the branch it was designed on and
+//! in the targets' order, and keep the transmission angle and the
+//! designer's checks (a Grashof type). A candidate that fails is reported
+//! with its [`Defect`], never returned as a design.
 
+mod certify;
 mod least_squares;
+mod problem;
+mod residuals;
+mod search;
 
+pub use certify::{Defect, DesignCheck, Range, Requirements, TransmissionAngle, certify};
 pub use least_squares::Stopping;
+pub use problem::{Problem, Timing};
+pub use search::{Candidate, Search, Synthesis, synthesize};
+
+use crate::error::UnknownName;
+use linkage_runtime::Error;
+
+/// A synthesis problem that cannot be posed or solved.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum SynthesisError {
+    /// A parameter, point or coordinate the model does not have.
+    UnknownName(UnknownName),
+    /// A free parameter's bounds are empty or not finite.
+    EmptyBounds {
+        parameter: String,
+        lower: f64,
+        upper: f64,
+    },
+    /// No targets.
+    NoTargets,
+    /// A target or a prescribed driver is not finite.
+    NonFiniteTarget,
+    /// Prescribed drivers and targets differ in number.
+    Timing { targets: usize, drivers: usize },
+    /// No parameter is free.
+    NothingFree,
+    /// Precision points: more residuals than unknowns, which the design
+    /// cannot meet in general.
+    TooManyTargets { residuals: usize, unknowns: usize },
+    /// The solver's options are not usable.
+    Options(Error),
+}
+
+crate::error::error_impls! {
+    SynthesisError {
+        Self::UnknownName(inner) => ("{inner}"),
+        Self::EmptyBounds { parameter, lower, upper } => ("the bounds [{lower}, {upper}] of `{parameter}` are empty or not finite"),
+        Self::NoTargets => ("a synthesis problem needs at least one target"),
+        Self::NonFiniteTarget => ("a target or a prescribed driver is not finite"),
+        Self::Timing { targets, drivers } => ("{targets} targets but {drivers} prescribed drivers"),
+        Self::NothingFree => ("no parameter is free: free at least one with Problem::free"),
+        Self::TooManyTargets { residuals, unknowns } => ("{residuals} precision-point equations but only {unknowns} unknowns: the design cannot meet them all (fit them by least squares instead)"),
+        Self::Options(inner) => ("the options: {inner}"),
+    }
+    wraps { UnknownName(UnknownName), Options(Error) }
+}

@@ -1,0 +1,291 @@
+//! A synthesis problem: which parameters are free (within bounds), what is
+//! matched (a point's path, a coordinate as a function of the driver, a
+//! body's position and angle), at which targets, with the driver at each
+//! target prescribed or free.
+
+use super::SynthesisError;
+use crate::error::{NameKind, UnknownName};
+use linkage_runtime::{Linkage, Sensitivities};
+use nalgebra::{SVector, Vector2};
+
+/// When the mechanism reaches each target.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Timing {
+    /// At these driver values (one per target).
+    Prescribed(Vec<f64>),
+    /// Whenever it can: each target's driver is an unknown too (first
+    /// guessed evenly spread over a revolution, in the targets' order).
+    Free,
+}
+
+/// What is matched at the targets.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Task {
+    /// A point's position: two residuals per target.
+    Path { point: usize },
+    /// A coordinate of u: one residual per target.
+    Function { coordinate: usize },
+    /// A point's position and a coordinate (the body's angle), the angle's
+    /// residual times `length` so that both are lengths: three per target.
+    Motion {
+        point: usize,
+        angle: usize,
+        length: f64,
+    },
+}
+
+impl Task {
+    /// Residuals per target.
+    pub(crate) fn rows(&self) -> usize {
+        match self {
+            Task::Path { .. } => 2,
+            Task::Function { .. } => 1,
+            Task::Motion { .. } => 3,
+        }
+    }
+}
+
+/// A parameter the synthesis chooses, within its bounds.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Free {
+    pub index: usize,
+    pub lower: f64,
+    pub upper: f64,
+}
+
+/// A synthesis problem on the model `L` (its fields not freed keep their
+/// values).
+#[derive(Clone, Debug)]
+pub struct Problem<L, const M: usize, const K: usize> {
+    pub(crate) model: L,
+    pub(crate) free: Vec<Free>,
+    pub(crate) task: Task,
+    /// Each target's values: (x, y), (y), or (x, y, angle).
+    pub(crate) targets: Vec<[f64; 3]>,
+    /// Each target's driver, if prescribed.
+    pub(crate) drivers: Option<Vec<f64>>,
+    /// A guess of the pose at the first target.
+    pub(crate) guess: SVector<f64, M>,
+    /// Whether every target must be met exactly (precision points).
+    pub(crate) exact: bool,
+}
+
+impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K> {
+    /// Path generation: the point `point` through `targets`.
+    pub fn path(
+        model: L,
+        point: &str,
+        targets: &[Vector2<f64>],
+        timing: Timing,
+    ) -> Result<Self, SynthesisError> {
+        let task = Task::Path {
+            point: point_index::<L, M, K>(point)?,
+        };
+        let values = targets.iter().map(|t| [t.x, t.y, 0.0]).collect();
+        Problem::new(model, task, values, timing)
+    }
+
+    /// Function generation: the coordinate `coordinate` (of u) takes the
+    /// value y at the driver v, for each (v, y) of `targets`.
+    pub fn function(
+        model: L,
+        coordinate: &str,
+        targets: &[(f64, f64)],
+    ) -> Result<Self, SynthesisError> {
+        let task = Task::Function {
+            coordinate: coordinate_index::<L, M, K>(coordinate)?,
+        };
+        let values = targets.iter().map(|t| [t.1, 0.0, 0.0]).collect();
+        let drivers = targets.iter().map(|t| t.0).collect();
+        Problem::new(model, task, values, Timing::Prescribed(drivers))
+    }
+
+    /// Motion generation: the body carrying the point `point`, whose angle
+    /// is the coordinate `angle`, through the poses (position, angle) of
+    /// `targets`. Angles are weighed against positions by the targets'
+    /// spread (the largest distance between two of them).
+    pub fn motion(
+        model: L,
+        point: &str,
+        angle: &str,
+        targets: &[(Vector2<f64>, f64)],
+        timing: Timing,
+    ) -> Result<Self, SynthesisError> {
+        let spread = targets
+            .iter()
+            .flat_map(|a| targets.iter().map(move |b| (a.0 - b.0).norm()))
+            .fold(0.0, f64::max);
+        let task = Task::Motion {
+            point: point_index::<L, M, K>(point)?,
+            angle: coordinate_index::<L, M, K>(angle)?,
+            length: if spread > 0.0 { spread } else { 1.0 },
+        };
+        let values = targets.iter().map(|t| [t.0.x, t.0.y, t.1]).collect();
+        Problem::new(model, task, values, timing)
+    }
+
+    fn new(
+        model: L,
+        task: Task,
+        targets: Vec<[f64; 3]>,
+        timing: Timing,
+    ) -> Result<Self, SynthesisError> {
+        if targets.is_empty() {
+            return Err(SynthesisError::NoTargets);
+        }
+        let rows = task.rows();
+        if targets
+            .iter()
+            .any(|t| t[..rows].iter().any(|x| !x.is_finite()))
+        {
+            return Err(SynthesisError::NonFiniteTarget);
+        }
+        let drivers = match timing {
+            Timing::Free => None,
+            Timing::Prescribed(drivers) => {
+                if drivers.len() != targets.len() {
+                    return Err(SynthesisError::Timing {
+                        targets: targets.len(),
+                        drivers: drivers.len(),
+                    });
+                }
+                if drivers.iter().any(|v| !v.is_finite()) {
+                    return Err(SynthesisError::NonFiniteTarget);
+                }
+                Some(drivers)
+            }
+        };
+        Ok(Problem {
+            model,
+            free: Vec::new(),
+            task,
+            targets,
+            drivers,
+            guess: SVector::zeros(),
+            exact: false,
+        })
+    }
+
+    /// Frees the parameter `name`, within [lower, upper].
+    pub fn free(mut self, name: &str, lower: f64, upper: f64) -> Result<Self, SynthesisError> {
+        let Some(index) = L::param_index(name) else {
+            return Err(SynthesisError::UnknownName(UnknownName::new(
+                NameKind::Parameter,
+                "the synthesis problem",
+                name,
+                L::PARAM_NAMES.iter().copied(),
+            )));
+        };
+        if !(lower.is_finite() && upper.is_finite() && lower < upper) {
+            return Err(SynthesisError::EmptyBounds {
+                parameter: name.to_owned(),
+                lower,
+                upper,
+            });
+        }
+        self.free.retain(|f| f.index != index);
+        self.free.push(Free {
+            index,
+            lower,
+            upper,
+        });
+        Ok(self)
+    }
+
+    /// A guess of the pose at the first target (the other targets' poses
+    /// follow from it by continuation).
+    pub fn guess(mut self, u: SVector<f64, M>) -> Self {
+        self.guess = u;
+        self
+    }
+
+    /// Every target must be met exactly (precision points): there may be
+    /// no more residuals than unknowns, and a design that misses a target
+    /// by more than rounding is not returned.
+    pub fn precision_points(mut self) -> Self {
+        self.exact = true;
+        self
+    }
+
+    /// The residuals: one, two or three per target.
+    pub fn residuals(&self) -> usize {
+        self.task.rows() * self.targets.len()
+    }
+
+    /// The unknowns: the free parameters and the free drivers.
+    pub fn unknowns(&self) -> usize {
+        self.free.len() + self.free_drivers()
+    }
+
+    /// The number of targets whose driver is an unknown.
+    pub(crate) fn free_drivers(&self) -> usize {
+        if self.drivers.is_some() {
+            0
+        } else {
+            self.targets.len()
+        }
+    }
+
+    /// The checks that need the whole problem: something free, and no more
+    /// precision points than the unknowns can meet.
+    pub(crate) fn check(&self) -> Result<(), SynthesisError> {
+        if self.free.is_empty() {
+            return Err(SynthesisError::NothingFree);
+        }
+        if self.exact && self.residuals() > self.unknowns() {
+            return Err(SynthesisError::TooManyTargets {
+                residuals: self.residuals(),
+                unknowns: self.unknowns(),
+            });
+        }
+        Ok(())
+    }
+
+    /// The model with the free parameters set from the unknowns `x`.
+    pub(crate) fn model_at(&self, x: &[f64]) -> L
+    where
+        L: Clone,
+    {
+        let mut model = self.model.clone();
+        let mut p = model.params();
+        for (f, value) in self.free.iter().zip(x) {
+            p[f.index] = *value;
+        }
+        model.set_params(&p);
+        model
+    }
+
+    /// The driver at target `i` for the unknowns `x`.
+    pub(crate) fn driver(&self, x: &[f64], i: usize) -> f64 {
+        match &self.drivers {
+            Some(drivers) => drivers[i],
+            None => x[self.free.len() + i],
+        }
+    }
+}
+
+fn point_index<L: Linkage<M, 1>, const M: usize, const K: usize>(
+    name: &str,
+) -> Result<usize, SynthesisError> {
+    L::point_index(name).ok_or_else(|| {
+        SynthesisError::UnknownName(UnknownName::new(
+            NameKind::Point,
+            "the synthesis problem",
+            name,
+            L::POINT_NAMES.iter().copied(),
+        ))
+    })
+}
+
+fn coordinate_index<L: Linkage<M, 1>, const M: usize, const K: usize>(
+    name: &str,
+) -> Result<usize, SynthesisError> {
+    L::U_NAMES.iter().position(|n| *n == name).ok_or_else(|| {
+        SynthesisError::UnknownName(UnknownName::new(
+            NameKind::Coordinate,
+            "the synthesis problem",
+            name,
+            L::U_NAMES.iter().copied(),
+        ))
+    })
+}

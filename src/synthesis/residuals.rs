@@ -1,0 +1,117 @@
+//! The residuals of a problem at a design and their exact Jacobian: at each
+//! target the pose is solved (by Newton, from the target's last pose, on
+//! the same assembly branch), and its sensitivities give the columns of
+//! the free parameters; its velocity at unit driver speed gives the column
+//! of a free driver.
+
+use super::least_squares::Evaluation;
+use super::problem::{Problem, Task};
+use linkage_runtime::{Motion, Options, Sensitivities, invert};
+use nalgebra::{DMatrix, DVector, SVector};
+
+/// The poses at the targets, and the sign of det Ψ_u there (the assembly
+/// branch the design is followed on).
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Poses<const M: usize> {
+    pub u: Vec<SVector<f64, M>>,
+    pub branch: Vec<bool>,
+}
+
+/// Evaluates the problem's residuals and Jacobian at the unknowns `x`,
+/// solving each target's pose from `from`; `None` where a target cannot be
+/// assembled, is singular, or lies on another branch than before.
+pub(crate) fn evaluate<L, const M: usize, const K: usize>(
+    problem: &Problem<L, M, K>,
+    x: &DVector<f64>,
+    from: &Poses<M>,
+    options: &Options,
+) -> Option<Evaluation<Poses<M>>>
+where
+    L: Sensitivities<M, 1, K> + Clone,
+{
+    let model = problem.model_at(x.as_slice());
+    let rows = problem.task.rows();
+    let n = x.len();
+    let mut residuals = DVector::zeros(problem.residuals());
+    let mut jacobian = DMatrix::zeros(problem.residuals(), n);
+    let mut poses = Poses {
+        u: Vec::with_capacity(problem.targets.len()),
+        branch: Vec::with_capacity(problem.targets.len()),
+    };
+    let (vdot, vddot) = (SVector::from([1.0]), SVector::from([0.0]));
+    for (i, target) in problem.targets.iter().enumerate() {
+        let v = SVector::from([problem.driver(x.as_slice(), i)]);
+        let analysis = model.analyze(&from.u[i], &v, &vdot, &vddot, options).ok()?;
+        let branch = invert(&model.psi_u(&analysis.u, &v)).det > 0.0;
+        if branch != from.branch[i] {
+            return None;
+        }
+        let motion = Motion::of_analysis(&analysis, &v, &vdot, &vddot);
+        let sensitivity = model.sensitivities(&motion, options).ok()?;
+        // The matched values (and their rates along the driver), row by row.
+        let (value, rate, by_p): (Vec<f64>, Vec<f64>, Vec<SVector<f64, K>>) = match problem.task {
+            Task::Path { point } => {
+                let (p, pv, pp) = (
+                    analysis.points.as_ref()[point],
+                    analysis.point_velocities.as_ref()[point],
+                    sensitivity.point(point),
+                );
+                (
+                    vec![p.x, p.y],
+                    vec![pv.x, pv.y],
+                    vec![pp.row(0).transpose(), pp.row(1).transpose()],
+                )
+            }
+            Task::Function { coordinate } => (
+                vec![analysis.u[coordinate]],
+                vec![analysis.udot[coordinate]],
+                vec![sensitivity.u.row(coordinate).transpose()],
+            ),
+            Task::Motion {
+                point,
+                angle,
+                length,
+            } => {
+                let (p, pv, pp) = (
+                    analysis.points.as_ref()[point],
+                    analysis.point_velocities.as_ref()[point],
+                    sensitivity.point(point),
+                );
+                (
+                    vec![p.x, p.y, length * analysis.u[angle]],
+                    vec![pv.x, pv.y, length * analysis.udot[angle]],
+                    vec![
+                        pp.row(0).transpose(),
+                        pp.row(1).transpose(),
+                        sensitivity.u.row(angle).transpose() * length,
+                    ],
+                )
+            }
+        };
+        for r in 0..rows {
+            let row = rows * i + r;
+            let wanted = match (problem.task, r) {
+                (Task::Motion { length, .. }, 2) => length * target[2],
+                _ => target[r],
+            };
+            residuals[row] = value[r] - wanted;
+            for (column, free) in problem.free.iter().enumerate() {
+                jacobian[(row, column)] = by_p[r][free.index];
+            }
+            if problem.drivers.is_none() {
+                jacobian[(row, problem.free.len() + i)] = rate[r];
+            }
+        }
+        poses.u.push(analysis.u);
+        poses.branch.push(branch);
+    }
+    let finite = residuals
+        .iter()
+        .chain(jacobian.iter())
+        .all(|x| x.is_finite());
+    finite.then_some(Evaluation {
+        residuals,
+        jacobian,
+        state: poses,
+    })
+}

@@ -1,0 +1,306 @@
+//! Many starts in parallel: each a random design within the bounds (and a
+//! random phase of the free drivers), followed by continuation to the
+//! poses at every target, solved by Levenberg–Marquardt on the exact
+//! Jacobian, then certified; the certified designs kept once each and
+//! ranked by their error at the targets.
+
+use super::SynthesisError;
+use super::certify::{Defect, Requirements, certify};
+use super::least_squares::{Stopping, minimize};
+use super::problem::Problem;
+use super::residuals::{Poses, evaluate};
+use crate::batch;
+use crate::random::SplitMix64;
+use linkage_runtime::{Drive, Options, Sensitivities, SweepOptions, invert};
+use nalgebra::{DVector, SVector};
+use std::f64::consts::TAU;
+
+/// How to search.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Search {
+    /// Random starts, solved in parallel.
+    pub starts: usize,
+    /// The seed of the starts (each start a function of it and its index).
+    pub seed: u64,
+    pub stopping: Stopping,
+    /// The solves of the poses and the sweeps of the certificate.
+    pub options: SweepOptions,
+}
+
+impl Default for Search {
+    fn default() -> Search {
+        Search {
+            starts: 64,
+            seed: 1,
+            stopping: Stopping::default(),
+            options: SweepOptions::default(),
+        }
+    }
+}
+
+/// A design the search found.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Candidate<L, const M: usize> {
+    pub model: L,
+    /// The driver at each target.
+    pub drivers: Vec<f64>,
+    /// The pose at each target.
+    pub poses: Vec<SVector<f64, M>>,
+    /// The miss at each target (the norm of its residuals), and the root
+    /// mean square of all residuals.
+    pub errors: Vec<f64>,
+    pub rms_error: f64,
+    /// Evaluations of residuals and Jacobian the solver took.
+    pub evaluations: usize,
+    /// The start it came from.
+    pub start: usize,
+}
+
+impl<L, const M: usize> Candidate<L, M> {
+    /// The target missed most, and by how much.
+    pub fn largest_error(&self) -> (usize, f64) {
+        self.errors
+            .iter()
+            .copied()
+            .enumerate()
+            .fold(
+                (0, 0.0),
+                |most, (i, e)| if e > most.1 { (i, e) } else { most },
+            )
+    }
+}
+
+/// What the search gives: the certified designs, distinct, best first; the
+/// candidates refused, with their defect; the starts that could not be
+/// assembled at all.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Synthesis<L, const M: usize> {
+    pub designs: Vec<Candidate<L, M>>,
+    pub refused: Vec<(Candidate<L, M>, Defect)>,
+    pub failed_starts: usize,
+}
+
+/// Solves `problem` from `search.starts` random starts in parallel and
+/// certifies every result against `requirements`.
+pub fn synthesize<L, const M: usize, const K: usize>(
+    problem: &Problem<L, M, K>,
+    requirements: &Requirements<'_, L, M>,
+    search: &Search,
+) -> Result<Synthesis<L, M>, SynthesisError>
+where
+    L: Sensitivities<M, 1, K> + Clone + Sync + Send,
+{
+    problem.check()?;
+    search.options.options.check()?;
+    let starts: Vec<usize> = (0..search.starts).collect();
+    let outcomes = batch::map(&starts, |&start| {
+        let x0 = start_point(problem, search.seed, start);
+        solve(problem, x0, search, start)
+    });
+    let mut synthesis = Synthesis {
+        designs: Vec::new(),
+        refused: Vec::new(),
+        failed_starts: 0,
+    };
+    for outcome in outcomes {
+        let Some(candidate) = outcome else {
+            synthesis.failed_starts += 1;
+            continue;
+        };
+        match verdict(problem, &candidate, requirements, &search.options) {
+            Ok(()) => {
+                if !synthesis
+                    .designs
+                    .iter()
+                    .any(|d| same_design(problem, d, &candidate))
+                {
+                    synthesis.designs.push(candidate);
+                }
+            }
+            Err(defect) => synthesis.refused.push((candidate, defect)),
+        }
+    }
+    synthesis
+        .designs
+        .sort_by(|a, b| a.rms_error.total_cmp(&b.rms_error));
+    Ok(synthesis)
+}
+
+/// Start `start`: the free parameters uniform within their bounds, the
+/// free drivers evenly spread from a random phase.
+fn start_point<L, const M: usize, const K: usize>(
+    problem: &Problem<L, M, K>,
+    seed: u64,
+    start: usize,
+) -> DVector<f64>
+where
+    L: Sensitivities<M, 1, K>,
+{
+    let mut stream = SplitMix64::of_sample(seed, start as u64);
+    let mut x: Vec<f64> = problem
+        .free
+        .iter()
+        .map(|f| f.lower + (f.upper - f.lower) * stream.uniform())
+        .collect();
+    let phase = TAU * stream.uniform();
+    let n = problem.free_drivers();
+    x.extend((0..n).map(|i| phase + TAU * i as f64 / n as f64));
+    DVector::from_vec(x)
+}
+
+/// The unknowns' bounds: the free parameters', and none on the drivers.
+fn bounds<L, const M: usize, const K: usize>(
+    problem: &Problem<L, M, K>,
+) -> (DVector<f64>, DVector<f64>)
+where
+    L: Sensitivities<M, 1, K>,
+{
+    let n = problem.unknowns();
+    let lower = DVector::from_fn(n, |i, _| {
+        problem.free.get(i).map_or(f64::NEG_INFINITY, |f| f.lower)
+    });
+    let upper = DVector::from_fn(n, |i, _| {
+        problem.free.get(i).map_or(f64::INFINITY, |f| f.upper)
+    });
+    (lower, upper)
+}
+
+/// The poses at the targets for the unknowns `x`: the first solved from
+/// the problem's guess, each next one followed from it by continuation
+/// (so that all lie on one branch); `None` if the start cannot be
+/// assembled or followed.
+fn first_poses<L, const M: usize, const K: usize>(
+    problem: &Problem<L, M, K>,
+    x: &DVector<f64>,
+    options: &SweepOptions,
+) -> Option<Poses<M>>
+where
+    L: Sensitivities<M, 1, K> + Clone,
+{
+    let model = problem.model_at(x.as_slice());
+    let drivers: Vec<f64> = (0..problem.targets.len())
+        .map(|i| problem.driver(x.as_slice(), i))
+        .collect();
+    let first = model
+        .solve_position(
+            &problem.guess,
+            &SVector::from([drivers[0]]),
+            &options.options,
+        )
+        .ok()?
+        .u;
+    let mut u = vec![first];
+    for pair in drivers.windows(2) {
+        let drive = Drive::Line {
+            from: SVector::from([pair[0]]),
+            to: SVector::from([pair[1]]),
+            steps: ((pair[1] - pair[0]).abs() * 30.0).ceil().max(2.0) as usize,
+        };
+        let mut last = None;
+        let summary = model
+            .sweep_each(u.last()?, &drive, options, |pose| last = Some(pose.u))
+            .ok()?;
+        if !summary.complete {
+            return None;
+        }
+        u.push(last?);
+    }
+    let branch = u
+        .iter()
+        .zip(&drivers)
+        .map(|(u, v)| invert(&model.psi_u(u, &SVector::from([*v]))).det > 0.0)
+        .collect();
+    Some(Poses { u, branch })
+}
+
+/// One start solved: its candidate, or `None` if it cannot be assembled.
+fn solve<L, const M: usize, const K: usize>(
+    problem: &Problem<L, M, K>,
+    x0: DVector<f64>,
+    search: &Search,
+    start: usize,
+) -> Option<Candidate<L, M>>
+where
+    L: Sensitivities<M, 1, K> + Clone,
+{
+    let options: &Options = &search.options.options;
+    let poses = first_poses(problem, &x0, &search.options)?;
+    let first = evaluate(problem, &x0, &poses, options)?;
+    let (lower, upper) = bounds(problem);
+    let found = minimize(first, x0, &lower, &upper, &search.stopping, |x, from| {
+        evaluate(problem, x, from, options)
+    });
+    let rows = problem.task.rows();
+    let errors = found
+        .residuals
+        .as_slice()
+        .chunks(rows)
+        .map(|r| r.iter().map(|x| x * x).sum::<f64>().sqrt())
+        .collect();
+    let rms_error = (found.residuals.norm_squared() / found.residuals.len() as f64).sqrt();
+    let x = found.x.as_slice();
+    Some(Candidate {
+        model: problem.model_at(x),
+        drivers: (0..problem.targets.len())
+            .map(|i| problem.driver(x, i))
+            .collect(),
+        poses: found.state.u,
+        errors,
+        rms_error,
+        evaluations: found.evaluations,
+        start,
+    })
+}
+
+/// Whether a candidate is returned: met (for precision points) and
+/// certified.
+fn verdict<L, const M: usize, const K: usize>(
+    problem: &Problem<L, M, K>,
+    candidate: &Candidate<L, M>,
+    requirements: &Requirements<'_, L, M>,
+    options: &SweepOptions,
+) -> Result<(), Defect>
+where
+    L: Sensitivities<M, 1, K>,
+{
+    if problem.exact {
+        let scale = problem
+            .targets
+            .iter()
+            .flat_map(|t| t.iter().map(|x| x.abs()))
+            .fold(1.0, f64::max);
+        let (target, error) = candidate.largest_error();
+        if error > 1e-9 * scale {
+            return Err(Defect::Misses { target, error });
+        }
+    }
+    certify(
+        &candidate.model,
+        &candidate.poses,
+        &candidate.drivers,
+        requirements,
+        options,
+    )
+}
+
+/// Two candidates are the same design if their free parameters agree to
+/// 1e-6 of their bounds' widths and their drivers to 1e-6 (modulo a turn).
+fn same_design<L, const M: usize, const K: usize>(
+    problem: &Problem<L, M, K>,
+    a: &Candidate<L, M>,
+    b: &Candidate<L, M>,
+) -> bool
+where
+    L: Sensitivities<M, 1, K>,
+{
+    let (pa, pb) = (a.model.params(), b.model.params());
+    let params = problem
+        .free
+        .iter()
+        .all(|f| (pa[f.index] - pb[f.index]).abs() <= 1e-6 * (f.upper - f.lower));
+    let drivers = a.drivers.iter().zip(&b.drivers).all(|(x, y)| {
+        let d = x - y;
+        (d - TAU * (d / TAU).round()).abs() <= 1e-6
+    });
+    params && drivers
+}

@@ -1,0 +1,305 @@
+//! Synthesis against closed forms and its own certificate: Freudenstein's
+//! three-precision-point function generation, path generation through
+//! points of a known coupler curve, and the typed errors of bad problems.
+
+use linkage::closed_form;
+use linkage::mechanisms::FourBar;
+use linkage::nalgebra::Matrix3;
+use linkage::prelude::*;
+use linkage::synthesis::{
+    Defect, Problem, Range, Requirements, Search, SynthesisError, Timing, synthesize,
+};
+use std::f64::consts::PI;
+
+/// The rocker's angle at D (from the ground line, Freudenstein's φ) of the
+/// four-bar `l` at the crank angle θ on the branch with θ3 > 0.
+fn rocker(l: [f64; 4], theta: f64) -> f64 {
+    let bar = closed_form::FourBar {
+        l1: l[0],
+        l2: l[1],
+        l3: l[2],
+        l4: l[3],
+    };
+    let [_, theta4] = [1.0, -1.0]
+        .into_iter()
+        .filter_map(|s| bar.position(theta, s))
+        .find(|a| a[0] > 0.0)
+        .expect("assembles");
+    theta4 + PI
+}
+
+#[test]
+fn freudenstein_three_precision_points_are_reproduced() {
+    // Precision points from the worksheet's four-bar scaled to l1 = 1.
+    let design = [1.0, 0.25, 0.625, 0.875];
+    let thetas = [30f64, 60.0, 90.0].map(f64::to_radians);
+    let phis = thetas.map(|t| rocker(design, t));
+    // Freudenstein: K1 cos φ − K2 cos θ + K3 = cos(θ − φ), K1 = d/a,
+    // K2 = d/c, K3 = (a² − b² + c² + d²)/(2ac): linear in K.
+    let a = Matrix3::from_fn(|i, j| [phis[i].cos(), -thetas[i].cos(), 1.0][j]);
+    let rhs = Vector3::from_fn(|i, _| (thetas[i] - phis[i]).cos());
+    let k = a.lu().solve(&rhs).expect("three distinct points");
+    let d = 1.0_f64;
+    let (l2, l4) = (d / k[0], d / k[1]);
+    let l3 = (l2 * l2 + l4 * l4 + d * d - 2.0 * l2 * l4 * k[2]).sqrt();
+
+    let start = FourBar {
+        l1: 1.0,
+        l2: 0.3,
+        l3: 0.7,
+        l4: 0.8,
+    };
+    // Our θ4 is the direction C→D: φ − π.
+    let targets: Vec<(f64, f64)> = thetas
+        .iter()
+        .zip(&phis)
+        .map(|(t, p)| (*t, p - PI))
+        .collect();
+    let problem = Problem::function(start, "theta4", &targets)
+        .unwrap()
+        .free("l2", 0.1, 0.5)
+        .unwrap()
+        .free("l3", 0.3, 1.2)
+        .unwrap()
+        .free("l4", 0.3, 1.2)
+        .unwrap()
+        .guess(vector![1.3, -0.8])
+        .precision_points();
+    let found = synthesize(
+        &problem,
+        &Requirements::new(Range::Between),
+        &Search {
+            starts: 16,
+            ..Search::default()
+        },
+    )
+    .unwrap();
+    assert!(!found.designs.is_empty(), "{found:?}");
+    for design in &found.designs {
+        let m = &design.model;
+        let error = (m.l2 - l2)
+            .abs()
+            .max((m.l3 - l3).abs())
+            .max((m.l4 - l4).abs());
+        assert!(
+            error < 1e-12,
+            "{m:?} against the closed form ({l2}, {l3}, {l4}): {error:e}"
+        );
+    }
+    // And the closed form is the design they came from.
+    assert!((l2 - 0.25).abs() < 1e-13 && (l3 - 0.625).abs() < 1e-13 && (l4 - 0.875).abs() < 1e-13);
+}
+
+#[test]
+fn bad_problems_are_typed_errors() {
+    let bar = FourBar::WORKSHEET;
+    let four = [(0.1, -0.8), (0.3, -0.85), (0.5, -0.9), (0.7, -0.95)];
+    let over = Problem::function(bar, "theta4", &four)
+        .unwrap()
+        .free("l2", 10.0, 30.0)
+        .unwrap()
+        .free("l3", 30.0, 70.0)
+        .unwrap()
+        .free("l4", 50.0, 90.0)
+        .unwrap()
+        .precision_points();
+    assert!(matches!(
+        synthesize(
+            &over,
+            &Requirements::new(Range::Between),
+            &Search::default()
+        ),
+        Err(SynthesisError::TooManyTargets {
+            residuals: 4,
+            unknowns: 3
+        })
+    ));
+    let problem = || Problem::function(bar, "theta4", &four[..3]).unwrap();
+    assert!(matches!(
+        problem().free("l2", 30.0, 10.0),
+        Err(SynthesisError::EmptyBounds { .. })
+    ));
+    assert!(matches!(
+        problem().free("l2", 10.0, f64::INFINITY),
+        Err(SynthesisError::EmptyBounds { .. })
+    ));
+    assert!(matches!(
+        problem().free("l9", 1.0, 2.0),
+        Err(SynthesisError::UnknownName(_))
+    ));
+    assert!(matches!(
+        Problem::function(bar, "theta9", &four),
+        Err(SynthesisError::UnknownName(_))
+    ));
+    assert!(matches!(
+        Problem::path(bar, "Z", &[vector![1.0, 2.0]], Timing::Free),
+        Err(SynthesisError::UnknownName(_))
+    ));
+    assert!(matches!(
+        Problem::function(bar, "theta4", &[]),
+        Err(SynthesisError::NoTargets)
+    ));
+    assert!(matches!(
+        Problem::path(bar, "C", &[vector![1.0, f64::NAN]], Timing::Free),
+        Err(SynthesisError::NonFiniteTarget)
+    ));
+    assert!(matches!(
+        Problem::path(
+            bar,
+            "C",
+            &[vector![1.0, 2.0]],
+            Timing::Prescribed(vec![0.1, 0.2])
+        ),
+        Err(SynthesisError::Timing {
+            targets: 1,
+            drivers: 2
+        })
+    ));
+    assert!(matches!(
+        synthesize(
+            &problem(),
+            &Requirements::new(Range::Between),
+            &Search::default()
+        ),
+        Err(SynthesisError::NothingFree)
+    ));
+}
+
+/// Five points of the worksheet's coupler curve of G3, at θ2 = 10°, 82°, …
+fn worksheet_targets() -> (Vec<Vector2<f64>>, Vec<f64>) {
+    let bar = FourBar::WORKSHEET;
+    let drive = Drive::Line {
+        from: vector![0.0],
+        to: vector![2.0 * PI],
+        steps: 360,
+    };
+    let sweep = bar
+        .sweep(&vector![1.3, -0.8], &drive, &SweepOptions::default())
+        .unwrap();
+    let picks: Vec<usize> = (0..5).map(|i| 10 + 72 * i).collect();
+    let targets = picks
+        .iter()
+        .map(|&k| bar.point_positions(&sweep.poses[k].u, &sweep.poses[k].v)[FourBar::G3])
+        .collect();
+    (
+        targets,
+        picks.iter().map(|&k| sweep.poses[k].v[0]).collect(),
+    )
+}
+
+fn transmission(min_degrees: f64) -> Requirements<'static, FourBar, 2> {
+    let mut requirements = Requirements::new(Range::Revolution);
+    requirements.transmission = Some((
+        min_degrees.to_radians(),
+        Box::new(|_: &FourBar, pose: &SweepPose<2, 1>| PI - pose.u[0] + pose.u[1]),
+    ));
+    requirements
+}
+
+#[test]
+fn path_generation_finds_the_coupler_curve_through_five_points_and_certifies_it() {
+    let (targets, _) = worksheet_targets();
+    let start = FourBar {
+        l2: 25.0,
+        l3: 45.0,
+        l4: 65.0,
+        ..FourBar::WORKSHEET
+    };
+    let problem = Problem::path(start, "G3", &targets, Timing::Free)
+        .unwrap()
+        .free("l2", 10.0, 30.0)
+        .unwrap()
+        .free("l3", 30.0, 70.0)
+        .unwrap()
+        .free("l4", 50.0, 90.0)
+        .unwrap()
+        .guess(vector![1.3, -0.8]);
+    let found = synthesize(
+        &problem,
+        &transmission(30.0),
+        &Search {
+            starts: 24,
+            ..Search::default()
+        },
+    )
+    .unwrap();
+    let best = found.designs.first().unwrap_or_else(|| panic!("{found:?}"));
+    assert!(best.rms_error < 1e-9, "{best:?}");
+    let m = &best.model;
+    assert!(
+        (m.l2 - 20.0).abs() < 1e-8 && (m.l3 - 50.0).abs() < 1e-8 && (m.l4 - 70.0).abs() < 1e-8,
+        "{m:?}"
+    );
+    // Every design returned runs the whole turn through the targets in order.
+    for design in &found.designs {
+        let drivers = &design.drivers;
+        let forward: f64 = (0..5)
+            .map(|i| (drivers[(i + 1) % 5] - drivers[i]).rem_euclid(2.0 * PI))
+            .sum();
+        let backward: f64 = (0..5)
+            .map(|i| (drivers[i] - drivers[(i + 1) % 5]).rem_euclid(2.0 * PI))
+            .sum();
+        assert!(
+            (forward - 2.0 * PI).abs() < 1e-9 || (backward - 2.0 * PI).abs() < 1e-9,
+            "{drivers:?}"
+        );
+    }
+}
+
+#[test]
+fn a_design_that_fails_its_requirements_is_refused_with_the_reason() {
+    // The worksheet's four-bar has a smallest transmission angle of 57°:
+    // asking 80° refuses it, and says where the angle falls short.
+    let (targets, _) = worksheet_targets();
+    let start = FourBar {
+        l2: 25.0,
+        l3: 45.0,
+        l4: 65.0,
+        ..FourBar::WORKSHEET
+    };
+    let problem = Problem::path(start, "G3", &targets, Timing::Free)
+        .unwrap()
+        .free("l2", 19.0, 21.0)
+        .unwrap()
+        .free("l3", 49.0, 51.0)
+        .unwrap()
+        .free("l4", 69.0, 71.0)
+        .unwrap()
+        .guess(vector![1.3, -0.8]);
+    let found = synthesize(
+        &problem,
+        &transmission(80.0),
+        &Search {
+            starts: 8,
+            ..Search::default()
+        },
+    )
+    .unwrap();
+    assert!(found.designs.is_empty(), "{:?}", found.designs);
+    // The starts that converge to the worksheet's design are refused for
+    // the transmission angle, on the first leg where it falls short, with
+    // the angle there (cos μ = (l3² + l4² − BD²)/(2 l3 l4), BD the
+    // diagonal); those that converge elsewhere (targets out of order) for
+    // that.
+    let mu = |theta2: f64| {
+        let bd2 = 80f64.powi(2) + 20f64.powi(2) - 2.0 * 80.0 * 20.0 * theta2.cos();
+        ((50f64.powi(2) + 70f64.powi(2) - bd2) / (2.0 * 50.0 * 70.0)).acos()
+    };
+    let mut seen = 0;
+    for (candidate, defect) in &found.refused {
+        match defect {
+            Defect::Transmission { v, angle } if candidate.rms_error < 1e-9 => {
+                assert!(
+                    (angle - mu(*v)).abs() < 1e-9,
+                    "{angle} against {}: {defect:?}",
+                    mu(*v)
+                );
+                assert!(*angle < 80f64.to_radians());
+                seen += 1;
+            }
+            Defect::Order { .. } => {}
+            other => panic!("{other:?} for {:?}", candidate.model),
+        }
+    }
+    assert!(seen > 0, "{:?}", found.refused);
+}
