@@ -303,3 +303,93 @@ fn a_design_that_fails_its_requirements_is_refused_with_the_reason() {
     }
     assert!(seen > 0, "{:?}", found.refused);
 }
+
+/// An independent check of a returned design: a dense sweep of one whole
+/// turn from its first target, which must run without a singular pose and
+/// pass every target at its driver, in the targets' order.
+fn runs_through_its_targets(
+    design: &linkage::synthesis::Candidate<FourBar, 2>,
+    targets: &[Vector2<f64>],
+) {
+    let drivers = &design.drivers;
+    let direction = if (drivers[1] - drivers[0]).rem_euclid(2.0 * PI) < PI {
+        1.0
+    } else {
+        -1.0
+    };
+    let drive = Drive::Line {
+        from: vector![drivers[0]],
+        to: vector![drivers[0] + direction * 2.0 * PI],
+        steps: 3600,
+    };
+    let sweep = design
+        .model
+        .sweep(&design.poses[0], &drive, &SweepOptions::default())
+        .unwrap();
+    assert!(
+        sweep.complete && sweep.events.is_empty(),
+        "{:?}",
+        sweep.events
+    );
+    let mut passed = Vec::new();
+    for (i, target) in targets.iter().enumerate() {
+        // The turn's driver at the target, and the pose the sweep has there.
+        let along = (direction * (drivers[i] - drivers[0])).rem_euclid(2.0 * PI);
+        let v = drivers[0] + direction * along;
+        let near = sweep
+            .poses
+            .iter()
+            .min_by(|a, b| (a.v[0] - v).abs().total_cmp(&(b.v[0] - v).abs()))
+            .unwrap();
+        let pose = design
+            .model
+            .solve_position(&near.u, &vector![v], &Options::default())
+            .unwrap();
+        let point = design.model.point_positions(&pose.u, &vector![v])[FourBar::G3];
+        assert!(
+            (point - target).norm() < 1e-6 + 2.0 * design.errors[i],
+            "target {i}"
+        );
+        passed.push(along);
+    }
+    assert!(
+        passed.windows(2).all(|w| w[1] > w[0]),
+        "out of order: {passed:?}"
+    );
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig { cases: 6, ..Default::default() })]
+    #[test]
+    fn every_returned_design_runs_through_its_targets(
+        l2 in 15.0..25.0f64, l3 in 40.0..60.0f64, l4 in 60.0..80.0f64,
+        phase in 0.0..6.0f64, jitter in proptest::collection::vec(-1.0..1.0f64, 10),
+    ) {
+        // Targets near a coupler curve of a random crank-rocker (jittered
+        // by up to 1 mm, so not always exactly reachable).
+        let source = FourBar { l2, l3, l4, ..FourBar::WORKSHEET };
+        let drive = Drive::Line { from: vector![0.0], to: vector![2.0 * PI], steps: 720 };
+        let Ok(sweep) = source.sweep(&vector![1.3, -0.8], &drive, &SweepOptions::default()) else {
+            return Ok(());
+        };
+        let targets: Vec<Vector2<f64>> = (0..5)
+            .map(|i| {
+                let k = ((phase / (2.0 * PI) * 720.0) as usize + 144 * i) % 720;
+                let p = source.point_positions(&sweep.poses[k].u, &sweep.poses[k].v)[FourBar::G3];
+                p + vector![jitter[2 * i], jitter[2 * i + 1]]
+            })
+            .collect();
+        let problem = Problem::path(FourBar::WORKSHEET, "G3", &targets, Timing::Free)
+            .unwrap()
+            .free("l2", 10.0, 30.0).unwrap()
+            .free("l3", 30.0, 70.0).unwrap()
+            .free("l4", 50.0, 90.0).unwrap()
+            .guess(vector![1.3, -0.8]);
+        let found = synthesize(&problem, &transmission(20.0), &Search { starts: 12, ..Search::default() }).unwrap();
+        // Targets within a millimetre of a crank-rocker's curve: a design is found.
+        proptest::prop_assert!(!found.designs.is_empty(), "{:?}", found.refused);
+        for design in &found.designs {
+            runs_through_its_targets(design, &targets);
+        }
+    }
+}
