@@ -393,3 +393,160 @@ proptest::proptest! {
         }
     }
 }
+
+/// A four-bar with its ground pivots A and D anywhere, the coupler a body
+/// carrying the point P (its position is u's x_p, y_p, its angle θ3) with
+/// the moving pivots B and C at (bx, by) and (cx, cy) in its frame.
+#[linkage::linkage(
+    u = [x_p, y_p, theta3, theta4],
+    v = [theta2],
+    points = [P = (x_p, y_p)],
+    closure = [
+        xa + l2 * theta2.cos() - (x_p + bx * theta3.cos() - by * theta3.sin()),
+        ya + l2 * theta2.sin() - (y_p + bx * theta3.sin() + by * theta3.cos()),
+        xd + l4 * theta4.cos() - (x_p + cx * theta3.cos() - cy * theta3.sin()),
+        yd + l4 * theta4.sin() - (y_p + cx * theta3.sin() + cy * theta3.cos()),
+    ],
+)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Coupler {
+    xa: f64,
+    ya: f64,
+    xd: f64,
+    yd: f64,
+    l2: f64,
+    l4: f64,
+    bx: f64,
+    by: f64,
+    cx: f64,
+    cy: f64,
+}
+
+/// The centre of the circle through three points.
+fn circumcentre(p: [Vector2<f64>; 3]) -> Vector2<f64> {
+    let (a, b, c) = (p[0], p[1], p[2]);
+    let d = 2.0 * (a.x * (b.y - c.y) + b.x * (c.y - a.y) + c.x * (a.y - b.y));
+    let (a2, b2, c2) = (a.norm_squared(), b.norm_squared(), c.norm_squared());
+    vector![
+        (a2 * (b.y - c.y) + b2 * (c.y - a.y) + c2 * (a.y - b.y)) / d,
+        (a2 * (c.x - b.x) + b2 * (a.x - c.x) + c2 * (b.x - a.x)) / d
+    ]
+}
+
+#[test]
+fn three_position_motion_generation_is_reproduced() {
+    // Three poses of a crank-rocker's coupler (crank 20 at A = (0, 0),
+    // rocker 70 at D = (80, 0), coupler pivots 50 apart, P off the line).
+    let known = Coupler {
+        xa: 0.0,
+        ya: 0.0,
+        xd: 80.0,
+        yd: 0.0,
+        l2: 20.0,
+        l4: 70.0,
+        bx: -25.0,
+        by: -10.0,
+        cx: 25.0,
+        cy: -10.0,
+    };
+    let drive = Drive::Line {
+        from: vector![0.2],
+        to: vector![4.2],
+        steps: 400,
+    };
+    let sweep = known
+        .sweep(
+            &vector![30.0, 60.0, 0.3, -1.2],
+            &drive,
+            &SweepOptions::default(),
+        )
+        .unwrap();
+    let poses: Vec<(Vector2<f64>, f64)> = [0, 200, 400]
+        .iter()
+        .map(|&k| {
+            (
+                vector![sweep.poses[k].u[0], sweep.poses[k].u[1]],
+                sweep.poses[k].u[2],
+            )
+        })
+        .collect();
+    // The closed form: with the moving pivots chosen, each fixed pivot is
+    // the centre of the circle through its moving pivot's three positions.
+    let rotate = |angle: f64, x: f64, y: f64| {
+        vector![
+            x * angle.cos() - y * angle.sin(),
+            x * angle.sin() + y * angle.cos()
+        ]
+    };
+    let b = poses
+        .iter()
+        .map(|(p, t)| p + rotate(*t, known.bx, known.by))
+        .collect::<Vec<_>>();
+    let c = poses
+        .iter()
+        .map(|(p, t)| p + rotate(*t, known.cx, known.cy))
+        .collect::<Vec<_>>();
+    let (a, d) = (
+        circumcentre([b[0], b[1], b[2]]),
+        circumcentre([c[0], c[1], c[2]]),
+    );
+    let (l2, l4) = ((b[0] - a).norm(), (c[0] - d).norm());
+    // (The poses close only to Newton's tolerance: the known design is
+    // recovered to that, the closed form from these poses to rounding.)
+    assert!(
+        (a.norm() + (d - vector![80.0, 0.0]).norm()) < 1e-7
+            && (l2 - 20.0).abs() < 1e-7
+            && (l4 - 70.0).abs() < 1e-7,
+        "{a} {d} {l2} {l4}"
+    );
+
+    let start = Coupler {
+        xa: 5.0,
+        ya: 5.0,
+        xd: 70.0,
+        yd: -5.0,
+        l2: 25.0,
+        l4: 60.0,
+        ..known
+    };
+    let problem = Problem::motion(start, "P", "theta3", &poses, Timing::Free)
+        .unwrap()
+        .free("xa", -20.0, 20.0)
+        .unwrap()
+        .free("ya", -20.0, 20.0)
+        .unwrap()
+        .free("xd", 60.0, 100.0)
+        .unwrap()
+        .free("yd", -20.0, 20.0)
+        .unwrap()
+        .free("l2", 10.0, 30.0)
+        .unwrap()
+        .free("l4", 50.0, 90.0)
+        .unwrap()
+        .guess(vector![poses[0].0.x, poses[0].0.y, poses[0].1, -1.2])
+        .precision_points();
+    let found = synthesize(
+        &problem,
+        &Requirements::new(Range::Between),
+        &Search {
+            starts: 24,
+            ..Search::default()
+        },
+    )
+    .unwrap();
+    assert!(!found.designs.is_empty(), "{:?}", found.refused);
+    for design in &found.designs {
+        let m = &design.model;
+        let error = [
+            m.xa - a.x,
+            m.ya - a.y,
+            m.xd - d.x,
+            m.yd - d.y,
+            m.l2 - l2,
+            m.l4 - l4,
+        ]
+        .iter()
+        .fold(0.0f64, |e, x| e.max(x.abs()));
+        assert!(error < 1e-12 * 80.0, "{m:?}: {error:e}");
+    }
+}
