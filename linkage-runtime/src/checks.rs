@@ -21,10 +21,21 @@ pub(crate) fn check_input(argument: &'static str, values: &[f64]) -> Result<(), 
 
 /// Whether every entry is finite, without a branch per entry: x·0 is 0 for
 /// a finite x and NaN for an infinite or NaN one, and a sum with a NaN is
-/// NaN.
+/// NaN. Four sums side by side, so that each addition need not wait for the
+/// one before (a single running sum costs an addition's latency per entry).
 #[inline(always)]
-fn all_finite(values: &[f64]) -> bool {
-    values.iter().fold(0.0, |sum, x| sum + x * 0.0) == 0.0
+pub(crate) fn all_finite(values: &[f64]) -> bool {
+    let mut lanes = [0.0_f64; 4];
+    let mut chunks = values.chunks_exact(4);
+    for chunk in &mut chunks {
+        for (lane, x) in lanes.iter_mut().zip(chunk) {
+            *lane += x * 0.0;
+        }
+    }
+    for (lane, x) in lanes.iter_mut().zip(chunks.remainder()) {
+        *lane += x * 0.0;
+    }
+    (lanes[0] + lanes[1]) + (lanes[2] + lanes[3]) == 0.0
 }
 
 /// The smallest scale of a nonzero column or row that keeps relative
@@ -112,5 +123,34 @@ pub(crate) fn check_value(
         Ok(())
     } else {
         Err(Error::NonFiniteValue { stage, quantity })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The branch-free test agrees with the plain one, whatever the length
+    /// (the four lanes and the remainder) and wherever the bad number is.
+    #[test]
+    fn all_finite_agrees_with_is_finite() {
+        for n in 0..=11 {
+            let finite: Vec<f64> = (0..n)
+                .map(|i| match i % 4 {
+                    0 => -0.0,
+                    1 => f64::MAX,
+                    2 => -f64::MIN_POSITIVE / 2.0,
+                    _ => i as f64,
+                })
+                .collect();
+            assert!(all_finite(&finite), "{finite:?}");
+            for at in 0..n {
+                for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+                    let mut values = finite.clone();
+                    values[at] = bad;
+                    assert!(!all_finite(&values), "{values:?}");
+                }
+            }
+        }
     }
 }
