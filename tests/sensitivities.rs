@@ -327,3 +327,48 @@ fn the_two_loop_six_bar_against_the_50_digit_references() {
     // The dyad's branch of the references (σ = +1): F to the left of E→G.
     against_reference(&SIX_BAR, "six_bar", vector![1.2, -0.9, 2.4, 3.1]);
 }
+
+/// A NaN or an infinity in the pose is refused, naming the first argument
+/// that holds one (in the order u, u̇, ü, v, v̇, v̈) and where.
+#[test]
+fn a_non_finite_pose_is_named() {
+    let model = FourBar::WORKSHEET;
+    let (motion, _) = at::<_, 2, 1, 4>(
+        &model,
+        vector![1.2, -0.9],
+        vector![0.4],
+        vector![OMEGA2],
+        vector![3.0],
+    );
+    let options = Options::default();
+    let names = ["u", "udot", "uddot", "v", "vdot", "vddot"];
+    for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        for (k, name) in names.iter().enumerate() {
+            let mut m = motion;
+            match k {
+                0 => m.u[1] = bad,
+                1 => m.udot[1] = bad,
+                2 => m.uddot[1] = bad,
+                3 => m.v[0] = bad,
+                4 => m.vdot[0] = bad,
+                _ => m.vddot[0] = bad,
+            }
+            // A later argument bad too: the first is named.
+            if k < 5 {
+                m.vddot[0] = f64::NAN;
+            }
+            let index = if k < 3 { 1 } else { 0 };
+            match model.sensitivities(&m, &options) {
+                Err(Error::NonFiniteInput {
+                    argument,
+                    index: i,
+                    value,
+                }) => {
+                    assert_eq!((argument, i), (*name, index));
+                    assert!(value.is_nan() == bad.is_nan() && !value.is_finite());
+                }
+                other => panic!("{name} = {bad}: {other:?}"),
+            }
+        }
+    }
+}

@@ -20,11 +20,11 @@
 
 use super::Sensitivities;
 use super::results::{Motion, Sensitivity, SensitivityTerms};
-use crate::checks::{check_input, check_value};
+use crate::checks::{all_finite, check_input, check_value};
 use crate::error::{Error, Stage};
 use crate::linalg::factor;
 use crate::options::Options;
-use nalgebra::Vector2;
+use nalgebra::{SMatrix, Vector2};
 
 /// [`Sensitivities::sensitivities`]: the inputs checked, the terms
 /// generated, Ψ_u factored with the conditioning the sensitivities need,
@@ -39,19 +39,29 @@ pub(crate) fn sensitivities<
     motion: &Motion<M, F>,
     options: &Options,
 ) -> Result<Sensitivity<M, K, L::Points>, Error> {
-    for (name, values) in [
-        ("u", motion.u.as_slice()),
-        ("udot", motion.udot.as_slice()),
-        ("uddot", motion.uddot.as_slice()),
-    ] {
-        check_input(name, values)?;
-    }
-    for (name, values) in [
-        ("v", motion.v.as_slice()),
-        ("vdot", motion.vdot.as_slice()),
-        ("vddot", motion.vddot.as_slice()),
-    ] {
-        check_input(name, values)?;
+    // One pass over every number, and the arguments one by one (for the
+    // error naming the first that is not finite) only if that fails.
+    let finite = all_finite(motion.u.as_slice())
+        & all_finite(motion.udot.as_slice())
+        & all_finite(motion.uddot.as_slice())
+        & all_finite(motion.v.as_slice())
+        & all_finite(motion.vdot.as_slice())
+        & all_finite(motion.vddot.as_slice());
+    if !finite {
+        for (name, values) in [
+            ("u", motion.u.as_slice()),
+            ("udot", motion.udot.as_slice()),
+            ("uddot", motion.uddot.as_slice()),
+        ] {
+            check_input(name, values)?;
+        }
+        for (name, values) in [
+            ("v", motion.v.as_slice()),
+            ("vdot", motion.vdot.as_slice()),
+            ("vddot", motion.vddot.as_slice()),
+        ] {
+            check_input(name, values)?;
+        }
     }
     options.check()?;
     let terms = model.sensitivity_terms(
@@ -76,89 +86,280 @@ where
     P: Copy + AsRef<[Vector2<f64>]> + AsMut<[Vector2<f64>]>,
 {
     let stage = Stage::Sensitivity;
-    for (quantity, values) in [
-        ("Ψ_u", terms.psi_u.as_slice()),
-        ("Ψ_p", terms.psi_p.as_slice()),
-        ("Ψ̇_u", terms.psi_u_dot.as_slice()),
-        ("Ψ̇_p", terms.psi_p_dot.as_slice()),
-        ("Ψ̈_u", terms.psi_u_ddot.as_slice()),
-        ("Ψ̈_p", terms.psi_p_ddot.as_slice()),
-    ] {
-        check_value(stage, quantity, values)?;
+    // As the inputs: one pass, then one by one only if that fails.
+    let finite = all_finite(terms.psi_u.as_slice())
+        & all_finite(terms.psi_p.as_slice())
+        & all_finite(terms.psi_u_dot.as_slice())
+        & all_finite(terms.psi_p_dot.as_slice())
+        & all_finite(terms.psi_u_ddot.as_slice())
+        & all_finite(terms.psi_p_ddot.as_slice());
+    if !finite {
+        for (quantity, values) in [
+            ("Ψ_u", terms.psi_u.as_slice()),
+            ("Ψ_p", terms.psi_p.as_slice()),
+            ("Ψ̇_u", terms.psi_u_dot.as_slice()),
+            ("Ψ̇_p", terms.psi_p_dot.as_slice()),
+            ("Ψ̈_u", terms.psi_u_ddot.as_slice()),
+            ("Ψ̈_p", terms.psi_p_ddot.as_slice()),
+        ] {
+            check_value(stage, quantity, values)?;
+        }
     }
     let inv = factor(&terms.psi_u, stage, options)?;
-    let inverse = &inv.inverse;
-    let u = -(inverse * terms.psi_p);
-    let udot = -(inverse * (terms.psi_u_dot * u + terms.psi_p_dot));
-    let uddot =
-        -(inverse * (terms.psi_u_ddot * u + terms.psi_u_dot * udot * 2.0 + terms.psi_p_ddot));
-    for (quantity, values) in [
-        ("u_p", u.as_slice()),
-        ("u̇_p", udot.as_slice()),
-        ("ü_p", uddot.as_slice()),
-    ] {
-        check_value(stage, quantity, values)?;
-    }
-    let mut points = terms.points_p;
-    let mut point_velocities = terms.point_velocities_p;
-    let mut point_accelerations = terms.point_accelerations_p;
-    for j in 0..K {
-        for i in 0..M {
-            accumulate(&mut points[j], &terms.points_u[i], u[(i, j)]);
-            accumulate(
-                &mut point_velocities[j],
-                &terms.point_velocities_u[i],
-                u[(i, j)],
-            );
-            accumulate(&mut point_velocities[j], &terms.points_u[i], udot[(i, j)]);
-            accumulate(
-                &mut point_accelerations[j],
-                &terms.point_accelerations_u[i],
-                u[(i, j)],
-            );
-            accumulate(
-                &mut point_accelerations[j],
-                &terms.point_velocities_u[i],
-                2.0 * udot[(i, j)],
-            );
-            accumulate(
-                &mut point_accelerations[j],
-                &terms.points_u[i],
-                uddot[(i, j)],
-            );
+    // −Ψ_u⁻¹ once: negating m² entries rather than three products' m·k
+    // (the same numbers, negation being exact).
+    let minus_inverse = inv.inverse.map(|x| -x);
+    let u = product(&minus_inverse, &terms.psi_p);
+    let udot = product(
+        &minus_inverse,
+        &sum(&product(&terms.psi_u_dot, &u), &terms.psi_p_dot),
+    );
+    let twice = product(&terms.psi_u_dot, &udot).map(|x| 2.0 * x);
+    let uddot = product(
+        &minus_inverse,
+        &sum(
+            &sum(&product(&terms.psi_u_ddot, &u), &twice),
+            &terms.psi_p_ddot,
+        ),
+    );
+    let finite =
+        all_finite(u.as_slice()) & all_finite(udot.as_slice()) & all_finite(uddot.as_slice());
+    if !finite {
+        for (quantity, values) in [
+            ("u_p", u.as_slice()),
+            ("u̇_p", udot.as_slice()),
+            ("ü_p", uddot.as_slice()),
+        ] {
+            check_value(stage, quantity, values)?;
         }
     }
-    for (quantity, columns) in [
-        ("dP/dp", &points),
-        ("dṖ/dp", &point_velocities),
-        ("dP̈/dp", &point_accelerations),
-    ] {
-        let finite = columns
-            .iter()
-            .all(|c| c.as_ref().iter().all(|x| x.iter().all(|v| v.is_finite())));
-        if !finite {
-            return Err(Error::NonFiniteValue { stage, quantity });
-        }
-    }
-    Ok(Sensitivity {
+    // The result assembled first and its points summed where they lie
+    // (no copies of them in between): each sum starts from the explicit
+    // P_p, Ṗ_p or P̈_p, then, point by point, adds the terms of each
+    // coordinate in turn, skipping a coordinate the point does not move with
+    // (its P_u, Ṗ_u and P̈_u zero there: the crank pin by the coupler's
+    // angle, say), which adds nothing.
+    let mut out = Sensitivity {
         u,
         udot,
         uddot,
-        points,
-        point_velocities,
-        point_accelerations,
+        points: terms.points_p,
+        point_velocities: terms.point_velocities_p,
+        point_accelerations: terms.point_accelerations_p,
         rcond: inv.rcond,
-    })
+    };
+    let count = terms.points_p.first().map_or(0, |p| p.as_ref().len());
+    let zero = Vector2::zeros();
+    for c in 0..count {
+        for i in 0..M {
+            let p_u = terms.points_u[i].as_ref()[c];
+            let v_u = terms.point_velocities_u[i].as_ref()[c];
+            let a_u = terms.point_accelerations_u[i].as_ref()[c];
+            // (A NaN is not zero: it is added, and caught below.)
+            if p_u == zero && v_u == zero && a_u == zero {
+                continue;
+            }
+            for j in 0..K {
+                let (x, x_dot, x_ddot) = (u[(i, j)], udot[(i, j)], uddot[(i, j)]);
+                out.points[j].as_mut()[c] += p_u * x;
+                let v = &mut out.point_velocities[j].as_mut()[c];
+                *v += v_u * x;
+                *v += p_u * x_dot;
+                let a = &mut out.point_accelerations[j].as_mut()[c];
+                *a += a_u * x;
+                *a += v_u * (2.0 * x_dot);
+                *a += p_u * x_ddot;
+            }
+        }
+    }
+    let finite = points_finite(&out.points)
+        & points_finite(&out.point_velocities)
+        & points_finite(&out.point_accelerations);
+    if !finite {
+        for (quantity, columns) in [
+            ("dP/dp", &out.points),
+            ("dṖ/dp", &out.point_velocities),
+            ("dP̈/dp", &out.point_accelerations),
+        ] {
+            if !points_finite(columns) {
+                return Err(Error::NonFiniteValue { stage, quantity });
+            }
+        }
+    }
+    Ok(out)
 }
 
-/// `target += scale · source`, point by point.
+/// Whether every coordinate of every point of every column is finite,
+/// without a branch per number.
 #[inline(always)]
-fn accumulate<P: AsRef<[Vector2<f64>]> + AsMut<[Vector2<f64>]>>(
-    target: &mut P,
-    source: &P,
-    scale: f64,
-) {
-    for (t, s) in target.as_mut().iter_mut().zip(source.as_ref()) {
-        *t += s * scale;
+fn points_finite<const K: usize, P: AsRef<[Vector2<f64>]>>(columns: &[P; K]) -> bool {
+    let mut finite = true;
+    for column in columns {
+        for point in column.as_ref() {
+            finite &= point.x.is_finite() & point.y.is_finite();
+        }
+    }
+    finite
+}
+
+/// The product a·b on fixed sizes, each entry summed in the order of
+/// nalgebra's (over k = 0, 1, …), in loops the compiler unrolls and
+/// vectorises down the columns.
+#[inline(always)]
+fn product<const R: usize, const N: usize, const C: usize>(
+    a: &SMatrix<f64, R, N>,
+    b: &SMatrix<f64, N, C>,
+) -> SMatrix<f64, R, C> {
+    let mut out = SMatrix::<f64, R, C>::zeros();
+    for j in 0..C {
+        for k in 0..N {
+            let scale = b[(k, j)];
+            for i in 0..R {
+                out[(i, j)] += a[(i, k)] * scale;
+            }
+        }
+    }
+    out
+}
+
+/// a + b, entry by entry.
+#[inline(always)]
+fn sum<const R: usize, const C: usize>(
+    a: &SMatrix<f64, R, C>,
+    b: &SMatrix<f64, R, C>,
+) -> SMatrix<f64, R, C> {
+    let mut out = *a;
+    for (o, x) in out.as_mut_slice().iter_mut().zip(b.as_slice()) {
+        *o += x;
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::{Matrix2, Vector2};
+
+    type Points = [Vector2<f64>; 3];
+
+    /// Terms for m = 2, k = 2 and three points: the second point does not
+    /// move with u₁, the third not at all (zero columns, skipped).
+    fn terms() -> SensitivityTerms<2, 2, Points> {
+        let v = |x: f64, y: f64| Vector2::new(x, y);
+        let zero = Vector2::zeros();
+        SensitivityTerms {
+            psi_u: Matrix2::new(-0.7, 1.3, 0.4, 0.9),
+            psi_p: Matrix2::new(-1.0, 0.3, 0.2, -0.6),
+            psi_u_dot: Matrix2::new(0.11, -0.5, 0.8, 0.25),
+            psi_p_dot: Matrix2::new(0.0, 0.7, -0.3, 0.05),
+            psi_u_ddot: Matrix2::new(1.7, -0.2, 0.6, -1.1),
+            psi_p_ddot: Matrix2::new(-0.4, 0.0, 0.9, 0.35),
+            points_u: [
+                [v(0.5, -0.2), zero, zero],
+                [v(0.3, 0.1), v(-0.6, 0.8), zero],
+            ],
+            points_p: [
+                [v(1.0, 0.0), v(0.2, 0.3), zero],
+                [zero, v(-0.1, 0.4), v(0.5, 0.5)],
+            ],
+            point_velocities_u: [
+                [v(-0.2, 0.9), zero, zero],
+                [v(0.7, -0.3), v(0.1, 0.2), zero],
+            ],
+            point_velocities_p: [[v(0.3, 0.3), zero, zero], [v(0.0, -0.8), v(0.6, 0.1), zero]],
+            point_accelerations_u: [
+                [v(1.1, -0.4), zero, zero],
+                [v(-0.5, 0.6), v(0.9, -1.2), zero],
+            ],
+            point_accelerations_p: [
+                [v(0.2, -0.7), v(0.4, 0.0), zero],
+                [zero, v(1.3, 0.2), v(-0.3, 0.1)],
+            ],
+        }
+    }
+
+    /// The formulas written plainly: nalgebra's products, every term of
+    /// every point added.
+    fn plainly(t: &SensitivityTerms<2, 2, Points>) -> Sensitivity<2, 2, Points> {
+        let inv = crate::linalg::invert(&t.psi_u);
+        let inverse = inv.inverse;
+        let u = -(inverse * t.psi_p);
+        let udot = -(inverse * (t.psi_u_dot * u + t.psi_p_dot));
+        let uddot = -(inverse * (t.psi_u_ddot * u + t.psi_u_dot * udot * 2.0 + t.psi_p_ddot));
+        let (mut p, mut pv, mut pa) = (t.points_p, t.point_velocities_p, t.point_accelerations_p);
+        for j in 0..2 {
+            for i in 0..2 {
+                for c in 0..3 {
+                    p[j][c] += t.points_u[i][c] * u[(i, j)];
+                    pv[j][c] += t.point_velocities_u[i][c] * u[(i, j)];
+                    pv[j][c] += t.points_u[i][c] * udot[(i, j)];
+                    pa[j][c] += t.point_accelerations_u[i][c] * u[(i, j)];
+                    pa[j][c] += t.point_velocities_u[i][c] * (2.0 * udot[(i, j)]);
+                    pa[j][c] += t.points_u[i][c] * uddot[(i, j)];
+                }
+            }
+        }
+        Sensitivity {
+            u,
+            udot,
+            uddot,
+            points: p,
+            point_velocities: pv,
+            point_accelerations: pa,
+            rcond: inv.rcond,
+        }
+    }
+
+    /// The fixed-size products, the negated inverse, the points summed in
+    /// place with the zero terms skipped: the very numbers of the formulas
+    /// written plainly, in the same order (== on every entry, not a
+    /// tolerance).
+    #[test]
+    fn from_terms_gives_the_formulas_numbers() {
+        let t = terms();
+        let ours = from_terms(&t, &Options::default()).expect("regular");
+        assert_eq!(ours, plainly(&t));
+    }
+
+    fn error(t: &SensitivityTerms<2, 2, Points>) -> Option<&'static str> {
+        match from_terms(t, &Options::default()) {
+            Err(Error::NonFiniteValue {
+                stage: Stage::Sensitivity,
+                quantity,
+            }) => Some(quantity),
+            Err(e) => panic!("unexpected {e:?}"),
+            Ok(_) => None,
+        }
+    }
+
+    /// A NaN or an infinity in a term is named: the first of the matrices in
+    /// their order, and for the points' terms the first result it reaches.
+    #[test]
+    fn a_non_finite_term_is_named() {
+        let bad = [f64::NAN, f64::INFINITY];
+        for x in bad {
+            let mut t = terms();
+            t.psi_p_ddot[(1, 0)] = x;
+            assert_eq!(error(&t), Some("Ψ̈_p"));
+            t.psi_u_dot[(0, 1)] = x;
+            assert_eq!(error(&t), Some("Ψ̇_u"));
+            t.psi_u[(1, 1)] = x;
+            assert_eq!(error(&t), Some("Ψ_u"));
+            for (field, expected) in [(0, "dP̈/dp"), (1, "dṖ/dp"), (2, "dP/dp")] {
+                let mut t = terms();
+                // The third point's zero terms, which would be skipped were
+                // they zero.
+                match field {
+                    0 => t.point_accelerations_u[1][2].y = x,
+                    1 => t.point_velocities_u[0][2].x = x,
+                    _ => t.points_u[1][2].x = x,
+                }
+                assert_eq!(error(&t), Some(expected));
+            }
+            let mut t = terms();
+            t.point_velocities_p[1][0].x = x;
+            assert_eq!(error(&t), Some("dṖ/dp"));
+        }
+        assert_eq!(error(&terms()), None);
     }
 }
