@@ -550,3 +550,36 @@ fn three_position_motion_generation_is_reproduced() {
         assert!(error < 1e-12 * 80.0, "{m:?}: {error:e}");
     }
 }
+
+#[test]
+fn a_target_out_of_reach_is_a_typed_error() {
+    // G3 of a four-bar with l1 = 80 and links within these bounds stays
+    // within 60 mm of the crank pivot: a precision point 500 mm away is out
+    // of reach.
+    let targets = [vector![20.0, 30.0], vector![500.0, 0.0]];
+    let problem = Problem::path(FourBar::WORKSHEET, "G3", &targets, Timing::Free)
+        .unwrap()
+        .free("l2", 10.0, 30.0)
+        .unwrap()
+        .free("l3", 30.0, 70.0)
+        .unwrap()
+        .free("l4", 50.0, 90.0)
+        .unwrap()
+        .guess(vector![1.3, -0.8])
+        .precision_points();
+    let found = synthesize(
+        &problem,
+        &Requirements::new(Range::Revolution),
+        &Search {
+            starts: 8,
+            ..Search::default()
+        },
+    )
+    .unwrap();
+    assert!(found.designs.is_empty());
+    let best = found.best();
+    assert!(
+        matches!(best, Err(SynthesisError::Unreachable { target: 1, error }) if error > 400.0),
+        "{best:?}"
+    );
+}

@@ -60,6 +60,16 @@ pub enum SynthesisError {
     TooManyTargets { residuals: usize, unknowns: usize },
     /// The solver's options are not usable.
     Options(Error),
+    /// Every candidate missed target `target`: it is out of the design's
+    /// reach (the closest any came is `error`).
+    Unreachable { target: usize, error: f64 },
+    /// No certified design: `refused` candidates (the first one's defect)
+    /// and `failed_starts` starts that could not be assembled.
+    NoDesign {
+        refused: usize,
+        failed_starts: usize,
+        first_defect: Option<Defect>,
+    },
 }
 
 crate::error::error_impls! {
@@ -72,6 +82,8 @@ crate::error::error_impls! {
         Self::NothingFree => ("no parameter is free: free at least one with Problem::free"),
         Self::TooManyTargets { residuals, unknowns } => ("{residuals} precision-point equations but only {unknowns} unknowns: the design cannot meet them all (fit them by least squares instead)"),
         Self::Options(inner) => ("the options: {inner}"),
+        Self::Unreachable { target, error } => ("target {target} is out of reach: every candidate missed it, the closest by {error}"),
+        Self::NoDesign { refused, failed_starts, first_defect } => ("no certified design: {refused} candidates refused (the first: {first_defect:?}), {failed_starts} starts could not be assembled"),
     }
     wraps { UnknownName(UnknownName), Options(Error) }
 }

@@ -70,6 +70,37 @@ impl<L, const M: usize> Candidate<L, M> {
     }
 }
 
+impl<L, const M: usize> Synthesis<L, M> {
+    /// The best certified design, or why there is none: a target that
+    /// every candidate missed (out of reach), or the refusals and failed
+    /// starts.
+    pub fn best(&self) -> Result<&Candidate<L, M>, SynthesisError> {
+        if let Some(best) = self.designs.first() {
+            return Ok(best);
+        }
+        let misses: Vec<(usize, f64)> = self
+            .refused
+            .iter()
+            .filter_map(|(_, defect)| match defect {
+                Defect::Misses { target, error } => Some((*target, *error)),
+                _ => None,
+            })
+            .collect();
+        if !misses.is_empty() && misses.len() == self.refused.len() {
+            let target = misses[0].0;
+            if misses.iter().all(|m| m.0 == target) {
+                let error = misses.iter().map(|m| m.1).fold(f64::INFINITY, f64::min);
+                return Err(SynthesisError::Unreachable { target, error });
+            }
+        }
+        Err(SynthesisError::NoDesign {
+            refused: self.refused.len(),
+            failed_starts: self.failed_starts,
+            first_defect: self.refused.first().map(|(_, d)| d.clone()),
+        })
+    }
+}
+
 /// What the search gives: the certified designs, distinct, best first; the
 /// candidates refused, with their defect; the starts that could not be
 /// assembled at all.
