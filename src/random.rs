@@ -1,7 +1,7 @@
 //! Reproducible random numbers for Monte Carlo runs and random starts: a
 //! SplitMix64 stream (Steele, Lea and Flood 2014: a 64-bit counter through
-//! a bijective mixer, the generator that seeds the xoshiro family) per
-//! sample, started at a state mixed from the run's seed and the sample's
+//! a bijective mixer, the generator that starts the xoshiro family) per
+//! sample, started at a state mixed from the run's stream number and the sample's
 //! index, so that any sample can be drawn again by itself and a parallel
 //! run gives the same numbers on any number of threads; uniform numbers in
 //! (0, 1) from its top 53 bits, normal ones by the Box–Muller transform.
@@ -14,9 +14,9 @@ pub(crate) struct SplitMix64(u64);
 impl SplitMix64 {
     const GOLDEN: u64 = 0x9e37_79b9_7f4a_7c15;
 
-    /// The stream of sample `index` of the run `seed`.
-    pub(crate) fn of_sample(seed: u64, index: u64) -> SplitMix64 {
-        let mut mixer = SplitMix64(seed);
+    /// The stream of sample `index` of the run numbered `run`.
+    pub(crate) fn of_sample(run: u64, index: u64) -> SplitMix64 {
+        let mut mixer = SplitMix64(run);
         let start = mixer.next() ^ index.wrapping_mul(Self::GOLDEN);
         let mut stream = SplitMix64(start);
         stream.next();

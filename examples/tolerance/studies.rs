@@ -17,7 +17,7 @@ use std::f64::consts::{PI, TAU};
 /// The Monte Carlo run of every study.
 pub const RUN: MonteCarlo = MonteCarlo {
     samples: 100_000,
-    seed: 2026,
+    stream: 2026,
 };
 
 /// The crank's speed: 400 rpm, as in the worksheet.

@@ -20,8 +20,9 @@ use std::f64::consts::TAU;
 pub struct Search {
     /// Random starts, solved in parallel.
     pub starts: usize,
-    /// The seed of the starts (each start a function of it and its index).
-    pub seed: u64,
+    /// The random stream the starts are drawn from (each start a function
+    /// of it and its index).
+    pub stream: u64,
     pub stopping: Stopping,
     /// The solves of the poses and the sweeps of the certificate.
     pub options: SweepOptions,
@@ -31,7 +32,7 @@ impl Default for Search {
     fn default() -> Search {
         Search {
             starts: 64,
-            seed: 1,
+            stream: 1,
             stopping: Stopping::default(),
             options: SweepOptions::default(),
         }
@@ -125,7 +126,7 @@ where
     search.options.options.check()?;
     let starts: Vec<usize> = (0..search.starts).collect();
     let outcomes = batch::map(&starts, |&start| {
-        let x0 = start_point(problem, search.seed, start);
+        let x0 = start_point(problem, search.stream, start);
         solve(problem, x0, search, start)
     });
     let mut synthesis = Synthesis {
@@ -161,13 +162,13 @@ where
 /// free drivers evenly spread from a random phase.
 fn start_point<L, const M: usize, const K: usize>(
     problem: &Problem<L, M, K>,
-    seed: u64,
+    stream: u64,
     start: usize,
 ) -> DVector<f64>
 where
     L: Sensitivities<M, 1, K>,
 {
-    let mut stream = SplitMix64::of_sample(seed, start as u64);
+    let mut stream = SplitMix64::of_sample(stream, start as u64);
     let mut x: Vec<f64> = problem
         .free
         .iter()

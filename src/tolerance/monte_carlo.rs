@@ -7,11 +7,12 @@ use crate::batch;
 use linkage_runtime::{Drive, Error, Event, Motion, Sensitivities, SweepOptions};
 use nalgebra::SVector;
 
-/// A Monte Carlo run: how many samples, and the seed they are drawn from.
+/// A Monte Carlo run: how many samples, and the random stream they are drawn
+/// from (a number: the same number, the same samples).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct MonteCarlo {
     pub samples: usize,
-    pub seed: u64,
+    pub stream: u64,
 }
 
 impl MonteCarlo {
@@ -27,7 +28,7 @@ impl MonteCarlo {
         L: Sensitivities<M, F, K> + Clone,
     {
         let mut sample = model.clone();
-        sample.set_params(&(model.params() + tolerances.deviation(self.seed, index)));
+        sample.set_params(&(model.params() + tolerances.deviation(self.stream, index)));
         sample
     }
 }
