@@ -187,6 +187,28 @@ fn worksheet_targets() -> (Vec<Vector2<f64>>, Vec<f64>) {
     )
 }
 
+/// Path generation for G3 of a four-bar with l1 = 80, l2, l3, l4 free
+/// within `bounds`, timing free, from the worksheet's branch.
+fn g3_path(
+    start: FourBar,
+    targets: &[Vector2<f64>],
+    bounds: [(f64, f64); 3],
+) -> Problem<FourBar, 2, 4> {
+    let [(a, b), (c, d), (e, f)] = bounds;
+    Problem::path(start, "G3", targets, Timing::Free)
+        .unwrap()
+        .free("l2", a, b)
+        .unwrap()
+        .free("l3", c, d)
+        .unwrap()
+        .free("l4", e, f)
+        .unwrap()
+        .guess(vector![1.3, -0.8])
+}
+
+/// The wide bounds of the path problems.
+const WIDE: [(f64, f64); 3] = [(10.0, 30.0), (30.0, 70.0), (50.0, 90.0)];
+
 fn transmission(min_degrees: f64) -> Requirements<'static, FourBar, 2> {
     let mut requirements = Requirements::new(Range::Revolution);
     requirements.transmission = Some((
@@ -205,15 +227,7 @@ fn path_generation_finds_the_coupler_curve_through_five_points_and_certifies_it(
         l4: 65.0,
         ..FourBar::WORKSHEET
     };
-    let problem = Problem::path(start, "G3", &targets, Timing::Free)
-        .unwrap()
-        .free("l2", 10.0, 30.0)
-        .unwrap()
-        .free("l3", 30.0, 70.0)
-        .unwrap()
-        .free("l4", 50.0, 90.0)
-        .unwrap()
-        .guess(vector![1.3, -0.8]);
+    let problem = g3_path(start, &targets, WIDE);
     let found = synthesize(
         &problem,
         &transmission(30.0),
@@ -257,15 +271,7 @@ fn a_design_that_fails_its_requirements_is_refused_with_the_reason() {
         l4: 65.0,
         ..FourBar::WORKSHEET
     };
-    let problem = Problem::path(start, "G3", &targets, Timing::Free)
-        .unwrap()
-        .free("l2", 19.0, 21.0)
-        .unwrap()
-        .free("l3", 49.0, 51.0)
-        .unwrap()
-        .free("l4", 69.0, 71.0)
-        .unwrap()
-        .guess(vector![1.3, -0.8]);
+    let problem = g3_path(start, &targets, [(19.0, 21.0), (49.0, 51.0), (69.0, 71.0)]);
     let found = synthesize(
         &problem,
         &transmission(80.0),
@@ -379,12 +385,7 @@ proptest::proptest! {
                 p + vector![jitter[2 * i], jitter[2 * i + 1]]
             })
             .collect();
-        let problem = Problem::path(FourBar::WORKSHEET, "G3", &targets, Timing::Free)
-            .unwrap()
-            .free("l2", 10.0, 30.0).unwrap()
-            .free("l3", 30.0, 70.0).unwrap()
-            .free("l4", 50.0, 90.0).unwrap()
-            .guess(vector![1.3, -0.8]);
+        let problem = g3_path(FourBar::WORKSHEET, &targets, WIDE);
         let found = synthesize(&problem, &transmission(20.0), &Search { starts: 12, ..Search::default() }).unwrap();
         // Targets within a millimetre of a crank-rocker's curve: a design is found.
         proptest::prop_assert!(!found.designs.is_empty(), "{:?}", found.refused);
@@ -557,16 +558,7 @@ fn a_target_out_of_reach_is_a_typed_error() {
     // within 60 mm of the crank pivot: a precision point 500 mm away is out
     // of reach.
     let targets = [vector![20.0, 30.0], vector![500.0, 0.0]];
-    let problem = Problem::path(FourBar::WORKSHEET, "G3", &targets, Timing::Free)
-        .unwrap()
-        .free("l2", 10.0, 30.0)
-        .unwrap()
-        .free("l3", 30.0, 70.0)
-        .unwrap()
-        .free("l4", 50.0, 90.0)
-        .unwrap()
-        .guess(vector![1.3, -0.8])
-        .precision_points();
+    let problem = g3_path(FourBar::WORKSHEET, &targets, WIDE).precision_points();
     let found = synthesize(
         &problem,
         &Requirements::new(Range::Revolution),
