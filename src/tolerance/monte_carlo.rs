@@ -174,14 +174,23 @@ where
     L: Sensitivities<M, F, K>,
 {
     let mut values = vec![f64::NAN; nominal.len() * outputs.len()];
+    let mut at: Option<TolerancePose<M, F, K>> = None;
     let summary = sample
         .sweep_each(u0, drive, options, |pose| {
             let Some(Some(reference)) = nominal.get(pose.step) else {
                 return;
             };
-            let at = TolerancePose::plain(sample, &Motion::of_sweep_pose(pose));
+            // One pose's memory for the whole sweep.
+            let motion = Motion::of_sweep_pose(pose);
+            let at = match &mut at {
+                Some(at) => {
+                    at.set_plain(sample, &motion);
+                    at
+                }
+                None => at.insert(TolerancePose::plain(sample, &motion)),
+            };
             for (o, output) in outputs.iter().enumerate() {
-                values[pose.step * outputs.len() + o] = output.at(&at, reference).re;
+                values[pose.step * outputs.len() + o] = output.at(at, reference).re;
             }
         })
         .map_err(Failure::Kinematics)?;

@@ -66,6 +66,26 @@ impl<const M: usize, const F: usize, const K: usize> TolerancePose<M, F, K> {
         model: &L,
         motion: &Motion<M, F>,
     ) -> TolerancePose<M, F, K> {
+        let zero = SVector::zeros();
+        let mut pose = TolerancePose {
+            v: zero,
+            vdot: zero,
+            vddot: zero,
+            u: SVector::from_element(DualSVec64::from_re(0.0)),
+            udot: SVector::from_element(DualSVec64::from_re(0.0)),
+            uddot: SVector::from_element(DualSVec64::from_re(0.0)),
+            points: Vec::new(),
+            point_velocities: Vec::new(),
+            point_accelerations: Vec::new(),
+        };
+        pose.set_plain(model, motion);
+        pose
+    }
+
+    /// Makes this the pose `motion` of `model`, its numbers carrying no
+    /// gradient, in the memory it has (a Monte Carlo sample's poses, one
+    /// after the other).
+    pub fn set_plain<L: Sensitivities<M, F, K>>(&mut self, model: &L, motion: &Motion<M, F>) {
         let Motion {
             u,
             v,
@@ -74,24 +94,25 @@ impl<const M: usize, const F: usize, const K: usize> TolerancePose<M, F, K> {
             uddot,
             vddot,
         } = motion;
-        let lift = |points: L::Points| {
-            points
-                .as_ref()
-                .iter()
-                .map(|p| p.map(DualSVec64::from_re))
-                .collect()
+        let lift = |into: &mut Vec<Vector2<DualSVec64<K>>>, points: L::Points| {
+            into.clear();
+            into.extend(points.as_ref().iter().map(|p| p.map(DualSVec64::from_re)));
         };
-        TolerancePose {
-            v: *v,
-            vdot: *vdot,
-            vddot: *vddot,
-            u: u.map(DualSVec64::from_re),
-            udot: udot.map(DualSVec64::from_re),
-            uddot: uddot.map(DualSVec64::from_re),
-            points: lift(model.point_positions(u, v)),
-            point_velocities: lift(model.point_velocities(u, v, udot, vdot)),
-            point_accelerations: lift(model.point_accelerations(u, v, udot, vdot, uddot, vddot)),
-        }
+        self.v = *v;
+        self.vdot = *vdot;
+        self.vddot = *vddot;
+        self.u = u.map(DualSVec64::from_re);
+        self.udot = udot.map(DualSVec64::from_re);
+        self.uddot = uddot.map(DualSVec64::from_re);
+        lift(&mut self.points, model.point_positions(u, v));
+        lift(
+            &mut self.point_velocities,
+            model.point_velocities(u, v, udot, vdot),
+        );
+        lift(
+            &mut self.point_accelerations,
+            model.point_accelerations(u, v, udot, vdot, uddot, vddot),
+        );
     }
 }
 
