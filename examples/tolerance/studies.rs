@@ -163,40 +163,60 @@ fn swing_and_ratio(
         to: vector![TAU],
         steps: 72,
     };
-    let options = SweepOptions::default();
-    let sweep = model.sweep(u0, &drive, &options)?;
-    let output = Output::coordinate("theta4", Of::Position);
-    let found = tolerance::extremes(model, &sweep, &output, &options.options)?;
-    let (low, high) = extremes_pair(&found.iter().map(|f| (f.kind, f)).collect::<Vec<_>>())
-        .ok_or("θ4 has no maximum and minimum")?;
-    let place = |l: &tolerance::Located<4>| l.v.expect("θ4 is a coordinate: its place is known");
-    let swing = high.value - low.value;
-    let ratio = time_ratio(place(low), place(high));
-    let samples = tolerance::monte_carlo(model, tolerances, &RUN, |sample: &FourBar| {
-        let sweep = sample.sweep(u0, &drive, &options).ok()?;
-        let watch = [Watch::coordinate("theta4", Of::Position).extrema()];
-        let found = locate(sample, &sweep, &watch, &options.options).ok()?;
-        let pairs: Vec<_> = found.iter().map(|f| (f.kind, (f.value, f.v[0]))).collect();
-        let (low, high) = extremes_pair(&pairs)?;
-        let ratio = time_ratio(DualSVec64::<1>::from_re(low.1), DualSVec64::from_re(high.1));
-        Some((high.0 - low.0, ratio.re))
-    })?;
+    let (swing, ratio, samples) = range_and_ratio(model, u0, &drive, "theta4", tolerances)?;
     Ok(vec![
         located(
             "rocker swing θ4,max − θ4,min [°]",
             swing * (180.0 / PI),
             tolerances,
             &FourBar::PARAM_NAMES,
-            samples.iter().flatten().map(|s| s.0.to_degrees()),
+            samples.iter().map(|s| s.0.to_degrees()),
         ),
         located(
             "time ratio (crank turn while θ4 rises / falls)",
             ratio,
             tolerances,
             &FourBar::PARAM_NAMES,
-            samples.iter().flatten().map(|s| s.1),
+            samples.iter().map(|s| s.1),
         ),
     ])
+}
+
+/// The range (largest minus smallest) of the coordinate `name` along
+/// `drive` and the time ratio (the driver's turn from its smallest to its
+/// largest, over the rest): linear, with their gradients (the envelope
+/// theorem at the located extremes), and by Monte Carlo (a sweep and the
+/// extremes located again per sample; samples without both left out).
+#[allow(clippy::type_complexity)]
+fn range_and_ratio<L, const M: usize, const K: usize>(
+    model: &L,
+    u0: &SVector<f64, M>,
+    drive: &Drive<1>,
+    name: &str,
+    tolerances: &Tolerances<K>,
+) -> Result<(DualSVec64<K>, DualSVec64<K>, Vec<(f64, f64)>), Box<dyn std::error::Error>>
+where
+    L: Sensitivities<M, 1, K> + Clone + Sync + Send,
+{
+    let options = SweepOptions::default();
+    let sweep = model.sweep(u0, drive, &options)?;
+    let output = Output::coordinate(name, Of::Position);
+    let found = tolerance::extremes(model, &sweep, &output, &options.options)?;
+    let (low, high) = extremes_pair(&found.iter().map(|f| (f.kind, f)).collect::<Vec<_>>())
+        .ok_or_else(|| format!("{name} has no maximum and minimum"))?;
+    let place = |l: &tolerance::Located<K>| l.v.expect("a coordinate's extreme has a known place");
+    let range = high.value - low.value;
+    let ratio = time_ratio(place(low), place(high));
+    let samples = tolerance::monte_carlo(model, tolerances, &RUN, |sample: &L| {
+        let sweep = sample.sweep(u0, drive, &options).ok()?;
+        let watch = [Watch::coordinate(name, Of::Position).extrema()];
+        let found = locate(sample, &sweep, &watch, &options.options).ok()?;
+        let pairs: Vec<_> = found.iter().map(|f| (f.kind, (f.value, f.v[0]))).collect();
+        let (low, high) = extremes_pair(&pairs)?;
+        let ratio = time_ratio(DualSVec64::<1>::from_re(low.1), DualSVec64::from_re(high.1));
+        Some((high.0 - low.0, ratio.re))
+    })?;
+    Ok((range, ratio, samples.into_iter().flatten().collect()))
 }
 
 /// The smallest and the largest of located extrema (by kind).
@@ -257,28 +277,8 @@ pub fn shaper() -> Result<ShaperStudy, Box<dyn std::error::Error>> {
         to: vector![TAU - 0.3],
         steps: 72,
     };
-    let options = SweepOptions::default();
-    let u0 = model.guess();
-    let sweep = model.sweep(&u0, &drive, &options)?;
-    let output = Output::coordinate("x_d", Of::Position);
-    let found = tolerance::extremes(&model, &sweep, &output, &options.options)?;
-    let (left, right) = extremes_pair(&found.iter().map(|f| (f.kind, f)).collect::<Vec<_>>())
-        .ok_or("the ram has no dead positions")?;
-    let place = |l: &tolerance::Located<8>| l.v.expect("x_D is a coordinate: its place is known");
-    let stroke = right.value - left.value;
-    let ratio = time_ratio(place(left), place(right));
-    let samples = tolerance::monte_carlo(&model, &tolerances, &RUN, |sample: &Shaper| {
-        let sweep = sample.sweep(&u0, &drive, &options).ok()?;
-        let watch = [Watch::coordinate("x_d", Of::Position).extrema()];
-        let found = locate(sample, &sweep, &watch, &options.options).ok()?;
-        let pairs: Vec<_> = found.iter().map(|f| (f.kind, (f.value, f.v[0]))).collect();
-        let (left, right) = extremes_pair(&pairs)?;
-        let ratio = time_ratio(
-            DualSVec64::<1>::from_re(left.1),
-            DualSVec64::from_re(right.1),
-        );
-        Some((right.0 - left.0, ratio.re))
-    })?;
+    let (stroke, ratio, samples) =
+        range_and_ratio(&model, &model.guess(), &drive, "x_d", &tolerances)?;
     Ok(ShaperStudy {
         name: "the shaper of the course project".into(),
         located: vec![
@@ -287,14 +287,14 @@ pub fn shaper() -> Result<ShaperStudy, Box<dyn std::error::Error>> {
                 stroke,
                 &tolerances,
                 &Shaper::PARAM_NAMES,
-                samples.iter().flatten().map(|s| s.0),
+                samples.iter().map(|s| s.0),
             ),
             located(
                 "time ratio K_V",
                 ratio,
                 &tolerances,
                 &Shaper::PARAM_NAMES,
-                samples.iter().flatten().map(|s| s.1),
+                samples.iter().map(|s| s.1),
             ),
         ],
     })
