@@ -364,20 +364,31 @@ fn runs_through_its_targets(
     );
 }
 
+/// `cases` cases from a fixed stream of random numbers (another with
+/// `PROPTEST_RNG_SEED=n`), no failure files.
+fn fixed_stream(cases: u32) -> proptest::prelude::ProptestConfig {
+    let mut config = proptest::prelude::ProptestConfig::with_cases(cases);
+    config.failure_persistence = None;
+    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
+        config.rng_seed = proptest::test_runner::RngSeed::Fixed(0x7379_6e74_6865_7369);
+    }
+    config
+}
+
 proptest::proptest! {
-    #![proptest_config(proptest::prelude::ProptestConfig { cases: 6, ..Default::default() })]
+    #![proptest_config(fixed_stream(6))]
     #[test]
     fn every_returned_design_runs_through_its_targets(
-        l2 in 15.0..25.0f64, l3 in 40.0..60.0f64, l4 in 60.0..80.0f64,
+        // Crank-rockers: s + l = l2 + 80 ≤ 100 < l3 + l4, the crank shortest.
+        l2 in 15.0..20.0f64, l3 in 45.0..60.0f64, l4 in 60.0..80.0f64,
         phase in 0.0..6.0f64, jitter in proptest::collection::vec(-1.0..1.0f64, 10),
     ) {
         // Targets near a coupler curve of a random crank-rocker (jittered
         // by up to 1 mm, so not always exactly reachable).
         let source = FourBar { l2, l3, l4, ..FourBar::WORKSHEET };
         let drive = Drive::Line { from: vector![0.0], to: vector![2.0 * PI], steps: 720 };
-        let Ok(sweep) = source.sweep(&vector![1.3, -0.8], &drive, &SweepOptions::default()) else {
-            return Ok(());
-        };
+        let sweep = source.sweep(&vector![1.3, -0.8], &drive, &SweepOptions::default()).unwrap();
+        proptest::prop_assert!(sweep.complete && sweep.poses.len() == 721);
         let targets: Vec<Vector2<f64>> = (0..5)
             .map(|i| {
                 let k = ((phase / (2.0 * PI) * 720.0) as usize + 144 * i) % 720;
