@@ -97,14 +97,18 @@ impl<L: Linkage<M, 1>, const M: usize> Machine<L, M> {
 
     /// The pose at φ, as loads see it.
     pub fn pose(&self, phi: f64) -> Result<Pose, Error> {
-        let a = self.analysis(phi)?;
+        Ok(self.pose_of(phi, &self.analysis(phi)?))
+    }
+
+    /// The pose at φ from its analysis.
+    pub(super) fn pose_of(&self, phi: f64, a: &Analysis<M, 1, L::Points>) -> Pose {
         let mut q: Vec<f64> = a.u.iter().copied().collect();
         q.push(phi);
         let mut q_phi: Vec<f64> = a.udot.iter().copied().collect();
         q_phi.push(1.0);
         let mut q_phiphi: Vec<f64> = a.uddot.iter().copied().collect();
         q_phiphi.push(0.0);
-        Ok(Pose {
+        Pose {
             phi,
             q,
             q_phi,
@@ -114,7 +118,7 @@ impl<L: Linkage<M, 1>, const M: usize> Machine<L, M> {
             points_phiphi: a.point_accelerations.as_ref().to_vec(),
             point_names: L::POINT_NAMES,
             coordinate_names: self.coordinates.clone(),
-        })
+        }
     }
 
     /// The loads and weights acting at a pose: a load whose value is not
@@ -208,7 +212,7 @@ impl<L: Linkage<M, 1>, const M: usize> Machine<L, M> {
         self.reduced_at(&pose)
     }
 
-    fn reduced_at(&self, pose: &Pose) -> Result<Reduced, MachineError> {
+    pub(super) fn reduced_at(&self, pose: &Pose) -> Result<Reduced, MachineError> {
         let mut bodies = Vec::with_capacity(self.bodies.len());
         for body in &self.bodies {
             let (rotation, rotation_d) = match body.angle {

@@ -17,7 +17,7 @@ use std::f64::consts::TAU;
 /// ε(φ) = (M(φ) + M_D)/(J_I + J(φ)) − ω(φ)² J′(φ) / (2 (J_I + J(φ)))
 /// ```
 pub struct EnergyMethod<'m, L, const M: usize> {
-    machine: &'m Machine<L, M>,
+    pub(super) machine: &'m Machine<L, M>,
     pub omega_mean: f64,
     pub delta: f64,
     /// M_D = −A(2π)/2π

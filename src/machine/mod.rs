@@ -37,6 +37,7 @@
 mod body;
 mod build;
 mod cycle;
+mod design;
 mod energy;
 pub mod flywheel;
 pub mod kinetostatics;
@@ -48,6 +49,7 @@ mod table;
 pub use body::Body;
 pub use build::MachineBuilder;
 pub use cycle::{Machine, Reduced};
+pub use design::{Design, ReducedGradient};
 pub use energy::{EnergyMethod, Extremum};
 pub use load::{Applied, Load};
 pub use pose::Pose;
@@ -86,6 +88,9 @@ pub enum MachineError {
     Overflow { what: &'static str, phi: f64 },
     /// A body or load names a point or a coordinate the model does not have.
     UnknownName(UnknownName),
+    /// The dynamics cannot be differentiated by the design (see
+    /// [`Machine::design`]).
+    NotDifferentiable { what: String, why: &'static str },
 }
 
 crate::error::error_impls! {
@@ -99,6 +104,7 @@ crate::error::error_impls! {
         Self::NonFiniteLoad { load, phi } => ("the load `{load}` is not finite at φ = {phi}"),
         Self::Overflow { what, phi } => ("{what} leaves the range of f64 at φ = {phi}: the masses, inertias or loads are too large"),
             Self::UnknownName(inner) => ("{inner}"),
+        Self::NotDifferentiable { what, why } => ("{what} cannot be differentiated by the design: {why}"),
     }
     wraps { Kinematics(Error), UnknownName(UnknownName) }
 }

@@ -80,6 +80,29 @@ impl Table {
         y0 + (y1 - y0) * (x - x0) / (x1 - x0)
     }
 
+    /// The slope at x: of the segment x lies in (after a breakpoint, the
+    /// segment that starts there), 0 beyond the ends; NaN for a NaN x.
+    pub fn slope(&self, x: f64) -> f64 {
+        let p = &self.points;
+        if x.is_nan() {
+            return f64::NAN;
+        }
+        if x < p[0].0 || x >= p[p.len() - 1].0 {
+            return 0.0;
+        }
+        let k = p.partition_point(|&(xi, _)| xi <= x) - 1;
+        let ((x0, y0), (x1, y1)) = (p[k], p[k + 1]);
+        (y1 - y0) / (x1 - x0)
+    }
+
+    /// Whether the table jumps anywhere (two points at one abscissa with
+    /// different values).
+    pub fn jumps(&self) -> bool {
+        self.points
+            .windows(2)
+            .any(|w| w[0].0 == w[1].0 && w[0].1 != w[1].1)
+    }
+
     /// The abscissae where the slope changes or the value jumps, ascending,
     /// each once.
     pub fn breakpoints(&self) -> impl Iterator<Item = f64> + '_ {
@@ -112,6 +135,11 @@ mod tests {
         assert_eq!(t.at(9.0), 0.0);
         assert_eq!(t.area(), 6.0);
         assert_eq!(t.breakpoints().count(), 4);
+        assert_eq!(
+            [0.5, 1.0, 2.0, 3.5, -1.0, 9.0].map(|x| t.slope(x)),
+            [2.0, 0.0, 0.0, -2.0, 0.0, 0.0]
+        );
+        assert!(!t.jumps());
         assert!(Table::new(vec![(0.0, 1.0)]).is_err());
         assert!(Table::new(vec![(0.0, 1.0), (1.0, f64::NAN)]).is_err());
         assert!(Table::new(vec![(1.0, 1.0), (0.0, 1.0)]).is_err());
@@ -136,6 +164,8 @@ mod tests {
         assert_eq!(t.area(), 10.0);
         assert_eq!(t.breakpoints().collect::<Vec<_>>(), vec![0.0, 1.0, 3.0]);
         assert!(t.at(f64::NAN).is_nan());
+        assert!(t.jumps());
+        assert_eq!([0.5, 1.0, 3.0].map(|x| t.slope(x)), [0.0, 0.0, 0.0]);
         // Three points at one abscissa, or none spanned, are no table.
         assert!(Table::new(vec![(0.0, 0.0), (1.0, 1.0), (1.0, 2.0), (1.0, 3.0)]).is_err());
         assert!(Table::new(vec![(1.0, 0.0), (1.0, 1.0)]).is_err());

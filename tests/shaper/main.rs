@@ -8,6 +8,7 @@
 mod machine;
 
 mod bad_settings;
+mod design;
 mod first_half;
 mod kinetostatics;
 mod reference;

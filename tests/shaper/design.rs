@@ -1,0 +1,147 @@
+//! The dynamics differentiated by the design (`Machine::design`): the
+//! exact derivatives of J(φ), M(φ), A(φ) and the flywheel J_I of the
+//! energy method by the mechanism's dimensions and the bodies' masses and
+//! inertias, against central differences of the machine rebuilt with each
+//! one moved.
+
+use crate::machine::{COURSE_PROJECT, Data, Shaper, machine, synthesize};
+use linkage::machine::MachineError;
+use std::f64::consts::TAU;
+
+/// The design moved by `h` in the named dimension or mass.
+fn moved(shaper: &Shaper, data: &Data, name: &str, h: f64) -> (Shaper, Data) {
+    let (mut s, mut d) = (*shaper, *data);
+    match name {
+        "l_oa" => s.l_oa += h,
+        "l_cd" => s.l_cd += h,
+        "y_c" => s.y_c += h,
+        "phi0" => s.phi0 += h,
+        "lambda_s3" => s.lambda_s3 += h,
+        "mass of rocker 3" => d.m3 += h,
+        "inertia of rocker 3" => d.i3s += h,
+        "mass of ram 5" => d.m5 += h,
+        _ => unreachable!("{name}"),
+    }
+    (s, d)
+}
+
+/// J, M at φ₁ and φ₂, the work from φ₁ to φ₂, A(2π) and J_I of a design.
+/// (Not A(φ₁) itself: the ram's dead position, where friction kinks, sits
+/// at φ = 0 for the nominal design and moves to either side of it with the
+/// design, so A(φ₁) from 0 is only once differentiable there and central
+/// differences of it err by O(h); the work between two poses clear of it
+/// and over a whole cycle are smooth.)
+fn quantities(shaper: &Shaper, data: &Data, phis: [f64; 2]) -> Vec<f64> {
+    let m = machine(shaper, data).unwrap();
+    let e = m.energy_method(TAU * data.n1, data.delta).unwrap();
+    let mut out = Vec::new();
+    for phi in phis {
+        let r = m.reduced(phi).unwrap();
+        out.extend([r.inertia, r.moment]);
+    }
+    let between = m.work(phis[1]).unwrap() - m.work(phis[0]).unwrap();
+    out.extend([between, m.cycle_work(), e.flywheel]);
+    out
+}
+
+#[test]
+fn the_flywheel_and_the_reduced_dynamics_differentiate_as_differences_say() {
+    let data = COURSE_PROJECT;
+    let shaper = synthesize(&data).unwrap();
+    let m = machine(&shaper, &data).unwrap();
+    let e = m.energy_method(TAU * data.n1, data.delta).unwrap();
+    let design = m.design().unwrap();
+    let names = design.names();
+    assert_eq!(names.len(), 8 + 2 * 5);
+    // A pose on the working stroke (the cutting force on its slope) and one
+    // on the return.
+    let phis = [1.7, 4.9];
+    let exact: Vec<Vec<f64>> = {
+        let (a, b) = (
+            design.reduced(phis[0]).unwrap(),
+            design.reduced(phis[1]).unwrap(),
+        );
+        let (w0, w1) = (design.work(phis[0]).unwrap(), design.work(phis[1]).unwrap());
+        let cycle = design.work(TAU).unwrap();
+        let flywheel = design.flywheel(&e).unwrap();
+        (0..names.len())
+            .map(|i| {
+                vec![
+                    a.inertia[i],
+                    a.moment[i],
+                    b.inertia[i],
+                    b.moment[i],
+                    w1[i] - w0[i],
+                    cycle[i],
+                    flywheel[i],
+                ]
+            })
+            .collect()
+    };
+    let nominal = quantities(&shaper, &data, phis);
+    for name in [
+        "l_oa",
+        "l_cd",
+        "y_c",
+        "phi0",
+        "lambda_s3",
+        "mass of rocker 3",
+        "inertia of rocker 3",
+        "mass of ram 5",
+    ] {
+        let i = names.iter().position(|n| n == name).unwrap();
+        let h = 1e-5;
+        let (s1, d1) = moved(&shaper, &data, name, h);
+        let (s0, d0) = moved(&shaper, &data, name, -h);
+        let (up, down) = (quantities(&s1, &d1, phis), quantities(&s0, &d0, phis));
+        for (k, what) in [
+            "J(φ₁)",
+            "M(φ₁)",
+            "J(φ₂)",
+            "M(φ₂)",
+            "A(φ₂) − A(φ₁)",
+            "A(2π)",
+            "J_I",
+        ]
+        .iter()
+        .enumerate()
+        {
+            let difference = (up[k] - down[k]) / (2.0 * h);
+            // Central differences: truncation ≈ h²·f‴, rounding ≈ ε·|f|/h
+            // (the quantities are computed to ≈ 1e-13 of their size).
+            let scale = nominal[k].abs().max(1.0);
+            let error = (exact[i][k] - difference).abs();
+            assert!(
+                error <= 1e-6 * scale,
+                "∂{what}/∂{name}: exact {} vs differences {difference} ({error:e})",
+                exact[i][k]
+            );
+        }
+    }
+    // The massless bodies' masses and inertias: J grows by |v|² and ω².
+    let crank = names
+        .iter()
+        .position(|n| n == "inertia of crank 1")
+        .unwrap();
+    let r = design.reduced(phis[0]).unwrap();
+    assert!(
+        (r.inertia[crank] - 1.0).abs() < 1e-15,
+        "the crank turns at unit speed"
+    );
+}
+
+#[test]
+fn a_load_given_as_a_function_is_not_differentiated() {
+    use linkage::machine::{Body, Load, Machine};
+    use linkage::prelude::*;
+    let shaper = synthesize(&COURSE_PROJECT).unwrap();
+    let m = Machine::new(shaper, shaper.guess())
+        .body(Body::new("ram 5").mass(65.0).at("S5"))
+        .load(Load::force("push", "F", |_| vector![-100.0, 0.0]))
+        .build()
+        .unwrap();
+    match m.design() {
+        Err(MachineError::NotDifferentiable { what, .. }) => assert_eq!(what, "the load `push`"),
+        other => panic!("{:?}", other.map(|d| d.names().to_vec())),
+    }
+}
