@@ -20,6 +20,7 @@
 //! (doubling its factor) after a failure. A trial the model cannot be
 //! evaluated at (a design that does not assemble) is a failure.
 
+use super::SynthesisError;
 use nalgebra::{DMatrix, DVector};
 
 /// The residuals and their Jacobian at a point, and whatever the
@@ -55,6 +56,76 @@ impl Default for Stopping {
             evaluations: 400,
         }
     }
+}
+
+/// What [`least_squares`] found.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LeastSquares {
+    /// Where it stopped (within the bounds).
+    pub x: DVector<f64>,
+    /// r(x)
+    pub residuals: DVector<f64>,
+    /// The evaluations it took.
+    pub evaluations: usize,
+}
+
+/// Minimises ½‖r(x)‖² for `lower` ≤ x ≤ `upper` from `x0` (projected onto
+/// the bounds) by the bounded Levenberg–Marquardt method the synthesis
+/// uses (see the module's documentation): for objectives of one's own —
+/// a design's cost with its exact gradient, say (a scalar cost c ≥ 0 as
+/// the one residual √c, its Jacobian ∇c/(2√c)). `residuals` gives r(x)
+/// and ∂r/∂x, or `None` where x cannot be evaluated (a trial there only
+/// shortens the step). Typed errors: bounds of the wrong length, empty or
+/// not finite ([`SynthesisError::EmptyBounds`], the unknown named by its
+/// index), and a start that cannot be evaluated
+/// ([`SynthesisError::NoDesign`]).
+pub fn least_squares(
+    x0: DVector<f64>,
+    lower: &DVector<f64>,
+    upper: &DVector<f64>,
+    stopping: &Stopping,
+    mut residuals: impl FnMut(&DVector<f64>) -> Option<(DVector<f64>, DMatrix<f64>)>,
+) -> Result<LeastSquares, SynthesisError> {
+    let n = x0.len();
+    for i in 0..n.max(lower.len()).max(upper.len()) {
+        let (lo, hi) = (
+            lower.get(i).copied().unwrap_or(f64::NAN),
+            upper.get(i).copied().unwrap_or(f64::NAN),
+        );
+        if !(lo <= hi && lo.is_finite() && hi.is_finite()) || i >= n {
+            return Err(SynthesisError::EmptyBounds {
+                parameter: format!("unknown {i}"),
+                lower: lo,
+                upper: hi,
+            });
+        }
+    }
+    let x0 = DVector::from_fn(n, |i, _| x0[i].clamp(lower[i], upper[i]));
+    let mut evaluate = |x: &DVector<f64>, _: &()| {
+        residuals(x).and_then(|(r, j)| {
+            let usable = j.nrows() == r.len()
+                && j.ncols() == n
+                && r.iter().chain(j.iter()).all(|v| v.is_finite());
+            usable.then_some(Evaluation {
+                residuals: r,
+                jacobian: j,
+                state: (),
+            })
+        })
+    };
+    let Some(first) = evaluate(&x0, &()) else {
+        return Err(SynthesisError::NoDesign {
+            refused: 0,
+            failed_starts: 1,
+            first_defect: None,
+        });
+    };
+    let found = minimize(first, x0, lower, upper, stopping, evaluate);
+    Ok(LeastSquares {
+        x: found.x,
+        residuals: found.residuals,
+        evaluations: found.evaluations,
+    })
 }
 
 /// Where the solver stopped.
@@ -240,6 +311,48 @@ mod tests {
             jacobian: DMatrix::from_row_slice(2, 2, &[-20.0 * x[0], 10.0, -1.0, 0.0]),
             state: (),
         })
+    }
+
+    /// The public entry: the same minimum as the inner solver; bounds of
+    /// the wrong length or empty, and a start that cannot be evaluated, are
+    /// typed errors.
+    #[test]
+    fn least_squares_for_ones_own_objective() {
+        let residuals = |x: &DVector<f64>| rosenbrock(x, &()).map(|e| (e.residuals, e.jacobian));
+        let wide = DVector::from_element(2, 10.0);
+        let found = least_squares(
+            DVector::from_vec(vec![-1.2, 1.0]),
+            &-&wide,
+            &wide,
+            &Stopping::default(),
+            residuals,
+        )
+        .unwrap();
+        assert!((&found.x - DVector::from_element(2, 1.0)).amax() < 1e-12);
+        let empty = DVector::from_vec(vec![0.0, 1.0]);
+        let three = DVector::from_element(3, 10.0);
+        for (lower, upper) in [(&empty, &DVector::zeros(2)), (&-&wide, &three)] {
+            let e = least_squares(
+                DVector::zeros(2),
+                lower,
+                upper,
+                &Stopping::default(),
+                residuals,
+            );
+            assert!(
+                matches!(e, Err(SynthesisError::EmptyBounds { .. })),
+                "{e:?}"
+            );
+        }
+        let never = |_: &DVector<f64>| None;
+        let e = least_squares(
+            DVector::zeros(2),
+            &-&wide,
+            &wide,
+            &Stopping::default(),
+            never,
+        );
+        assert!(matches!(e, Err(SynthesisError::NoDesign { .. })), "{e:?}");
     }
 
     #[test]

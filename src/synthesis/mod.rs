@@ -28,7 +28,7 @@ mod residuals;
 mod search;
 
 pub use certify::{Defect, DesignCheck, Range, Requirements, TransmissionAngle, certify};
-pub use least_squares::Stopping;
+pub use least_squares::{LeastSquares, Stopping, least_squares};
 pub use problem::{Problem, Timing};
 pub use search::{Candidate, Search, Synthesis, synthesize};
 
