@@ -145,3 +145,52 @@ fn a_load_given_as_a_function_is_not_differentiated() {
         other => panic!("{:?}", other.map(|d| d.names().to_vec())),
     }
 }
+
+/// The flywheel minimised over l_OC, y_F and the rocker's mass
+/// distribution (examples/shaper/redesign.rs): the optimum satisfies the
+/// optimality conditions with its exact gradient, is confirmed by J_PRI on
+/// either side of it, and its flywheel keeps the true periodic motion
+/// within the required fluctuation.
+#[test]
+fn the_flywheel_optimum_is_a_minimum_and_keeps_the_true_motion_within_delta() {
+    use crate::redesign::{bounds, course_variables, flywheel, minimise, true_fluctuation};
+    let data = COURSE_PROJECT;
+    let (lower, upper) = bounds(&data);
+    let course = course_variables(&data).unwrap();
+    let (j_course, _) = flywheel(&data, &course).unwrap();
+    let best = minimise(&data).unwrap();
+    assert!(
+        best.flywheel < 0.95 * j_course,
+        "{} vs {j_course}",
+        best.flywheel
+    );
+    // l_OC and y_F: no effect (gradients at rounding level); λ_S3 interior,
+    // stationary; I_S3 on its lower bound, J_PRI growing with it.
+    let scale = best.flywheel;
+    for k in [0, 1] {
+        assert!(
+            best.gradient[k].abs() <= 1e-9 * scale,
+            "{}",
+            best.gradient[k]
+        );
+    }
+    assert!(best.x[2] > lower[2] && best.x[2] < upper[2]);
+    assert!(
+        best.gradient[2].abs() <= 1e-6 * scale,
+        "{}",
+        best.gradient[2]
+    );
+    assert!(best.x[3] == lower[3] && best.gradient[3] > 0.0);
+    // J_PRI itself on either side of the stationary λ_S3.
+    for h in [-0.02, 0.02] {
+        let mut x = best.x.clone();
+        x[2] += h;
+        let (j, _) = flywheel(&data, &x).unwrap();
+        assert!(j > best.flywheel, "λ_S3 {}: {j} ≤ {}", x[2], best.flywheel);
+    }
+    // The true periodic motion with the optimum's flywheel: δ within the
+    // target, as with the course project's (the energy method's estimate
+    // errs on the safe side by a few per cent in both).
+    let delta = true_fluctuation(&data, &best.x, best.flywheel).unwrap();
+    assert!(delta <= data.delta && delta > 0.9 * data.delta, "{delta}");
+}

@@ -6,6 +6,8 @@
 
 #[path = "../../examples/shaper/machine.rs"]
 mod machine;
+#[path = "../../examples/shaper/redesign.rs"]
+mod redesign;
 
 mod bad_settings;
 mod design;
