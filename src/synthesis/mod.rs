@@ -2,11 +2,13 @@
 //! written with the attribute.
 //!
 //! A [`Problem`] says what is matched — a point's path through target
-//! points ([`Problem::path`]), a coordinate as a function of the driver
+//! points ([`Problem::path`]) or close to a closed curve
+//! ([`Problem::curve`]), a coordinate as a function of the driver
 //! ([`Problem::function`]), a body's position and angle
 //! ([`Problem::motion`]) — which parameters are free and within which
-//! bounds ([`Problem::free`]), and whether the driver at each target is
-//! prescribed or free ([`Timing`]). Its residuals have exact Jacobians:
+//! bounds ([`Problem::free`]), whether the driver at each target is
+//! prescribed or free ([`Timing`]), and the designer's own terms
+//! ([`Problem::term`], written on dual numbers). Its residuals have exact Jacobians:
 //! each target's pose is solved by Newton, and the sensitivities
 //! ([`Sensitivities`](crate::Sensitivities)) give the columns of the free
 //! parameters, the velocity at unit driver speed the column of a free
@@ -26,6 +28,7 @@ mod least_squares;
 mod problem;
 mod residuals;
 mod search;
+mod terms;
 
 pub use certify::{Defect, DesignCheck, Range, Requirements, TransmissionAngle, certify};
 pub use least_squares::{LeastSquares, Stopping, least_squares};
@@ -49,6 +52,8 @@ pub enum SynthesisError {
     },
     /// No targets.
     NoTargets,
+    /// A target curve that cannot be sampled ([`Problem::curve`]).
+    Curve(&'static str),
     /// A target or a prescribed driver is not finite.
     NonFiniteTarget,
     /// Prescribed drivers and targets differ in number.
@@ -77,6 +82,7 @@ crate::error::error_impls! {
         Self::UnknownName(inner) => ("{inner}"),
         Self::EmptyBounds { parameter, lower, upper } => ("the bounds [{lower}, {upper}] of `{parameter}` are empty or not finite"),
         Self::NoTargets => ("a synthesis problem needs at least one target"),
+        Self::Curve(why) => ("the target curve: {why}"),
         Self::NonFiniteTarget => ("a target or a prescribed driver is not finite"),
         Self::Timing { targets, drivers } => ("{targets} targets but {drivers} prescribed drivers"),
         Self::NothingFree => ("no parameter is free: free at least one with Problem::free"),

@@ -4,6 +4,7 @@
 //! target prescribed or free.
 
 use super::SynthesisError;
+use super::terms::Term;
 use crate::error::{NameKind, UnknownName};
 use linkage_runtime::{Linkage, Sensitivities};
 use nalgebra::{SVector, Vector2};
@@ -68,6 +69,8 @@ pub struct Problem<L, const M: usize, const K: usize> {
     pub(crate) guess: SVector<f64, M>,
     /// Whether every target must be met exactly (precision points).
     pub(crate) exact: bool,
+    /// The designer's own terms, after the targets' residuals.
+    pub(crate) terms: Vec<Term<K>>,
 }
 
 impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K> {
@@ -83,6 +86,53 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
         };
         let values = targets.iter().map(|t| [t.x, t.y, 0.0]).collect();
         Problem::new(model, task, values, timing)
+    }
+
+    /// Path generation close to a closed curve: the point `point` through
+    /// `samples` points spread evenly by arc length along the closed
+    /// polyline `curve` (its last point joined to its first), the driver
+    /// at each free ([`Timing::Free`], first guessed in the samples' order
+    /// over a revolution, which the certificate then checks), fitted by
+    /// least squares. Errors: fewer than three points or samples, or a
+    /// curve of no length ([`SynthesisError::Curve`]); a point not finite.
+    pub fn curve(
+        model: L,
+        point: &str,
+        curve: &[Vector2<f64>],
+        samples: usize,
+    ) -> Result<Self, SynthesisError> {
+        if curve.iter().any(|p| !(p.x.is_finite() && p.y.is_finite())) {
+            return Err(SynthesisError::NonFiniteTarget);
+        }
+        if curve.len() < 3 || samples < 3 {
+            return Err(SynthesisError::Curve(
+                "a closed curve needs at least three points and three samples",
+            ));
+        }
+        let n = curve.len();
+        let edge = |i: usize| (curve[i], curve[(i + 1) % n]);
+        let lengths: Vec<f64> = (0..n).map(|i| (edge(i).1 - edge(i).0).norm()).collect();
+        let total: f64 = lengths.iter().sum();
+        if !(total > 0.0 && total.is_finite()) {
+            return Err(SynthesisError::Curve("the curve has no length"));
+        }
+        let mut targets = Vec::with_capacity(samples);
+        let (mut i, mut walked) = (0, 0.0);
+        for k in 0..samples {
+            let at = total * k as f64 / samples as f64;
+            while i + 1 < n && walked + lengths[i] < at {
+                walked += lengths[i];
+                i += 1;
+            }
+            let (a, b) = edge(i);
+            let t = if lengths[i] > 0.0 {
+                ((at - walked) / lengths[i]).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            targets.push(a + (b - a) * t);
+        }
+        Problem::path(model, point, &targets, Timing::Free)
     }
 
     /// Function generation: the coordinate `coordinate` (of u) takes the
@@ -163,6 +213,7 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
             drivers,
             guess: SVector::zeros(),
             exact: false,
+            terms: Vec::new(),
         })
     }
 
@@ -207,8 +258,14 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
         self
     }
 
-    /// The residuals: one, two or three per target.
+    /// The residuals: one, two or three per target, then one per term
+    /// ([`Problem::term`]).
     pub fn residuals(&self) -> usize {
+        self.target_residuals() + self.terms.len()
+    }
+
+    /// The targets' residuals (the rows before the terms').
+    pub(crate) fn target_residuals(&self) -> usize {
         self.task.rows() * self.targets.len()
     }
 

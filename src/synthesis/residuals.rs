@@ -105,6 +105,7 @@ where
         poses.u.push(analysis.u);
         poses.branch.push(branch);
     }
+    problem.add_terms(x.as_slice(), &mut residuals, &mut jacobian);
     let finite = residuals
         .iter()
         .chain(jacobian.iter())

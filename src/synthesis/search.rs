@@ -263,9 +263,8 @@ where
         evaluate(problem, x, from, options)
     });
     let rows = problem.task.rows();
-    let errors = found
-        .residuals
-        .as_slice()
+    // Each target's miss (the designer's terms follow the targets' rows).
+    let errors = found.residuals.as_slice()[..problem.target_residuals()]
         .chunks(rows)
         .map(|r| r.iter().map(|x| x * x).sum::<f64>().sqrt())
         .collect();
