@@ -86,26 +86,17 @@ where
     P: Copy + AsRef<[Vector2<f64>]> + AsMut<[Vector2<f64>]>,
 {
     let stage = Stage::Sensitivity;
-    // As the inputs: one pass, then one by one only if that fails.
-    let finite = all_finite(terms.psi_u.as_slice())
-        & all_finite(terms.psi_p.as_slice())
-        & all_finite(terms.psi_u_dot.as_slice())
-        & all_finite(terms.psi_p_dot.as_slice())
-        & all_finite(terms.psi_u_ddot.as_slice())
-        & all_finite(terms.psi_p_ddot.as_slice());
-    if !finite {
-        for (quantity, values) in [
-            ("Ψ_u", terms.psi_u.as_slice()),
-            ("Ψ_p", terms.psi_p.as_slice()),
-            ("Ψ̇_u", terms.psi_u_dot.as_slice()),
-            ("Ψ̇_p", terms.psi_p_dot.as_slice()),
-            ("Ψ̈_u", terms.psi_u_ddot.as_slice()),
-            ("Ψ̈_p", terms.psi_p_ddot.as_slice()),
-        ] {
-            check_value(stage, quantity, values)?;
+    // The terms are not scanned up front: a NaN or an infinity in any of
+    // them reaches u_p, u̇_p or ü_p (IEEE: ∞·0 is NaN, and Ψ_u's makes the
+    // inverse fail), so only a failure scans them, in order, to name the
+    // first — the errors of a scan up front, for one pass less.
+    let inv = match factor(&terms.psi_u, stage, options) {
+        Ok(inv) => inv,
+        Err(singular) => {
+            name_non_finite_term(terms)?;
+            return Err(singular);
         }
-    }
-    let inv = factor(&terms.psi_u, stage, options)?;
+    };
     // −Ψ_u⁻¹ once: negating m² entries rather than three products' m·k
     // (the same numbers, negation being exact).
     let minus_inverse = inv.inverse.map(|x| -x);
@@ -125,6 +116,7 @@ where
     let finite =
         all_finite(u.as_slice()) & all_finite(udot.as_slice()) & all_finite(uddot.as_slice());
     if !finite {
+        name_non_finite_term(terms)?;
         for (quantity, values) in [
             ("u_p", u.as_slice()),
             ("u̇_p", udot.as_slice()),
@@ -187,6 +179,25 @@ where
         }
     }
     Ok(out)
+}
+
+/// `NonFiniteValue` naming the first of the matrix terms that is not
+/// finite, in their order; `Ok` if all are.
+#[cold]
+fn name_non_finite_term<const M: usize, const K: usize, P>(
+    terms: &SensitivityTerms<M, K, P>,
+) -> Result<(), Error> {
+    for (quantity, values) in [
+        ("Ψ_u", terms.psi_u.as_slice()),
+        ("Ψ_p", terms.psi_p.as_slice()),
+        ("Ψ̇_u", terms.psi_u_dot.as_slice()),
+        ("Ψ̇_p", terms.psi_p_dot.as_slice()),
+        ("Ψ̈_u", terms.psi_u_ddot.as_slice()),
+        ("Ψ̈_p", terms.psi_p_ddot.as_slice()),
+    ] {
+        check_value(Stage::Sensitivity, quantity, values)?;
+    }
+    Ok(())
 }
 
 /// Whether every coordinate of every point of every column is finite,
