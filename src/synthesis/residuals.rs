@@ -8,6 +8,7 @@ use super::least_squares::Evaluation;
 use super::problem::{Problem, Task};
 use linkage_runtime::{Motion, Options, Sensitivities, invert};
 use nalgebra::{DMatrix, DVector, SVector};
+use std::f64::consts::TAU;
 
 /// The poses at the targets, and the sign of det Ψ_u there (the assembly
 /// branch the design is followed on).
@@ -90,11 +91,15 @@ where
         };
         for r in 0..rows {
             let row = rows * i + r;
-            let wanted = match (problem.task, r) {
-                (Task::Motion { length, .. }, 2) => length * target[2],
-                _ => target[r],
+            residuals[row] = match (problem.task, r) {
+                // An angle meets its target modulo whole turns: the body's
+                // orientation is what is matched, not how often it turned.
+                (Task::Motion { length, .. }, 2) => {
+                    let miss = (value[r] - length * target[2]) / length;
+                    length * (miss - TAU * (miss / TAU).round())
+                }
+                _ => value[r] - target[r],
             };
-            residuals[row] = value[r] - wanted;
             for (column, free) in problem.free.iter().enumerate() {
                 jacobian[(row, column)] = by_p[r][free.index];
             }
