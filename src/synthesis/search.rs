@@ -270,17 +270,49 @@ where
         .collect();
     let rms_error = (found.residuals.norm_squared() / found.residuals.len() as f64).sqrt();
     let x = found.x.as_slice();
+    let mut drivers: Vec<f64> = (0..problem.targets.len())
+        .map(|i| problem.driver(x, i))
+        .collect();
+    if problem.drivers.is_none() {
+        one_way(&mut drivers);
+    }
     Some(Candidate {
         model: problem.model_at(x),
-        drivers: (0..problem.targets.len())
-            .map(|i| problem.driver(x, i))
-            .collect(),
+        drivers,
         poses: found.state.u,
         errors,
         rms_error,
         evaluations: found.evaluations,
         start,
     })
+}
+
+/// Free drivers are angles whose whole turns the solver leaves wherever
+/// its steps took them (a driver a turn away gives the same pose). If they
+/// do not visit the targets in order turning one way, less than a turn
+/// from each to the next, each is moved by whole turns onto the shortest
+/// route that does: the route the certificate then follows.
+fn one_way(drivers: &mut [f64]) {
+    let gaps = || drivers.windows(2).map(|w| w[1] - w[0]);
+    let within = gaps().all(|g| g != 0.0 && g.abs() < TAU);
+    if within && (gaps().all(|g| g > 0.0) || gaps().all(|g| g < 0.0)) {
+        return;
+    }
+    let travel = |sign: f64| -> f64 {
+        drivers
+            .windows(2)
+            .map(|w| (sign * (w[1] - w[0])).rem_euclid(TAU))
+            .sum()
+    };
+    let sign = if travel(1.0) <= travel(-1.0) {
+        1.0
+    } else {
+        -1.0
+    };
+    for i in 1..drivers.len() {
+        let gap = (sign * (drivers[i] - drivers[i - 1])).rem_euclid(TAU);
+        drivers[i] = drivers[i - 1] + sign * gap;
+    }
 }
 
 /// Whether a candidate is returned: met (for precision points) and
