@@ -18,10 +18,20 @@
 //! if the actual reduction is at least 1e-4 of the one the model predicts.
 //! λ shrinks by max(1/3, 1 − (2ρ − 1)³) after a success and doubles
 //! (doubling its factor) after a failure. A trial the model cannot be
-//! evaluated at (a design that does not assemble) is a failure.
+//! evaluated at (a design that does not assemble) is a failure. After
+//! [`STALLED`] failures in a row the solver stops: no step, however short,
+//! reduces the cost (a minimum at rounding level, or a fold of the
+//! assembly the start cannot get past).
 
 use super::SynthesisError;
 use nalgebra::{DMatrix, DVector};
+
+/// Failed trials in a row after which the solver stops. Each failure
+/// raises λ (by a factor that doubles each time), so by then the steps
+/// tried have shrunk past any length at which the cost still decreases: x
+/// sits at a minimum to rounding (above [`Stopping::cost`]), or against a
+/// fold of the assembly its steps cannot cross.
+pub(crate) const STALLED: usize = 20;
 
 /// The residuals and their Jacobian at a point, and whatever the
 /// evaluation carries to the next (the poses, to start the next solves
@@ -154,7 +164,8 @@ pub(crate) fn minimize<S>(
     let (mut lambda, mut growth) = (None::<f64>, 2.0);
     let mut evaluations = 1;
     let mut iterations = 0;
-    while evaluations < stopping.evaluations && cost > stopping.cost {
+    let mut failures = 0;
+    while evaluations < stopping.evaluations && cost > stopping.cost && failures < STALLED {
         let j = &at.jacobian;
         let jtj = j.transpose() * j;
         let g = j.transpose() * &at.residuals;
@@ -222,6 +233,7 @@ pub(crate) fn minimize<S>(
         });
         match accepted {
             Some((next, trial_cost, rho)) => {
+                failures = 0;
                 x = trial;
                 at = next;
                 cost = trial_cost;
@@ -229,6 +241,7 @@ pub(crate) fn minimize<S>(
                 growth = 2.0;
             }
             None => {
+                failures += 1;
                 lambda = Some(lam * growth);
                 growth *= 2.0;
             }
@@ -385,6 +398,28 @@ mod tests {
             found.evaluations
         );
         assert!((0.5 * found.residuals.norm_squared() - 0.125).abs() < 1e-12);
+    }
+
+    #[test]
+    fn stops_where_no_step_reduces_the_cost() {
+        // r = x − 1 with a deterministic 1e-9 noise: the cost cannot fall
+        // below ~1e-19 (far above Stopping::cost) nor its gradient to
+        // 1e-14, yet the solver must stop near x = 1 without spending all
+        // its evaluations there.
+        let evaluate = |x: &DVector<f64>, _: &()| {
+            let noise = (x[0].to_bits() % 1000) as f64 / 1000.0 - 0.5;
+            Some(Evaluation {
+                residuals: DVector::from_element(1, x[0] - 1.0 + 1e-9 * noise),
+                jacobian: DMatrix::from_element(1, 1, 1.0),
+                state: (),
+            })
+        };
+        let x0 = DVector::from_element(1, 3.0);
+        let wide = DVector::from_element(1, 1e9);
+        let first = evaluate(&x0, &()).unwrap();
+        let found = minimize(first, x0, &-&wide, &wide, &Stopping::default(), evaluate);
+        assert!((found.x[0] - 1.0).abs() < 1e-8, "{}", found.x);
+        assert!(found.evaluations < 100, "{}", found.evaluations);
     }
 
     #[test]
