@@ -15,7 +15,9 @@ pub enum Timing {
     /// At these driver values (one per target).
     Prescribed(Vec<f64>),
     /// Whenever it can: each target's driver is an unknown too (first
-    /// guessed evenly spread over a revolution, in the targets' order).
+    /// guessed evenly spread over a revolution, in the targets' order; for
+    /// a start whose driver cannot turn a revolution, over the arc it
+    /// reaches).
     Free,
 }
 

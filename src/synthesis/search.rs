@@ -200,27 +200,86 @@ where
 /// The poses at the targets for the unknowns `x`: the first solved from
 /// the problem's guess, each next one followed from it by continuation
 /// (so that all lie on one branch); `None` if the start cannot be
-/// assembled or followed.
+/// assembled or followed. With free timing, a start that cannot be
+/// followed through drivers spread over a whole revolution (its driver
+/// cannot turn one: a rocker) has them spread over the arc it can reach
+/// instead, and `x`'s drivers are moved there.
 fn first_poses<L, const M: usize, const K: usize>(
     problem: &Problem<L, M, K>,
-    x: &DVector<f64>,
+    x: &mut DVector<f64>,
     options: &SweepOptions,
 ) -> Option<Poses<M>>
 where
     L: Sensitivities<M, 1, K> + Clone,
 {
     let model = problem.model_at(x.as_slice());
-    let drivers: Vec<f64> = (0..problem.targets.len())
-        .map(|i| problem.driver(x.as_slice(), i))
-        .collect();
+    let n = problem.targets.len();
+    let mut drivers: Vec<f64> = (0..n).map(|i| problem.driver(x.as_slice(), i)).collect();
     let first = model
         .solve_position(
             &problem.guess,
             &SVector::from([drivers[0]]),
             &options.options,
         )
-        .ok()?
-        .u;
+        .ok()
+        .map(|s| s.u);
+    let mut u = first.and_then(|first| follow(&model, first, &drivers, options));
+    if u.is_none() && problem.drivers.is_none() {
+        // The arc the driver reaches from the first target's driver (or,
+        // if it does not assemble there, from the first of eight around
+        // the turn where it does), the drivers spread over it.
+        let (v0, u0) = (0..8).find_map(|k| {
+            let v = drivers[0] + TAU * k as f64 / 8.0;
+            let at = model.solve_position(&problem.guess, &SVector::from([v]), &options.options);
+            at.ok().map(|s| (v, s.u))
+        })?;
+        let reach = |to: f64| {
+            let drive = Drive::Line {
+                from: SVector::from([v0]),
+                to: SVector::from([to]),
+                steps: ((to - v0).abs() * 30.0).ceil() as usize,
+            };
+            let mut last = v0;
+            let summary = model
+                .sweep_each(&u0, &drive, options, |pose| last = pose.v[0])
+                .ok()?;
+            Some((last, summary.complete))
+        };
+        let (high, whole) = reach(v0 + TAU)?;
+        let (low, high) = if whole {
+            (v0, v0 + TAU)
+        } else {
+            (reach(v0 - TAU)?.0, high)
+        };
+        for (i, d) in drivers.iter_mut().enumerate() {
+            *d = low + (high - low) * (i as f64 + 0.5) / n as f64;
+        }
+        let arc: Vec<f64> = std::iter::once(v0).chain(drivers.iter().copied()).collect();
+        u = Some(follow(&model, u0, &arc, options)?.split_off(1));
+        for (i, d) in drivers.iter().enumerate() {
+            x[problem.free.len() + i] = *d;
+        }
+    }
+    let u = u?;
+    let branch = u
+        .iter()
+        .zip(&drivers)
+        .map(|(u, v)| invert(&model.psi_u(u, &SVector::from([*v]))).det > 0.0)
+        .collect();
+    Some(Poses { u, branch })
+}
+
+/// The poses at `drivers` followed by continuation from `first` at the
+/// first of them; `None` if a sweep stops.
+fn follow<L, const M: usize, const K: usize>(
+    model: &L,
+    first: SVector<f64, M>,
+    drivers: &[f64],
+    options: &SweepOptions,
+) -> Option<Vec<SVector<f64, M>>>
+where
+    L: Sensitivities<M, 1, K>,
+{
     let mut u = vec![first];
     for pair in drivers.windows(2) {
         let drive = Drive::Line {
@@ -237,12 +296,7 @@ where
         }
         u.push(last?);
     }
-    let branch = u
-        .iter()
-        .zip(&drivers)
-        .map(|(u, v)| invert(&model.psi_u(u, &SVector::from([*v]))).det > 0.0)
-        .collect();
-    Some(Poses { u, branch })
+    Some(u)
 }
 
 /// One start solved: its candidate, or `None` if it cannot be assembled.
@@ -256,7 +310,8 @@ where
     L: Sensitivities<M, 1, K> + Clone,
 {
     let options: &Options = &search.options.options;
-    let poses = first_poses(problem, &x0, &search.options)?;
+    let mut x0 = x0;
+    let poses = first_poses(problem, &mut x0, &search.options)?;
     let first = evaluate(problem, &x0, &poses, options)?;
     let (lower, upper) = bounds(problem);
     let found = minimize(first, x0, &lower, &upper, &search.stopping, |x, from| {
