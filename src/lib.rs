@@ -69,7 +69,8 @@
 //! - [`batch`]: many designs or drives at once, in parallel.
 //! - `draw` (feature, default): pictures of poses, animations, motion
 //!   diagrams; [`machine`] and [`cam`]: reduced dynamics, flywheel, joint
-//!   reactions, cam design; [`mechanisms`]: the worksheet's four-bar, ready.
+//!   reactions, cam design; [`mechanisms`]: the worksheet's four-bar and a
+//!   four-bar for path generation, ready.
 //!
 //! ## The defaults
 //!

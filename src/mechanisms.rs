@@ -1,7 +1,8 @@
 //! Ready mechanisms: the four-bar of the Maple worksheet, with and without
-//! its named points. The examples, tests and benchmarks use these; a user
-//! can too, without writing the attribute. (The closed-form four-bar is
-//! [`crate::closed_form::FourBar`].)
+//! its named points, and a four-bar with its ground pivots and coupler
+//! point free for path generation. The examples, tests and benchmarks use
+//! these; a user can too, without writing the attribute. (The closed-form
+//! four-bar is [`crate::closed_form::FourBar`].)
 
 /// The four-bar of the Maple worksheet: ground A–D of length l1, crank AB
 /// (l2, angle θ2), coupler BC (l3, θ3), rocker CD (l4, θ4 the angle of
@@ -65,5 +66,55 @@ impl BareFourBar {
         l2: 20.0,
         l3: 50.0,
         l4: 70.0,
+    };
+}
+
+/// A four-bar for path generation, every dimension free: ground pivots
+/// A = (xa, ya) and D = (xd, yd) anywhere, crank AB (l2, θ2 its angle from
+/// the x axis, the driver), coupler BC (l3, θ3), rocker CD (l4, θ4 the
+/// angle of C→D), and the coupler point P at (px, py) in the coupler's
+/// frame: px along B→C, py to its left. Nine parameters.
+#[crate::linkage(
+    u = [theta3, theta4],
+    v = [theta2],
+    points = [
+        B = (xa + l2 * theta2.cos(), ya + l2 * theta2.sin()),
+        C = (B.x + l3 * theta3.cos(), B.y + l3 * theta3.sin()),
+        P = (
+            B.x + px * theta3.cos() - py * theta3.sin(),
+            B.y + px * theta3.sin() + py * theta3.cos()
+        ),
+    ],
+    closure = [
+        xa + l2 * theta2.cos() + l3 * theta3.cos() + l4 * theta4.cos() - xd,
+        ya + l2 * theta2.sin() + l3 * theta3.sin() + l4 * theta4.sin() - yd,
+    ],
+)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CouplerFourBar {
+    pub xa: f64,
+    pub ya: f64,
+    pub xd: f64,
+    pub yd: f64,
+    pub l2: f64,
+    pub l3: f64,
+    pub l4: f64,
+    pub px: f64,
+    pub py: f64,
+}
+
+impl CouplerFourBar {
+    /// The worksheet's four-bar (A at the origin, D = (80, 0) mm, l = 20,
+    /// 50, 70 mm) tracing its coupler's midpoint G3: P = (25, 0) mm.
+    pub const WORKSHEET: CouplerFourBar = CouplerFourBar {
+        xa: 0.0,
+        ya: 0.0,
+        xd: 80.0,
+        yd: 0.0,
+        l2: 20.0,
+        l3: 50.0,
+        l4: 70.0,
+        px: 25.0,
+        py: 0.0,
     };
 }

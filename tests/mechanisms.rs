@@ -1,7 +1,9 @@
-//! The invariants on four more mechanisms: a slider-crank (a prismatic
+//! The invariants on five more mechanisms: a slider-crank (a prismatic
 //! coordinate), a five-bar with two drivers (f = 2), a boom driven by an
-//! actuator length (non-zero mixed blocks of method B), and a two-loop
-//! six-bar (m = 4). At every pose of a sweep: Ψ = 0 after Newton,
+//! actuator length (non-zero mixed blocks of method B), a two-loop six-bar
+//! (m = 4), and the path-generation four-bar of `linkage::mechanisms` with
+//! its pivots and coupler point off the axes. At every pose of a sweep:
+//! Ψ = 0 after Newton,
 //! Ψ_u u̇ + Ψ_v v̇ = 0, method A = method B = fused, and the generated
 //! Ψ_q, γ and point kinematics equal num-dual's derivatives of the generic
 //! closure equations.
@@ -9,6 +11,7 @@
 mod common;
 
 use common::{BOOM, Boom, FIVE_BAR, SIX_BAR, SLIDER_CRANK, SixBar, check_invariants};
+use linkage::mechanisms::{CouplerFourBar, FourBar};
 use linkage::prelude::*;
 use std::f64::consts::TAU;
 
@@ -123,4 +126,60 @@ fn six_bar_with_two_loops() {
     let guess = SVector::<f64, 4>::from([78f64.to_radians(), -44f64.to_radians(), 0.3, -0.5]);
     sweep("six-bar", &SIX_BAR, guess, path);
     assert_eq!(SixBar::SYMBOLIC.methods_agree, Some(true));
+}
+
+#[test]
+fn coupler_four_bar_with_its_ground_and_coupler_point_off_the_axes() {
+    // Ground from (3, −2) to (70, 35), 76.5 long: still a crank-rocker.
+    let bar = CouplerFourBar {
+        xa: 3.0,
+        ya: -2.0,
+        xd: 70.0,
+        yd: 35.0,
+        px: 30.0,
+        py: 15.0,
+        ..CouplerFourBar::WORKSHEET
+    };
+    let n = 720;
+    let path = (0..n).map(|k| {
+        let t = TAU * k as f64 / n as f64;
+        (vector![t], vector![41.9], vector![5.0])
+    });
+    sweep("coupler four-bar", &bar, vector![1.8, -0.3], path);
+}
+
+/// `CouplerFourBar::WORKSHEET` is the worksheet's four-bar, P its G3; P
+/// lies px along B→C and py to its left.
+#[test]
+fn coupler_four_bar_frame() {
+    let worksheet = FourBar::WORKSHEET;
+    let moved = CouplerFourBar {
+        py: 10.0,
+        ..CouplerFourBar::WORKSHEET
+    };
+    let options = Options::default();
+    for k in 0..12 {
+        let v = vector![TAU * k as f64 / 12.0];
+        let u = worksheet
+            .solve_position(&vector![1.3, -0.8], &v, &options)
+            .unwrap()
+            .u;
+        let ours = CouplerFourBar::WORKSHEET.point_positions(&u, &v);
+        let theirs = worksheet.point_positions(&u, &v);
+        assert!((ours[CouplerFourBar::P] - theirs[FourBar::G3]).norm() < 1e-12);
+        assert!((ours[CouplerFourBar::B] - theirs[FourBar::B]).norm() < 1e-12);
+        assert!((ours[CouplerFourBar::C] - theirs[FourBar::C]).norm() < 1e-12);
+        let (b, c, p) = (
+            ours[CouplerFourBar::B],
+            ours[CouplerFourBar::C],
+            moved.point_positions(&u, &v)[CouplerFourBar::P],
+        );
+        let along = (c - b).normalize();
+        let left = vector![-along.y, along.x];
+        assert!(
+            (p - b - 25.0 * along - 10.0 * left).norm() < 1e-12,
+            "at {k}"
+        );
+        assert!(CouplerFourBar::WORKSHEET.psi(&u, &v).norm() < 1e-12);
+    }
 }
