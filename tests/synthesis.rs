@@ -7,7 +7,7 @@ use linkage::mechanisms::FourBar;
 use linkage::nalgebra::Matrix3;
 use linkage::prelude::*;
 use linkage::synthesis::{
-    Defect, Problem, Range, Requirements, Search, SynthesisError, Timing, synthesize,
+    Defect, Problem, Range, Requirements, Search, SynthesisError, Timing, certify, synthesize,
 };
 use std::f64::consts::PI;
 
@@ -584,5 +584,85 @@ fn a_target_out_of_reach_is_a_typed_error() {
     assert!(
         matches!(best, Err(SynthesisError::Unreachable { target: 1, error }) if error > 400.0),
         "{best:?}"
+    );
+}
+
+/// The poses of `bar` at the crank angles `degrees` (in the order given),
+/// followed by continuation from `guess` at the first along increasing
+/// angles; the drivers as given.
+fn poses_along(bar: FourBar, guess: SVector<f64, 2>, degrees: &[f64]) -> Vec<SVector<f64, 2>> {
+    let mut at = degrees[0];
+    let mut u = bar
+        .solve_position(&guess, &vector![at.to_radians()], &Options::default())
+        .unwrap()
+        .u;
+    let mut out = vec![u];
+    for &d in &degrees[1..] {
+        // The same pose whole turns apart: follow to the angle within one
+        // turn ahead of the last.
+        let ahead = at + (d - at).rem_euclid(360.0);
+        let drive = Drive::Line {
+            from: vector![at.to_radians()],
+            to: vector![ahead.to_radians()],
+            steps: ((ahead - at) as usize).max(1),
+        };
+        let sweep = bar.sweep(&u, &drive, &SweepOptions::default()).unwrap();
+        assert!(sweep.complete, "{bar:?} from {at}° to {ahead}°");
+        u = sweep.poses.last().unwrap().u;
+        at = ahead;
+        out.push(u);
+    }
+    out
+}
+
+#[test]
+fn a_revolution_is_swept_whole_whatever_turn_each_drivers_value_is_in() {
+    // Non-Grashof (20 + 80 > 40 + 55): the crank cannot pass 134°…226°.
+    // Targets at 250°, 300°, 0°, 60°, 120° in one assembly: the turn's last
+    // leg, from 120° (480°) on to 250° (610°), crosses that gap. With the
+    // last driver written a turn on (840° for 480°, as a solver's free
+    // driver may drift), a leg started from the target's own driver would
+    // run back from 840° to 610° through the targets' side and never meet
+    // the gap.
+    let bar = FourBar {
+        l1: 80.0,
+        l2: 20.0,
+        l3: 40.0,
+        l4: 55.0,
+    };
+    let degrees = [250.0, 300.0, 360.0, 420.0, 480.0];
+    let poses = poses_along(bar, vector![1.0, -1.0], &degrees);
+    let drivers: Vec<f64> = [250.0, 300.0, 360.0, 420.0, 840.0]
+        .iter()
+        .map(|d: &f64| d.to_radians())
+        .collect();
+    let requirements = Requirements::new(Range::Revolution);
+    let verdict = certify(
+        &bar,
+        &poses,
+        &drivers,
+        &requirements,
+        &SweepOptions::default(),
+    );
+    assert!(
+        matches!(
+            verdict,
+            Err(Defect::Singular { .. } | Defect::Incomplete { .. } | Defect::Stops { .. })
+        ),
+        "{verdict:?}"
+    );
+    // A crank-rocker with the same drivers, whole turns apart, runs the
+    // turn and is certified.
+    let worksheet = FourBar::WORKSHEET;
+    let poses = poses_along(worksheet, vector![1.3, -0.8], &degrees);
+    assert_eq!(
+        certify(
+            &worksheet,
+            &poses,
+            &drivers,
+            &requirements,
+            &SweepOptions::default()
+        ),
+        Ok(())
     );
 }

@@ -92,11 +92,11 @@ where
     let legs = legs(drivers, requirements.range).ok_or_else(|| Defect::Order {
         drivers: drivers.to_vec(),
     })?;
-    for (from, to, end) in legs {
+    for (from, start, to, end) in legs {
         follow(
             model,
             &poses[from],
-            drivers[from],
+            start,
             to,
             &poses[end],
             end,
@@ -107,10 +107,12 @@ where
     Ok(())
 }
 
-/// The legs of the range: (target it starts from, driver it ends at,
-/// target whose pose it must end in); `None` if the drivers are not in
-/// order.
-fn legs(drivers: &[f64], range: Range) -> Option<Vec<(usize, f64, usize)>> {
+/// The legs of the range: (target it starts from, driver it starts at,
+/// driver it ends at, target whose pose it must end in); `None` if the
+/// drivers are not in order. Over a revolution each leg starts where the
+/// last one ended, which may differ from its target's driver by whole
+/// turns (the same pose).
+fn legs(drivers: &[f64], range: Range) -> Option<Vec<(usize, f64, f64, usize)>> {
     let n = drivers.len();
     match range {
         Range::Between => {
@@ -118,7 +120,11 @@ fn legs(drivers: &[f64], range: Range) -> Option<Vec<(usize, f64, usize)>> {
             let ordered = drivers
                 .windows(2)
                 .all(|w| (w[1] > w[0]) == rising && w[1] != w[0]);
-            ordered.then(|| (1..n).map(|i| (i - 1, drivers[i], i)).collect())
+            ordered.then(|| {
+                (1..n)
+                    .map(|i| (i - 1, drivers[i - 1], drivers[i], i))
+                    .collect()
+            })
         }
         Range::Revolution => {
             // Forward (or backward) gaps that add up to exactly one turn.
@@ -133,8 +139,9 @@ fn legs(drivers: &[f64], range: Range) -> Option<Vec<(usize, f64, usize)>> {
                     return Some(
                         (0..n)
                             .map(|i| {
+                                let start = at;
                                 at += sign * if n == 1 { TAU } else { gaps[i] };
-                                (i, at, (i + 1) % n)
+                                (i, start, at, (i + 1) % n)
                             })
                             .collect(),
                     );
