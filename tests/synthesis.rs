@@ -666,3 +666,47 @@ fn a_revolution_is_swept_whole_whatever_turn_each_drivers_value_is_in() {
         Ok(())
     );
 }
+
+#[test]
+fn a_problems_jacobian_is_its_residuals_derivative() {
+    // G3 through five points of the worksheet's curve, timing free: at the
+    // worksheet's design and drivers every residual vanishes, and each
+    // column of the Jacobian is the central difference of the residuals.
+    let (targets, drivers) = worksheet_targets();
+    let problem = g3_path(FourBar::WORKSHEET, &targets, WIDE);
+    let bar = FourBar::WORKSHEET;
+    let poses: Vec<SVector<f64, 2>> = drivers
+        .iter()
+        .map(|v| {
+            bar.solve_position(&vector![1.3, -0.8], &vector![*v], &Options::default())
+                .unwrap()
+                .u
+        })
+        .collect();
+    let mut x = vec![20.0, 50.0, 70.0];
+    x.extend(&drivers);
+    let options = Options::default();
+    let (residuals, jacobian, found) = problem.evaluate(&x, &poses, &options).unwrap();
+    assert!(residuals.amax() < 1e-12, "{residuals}");
+    assert_eq!((jacobian.nrows(), jacobian.ncols()), (10, 8));
+    for (a, b) in found.iter().zip(&poses) {
+        assert!((a - b).amax() < 1e-12);
+    }
+    for j in 0..x.len() {
+        let h = 1e-6 * x[j].abs().max(1.0);
+        let at = |step: f64| {
+            let mut y = x.clone();
+            y[j] += step;
+            problem.evaluate(&y, &poses, &options).unwrap().0
+        };
+        let difference = (at(h) - at(-h)) / (2.0 * h);
+        let column = jacobian.column(j);
+        assert!(
+            (&difference - column).amax() < 1e-6 * column.amax().max(1.0),
+            "column {j}: {column} against {difference}"
+        );
+    }
+    // Unknowns or poses of the wrong length.
+    assert!(problem.evaluate(&x[1..], &poses, &options).is_none());
+    assert!(problem.evaluate(&x, &poses[1..], &options).is_none());
+}

@@ -33,6 +33,7 @@ mod terms;
 pub use certify::{Defect, DesignCheck, Range, Requirements, TransmissionAngle, certify};
 pub use least_squares::{LeastSquares, Stopping, least_squares};
 pub use problem::{Problem, Timing};
+pub use residuals::Evaluated;
 pub use search::{Candidate, Search, Synthesis, synthesize};
 
 use crate::error::UnknownName;

@@ -121,3 +121,42 @@ where
         state: poses,
     })
 }
+
+/// The residuals, their Jacobian (a row per residual, a column per
+/// unknown) and the poses at the targets.
+pub type Evaluated<const M: usize> = (DVector<f64>, DMatrix<f64>, Vec<SVector<f64, M>>);
+
+impl<L, const M: usize, const K: usize> Problem<L, M, K>
+where
+    L: Sensitivities<M, 1, K> + Clone,
+{
+    /// The residuals and their exact Jacobian at the unknowns `x` (the free
+    /// parameters in the order they were freed, then the free drivers),
+    /// with the poses found: what the solver evaluates at each trial, for
+    /// checks and benchmarks. Each target's pose is solved by Newton from
+    /// its pose in `from` and kept on that pose's branch. `None` where a
+    /// target cannot be assembled, is singular or changes branch, or if `x`
+    /// or `from` has the wrong length.
+    pub fn evaluate(
+        &self,
+        x: &[f64],
+        from: &[SVector<f64, M>],
+        options: &Options,
+    ) -> Option<Evaluated<M>> {
+        if x.len() != self.unknowns() || from.len() != self.targets.len() {
+            return None;
+        }
+        let model = self.model_at(x);
+        let branch = from
+            .iter()
+            .enumerate()
+            .map(|(i, u)| invert(&model.psi_u(u, &SVector::from([self.driver(x, i)]))).det > 0.0)
+            .collect();
+        let from = Poses {
+            u: from.to_vec(),
+            branch,
+        };
+        let found = evaluate(self, &DVector::from_column_slice(x), &from, options)?;
+        Some((found.residuals, found.jacobian, found.state.u))
+    }
+}
