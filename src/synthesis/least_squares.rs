@@ -165,10 +165,14 @@ pub(crate) fn minimize<S>(
     let mut evaluations = 1;
     let mut iterations = 0;
     let mut failures = 0;
+    // JᵀJ and g of the current point, kept while trials are rejected.
+    let mut normal: Option<(DMatrix<f64>, DVector<f64>)> = None;
     while evaluations < stopping.evaluations && cost > stopping.cost && failures < STALLED {
-        let j = &at.jacobian;
-        let jtj = j.transpose() * j;
-        let g = j.transpose() * &at.residuals;
+        let (jtj, g) = normal.get_or_insert_with(|| {
+            let j = &at.jacobian;
+            (j.transpose() * j, j.transpose() * &at.residuals)
+        });
+        let (jtj, g) = (&*jtj, &*g);
         for i in 0..n {
             scale[i] = scale[i].max(jtj[(i, i)]).max(f64::MIN_POSITIVE);
         }
@@ -183,7 +187,7 @@ pub(crate) fn minimize<S>(
         // The step on the free unknowns; an unknown at a bound that the step
         // would push out is held too, and the step taken again without it.
         let step = loop {
-            let Some(step) = damped_step(&jtj, &g, &scale, lam, &free, n) else {
+            let Some(step) = damped_step(jtj, g, &scale, lam, &free, n) else {
                 break None;
             };
             let before = free.len();
@@ -199,7 +203,7 @@ pub(crate) fn minimize<S>(
             growth *= 2.0;
             continue;
         };
-        let promise = |s: &DVector<f64>| -(g.dot(s) + 0.5 * s.dot(&(&jtj * s)));
+        let promise = |s: &DVector<f64>| -(g.dot(s) + 0.5 * s.dot(&(jtj * s)));
         let s = within_bounds(&x, &step, lower, upper, &promise);
         let trial = &x + &s;
         let predicted = promise(&s);
@@ -236,6 +240,7 @@ pub(crate) fn minimize<S>(
                 failures = 0;
                 x = trial;
                 at = next;
+                normal = None;
                 cost = trial_cost;
                 lambda = Some(lam * (1.0 / 3.0f64).max(1.0 - (2.0 * rho - 1.0).powi(3)));
                 growth = 2.0;
