@@ -5,7 +5,9 @@
 #
 #     docs/refresh.sh            # the figures (a few minutes)
 #     docs/refresh.sh --speed    # and the speed tables: benches/speed_tables.sh
-#                                # (three runs of ours and the peers, ~20 minutes)
+#                                # (three runs of ours and the peers, ~20 minutes),
+#                                # and the synthesis side by side with pylinkage:
+#                                # benches/peers/synthesis.sh (one run, ~5 minutes)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 run() { # example, folder, [cargo args]
@@ -22,7 +24,13 @@ run stability docs/figures
 run expansion_cost docs/figures -p linkage-macros
 if [[ ${1:-} == --speed ]]; then
   benches/speed_tables.sh
+  LINKAGE_OUT=docs/figures/synthesis bash benches/peers/synthesis.sh > /dev/null
+  echo "refreshed docs/figures/synthesis and benches/results/synthesis*.{csv,md} (synthesis beside pylinkage)"
 else
+  # The synthesis figures: ours measured now, beside pylinkage's committed run.
+  LINKAGE_OUT=docs/figures/synthesis cargo run --quiet --release --example synthesis -- \
+    --peers benches/results/synthesis_pylinkage.csv > /dev/null
+  echo "refreshed docs/figures/synthesis (synthesis; pylinkage from benches/results/synthesis_pylinkage.csv)"
   # The speed chart from the committed measurements.
   LINKAGE_OUT=docs/figures cargo run --quiet --release --example speed_accuracy -- --chart > /dev/null
   rm -f docs/figures/ours.csv
