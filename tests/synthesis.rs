@@ -260,6 +260,55 @@ fn path_generation_finds_the_coupler_curve_through_five_points_and_certifies_it(
     }
 }
 
+/// A search asked for enough designs runs its starts in rounds and ends
+/// with the round that certifies them: what it returns is exactly what the
+/// whole search certified from those starts.
+#[test]
+fn a_search_stops_with_the_round_that_certifies_enough_designs() {
+    let (targets, _) = worksheet_targets();
+    let start = FourBar {
+        l2: 25.0,
+        l3: 45.0,
+        l4: 65.0,
+        ..FourBar::WORKSHEET
+    };
+    let problem = g3_path(start, &targets, WIDE);
+    let search = Search {
+        starts: 48,
+        ..Search::default()
+    };
+    let whole = synthesize(&problem, &transmission(30.0), &search).unwrap();
+    let early = synthesize(
+        &problem,
+        &transmission(30.0),
+        &Search {
+            enough: Some(1),
+            ..search
+        },
+    )
+    .unwrap();
+    assert_eq!(whole.starts, 48);
+    let first = whole
+        .designs
+        .iter()
+        .map(|d| d.start)
+        .min()
+        .expect("a design");
+    // The round of the first certified start is the last one run.
+    assert_eq!(early.starts, (first / Search::ROUND + 1) * Search::ROUND);
+    assert!(early.starts < whole.starts, "{} starts", early.starts);
+    assert!(!early.designs.is_empty());
+    for design in &early.designs {
+        assert!(design.start < early.starts);
+        assert!(
+            whole.designs.iter().any(|d| d == design),
+            "{design:?} is not among the whole search's designs"
+        );
+    }
+    let seen = early.designs.len() + early.refused.len() + early.failed_starts;
+    assert!(seen <= early.starts);
+}
+
 #[test]
 fn a_design_that_fails_its_requirements_is_refused_with_the_reason() {
     // The worksheet's four-bar has a smallest transmission angle of 57°:

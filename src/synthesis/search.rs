@@ -26,6 +26,17 @@ pub struct Search {
     pub stopping: Stopping,
     /// The solves of the poses and the sweeps of the certificate.
     pub options: SweepOptions,
+    /// Stop once this many distinct designs are certified: the starts then
+    /// run in rounds of [`Search::ROUND`] (in parallel within a round), and
+    /// the search ends with the round that reaches them. `None`: every
+    /// start. Either way the result depends only on the stream, not on
+    /// the machine's cores.
+    pub enough: Option<usize>,
+}
+
+impl Search {
+    /// Starts per round when the search may stop early.
+    pub const ROUND: usize = 8;
 }
 
 impl Default for Search {
@@ -35,6 +46,7 @@ impl Default for Search {
             stream: 1,
             stopping: Stopping::default(),
             options: SweepOptions::default(),
+            enough: None,
         }
     }
 }
@@ -110,10 +122,14 @@ pub struct Synthesis<L, const M: usize> {
     pub designs: Vec<Candidate<L, M>>,
     pub refused: Vec<(Candidate<L, M>, Defect)>,
     pub failed_starts: usize,
+    /// The starts run: all of them, or fewer when [`Search::enough`]
+    /// designs were certified sooner.
+    pub starts: usize,
 }
 
 /// Solves `problem` from `search.starts` random starts in parallel and
-/// certifies every result against `requirements`.
+/// certifies every result against `requirements` (or from as many rounds
+/// of them as it takes to certify [`Search::enough`] designs).
 pub fn synthesize<L, const M: usize, const K: usize>(
     problem: &Problem<L, M, K>,
     requirements: &Requirements<'_, L, M>,
@@ -124,32 +140,45 @@ where
 {
     problem.check()?;
     search.options.options.check()?;
-    let starts: Vec<usize> = (0..search.starts).collect();
-    let outcomes = batch::map(&starts, |&start| {
-        let x0 = start_point(problem, search.stream, start);
-        solve(problem, x0, search, start)
-    });
+    let round = match search.enough {
+        Some(_) => Search::ROUND,
+        None => search.starts.max(1),
+    };
     let mut synthesis = Synthesis {
         designs: Vec::new(),
         refused: Vec::new(),
         failed_starts: 0,
+        starts: 0,
     };
-    for outcome in outcomes {
-        let Some(candidate) = outcome else {
-            synthesis.failed_starts += 1;
-            continue;
-        };
-        match verdict(problem, &candidate, requirements, &search.options) {
-            Ok(()) => {
-                if !synthesis
-                    .designs
-                    .iter()
-                    .any(|d| same_design(problem, d, &candidate))
-                {
-                    synthesis.designs.push(candidate);
+    while synthesis.starts < search.starts
+        && search
+            .enough
+            .is_none_or(|enough| synthesis.designs.len() < enough)
+    {
+        let starts: Vec<usize> =
+            (synthesis.starts..search.starts.min(synthesis.starts + round)).collect();
+        // Solved and certified in parallel; kept in the starts' order.
+        let outcomes = batch::map(&starts, |&start| {
+            let x0 = start_point(problem, search.stream, start);
+            let candidate = solve(problem, x0, search, start)?;
+            let verdict = verdict(problem, &candidate, requirements, &search.options);
+            Some((candidate, verdict))
+        });
+        synthesis.starts += starts.len();
+        for outcome in outcomes {
+            match outcome {
+                None => synthesis.failed_starts += 1,
+                Some((candidate, Ok(()))) => {
+                    if !synthesis
+                        .designs
+                        .iter()
+                        .any(|d| same_design(problem, d, &candidate))
+                    {
+                        synthesis.designs.push(candidate);
+                    }
                 }
+                Some((candidate, Err(defect))) => synthesis.refused.push((candidate, defect)),
             }
-            Err(defect) => synthesis.refused.push((candidate, defect)),
         }
     }
     synthesis
