@@ -14,6 +14,8 @@ use std::time::Instant;
 pub const PATH_STARTS: usize = 128;
 /// The random streams of the path runs (one run each).
 pub const STREAMS: u64 = 5;
+/// The most starts a run to the first certified design may take.
+pub const FIRST_STARTS: usize = 1024;
 /// Random starts of a function run.
 pub const FUNCTION_STARTS: usize = 16;
 /// Runs of the function task (one stream: they differ only in time).
@@ -37,13 +39,12 @@ impl<L> Run<L> {
 /// of which the median is kept, on this shared machine.
 pub const REPEATS: usize = 3;
 
-/// `synthesize` with `starts` starts from the stream `stream`, timed
+/// `synthesize` from the stream `stream` with `search`'s starts, timed
 /// `repeats` times: the last run, with the median of the times.
 pub fn run_median<L, const K: usize>(
     problem: &Problem<L, 2, K>,
     requirements: &Requirements<'_, L, 2>,
-    starts: usize,
-    stream: u64,
+    search: &Search,
     repeats: usize,
 ) -> Result<Run<L>, SynthesisError>
 where
@@ -52,13 +53,31 @@ where
     let mut seconds = Vec::new();
     let mut last = None;
     for _ in 0..repeats.max(1) {
-        let found = run(problem, requirements, starts, stream)?;
+        let found = timed(problem, requirements, search)?;
         seconds.push(found.seconds);
         last = Some(found);
     }
     let mut found = last.expect("at least one run");
     found.seconds = crate::results::median(&seconds);
     Ok(found)
+}
+
+/// The search of `starts` starts from the stream `stream`.
+pub fn every(starts: usize, stream: u64) -> Search {
+    Search {
+        starts,
+        stream,
+        ..Search::default()
+    }
+}
+
+/// The search from the stream `stream` that stops with the round of
+/// starts that certifies a design.
+pub fn first(stream: u64) -> Search {
+    Search {
+        enough: Some(1),
+        ..every(FIRST_STARTS, stream)
+    }
 }
 
 /// `synthesize` with `starts` starts from the stream `stream`, timed.
@@ -71,13 +90,20 @@ pub fn run<L, const K: usize>(
 where
     L: Sensitivities<2, 1, K> + Clone + Sync + Send,
 {
-    let search = Search {
-        starts,
-        stream,
-        ..Search::default()
-    };
+    timed(problem, requirements, &every(starts, stream))
+}
+
+/// `synthesize` with `search`, timed.
+fn timed<L, const K: usize>(
+    problem: &Problem<L, 2, K>,
+    requirements: &Requirements<'_, L, 2>,
+    search: &Search,
+) -> Result<Run<L>, SynthesisError>
+where
+    L: Sensitivities<2, 1, K> + Clone + Sync + Send,
+{
     let time = Instant::now();
-    let synthesis = synthesize(problem, requirements, &search)?;
+    let synthesis = synthesize(problem, requirements, search)?;
     Ok(Run {
         seconds: time.elapsed().as_secs_f64(),
         synthesis,
