@@ -200,7 +200,11 @@ pub fn csv(methods: &[Method]) -> String {
                 let _ = write!(
                     out,
                     "{},{},{},{},{i},{:.6e}",
-                    m.task, m.tool, m.name, run.index, run.seconds
+                    m.task,
+                    m.tool,
+                    csv_field(&m.name),
+                    run.index,
+                    run.seconds
                 );
                 for c in columns {
                     match d.params.iter().find(|p| p.0 == c) {
@@ -223,10 +227,19 @@ pub fn csv(methods: &[Method]) -> String {
                     out,
                     ",{:.6e},{unit},{over},{}",
                     d.judged.error() * scale,
-                    d.judged.verdict.describe()
+                    csv_field(&d.judged.verdict.describe())
                 );
             }
         }
     }
     out
+}
+
+/// A CSV field: quoted (its quotes doubled) if it holds a comma or a quote.
+fn csv_field(text: &str) -> String {
+    if text.contains([',', '"']) {
+        format!("\"{}\"", text.replace('"', "\"\""))
+    } else {
+        text.to_owned()
+    }
 }
