@@ -9,6 +9,9 @@
 //! differ only by our solver's rounding, amplified by the problem's
 //! conditioning (see [`FIVE`] and [`FOUR`]).
 
+#[path = "common/coupler.rs"]
+mod coupler;
+use coupler::Coupler;
 use linkage::prelude::*;
 use linkage::synthesis::{
     Candidate, Defect, Problem, Range, Requirements, Search, Synthesis, Timing, certify, synthesize,
@@ -28,36 +31,6 @@ const FIVE: f64 = 1e-11;
 /// its dyad of the same circle point, to this relative to the size
 /// (measured worst 6e-14).
 const FOUR: f64 = 1e-12;
-
-/// A four-bar whose coupler is a body with the point P (its position is
-/// u's x_p, y_p, its angle θ3) and the moving pivots B and C at (bx, by)
-/// and (cx, cy) in its frame; the ground pivots A and D anywhere (as in
-/// tests/synthesis.rs). Its dyads: the crank (A; B; l2), driven, and the
-/// rocker (D; C; l4).
-#[linkage::linkage(
-    u = [x_p, y_p, theta3, theta4],
-    v = [theta2],
-    points = [P = (x_p, y_p)],
-    closure = [
-        xa + l2 * theta2.cos() - (x_p + bx * theta3.cos() - by * theta3.sin()),
-        ya + l2 * theta2.sin() - (y_p + bx * theta3.sin() + by * theta3.cos()),
-        xd + l4 * theta4.cos() - (x_p + cx * theta3.cos() - cy * theta3.sin()),
-        yd + l4 * theta4.sin() - (y_p + cx * theta3.sin() + cy * theta3.cos()),
-    ],
-)]
-#[derive(Clone, Copy, Debug, PartialEq)]
-struct Coupler {
-    xa: f64,
-    ya: f64,
-    xd: f64,
-    yd: f64,
-    l2: f64,
-    l4: f64,
-    bx: f64,
-    by: f64,
-    cx: f64,
-    cy: f64,
-}
 
 /// A start design; its free parameters are drawn anew by every start.
 const START: Coupler = Coupler {

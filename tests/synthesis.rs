@@ -2,6 +2,9 @@
 //! three-precision-point function generation, path generation through
 //! points of a known coupler curve, and the typed errors of bad problems.
 
+#[path = "common/coupler.rs"]
+mod coupler;
+use coupler::Coupler;
 use linkage::closed_form;
 use linkage::mechanisms::FourBar;
 use linkage::nalgebra::Matrix3;
@@ -453,34 +456,6 @@ proptest::proptest! {
             runs_through_its_targets(design, &targets);
         }
     }
-}
-
-/// A four-bar with its ground pivots A and D anywhere, the coupler a body
-/// carrying the point P (its position is u's x_p, y_p, its angle θ3) with
-/// the moving pivots B and C at (bx, by) and (cx, cy) in its frame.
-#[linkage::linkage(
-    u = [x_p, y_p, theta3, theta4],
-    v = [theta2],
-    points = [P = (x_p, y_p)],
-    closure = [
-        xa + l2 * theta2.cos() - (x_p + bx * theta3.cos() - by * theta3.sin()),
-        ya + l2 * theta2.sin() - (y_p + bx * theta3.sin() + by * theta3.cos()),
-        xd + l4 * theta4.cos() - (x_p + cx * theta3.cos() - cy * theta3.sin()),
-        yd + l4 * theta4.sin() - (y_p + cx * theta3.sin() + cy * theta3.cos()),
-    ],
-)]
-#[derive(Clone, Copy, Debug, PartialEq)]
-struct Coupler {
-    xa: f64,
-    ya: f64,
-    xd: f64,
-    yd: f64,
-    l2: f64,
-    l4: f64,
-    bx: f64,
-    by: f64,
-    cx: f64,
-    cy: f64,
 }
 
 /// The centre of the circle through three points.
