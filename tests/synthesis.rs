@@ -209,6 +209,15 @@ fn g3_path(
         .guess(vector![1.3, -0.8])
 }
 
+/// The path problems' start: the worksheet's four-bar with its links
+/// changed.
+const AWAY: FourBar = FourBar {
+    l2: 25.0,
+    l3: 45.0,
+    l4: 65.0,
+    ..FourBar::WORKSHEET
+};
+
 /// The wide bounds of the path problems.
 const WIDE: [(f64, f64); 3] = [(10.0, 30.0), (30.0, 70.0), (50.0, 90.0)];
 
@@ -224,13 +233,7 @@ fn transmission(min_degrees: f64) -> Requirements<'static, FourBar, 2> {
 #[test]
 fn path_generation_finds_the_coupler_curve_through_five_points_and_certifies_it() {
     let (targets, _) = worksheet_targets();
-    let start = FourBar {
-        l2: 25.0,
-        l3: 45.0,
-        l4: 65.0,
-        ..FourBar::WORKSHEET
-    };
-    let problem = g3_path(start, &targets, WIDE);
+    let problem = g3_path(AWAY, &targets, WIDE);
     let found = synthesize(
         &problem,
         &transmission(30.0),
@@ -269,13 +272,7 @@ fn path_generation_finds_the_coupler_curve_through_five_points_and_certifies_it(
 #[test]
 fn a_search_stops_with_the_round_that_certifies_enough_designs() {
     let (targets, _) = worksheet_targets();
-    let start = FourBar {
-        l2: 25.0,
-        l3: 45.0,
-        l4: 65.0,
-        ..FourBar::WORKSHEET
-    };
-    let problem = g3_path(start, &targets, WIDE);
+    let problem = g3_path(AWAY, &targets, WIDE);
     let search = Search {
         starts: 48,
         ..Search::default()
@@ -317,13 +314,7 @@ fn a_design_that_fails_its_requirements_is_refused_with_the_reason() {
     // The worksheet's four-bar has a smallest transmission angle of 57°:
     // asking 80° refuses it, and says where the angle falls short.
     let (targets, _) = worksheet_targets();
-    let start = FourBar {
-        l2: 25.0,
-        l3: 45.0,
-        l4: 65.0,
-        ..FourBar::WORKSHEET
-    };
-    let problem = g3_path(start, &targets, [(19.0, 21.0), (49.0, 51.0), (69.0, 71.0)]);
+    let problem = g3_path(AWAY, &targets, [(19.0, 21.0), (49.0, 51.0), (69.0, 71.0)]);
     let found = synthesize(
         &problem,
         &transmission(80.0),
