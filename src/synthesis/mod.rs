@@ -55,6 +55,9 @@ pub enum SynthesisError {
     NoTargets,
     /// A target curve that cannot be sampled ([`Problem::curve`]).
     Curve(&'static str),
+    /// A function's range that cannot be sampled
+    /// ([`Problem::function_over`]).
+    FunctionRange(&'static str),
     /// A target or a prescribed driver is not finite.
     NonFiniteTarget,
     /// Prescribed drivers and targets differ in number.
@@ -84,6 +87,7 @@ crate::error::error_impls! {
         Self::EmptyBounds { parameter, lower, upper } => ("the bounds [{lower}, {upper}] of `{parameter}` are empty or not finite"),
         Self::NoTargets => ("a synthesis problem needs at least one target"),
         Self::Curve(why) => ("the target curve: {why}"),
+        Self::FunctionRange(why) => ("the function's range: {why}"),
         Self::NonFiniteTarget => ("a target or a prescribed driver is not finite"),
         Self::Timing { targets, drivers } => ("{targets} targets but {drivers} prescribed drivers"),
         Self::NothingFree => ("no parameter is free: free at least one with Problem::free"),

@@ -152,6 +152,39 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
         Problem::new(model, task, values, Timing::Prescribed(drivers))
     }
 
+    /// Function generation over a range, by least squares: the coordinate
+    /// `coordinate` (of u) should follow y = `function(v)` for the driver v
+    /// from `from` to `to`, fitted at `samples` evenly spaced drivers, both
+    /// ends included (for precision points instead, [`Problem::function`]
+    /// with the points chosen). Errors: fewer than two samples, a range
+    /// empty or not finite ([`SynthesisError::FunctionRange`]); a value of
+    /// the function not finite.
+    pub fn function_over(
+        model: L,
+        coordinate: &str,
+        (from, to): (f64, f64),
+        samples: usize,
+        function: impl Fn(f64) -> f64,
+    ) -> Result<Self, SynthesisError> {
+        if samples < 2 {
+            return Err(SynthesisError::FunctionRange(
+                "a range needs at least two samples",
+            ));
+        }
+        if !(from.is_finite() && to.is_finite() && from != to) {
+            return Err(SynthesisError::FunctionRange(
+                "the range is empty or not finite",
+            ));
+        }
+        let targets: Vec<(f64, f64)> = (0..samples)
+            .map(|k| {
+                let v = from + (to - from) * k as f64 / (samples - 1) as f64;
+                (v, function(v))
+            })
+            .collect();
+        Problem::function(model, coordinate, &targets)
+    }
+
     /// Motion generation: the body carrying the point `point`, whose angle
     /// is the coordinate `angle`, through the poses (position, angle) of
     /// `targets`. Angles are weighed against positions by the targets'
