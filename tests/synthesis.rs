@@ -5,7 +5,7 @@
 #[path = "common/coupler.rs"]
 mod coupler;
 use coupler::Coupler;
-use linkage::closed_form;
+use linkage::closed_form::{self, Grashof};
 use linkage::mechanisms::FourBar;
 use linkage::nalgebra::Matrix3;
 use linkage::prelude::*;
@@ -307,6 +307,62 @@ fn a_search_stops_with_the_round_that_certifies_enough_designs() {
     }
     let seen = early.designs.len() + early.refused.len() + early.failed_starts;
     assert!(seen <= early.starts);
+}
+
+/// The requirement that a design be of one Grashof type (the designer's
+/// check, here by the closed form's classification).
+fn grashof(wanted: Grashof) -> Requirements<'static, FourBar, 2> {
+    let mut requirements = Requirements::new(Range::Revolution);
+    requirements.check = Some(Box::new(move |m: &FourBar| {
+        let found = closed_form::FourBar {
+            l1: m.l1,
+            l2: m.l2,
+            l3: m.l3,
+            l4: m.l4,
+        }
+        .grashof();
+        if found == wanted {
+            Ok(())
+        } else {
+            Err(format!("a {found:?}, not a {wanted:?}"))
+        }
+    }));
+    requirements
+}
+
+/// A Grashof type asked for is kept: near the worksheet's design (a
+/// crank-rocker), asking for crank-rockers certifies it, asking for
+/// double cranks refuses every candidate that meets the targets with the
+/// designer's reason.
+#[test]
+fn a_requested_grashof_type_is_certified_and_another_refused() {
+    let (targets, _) = worksheet_targets();
+    let near = [(19.0, 21.0), (49.0, 51.0), (69.0, 71.0)];
+    let problem = g3_path(AWAY, &targets, near);
+    let search = Search {
+        starts: 8,
+        ..Search::default()
+    };
+    let found = synthesize(&problem, &grashof(Grashof::CrankRocker), &search).unwrap();
+    assert!(!found.designs.is_empty(), "{found:?}");
+    let refused = synthesize(&problem, &grashof(Grashof::DoubleCrank), &search).unwrap();
+    assert!(refused.designs.is_empty(), "{:?}", refused.designs);
+    // Those that meet the targets are refused by the check (before any
+    // sweep); the others for missing them.
+    let mut checked = 0;
+    for (_, defect) in &refused.refused {
+        match defect {
+            Defect::Check(why) => {
+                assert_eq!(why, "a CrankRocker, not a DoubleCrank");
+                checked += 1;
+            }
+            _ => assert!(matches!(defect, Defect::Misses { .. }), "{defect:?}"),
+        }
+    }
+    assert!(
+        checked >= found.designs.len(),
+        "{checked} refused by the check"
+    );
 }
 
 #[test]
