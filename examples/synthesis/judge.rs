@@ -31,6 +31,14 @@ pub enum Verdict {
 }
 
 impl Verdict {
+    /// The certificate's answer.
+    fn of(certified: Result<(), Defect>) -> Verdict {
+        match certified {
+            Ok(()) => Verdict::Certified,
+            Err(defect) => Verdict::Defective(defect),
+        }
+    }
+
     pub fn defective(&self) -> bool {
         matches!(self, Verdict::Defective(_))
     }
@@ -245,16 +253,13 @@ pub fn path(
         drivers.push(met.1);
         poses.push(met.2);
     }
-    let verdict = match certify(
+    let verdict = Verdict::of(certify(
         model,
         &poses,
         &drivers,
         &Requirements::new(Range::Revolution),
         &SweepOptions::default(),
-    ) {
-        Ok(()) => Verdict::Certified,
-        Err(defect) => Verdict::Defective(defect),
-    };
+    ));
     Judged {
         errors,
         verdict,
@@ -367,16 +372,13 @@ pub fn function(model: &FourBar, u: &SVector<f64, 2>, task: &FunctionTask) -> Ju
         poses.push(nearest);
     }
     let drivers: Vec<f64> = task.targets.iter().map(|t| t.0).collect();
-    let verdict = match certify(
+    let verdict = Verdict::of(certify(
         model,
         &poses,
         &drivers,
         &Requirements::new(Range::Between),
         &SweepOptions::default(),
-    ) {
-        Ok(()) => Verdict::Certified,
-        Err(defect) => Verdict::Defective(defect),
-    };
+    ));
     Judged {
         errors,
         verdict,
