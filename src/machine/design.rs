@@ -208,14 +208,14 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Design<'_, L, M,
         })
     }
 
-    /// ∂A/∂(design) at the work's nodes: one Gauss–Kronrod rule per cell
-    /// (the integrand is smooth between nodes, the kinks among them).
+    /// ∂A/∂(design) at the work's nodes (the integrand is smooth between
+    /// nodes, the kinks among them).
     fn integrate_work(&self) -> Result<Vec<(f64, Vec<f64>)>, MachineError> {
         let nodes: Vec<f64> = self.machine.work.iter().map(|&(phi, _)| phi).collect();
         let mut total = vec![0.0; self.names.len()];
         let mut out = vec![(nodes[0], total.clone())];
         for cell in nodes.windows(2) {
-            let (piece, _) = self.integrate(cell[0], cell[1])?;
+            let piece = self.integrate(cell[0], cell[1])?;
             for (t, p) in total.iter_mut().zip(&piece) {
                 *t += p;
             }
@@ -224,9 +224,11 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Design<'_, L, M,
         Ok(out)
     }
 
-    fn integrate(&self, a: f64, b: f64) -> Result<(Vec<f64>, Vec<f64>), MachineError> {
+    /// ∫ₐᵇ ∂M/∂(design) over a cell (or part of one): one Gauss–Kronrod
+    /// rule, the integrand smooth there.
+    fn integrate(&self, a: f64, b: f64) -> Result<Vec<f64>, MachineError> {
         let mut f = |phi: f64| self.reduced(phi).map(|r| r.moment);
-        numerics::kronrod_vector(&mut f, a, b)
+        numerics::integrate_cell(&mut f, a, b)
     }
 
     /// ∂A/∂(design) at φ ∈ [0, 2π].
@@ -240,7 +242,7 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Design<'_, L, M,
         }
         let k = self.work.partition_point(|(p, _)| *p <= phi).max(1) - 1;
         let (start, below) = &self.work[k];
-        let (rest, _) = self.integrate(*start, phi)?;
+        let rest = self.integrate(*start, phi)?;
         Ok(below.iter().zip(&rest).map(|(a, b)| a + b).collect())
     }
 
