@@ -351,9 +351,9 @@ mod tests {
             0.3f64.powi(3) - 0.2f64.powi(3),
         ];
         // (The exact differences round at the size of their terms, ≈ 1.)
-        for i in 0..3 {
+        for (i, exact) in exact.iter().enumerate() {
             assert!(
-                (rule.value[i] - exact[i]).abs() <= 4.0 * f64::EPSILON,
+                (rule.value[i] - exact).abs() <= 4.0 * f64::EPSILON,
                 "{i}: {:?}",
                 rule.value
             );
