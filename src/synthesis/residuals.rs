@@ -6,7 +6,7 @@
 
 use super::least_squares::Evaluation;
 use super::problem::{Problem, Task};
-use linkage_runtime::{Motion, Options, Sensitivities, invert};
+use linkage_runtime::{Linkage, Motion, Options, Sensitivities, invert};
 use nalgebra::{DMatrix, DVector, SVector};
 use std::f64::consts::TAU;
 
@@ -16,6 +16,16 @@ use std::f64::consts::TAU;
 pub(crate) struct Poses<const M: usize> {
     pub u: Vec<SVector<f64, M>>,
     pub branch: Vec<bool>,
+}
+
+/// The assembly branch of the pose `u` at the driver `v`: the sign of
+/// det Ψ_u.
+pub(crate) fn branch<L: Linkage<M, 1>, const M: usize>(
+    model: &L,
+    u: &SVector<f64, M>,
+    v: f64,
+) -> bool {
+    invert(&model.psi_u(u, &SVector::from([v]))).det > 0.0
 }
 
 /// Evaluates the problem's residuals and Jacobian at the unknowns `x`,
@@ -43,7 +53,7 @@ where
     for (i, target) in problem.targets.iter().enumerate() {
         let v = SVector::from([problem.driver(x.as_slice(), i)]);
         let analysis = model.analyze(&from.u[i], &v, &vdot, &vddot, options).ok()?;
-        let branch = invert(&model.psi_u(&analysis.u, &v)).det > 0.0;
+        let branch = branch(&model, &analysis.u, v[0]);
         if branch != from.branch[i] {
             return None;
         }
@@ -150,7 +160,7 @@ where
         let branch = from
             .iter()
             .enumerate()
-            .map(|(i, u)| invert(&model.psi_u(u, &SVector::from([self.driver(x, i)]))).det > 0.0)
+            .map(|(i, u)| branch(&model, u, self.driver(x, i)))
             .collect();
         let from = Poses {
             u: from.to_vec(),

@@ -8,10 +8,10 @@ use super::SynthesisError;
 use super::certify::{Defect, Requirements, certify};
 use super::least_squares::{Stopping, minimize};
 use super::problem::Problem;
-use super::residuals::{Poses, evaluate};
+use super::residuals::{Poses, branch, evaluate};
 use crate::batch;
 use crate::random::SplitMix64;
-use linkage_runtime::{Drive, Options, Sensitivities, SweepOptions, invert};
+use linkage_runtime::{Drive, Options, Sensitivities, SweepOptions};
 use nalgebra::{DVector, SVector};
 use std::f64::consts::TAU;
 
@@ -293,7 +293,7 @@ where
     let branch = u
         .iter()
         .zip(&drivers)
-        .map(|(u, v)| invert(&model.psi_u(u, &SVector::from([*v]))).det > 0.0)
+        .map(|(u, v)| branch(&model, u, *v))
         .collect();
     Some(Poses { u, branch })
 }

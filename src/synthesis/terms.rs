@@ -7,7 +7,7 @@
 use super::problem::Problem;
 use linkage_runtime::Sensitivities;
 use nalgebra::{DMatrix, DVector, SVector};
-use num_dual::{Derivative, DualSVec64};
+use num_dual::DualSVec64;
 use std::sync::Arc;
 
 /// A term: r(p) on the parameters as dual numbers.
@@ -60,14 +60,8 @@ impl<L: Sensitivities<M, 1, K> + Clone, const M: usize, const K: usize> Problem<
             return;
         }
         let p = self.model_at(x).params();
-        let dual = SVector::<DualSVec64<K>, K>::from_fn(|i, _| {
-            DualSVec64::new(
-                p[i],
-                Derivative::some(SVector::<f64, K>::from_fn(|j, _| {
-                    f64::from(u8::from(i == j))
-                })),
-            )
-        });
+        let dual =
+            SVector::<DualSVec64<K>, K>::from_fn(|i, _| DualSVec64::from_re(p[i]).derivative(i));
         let first = self.target_residuals();
         for (t, term) in self.terms.iter().enumerate() {
             let value = (term.residual)(&dual);
