@@ -27,10 +27,8 @@ if [[ ${1:-} == --speed ]]; then
   LINKAGE_OUT=docs/figures/synthesis bash benches/peers/synthesis.sh > /dev/null
   echo "refreshed docs/figures/synthesis and benches/results/synthesis*.{csv,md} (synthesis beside pylinkage)"
 else
-  # The synthesis figures: ours measured now, beside pylinkage's committed run.
-  LINKAGE_OUT=docs/figures/synthesis cargo run --quiet --release --example synthesis -- \
-    --peers benches/results/synthesis_pylinkage.csv > /dev/null
-  echo "refreshed docs/figures/synthesis (synthesis; pylinkage from benches/results/synthesis_pylinkage.csv)"
+  # (The synthesis figures and designs.csv are left alone: they are the
+  # output of one run of benches/peers/synthesis.sh, with its tables.)
   # The speed chart from the committed measurements.
   LINKAGE_OUT=docs/figures cargo run --quiet --release --example speed_accuracy -- --chart > /dev/null
   rm -f docs/figures/ours.csv
