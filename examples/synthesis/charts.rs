@@ -290,7 +290,7 @@ pub fn designs(
                 };
                 let curve: Vec<(f64, f64)> =
                     design.judged.curve.iter().map(|p| (p.x, p.y)).collect();
-                let colour = if *tool == "linkage" { OURS } else { PSO };
+                let colour = colour_of(&format!("{tool}: {}", method.name));
                 mechanism_panel(
                     area,
                     &format!(
