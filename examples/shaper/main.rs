@@ -502,7 +502,7 @@ fn redesigned(data: &machine::Data) -> Result<(), Box<dyn std::error::Error>> {
     let started = std::time::Instant::now();
     let best = redesign::minimise(data)?;
     let seconds = started.elapsed().as_secs_f64();
-    let (lower, upper) = redesign::bounds(data);
+    let (lower, upper) = redesign::bounds(&course);
     println!(
         "{:<6} {:>10} {:>10} {:>18} {:>10} {:>18}   bounds",
         "", "course", "", "∂J_PRI/∂(·)", "optimum", "∂J_PRI/∂(·)"

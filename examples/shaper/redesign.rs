@@ -25,9 +25,9 @@ pub const VARIABLES: [&str; 4] = ["l_OC", "y_F", "λ_S3", "I_S3"];
 /// guide within 0.1 m of the course project's height, S3 anywhere from
 /// half the rocker below the pivot to 0.8 of it above, I_S3 from 0.5 to
 /// 2 kg·m² (a 20 kg bar of the rocker's length has about 0.8 about its
-/// centre).
-pub fn bounds(course: &Data) -> (DVector<f64>, DVector<f64>) {
-    let y_f = synthesize(course).map(|s| s.y_f).unwrap_or(0.0);
+/// centre). `course` is the course project's design as the variables.
+pub fn bounds(course: &DVector<f64>) -> (DVector<f64>, DVector<f64>) {
+    let y_f = course[1];
     (
         DVector::from_vec(vec![0.3, y_f - 0.1, -0.5, 0.5]),
         DVector::from_vec(vec![0.45, y_f + 0.1, 0.8, 2.0]),
@@ -63,7 +63,10 @@ pub fn design(course: &Data, x: &DVector<f64>) -> Result<(Shaper, Data), Machine
 /// J_PRI and its exact gradient by the variables: the machine's gradient
 /// by its dimensions and bodies (`Machine::design`), through the synthesis
 /// l_OA = l_OC·sin(β/2), y_C = −l_OC (β fixed by K_V) for l_OC.
-pub fn flywheel(course: &Data, x: &DVector<f64>) -> Result<(f64, DVector<f64>), MachineError> {
+pub fn flywheel(
+    course: &Data,
+    x: &DVector<f64>,
+) -> Result<(f64, DVector<f64>), Box<dyn std::error::Error>> {
     let (shaper, data) = design(course, x)?;
     let m = machine(&shaper, &data)?;
     let energy = m.energy_method(TAU * data.n1, data.delta)?;
@@ -71,16 +74,17 @@ pub fn flywheel(course: &Data, x: &DVector<f64>) -> Result<(f64, DVector<f64>), 
     let gradient = by_design.flywheel(&energy)?;
     let of = |name: &str| {
         let k = by_design.names().iter().position(|n| n == name);
-        k.map(|k| gradient[k]).unwrap_or(f64::NAN)
+        k.map(|k| gradient[k])
+            .ok_or_else(|| format!("the design has no `{name}`"))
     };
     let half_swing = 0.5 * shaper.beta();
     Ok((
         energy.flywheel,
         DVector::from_vec(vec![
-            of("l_oa") * half_swing.sin() - of("y_c"),
-            of("y_f"),
-            of("lambda_s3"),
-            of("inertia of rocker 3"),
+            of("l_oa")? * half_swing.sin() - of("y_c")?,
+            of("y_f")?,
+            of("lambda_s3")?,
+            of("inertia of rocker 3")?,
         ]),
     ))
 }
@@ -96,8 +100,8 @@ pub struct Optimum {
 
 /// J_PRI minimised within the bounds from the course project's design.
 pub fn minimise(course: &Data) -> Result<Optimum, Box<dyn std::error::Error>> {
-    let (lower, upper) = bounds(course);
     let start = course_variables(course)?;
+    let (lower, upper) = bounds(&start);
     let stopping = Stopping {
         cost: 0.0,
         // ∇J_PRI is known to ≈ 1e-7 of its size (J_PRI's extremes are

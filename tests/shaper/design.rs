@@ -155,8 +155,8 @@ fn a_load_given_as_a_function_is_not_differentiated() {
 fn the_flywheel_optimum_is_a_minimum_and_keeps_the_true_motion_within_delta() {
     use crate::redesign::{bounds, course_variables, flywheel, minimise, true_fluctuation};
     let data = COURSE_PROJECT;
-    let (lower, upper) = bounds(&data);
     let course = course_variables(&data).unwrap();
+    let (lower, upper) = bounds(&course);
     let (j_course, _) = flywheel(&data, &course).unwrap();
     let best = minimise(&data).unwrap();
     assert!(
