@@ -8,6 +8,8 @@
 
 #[path = "../examples/stability/charts.rs"]
 mod charts;
+#[path = "../examples/support/page.rs"]
+mod page;
 #[path = "../examples/stability/study.rs"]
 mod study;
 

@@ -8,12 +8,10 @@
 //! `tests/diagrams.rs`.
 
 use crate::study::{Case, Method, MethodsRow, Row};
-use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
-type Drawn = Result<(), Box<dyn std::error::Error>>;
+use crate::page::{Area, Drawn, page};
 
 /// The smallest value shown on a log axis (exact zeros are drawn here).
 pub const FLOOR: f64 = 1e-17;
@@ -109,21 +107,6 @@ fn legend(area: &Area<'_>, entries: &[(String, Swatch)], (x, y): (i32, i32)) -> 
         at += width;
     }
     Ok(())
-}
-
-/// `draw` on an SVG page of `size`, white; the page as a string.
-fn page(
-    size: (u32, u32),
-    draw: impl FnOnce(&Area<'_>) -> Drawn,
-) -> Result<String, Box<dyn std::error::Error>> {
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
-        root.fill(&WHITE)?;
-        draw(&root)?;
-        root.present()?;
-    }
-    Ok(svg)
 }
 
 /// Error against δ for every method, in three panels: θ, ω, α; one legend,

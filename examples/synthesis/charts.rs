@@ -7,12 +7,10 @@ use crate::Series;
 use crate::results::{Design, Method};
 use linkage::mechanisms::CouplerFourBar;
 use linkage::prelude::*;
-use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::f64::consts::TAU;
 
-type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
-type Drawn = Result<(), Box<dyn std::error::Error>>;
+use crate::page::{Area, Drawn, page};
 
 const OURS: RGBColor = RGBColor(30, 80, 170);
 const PSO: RGBColor = RGBColor(230, 120, 20);
@@ -20,21 +18,6 @@ const DE: RGBColor = RGBColor(40, 150, 70);
 const BURMESTER: RGBColor = RGBColor(150, 50, 160);
 const TARGET: RGBColor = RGBColor(200, 30, 30);
 const LINK: RGBColor = RGBColor(40, 40, 40);
-
-/// `draw` on an SVG page of `size`, white; the page as a string.
-fn page(
-    size: (u32, u32),
-    draw: impl FnOnce(&Area<'_>) -> Drawn,
-) -> Result<String, Box<dyn std::error::Error>> {
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
-        root.fill(&WHITE)?;
-        draw(&root)?;
-        root.present()?;
-    }
-    Ok(svg)
-}
 
 /// A title line and a smaller note under it.
 fn heading(area: &Area<'_>, title: &str, note: &str) -> Drawn {

@@ -34,6 +34,8 @@ mod tasks;
 
 #[path = "../support/output.rs"]
 mod output;
+#[path = "../support/page.rs"]
+mod page;
 
 use linkage::mechanisms::{CouplerFourBar, FourBar};
 use linkage::prelude::*;

@@ -6,13 +6,11 @@ use crate::studies::{CycleStudy, RUN, ShaperStudy};
 use linkage::mechanisms::FourBar;
 use linkage::prelude::*;
 use linkage::tolerance::Band;
-use plotters::coord::Shift;
 use plotters::coord::ranged1d::ValueFormatter;
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 
-type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
-type Drawn = Result<(), Box<dyn std::error::Error>>;
+use crate::page::{Area, Drawn, page};
 
 /// The deviations in the band picture are drawn this many times larger.
 const MAGNIFY: f64 = 8.0;
@@ -24,21 +22,6 @@ const WORST: RGBColor = RGBColor(250, 205, 140);
 const RSS: RGBColor = RGBColor(230, 140, 20);
 const NOMINAL: RGBColor = RGBColor(20, 20, 20);
 const SAMPLE: RGBColor = RGBColor(40, 110, 200);
-
-/// `draw` on an SVG page of `size`, white; the page as a string.
-fn page(
-    size: (u32, u32),
-    draw: impl FnOnce(&Area<'_>) -> Drawn,
-) -> Result<String, Box<dyn std::error::Error>> {
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
-        root.fill(&WHITE)?;
-        draw(&root)?;
-        root.present()?;
-    }
-    Ok(svg)
-}
 
 fn band<'s>(study: &'s CycleStudy, name: &str) -> &'s Band<1, 4> {
     study
