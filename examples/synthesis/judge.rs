@@ -13,6 +13,7 @@
 //! or out of the targets' order (an order defect).
 
 use crate::tasks::FunctionTask;
+use linkage::closed_form;
 use linkage::mechanisms::{CouplerFourBar, FourBar};
 use linkage::prelude::*;
 use linkage::synthesis::{Defect, Range, Requirements, certify};
@@ -286,24 +287,20 @@ pub fn path_error(
     )
 }
 
-/// The two assemblies of the four-bar `l` at θ2 = `theta`, as (θ3, θ4).
+/// The assemblies of the four-bar `l` at θ2 = `theta`, as (θ3, θ4): the
+/// closed form's two branches (one where they meet, none where it does not
+/// assemble).
 fn assemblies(l: &FourBar, theta: f64) -> Vec<SVector<f64, 2>> {
-    let b = l.l2 * vector![theta.cos(), theta.sin()];
-    let d = vector![l.l1, 0.0];
-    let (e, length) = ((d - b).normalize(), (d - b).norm());
-    let a = (l.l3 * l.l3 - l.l4 * l.l4 + length * length) / (2.0 * length);
-    let h2 = l.l3 * l.l3 - a * a;
-    if h2 < 0.0 {
-        return Vec::new();
-    }
-    let normal = vector![-e.y, e.x];
+    let bar = closed_form::FourBar {
+        l1: l.l1,
+        l2: l.l2,
+        l3: l.l3,
+        l4: l.l4,
+    };
     [1.0, -1.0]
-        .iter()
-        .map(|s| {
-            let c = b + a * e + s * h2.sqrt() * normal;
-            let (bc, cd) = (c - b, d - c);
-            vector![bc.y.atan2(bc.x), cd.y.atan2(cd.x)]
-        })
+        .into_iter()
+        .filter_map(|sigma| bar.position(theta, sigma))
+        .map(SVector::from)
         .collect()
 }
 
