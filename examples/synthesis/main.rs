@@ -102,7 +102,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         folder.join("convergence.svg"),
         charts::convergence(&series)?,
     )?;
-    println!("written to {}", folder.display());
+    eprintln!("written to {}", folder.display());
     Ok(())
 }
 
