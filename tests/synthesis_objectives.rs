@@ -125,12 +125,13 @@ fn a_closed_target_curve_is_fitted_by_least_squares() {
     .unwrap();
     let best = found.best().unwrap();
     let m = &best.model;
-    // Samples on chords 0.3 mm long lie within ≈ 1e-3 mm of the curve.
+    // Samples on chords 0.3 mm long lie within ≈ 1e-3 mm of the curve;
+    // the fit, measured, is within 1.3e-4 of the links, 2.5e-5 rms.
     let error = [m.l2 - 20.0, m.l3 - 50.0, m.l4 - 70.0]
         .iter()
         .fold(0.0f64, |e, x| e.max(x.abs()));
     assert!(
-        error < 1e-2 && best.rms_error < 1e-3,
+        error < 1e-3 && best.rms_error < 1e-4,
         "{m:?}: {error:e}, rms {:e}",
         best.rms_error
     );
@@ -200,13 +201,14 @@ fn a_function_over_a_range_that_a_design_generates_exactly_gives_that_design() {
     let error = [m.l2 - 20.0, m.l3 - 50.0, m.l4 - 70.0]
         .iter()
         .fold(0.0f64, |e, x| e.max(x.abs()));
-    assert!(error < 1e-9, "{m:?}: {error:e}");
-    assert!(best.rms_error < 1e-12, "{best:?}");
+    // (Measured: 1.3e-12 and 1.9e-15.)
+    assert!(error < 1e-11, "{m:?}: {error:e}");
+    assert!(best.rms_error < 1e-14, "{best:?}");
 }
 
 /// Freudenstein's y = log10 x (1 ≤ x ≤ 10; the crank from 0° to 60°, the
 /// rocker's angle φ from 90° to 180°) fitted over the whole range by least
-/// squares at 31 drivers: its sum of squares there is no larger than that of
+/// squares at 31 drivers: its sum of squares there is well below that of
 /// the three Chebyshev precision points' design, and the error the search
 /// reports is the one the closed form gives at the samples.
 #[test]
@@ -260,16 +262,12 @@ fn a_function_fitted_over_its_range_beats_three_precision_points_there() {
     let (fitted, exact) = (fitted.best().unwrap(), exact.best().unwrap());
     let (ours, theirs) = (squares(fitted), squares(exact));
     assert!(
-        ours <= theirs,
-        "least squares {ours:e} against precision points {theirs:e}"
-    );
-    assert!(
         ours < 0.9 * theirs,
         "a fit no better than three points: {ours:e}, {theirs:e}"
     );
     let rms = (ours / samples as f64).sqrt();
     assert!(
-        (rms - fitted.rms_error).abs() <= 1e-9 * rms,
+        (rms - fitted.rms_error).abs() <= 1e-12 * rms,
         "the search's error {} against the closed form's {rms}",
         fitted.rms_error
     );

@@ -60,6 +60,13 @@ pub fn design(course: &Data, x: &DVector<f64>) -> Result<(Shaper, Data), Machine
     Ok((shaper, data))
 }
 
+/// J_PRI of the design x alone.
+pub fn flywheel_value(course: &Data, x: &DVector<f64>) -> Result<f64, MachineError> {
+    let (shaper, data) = design(course, x)?;
+    let m = machine(&shaper, &data)?;
+    Ok(m.energy_method(TAU * data.n1, data.delta)?.flywheel)
+}
+
 /// J_PRI and its exact gradient by the variables: the machine's gradient
 /// by its dimensions and bodies (`Machine::design`), through the synthesis
 /// l_OA = l_OC·sin(β/2), y_C = −l_OC (β fixed by K_V) for l_OC.
