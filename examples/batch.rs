@@ -54,14 +54,10 @@ fn jobs() -> Vec<SweepJob<BareFourBar, 2, 1>> {
                 l4: 55.0 + 0.5 * j as f64,
             };
             // The open branch at θ2 = 0, from the closed form.
-            let start = linkage::closed_form::FourBar {
-                l1: model.l1,
-                l2: model.l2,
-                l3: model.l3,
-                l4: model.l4,
-            }
-            .position(0.0, 1.0)
-            .expect("a crank-rocker assembles at θ2 = 0");
+            let start = model
+                .closed_form()
+                .position(0.0, 1.0)
+                .expect("a crank-rocker assembles at θ2 = 0");
             jobs.push(SweepJob {
                 model,
                 u0: vector![start[0], start[1]],

@@ -32,6 +32,16 @@ pub struct FourBar {
 }
 
 impl FourBar {
+    /// The same four-bar in closed form (its assemblies solved exactly).
+    pub fn closed_form(&self) -> crate::closed_form::FourBar {
+        crate::closed_form::FourBar {
+            l1: self.l1,
+            l2: self.l2,
+            l3: self.l3,
+            l4: self.l4,
+        }
+    }
+
     /// The worksheet's lengths: l = (80, 20, 50, 70) mm.
     pub const WORKSHEET: FourBar = FourBar {
         l1: 80.0,
@@ -60,6 +70,16 @@ pub struct BareFourBar {
 }
 
 impl BareFourBar {
+    /// The same four-bar in closed form (its assemblies solved exactly).
+    pub fn closed_form(&self) -> crate::closed_form::FourBar {
+        crate::closed_form::FourBar {
+            l1: self.l1,
+            l2: self.l2,
+            l3: self.l3,
+            l4: self.l4,
+        }
+    }
+
     /// The worksheet's lengths: l = (80, 20, 50, 70) mm.
     pub const WORKSHEET: BareFourBar = BareFourBar {
         l1: 80.0,

@@ -85,12 +85,7 @@ fn every_source_solves_newton_to_full_precision() {
 #[test]
 fn the_lean_analysis_agrees_with_the_separate_solves() {
     let bar = FourBar::WORKSHEET;
-    let closed = linkage::closed_form::FourBar {
-        l1: bar.l1,
-        l2: bar.l2,
-        l3: bar.l3,
-        l4: bar.l4,
-    };
+    let closed = bar.closed_form();
     let general = Options {
         method: AccelerationMethod::B,
         ..Options::default()

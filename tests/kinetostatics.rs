@@ -26,14 +26,7 @@ const G: f64 = 9.81;
 const P: Vector2<f64> = Vector2::new(30.0, -120.0);
 
 fn machine() -> Machine<FourBar, 2> {
-    let start = linkage::closed_form::FourBar {
-        l1: BAR.l1,
-        l2: BAR.l2,
-        l3: BAR.l3,
-        l4: BAR.l4,
-    }
-    .position(0.0, 1.0)
-    .unwrap();
+    let start = BAR.closed_form().position(0.0, 1.0).unwrap();
     Machine::new(BAR, vector![start[0], start[1]])
         .body(Body::new("crank").angle("theta2"))
         .body(

@@ -5,7 +5,6 @@
 mod common;
 
 use common::{FourBar, OMEGA2, SLIDER_CRANK, SliderCrank};
-use linkage::closed_form;
 use linkage::draw::diagrams::{DiagramError, Diagrams};
 use linkage::draw::scene::{Frame, Scene, SceneError};
 use linkage::error::{NameKind, UnknownName};
@@ -431,12 +430,7 @@ fn motion_diagrams_are_well_formed_and_mark_the_limit_positions() {
         l2: 45.0,
         ..FourBar::WORKSHEET
     };
-    let cf = closed_form::FourBar {
-        l1: bar.l1,
-        l2: bar.l2,
-        l3: bar.l3,
-        l4: bar.l4,
-    };
+    let cf = bar.closed_form();
     let start = cf.position(0.0, 1.0).unwrap();
     let limit = cf.collinear_crank_angles()[0];
     let rocking = bar

@@ -12,15 +12,6 @@ use std::f64::consts::{PI, TAU};
 
 const STEPS: usize = 10_000;
 
-fn closed(bar: &FourBar) -> closed_form::FourBar {
-    closed_form::FourBar {
-        l1: bar.l1,
-        l2: bar.l2,
-        l3: bar.l3,
-        l4: bar.l4,
-    }
-}
-
 /// |a − b| for angles, wrapped to [0, π].
 fn angle_error(a: f64, b: f64) -> f64 {
     let d = (a - b).rem_euclid(TAU);
@@ -63,7 +54,7 @@ fn check_fourbar(
     start_branch: f64,
     flips_at_branch_points: bool,
 ) -> f64 {
-    let cf = closed(bar);
+    let cf = bar.closed_form();
     let mut worst: f64 = 0.0;
     for (k, p) in sweep.poses.iter().enumerate() {
         let sigma = expected_branch(sweep, start_branch, k, flips_at_branch_points);
@@ -91,13 +82,16 @@ fn full_turn(steps: usize) -> Drive<1> {
 }
 
 fn start_pose(bar: &FourBar, theta2: f64, sigma: f64) -> SVector<f64, 2> {
-    let [a, b] = closed(bar).position(theta2, sigma).unwrap();
+    let [a, b] = bar.closed_form().position(theta2, sigma).unwrap();
     vector![a, b]
 }
 
 #[test]
 fn crank_rocker_full_cycle_never_flips() {
-    assert_eq!(closed(&FourBar::WORKSHEET).grashof(), Grashof::CrankRocker);
+    assert_eq!(
+        FourBar::WORKSHEET.closed_form().grashof(),
+        Grashof::CrankRocker
+    );
     for sigma in [1.0, -1.0] {
         let sweep = FourBar::WORKSHEET
             .sweep(
@@ -125,7 +119,7 @@ fn double_crank_full_cycle_never_flips() {
         l3: 50.0,
         l4: 70.0,
     };
-    assert_eq!(closed(&bar).grashof(), Grashof::DoubleCrank);
+    assert_eq!(bar.closed_form().grashof(), Grashof::DoubleCrank);
     let sweep = bar
         .sweep(
             &start_pose(&bar, 0.0, 1.0),
@@ -148,7 +142,7 @@ fn triple_rocker_rocks_between_its_limit_positions() {
         l2: 45.0,
         ..FourBar::WORKSHEET
     };
-    let cf = closed(&bar);
+    let cf = bar.closed_form();
     assert_eq!(cf.grashof(), Grashof::TripleRocker);
     // The law of cosines: BD = l3 + l4.
     let limit = cf.collinear_crank_angles()[0];
@@ -199,7 +193,7 @@ fn change_point_branch_point_is_found_and_crossed() {
         l2: 40.0,
         ..FourBar::WORKSHEET
     };
-    let cf = closed(&bar);
+    let cf = bar.closed_form();
     assert_eq!(cf.grashof(), Grashof::ChangePoint);
     // The collinear pose at θ2 = π is on the grid (step 5000 of 10 000) and,
     // with an odd number of steps, between grid values.

@@ -314,13 +314,7 @@ fn a_search_stops_with_the_round_that_certifies_enough_designs() {
 fn grashof(wanted: Grashof) -> Requirements<'static, FourBar, 2> {
     let mut requirements = Requirements::new(Range::Revolution);
     requirements.check = Some(Box::new(move |m: &FourBar| {
-        let found = closed_form::FourBar {
-            l1: m.l1,
-            l2: m.l2,
-            l3: m.l3,
-            l4: m.l4,
-        }
-        .grashof();
+        let found = m.closed_form().grashof();
         if found == wanted {
             Ok(())
         } else {

@@ -2,7 +2,6 @@
 //! numbers, their exact gradient with them), a closed target curve, and a
 //! function fitted over a range by least squares.
 
-use linkage::closed_form;
 use linkage::mechanisms::FourBar;
 use linkage::prelude::*;
 use linkage::synthesis::{Problem, Range, Requirements, Search, SynthesisError, synthesize};
@@ -147,12 +146,7 @@ fn a_closed_target_curve_is_fitted_by_least_squares() {
 /// θ4 of the four-bar `model` at the crank angle `theta2`, on the branch
 /// of the pose `u` it has at the crank angle `v` (closed form).
 fn theta4(model: &FourBar, (v, u): (f64, &SVector<f64, 2>), theta2: f64) -> f64 {
-    let bar = closed_form::FourBar {
-        l1: model.l1,
-        l2: model.l2,
-        l3: model.l3,
-        l4: model.l4,
-    };
+    let bar = model.closed_form();
     let sigma = bar.branch(v, u[0]);
     bar.position(theta2, sigma)
         .expect("assembles over the range")[1]

@@ -6,7 +6,6 @@
 //! `tests/diagrams.rs` (the charts' legends).
 #![allow(dead_code)]
 
-use linkage::closed_form;
 use linkage::mechanisms::BareFourBar;
 use linkage::prelude::*;
 
@@ -134,12 +133,7 @@ fn relative(a: [f64; 2], b: [f64; 2]) -> f64 {
 /// Runs every method at every distance of the reference.
 pub fn run(case: Case) -> Vec<Row> {
     let bar = case.bar();
-    let closed = closed_form::FourBar {
-        l1: bar.l1,
-        l2: bar.l2,
-        l3: bar.l3,
-        l4: bar.l4,
-    };
+    let closed = bar.closed_form();
     let mut rows = Vec::new();
     for r in case.reference() {
         let [delta, theta2, t3, t4, w3, w4, a3, a4] = r;

@@ -13,7 +13,6 @@
 //! or out of the targets' order (an order defect).
 
 use crate::tasks::FunctionTask;
-use linkage::closed_form;
 use linkage::mechanisms::{CouplerFourBar, FourBar};
 use linkage::prelude::*;
 use linkage::synthesis::{Defect, Range, Requirements, certify};
@@ -291,12 +290,7 @@ pub fn path_error(
 /// closed form's two branches (one where they meet, none where it does not
 /// assemble).
 fn assemblies(l: &FourBar, theta: f64) -> Vec<SVector<f64, 2>> {
-    let bar = closed_form::FourBar {
-        l1: l.l1,
-        l2: l.l2,
-        l3: l.l3,
-        l4: l.l4,
-    };
+    let bar = l.closed_form();
     [1.0, -1.0]
         .into_iter()
         .filter_map(|sigma| bar.position(theta, sigma))

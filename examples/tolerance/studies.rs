@@ -3,7 +3,6 @@
 //! and by Monte Carlo.
 
 use crate::machine::{COURSE_PROJECT, Shaper, synthesize};
-use linkage::closed_form;
 use linkage::mechanisms::FourBar;
 use linkage::num_dual::DualSVec64;
 use linkage::prelude::*;
@@ -137,12 +136,7 @@ fn outputs() -> Vec<Output<'static, 2, 1, 4>> {
 
 /// The pose at θ2 = 0 on the worksheet's branch (θ3 > 0).
 fn start(model: &FourBar) -> Result<SVector<f64, 2>, Box<dyn std::error::Error>> {
-    let closed = closed_form::FourBar {
-        l1: model.l1,
-        l2: model.l2,
-        l3: model.l3,
-        l4: model.l4,
-    };
+    let closed = model.closed_form();
     [1.0, -1.0]
         .into_iter()
         .filter_map(|sigma| closed.position(0.0, sigma))

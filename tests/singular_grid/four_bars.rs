@@ -8,21 +8,12 @@ use linkage::prelude::*;
 use std::f64::consts::{PI, TAU};
 use std::time::Instant;
 
-pub(crate) fn cf(bar: BareFourBar) -> closed_form::FourBar {
-    closed_form::FourBar {
-        l1: bar.l1,
-        l2: bar.l2,
-        l3: bar.l3,
-        l4: bar.l4,
-    }
-}
-
 /// A four-bar swept through its branch points, on both branches: the
 /// smooth continuation through a branch point changes the closed form's
 /// branch (the side of B→D that C is on).
 fn four_bar_through(name: &str, bar: BareFourBar, singular: &[f64]) {
     let began = Instant::now();
-    let closed = cf(bar);
+    let closed = bar.closed_form();
     let counts = step_counts();
     let mut tally = Tally::default();
     for sigma in [1.0, -1.0] {
@@ -46,7 +37,10 @@ fn change_point_l80_40_50_70() {
         l3: 50.0,
         l4: 70.0,
     };
-    assert_eq!(cf(bar).grashof(), closed_form::Grashof::ChangePoint);
+    assert_eq!(
+        bar.closed_form().grashof(),
+        closed_form::Grashof::ChangePoint
+    );
     four_bar_through("change point 80/40/50/70 (π)", bar, &[PI]);
 }
 
@@ -64,7 +58,7 @@ fn change_point_from_zero_to_two_pi_at_every_step_count() {
         l3: 50.0,
         l4: 70.0,
     };
-    let closed = cf(bar);
+    let closed = bar.closed_form();
     let full = std::env::var("LINKAGE_GRID").is_ok_and(|s| s == "full");
     let mut counts: Vec<usize> = (100..=2000).step_by(if full { 1 } else { 19 }).collect();
     counts.extend([490, 674, 698, 704, 726, 758, 760]);
@@ -105,7 +99,10 @@ fn change_point_l100_30_60_70() {
         l3: 60.0,
         l4: 70.0,
     };
-    assert_eq!(cf(bar).grashof(), closed_form::Grashof::ChangePoint);
+    assert_eq!(
+        bar.closed_form().grashof(),
+        closed_form::Grashof::ChangePoint
+    );
     four_bar_through("change point 100/30/60/70 (π)", bar, &[PI]);
 }
 
@@ -117,7 +114,10 @@ fn change_point_l60_20_80_40() {
         l3: 80.0,
         l4: 40.0,
     };
-    assert_eq!(cf(bar).grashof(), closed_form::Grashof::ChangePoint);
+    assert_eq!(
+        bar.closed_form().grashof(),
+        closed_form::Grashof::ChangePoint
+    );
     four_bar_through("change point 60/20/80/40 (0)", bar, &[0.0]);
 }
 
@@ -129,7 +129,10 @@ fn change_point_l60_20_40_80() {
         l3: 40.0,
         l4: 80.0,
     };
-    assert_eq!(cf(bar).grashof(), closed_form::Grashof::ChangePoint);
+    assert_eq!(
+        bar.closed_form().grashof(),
+        closed_form::Grashof::ChangePoint
+    );
     four_bar_through("change point 60/20/40/80 (0)", bar, &[0.0]);
 }
 

@@ -3,7 +3,6 @@
 //! through its dead centres.
 
 use crate::common::{SLIDER_DRIVEN, SliderDriven};
-use crate::four_bars::cf;
 use crate::grids::{OFFSETS, line_grid, line_through, miss, off, rocking_through};
 use crate::harness::{Run, Tally, campaign, report, step_counts};
 use linkage::closed_form::circle_intersection;
@@ -23,7 +22,7 @@ fn triple_rocker_limit_on_the_grid() {
         l3: 50.0,
         l4: 70.0,
     };
-    let closed = cf(bar);
+    let closed = bar.closed_form();
     let limit = closed.collinear_crank_angles()[0];
     let counts = step_counts();
     let mut tally = Tally::default();
