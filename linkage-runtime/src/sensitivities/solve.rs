@@ -17,6 +17,20 @@
 //!
 //! (The time derivative of u_p is the derivative by p of u̇, the driver's
 //! motion being independent of p.)
+//!
+//! With X₀, X₁, X₂ = Ψ_u⁻¹ Ψ_p, Ψ_u⁻¹ Ψ̇_p, Ψ_u⁻¹ Ψ̈_p and the m × m
+//! A = Ψ_u⁻¹ Ψ̇_u, B = Ψ_u⁻¹ Ψ̈_u, the same three read
+//!
+//! ```text
+//! u_p = −X₀
+//! u̇_p = A X₀ − X₁
+//! ü_p = B X₀ − 2A u̇_p − X₂
+//! ```
+//!
+//! which is how they are computed: the five products by Ψ_u⁻¹ do not wait
+//! for one another, and the chain from Ψ_u⁻¹ to ü_p is three products long
+//! instead of five (a four-bar's sensitivities at k = 4: 108 → 88 ns,
+//! measured 2026-11-23).
 
 use super::Sensitivities;
 use super::results::{Motion, Sensitivity, SensitivityTerms};
@@ -29,6 +43,7 @@ use nalgebra::{SMatrix, Vector2};
 /// [`Sensitivities::sensitivities`]: the inputs checked, the terms
 /// generated, Ψ_u factored with the conditioning the sensitivities need,
 /// then [`from_terms`].
+#[inline(always)]
 pub(crate) fn sensitivities<
     L: Sensitivities<M, F, K> + ?Sized,
     const M: usize,
@@ -78,6 +93,7 @@ pub(crate) fn sensitivities<
 /// The sensitivities from the generated terms at a pose: `Singular` where
 /// Ψ_u is too ill-conditioned for them to keep [`Options::accuracy`],
 /// `NonFiniteValue` where a term or a result is not finite.
+#[inline(always)]
 pub(crate) fn from_terms<const M: usize, const K: usize, P>(
     terms: &SensitivityTerms<M, K, P>,
     options: &Options,
@@ -93,30 +109,26 @@ where
     let inv = match factor(&terms.psi_u, stage, options) {
         Ok(inv) => inv,
         Err(singular) => {
-            name_non_finite_term(terms)?;
+            name_non_finite_term(*terms)?;
             return Err(singular);
         }
     };
-    // −Ψ_u⁻¹ once: negating m² entries rather than three products' m·k
-    // (the same numbers, negation being exact).
-    let minus_inverse = inv.inverse.map(|x| -x);
-    let u = product(&minus_inverse, &terms.psi_p);
-    let udot = product(
-        &minus_inverse,
-        &sum(&product(&terms.psi_u_dot, &u), &terms.psi_p_dot),
-    );
-    let twice = product(&terms.psi_u_dot, &udot).map(|x| 2.0 * x);
-    let uddot = product(
-        &minus_inverse,
-        &sum(
-            &sum(&product(&terms.psi_u_ddot, &u), &twice),
-            &terms.psi_p_ddot,
-        ),
-    );
+    // The products by Ψ_u⁻¹ first, independent of one another (see the
+    // module's documentation); 2A is exact.
+    let inverse = &inv.inverse;
+    let a = product(inverse, &terms.psi_u_dot);
+    let b = product(inverse, &terms.psi_u_ddot);
+    let x0 = product(inverse, &terms.psi_p);
+    let x1 = product(inverse, &terms.psi_p_dot);
+    let x2 = product(inverse, &terms.psi_p_ddot);
+    let u = -x0;
+    let udot = product(&a, &x0) - x1;
+    let twice_a = a * 2.0;
+    let uddot = product(&b, &x0) - product(&twice_a, &udot) - x2;
     let finite =
         all_finite(u.as_slice()) & all_finite(udot.as_slice()) & all_finite(uddot.as_slice());
     if !finite {
-        name_non_finite_term(terms)?;
+        name_non_finite_term(*terms)?;
         for (quantity, values) in [
             ("u_p", u.as_slice()),
             ("u̇_p", udot.as_slice()),
@@ -185,7 +197,7 @@ where
 /// finite, in their order; `Ok` if all are.
 #[cold]
 fn name_non_finite_term<const M: usize, const K: usize, P>(
-    terms: &SensitivityTerms<M, K, P>,
+    terms: SensitivityTerms<M, K, P>,
 ) -> Result<(), Error> {
     for (quantity, values) in [
         ("Ψ_u", terms.psi_u.as_slice()),
@@ -233,19 +245,6 @@ fn product<const R: usize, const N: usize, const C: usize>(
     out
 }
 
-/// a + b, entry by entry.
-#[inline(always)]
-fn sum<const R: usize, const C: usize>(
-    a: &SMatrix<f64, R, C>,
-    b: &SMatrix<f64, R, C>,
-) -> SMatrix<f64, R, C> {
-    let mut out = *a;
-    for (o, x) in out.as_mut_slice().iter_mut().zip(b.as_slice()) {
-        *o += x;
-    }
-    out
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -289,14 +288,16 @@ mod tests {
         }
     }
 
-    /// The formulas written plainly: nalgebra's products, every term of
-    /// every point added.
+    /// The formulas written plainly (in the module's X₀, A, B form):
+    /// nalgebra's products, every term of every point added.
     fn plainly(t: &SensitivityTerms<2, 2, Points>) -> Sensitivity<2, 2, Points> {
         let inv = crate::linalg::invert(&t.psi_u);
         let inverse = inv.inverse;
-        let u = -(inverse * t.psi_p);
-        let udot = -(inverse * (t.psi_u_dot * u + t.psi_p_dot));
-        let uddot = -(inverse * (t.psi_u_ddot * u + t.psi_u_dot * udot * 2.0 + t.psi_p_ddot));
+        let (a, b) = (inverse * t.psi_u_dot, inverse * t.psi_u_ddot);
+        let x0 = inverse * t.psi_p;
+        let u = -x0;
+        let udot = a * x0 - inverse * t.psi_p_dot;
+        let uddot = b * x0 - (a * 2.0) * udot - inverse * t.psi_p_ddot;
         let (mut p, mut pv, mut pa) = (t.points_p, t.point_velocities_p, t.point_accelerations_p);
         for j in 0..2 {
             for i in 0..2 {
@@ -321,8 +322,8 @@ mod tests {
         }
     }
 
-    /// The fixed-size products, the negated inverse, the points summed in
-    /// place with the zero terms skipped: the very numbers of the formulas
+    /// The fixed-size products, the points summed in place with the zero
+    /// terms skipped: the very numbers of the formulas
     /// written plainly, in the same order (== on every entry, not a
     /// tolerance).
     #[test]
