@@ -209,7 +209,9 @@ impl<'a> Generator<'a> {
                 self.generic_formula(q, &doc, matrix(self.model))
             }
             (Scalar::Dual, Source::Points(_)) => self.generic_points(q, &doc),
-            (_, Source::SensitivityTerms) => self.sensitivity_terms_function(q, &doc),
+            (_, Source::SensitivityTerms { with_trig }) => {
+                self.sensitivity_terms_function(q, with_trig, &doc)
+            }
             (Scalar::Dual, Source::PsiAndPsiU)
             | (_, Source::Determinant | Source::PointsByParams(_)) => quote!(),
         }

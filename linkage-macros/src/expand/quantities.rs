@@ -113,8 +113,9 @@ pub enum Source {
     Kinematics { with_trig: bool },
     /// det Ψ_u: in the symbolic table only.
     Determinant,
-    /// Every derivative by u and p the sensitivities need, in one evaluation.
-    SensitivityTerms,
+    /// Every derivative by u and p the sensitivities need, in one evaluation,
+    /// the sines and cosines computed or given.
+    SensitivityTerms { with_trig: bool },
     /// The points' explicit derivatives by the parameters: positions (0),
     /// velocities (1), accelerations (2); in the symbolic table only.
     PointsByParams(usize),
@@ -164,6 +165,16 @@ const U_V_QDOT: &[Arg] = &[Arg::U, Arg::V, Arg::Udot, Arg::Vdot];
 const U_V_QDOT_QDDOT: &[Arg] = &[Arg::U, Arg::V, Arg::Udot, Arg::Vdot, Arg::Uddot, Arg::Vddot];
 const U_V_VDOT_VDDOT: &[Arg] = &[Arg::U, Arg::V, Arg::Vdot, Arg::Vddot];
 const P_U_V: &[Arg] = &[Arg::Params, Arg::U, Arg::V];
+const U_V_TRIG_QDOT_QDDOT: &[Arg] = &[
+    Arg::U,
+    Arg::V,
+    Arg::TrigU,
+    Arg::TrigV,
+    Arg::Udot,
+    Arg::Vdot,
+    Arg::Uddot,
+    Arg::Vddot,
+];
 const U_V_TRIG_VDOT_VDDOT: &[Arg] = &[
     Arg::U,
     Arg::V,
@@ -507,7 +518,7 @@ pub const QUANTITIES: &[Quantity] = &[
         args: U_V_QDOT_QDDOT,
         shape: Shape::SensitivityTerms,
         scalar: Scalar::F64,
-        source: Source::SensitivityTerms,
+        source: Source::SensitivityTerms { with_trig: false },
         function: true,
         in_trait: Some(Trait::Sensitivities),
         key: None,
@@ -527,6 +538,25 @@ pub const QUANTITIES: &[Quantity] = &[
                  ```",
                 c.p_list
             )
+        },
+    },
+    Quantity {
+        name: "sensitivity_terms_with_trig",
+        symbol: "Ψ_u, Ψ_p, Ψ̇_u, Ψ̇_p, Ψ̈_u, Ψ̈_p, P_u, P_p, …",
+        args: U_V_TRIG_QDOT_QDDOT,
+        shape: Shape::SensitivityTerms,
+        scalar: Scalar::F64,
+        source: Source::SensitivityTerms { with_trig: true },
+        function: true,
+        in_trait: Some(Trait::Sensitivities),
+        key: None,
+        doc: |_| {
+            "[`Self::sensitivity_terms`] with the sines and cosines of the coordinates \
+             given (`trig_u[k]` = (sin uₖ, cos uₖ), likewise `trig_v`; those of \
+             [`Self::SENSITIVITY_TRIG_U`] and [`Self::SENSITIVITY_TRIG_V`] are read) \
+             instead of computed: a sweep carries them from pose to pose, as it does \
+             for [`Self::kinematics_with_trig`]."
+                .to_owned()
         },
     },
     Quantity {

@@ -10,12 +10,20 @@ use super::quantities::Quantity;
 use super::signature;
 use linkage_symbolic::dag::{Dag, Id};
 use linkage_symbolic::derivatives::Matrix;
-use linkage_symbolic::emit::{Mode, emit};
-use proc_macro2::TokenStream;
+use linkage_symbolic::emit::{Mode, TrigSource, emit_phases};
+use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 
 impl Generator<'_> {
-    pub(super) fn sensitivity_terms_function(&self, q: &Quantity, doc: &[String]) -> TokenStream {
+    /// `sensitivity_terms`, or with `with_trig` `sensitivity_terms_with_trig`
+    /// (the sines and cosines read from its arguments `trig_u` and `trig_v`)
+    /// and the masks saying which it reads.
+    pub(super) fn sensitivity_terms_function(
+        &self,
+        q: &Quantity,
+        with_trig: bool,
+        doc: &[String],
+    ) -> TokenStream {
         let model = self.model;
         let matrices: [(&str, &Matrix); 6] = [
             ("psi_u", &model.psi_u),
@@ -66,8 +74,26 @@ impl Generator<'_> {
             }
         }
         let reserved: Vec<String> = matrices.iter().map(|(n, _)| self.free_name(n)).collect();
-        let body = emit(self.dag(), &self.names, &roots, &[], &reserved, Mode::F64);
-        let mut values = body.values.iter();
+        let trig_names = [self.free_name("trig_u"), self.free_name("trig_v")];
+        let source = TrigSource {
+            u: format_ident!("{}", trig_names[0]),
+            v: format_ident!("{}", trig_names[1]),
+            m: self.m,
+        };
+        let mut names_taken = reserved.clone();
+        names_taken.extend(trig_names.iter().cloned());
+        let phased = emit_phases(
+            self.dag(),
+            &self.names,
+            &[&roots],
+            &[],
+            &names_taken,
+            Mode::F64,
+            &[],
+            with_trig.then_some(&source),
+        );
+        let (body_statements, body_values) = phased.phases.into_iter().next().unwrap_or_default();
+        let mut values = body_values.iter();
         let mut statements = Vec::new();
         let mut fields = Vec::new();
         for ((field, matrix), name) in matrices.iter().zip(&reserved) {
@@ -102,21 +128,49 @@ impl Generator<'_> {
         }
         let name = format_ident!("{}", q.name);
         let dims = self.dims();
-        let args = signature::args(q, &dims, |a| reads(&body.reads, a));
+        let mut args = signature::args(q, &dims, |a| reads(&phased.reads, a));
         let ret = signature::output_type(q, &dims, false);
         let doc = doc_attributes(doc);
-        let prologue = &body.statements;
+        let prologue = &phased.prologue;
+        let masks = if with_trig {
+            // The trig arguments under their free names (a coordinate may be
+            // called `trig_u`), after u and v.
+            let (m, f) = (self.m, self.f);
+            let (ml, fl) = (Literal::usize_unsuffixed(m), Literal::usize_unsuffixed(f));
+            let (trig_u, trig_v) = (&source.u, &source.v);
+            args[2] = quote!(#trig_u: &[(f64, f64); #ml]);
+            args[3] = quote!(#trig_v: &[(f64, f64); #fl]);
+            let mask = |range: std::ops::Range<usize>| {
+                let flags = range.map(|k| phased.trig_coords.contains(&k));
+                quote!([#(#flags),*])
+            };
+            let (mask_u, mask_v) = (mask(0..m), mask(m..m + f));
+            quote! {
+                /// Which coordinates of u appear under `sin`/`cos` in
+                /// [`Self::sensitivity_terms_with_trig`], which reads their
+                /// sine and cosine from `trig_u` (the others' entries are not
+                /// read).
+                pub const SENSITIVITY_TRIG_U: [bool; #ml] = #mask_u;
+                /// Which coordinates of v appear under `sin`/`cos`, read from
+                /// `trig_v`.
+                pub const SENSITIVITY_TRIG_V: [bool; #fl] = #mask_v;
+            }
+        } else {
+            quote!()
+        };
         // `#[inline(always)]`, unlike the kernels (see `function.rs`): the
         // terms are read once, by the solve that follows, and in line the
         // struct of them need not be written out (a four-bar's
         // sensitivities at k = 4: 102 → 88 ns, measured 2026-11-23).
         quote! {
+            #masks
             #doc
             #[must_use]
             #[inline(always)]
-            #[allow(clippy::too_many_arguments)]
+            #[allow(unused_variables, clippy::too_many_arguments)]
             pub fn #name(&self, #(#args),*) -> #ret {
                 #(#prologue)*
+                #(#body_statements)*
                 #(#statements)*
                 ::linkage::SensitivityTerms { #(#fields),* }
             }

@@ -41,7 +41,9 @@ impl Generator<'_> {
                     None => continue,
                 },
                 Source::PointsByParams(level) => self.points_by_params_matrix(level),
-                Source::PsiAndPsiU | Source::Kinematics { .. } | Source::SensitivityTerms => {
+                Source::PsiAndPsiU
+                | Source::Kinematics { .. }
+                | Source::SensitivityTerms { .. } => {
                     continue;
                 }
             };

@@ -37,6 +37,11 @@ impl Generator<'_> {
                             const TRIG_V: [bool; #f] = Self::TRIG_V;
                             #[inline(always)]
                         },
+                        Source::SensitivityTerms { with_trig: true } => quote! {
+                            const SENSITIVITY_TRIG_U: [bool; #m] = Self::SENSITIVITY_TRIG_U;
+                            const SENSITIVITY_TRIG_V: [bool; #f] = Self::SENSITIVITY_TRIG_V;
+                            #[inline(always)]
+                        },
                         _ => quote!(#[inline]),
                     };
                     quote! {

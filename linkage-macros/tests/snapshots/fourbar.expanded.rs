@@ -715,7 +715,7 @@ const _: () = {
         /// ```
         #[must_use]
         #[inline(always)]
-        #[allow(clippy::too_many_arguments)]
+        #[allow(unused_variables, clippy::too_many_arguments)]
         pub fn sensitivity_terms(
             &self,
             u: &SVector<f64, 2>,
@@ -737,6 +737,300 @@ const _: () = {
             let l3_c_theta3 = l3 * c_theta3;
             let l3_s_theta3 = l3 * s_theta3;
             let (s_theta4, c_theta4) = theta4.sin_cos();
+            let l4_c_theta4 = l4 * c_theta4;
+            let l4_s_theta4 = l4 * s_theta4;
+            let l3_s_theta3_theta3_dot = l3_s_theta3 * theta3_dot;
+            let l4_s_theta4_theta4_dot = l4_s_theta4 * theta4_dot;
+            let l3_c_theta3_theta3_dot = l3_c_theta3 * theta3_dot;
+            let l4_c_theta4_theta4_dot = l4_c_theta4 * theta4_dot;
+            let l3_c_theta3_theta3_dot_sq = l3_c_theta3 * theta3_dot.powi(2);
+            let l4_c_theta4_theta4_dot_sq = l4_c_theta4 * theta4_dot.powi(2);
+            let l3_s_theta3_theta3_dot_sq = l3_s_theta3 * theta3_dot.powi(2);
+            let l4_s_theta4_theta4_dot_sq = l4_s_theta4 * theta4_dot.powi(2);
+            let l3_s_theta3_theta3_ddot = l3_s_theta3 * theta3_ddot;
+            let l4_s_theta4_theta4_ddot = l4_s_theta4 * theta4_ddot;
+            let l3_c_theta3_theta3_ddot = l3_c_theta3 * theta3_ddot;
+            let l4_c_theta4_theta4_ddot = l4_c_theta4 * theta4_ddot;
+            let s_theta2_theta2_dot = s_theta2 * theta2_dot;
+            let s_theta3_theta3_dot = s_theta3 * theta3_dot;
+            let s_theta4_theta4_dot = s_theta4 * theta4_dot;
+            let c_theta2_theta2_dot = c_theta2 * theta2_dot;
+            let c_theta3_theta3_dot = c_theta3 * theta3_dot;
+            let c_theta4_theta4_dot = c_theta4 * theta4_dot;
+            let sum = l3_s_theta3_theta3_dot_sq - l3_c_theta3_theta3_ddot;
+            let sum_2 = -l3_c_theta3_theta3_dot_sq - l3_s_theta3_theta3_ddot;
+            let c_theta2_theta2_dot_sq = c_theta2 * theta2_dot.powi(2);
+            let s_theta2_theta2_ddot = s_theta2 * theta2_ddot;
+            let sum_3 = -c_theta2_theta2_dot_sq - s_theta2_theta2_ddot;
+            let c_theta3_theta3_dot_sq = c_theta3 * theta3_dot.powi(2);
+            let s_theta3_theta3_ddot = s_theta3 * theta3_ddot;
+            let sum_4 = -c_theta3_theta3_dot_sq - s_theta3_theta3_ddot;
+            let c_theta4_theta4_dot_sq = c_theta4 * theta4_dot.powi(2);
+            let s_theta4_theta4_ddot = s_theta4 * theta4_ddot;
+            let s_theta2_theta2_dot_sq = s_theta2 * theta2_dot.powi(2);
+            let c_theta2_theta2_ddot = c_theta2 * theta2_ddot;
+            let sum_5 = -s_theta2_theta2_dot_sq + c_theta2_theta2_ddot;
+            let s_theta3_theta3_dot_sq = s_theta3 * theta3_dot.powi(2);
+            let c_theta3_theta3_ddot = c_theta3 * theta3_ddot;
+            let sum_6 = -s_theta3_theta3_dot_sq + c_theta3_theta3_ddot;
+            let s_theta4_theta4_dot_sq = s_theta4 * theta4_dot.powi(2);
+            let c_theta4_theta4_ddot = c_theta4 * theta4_ddot;
+            let mut psi_u = SMatrix::<f64, 2, 2>::zeros();
+            psi_u[(0, 0)] = -l3_s_theta3;
+            psi_u[(0, 1)] = -l4_s_theta4;
+            psi_u[(1, 0)] = l3_c_theta3;
+            psi_u[(1, 1)] = l4_c_theta4;
+            let mut psi_p = SMatrix::<f64, 2, 4>::zeros();
+            psi_p[(0, 0)] = -1.0;
+            psi_p[(0, 1)] = c_theta2;
+            psi_p[(0, 2)] = c_theta3;
+            psi_p[(0, 3)] = c_theta4;
+            psi_p[(1, 1)] = s_theta2;
+            psi_p[(1, 2)] = s_theta3;
+            psi_p[(1, 3)] = s_theta4;
+            let mut psi_u_dot = SMatrix::<f64, 2, 2>::zeros();
+            psi_u_dot[(0, 0)] = -l3_c_theta3_theta3_dot;
+            psi_u_dot[(0, 1)] = -l4_c_theta4_theta4_dot;
+            psi_u_dot[(1, 0)] = -l3_s_theta3_theta3_dot;
+            psi_u_dot[(1, 1)] = -l4_s_theta4_theta4_dot;
+            let mut psi_p_dot = SMatrix::<f64, 2, 4>::zeros();
+            psi_p_dot[(0, 1)] = -s_theta2_theta2_dot;
+            psi_p_dot[(0, 2)] = -s_theta3_theta3_dot;
+            psi_p_dot[(0, 3)] = -s_theta4_theta4_dot;
+            psi_p_dot[(1, 1)] = c_theta2_theta2_dot;
+            psi_p_dot[(1, 2)] = c_theta3_theta3_dot;
+            psi_p_dot[(1, 3)] = c_theta4_theta4_dot;
+            let mut psi_u_ddot = SMatrix::<f64, 2, 2>::zeros();
+            psi_u_ddot[(0, 0)] = sum;
+            psi_u_ddot[(0, 1)] = l4_s_theta4_theta4_dot_sq - l4_c_theta4_theta4_ddot;
+            psi_u_ddot[(1, 0)] = sum_2;
+            psi_u_ddot[(1, 1)] = -l4_c_theta4_theta4_dot_sq - l4_s_theta4_theta4_ddot;
+            let mut psi_p_ddot = SMatrix::<f64, 2, 4>::zeros();
+            psi_p_ddot[(0, 1)] = sum_3;
+            psi_p_ddot[(0, 2)] = sum_4;
+            psi_p_ddot[(0, 3)] = -c_theta4_theta4_dot_sq - s_theta4_theta4_ddot;
+            psi_p_ddot[(1, 1)] = sum_5;
+            psi_p_ddot[(1, 2)] = sum_6;
+            psi_p_ddot[(1, 3)] = -s_theta4_theta4_dot_sq + c_theta4_theta4_ddot;
+            ::linkage::SensitivityTerms {
+                psi_u,
+                psi_p,
+                psi_u_dot,
+                psi_p_dot,
+                psi_u_ddot,
+                psi_p_ddot,
+                points_u: [
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(-l3_s_theta3, l3_c_theta3),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(-0.5 * l3_s_theta3, 0.5 * l3_c_theta3),
+                        Vector2::new(-l3_s_theta3, l3_c_theta3),
+                    ],
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(-0.5 * l4_s_theta4, 0.5 * l4_c_theta4),
+                    ],
+                ],
+                points_p: [
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                    ],
+                    [
+                        Vector2::new(c_theta2, s_theta2),
+                        Vector2::new(c_theta2, s_theta2),
+                        Vector2::new(0.5 * c_theta2, 0.5 * s_theta2),
+                        Vector2::new(c_theta2, s_theta2),
+                        Vector2::new(c_theta2, s_theta2),
+                    ],
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(c_theta3, s_theta3),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.5 * c_theta3, 0.5 * s_theta3),
+                        Vector2::new(c_theta3, s_theta3),
+                    ],
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.5 * c_theta4, 0.5 * s_theta4),
+                    ],
+                ],
+                point_velocities_u: [
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(-l3_c_theta3_theta3_dot, -l3_s_theta3_theta3_dot),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(
+                            -0.5 * l3_c_theta3_theta3_dot,
+                            -0.5 * l3_s_theta3_theta3_dot,
+                        ),
+                        Vector2::new(-l3_c_theta3_theta3_dot, -l3_s_theta3_theta3_dot),
+                    ],
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(
+                            -0.5 * l4_c_theta4_theta4_dot,
+                            -0.5 * l4_s_theta4_theta4_dot,
+                        ),
+                    ],
+                ],
+                point_velocities_p: [
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                    ],
+                    [
+                        Vector2::new(-s_theta2_theta2_dot, c_theta2_theta2_dot),
+                        Vector2::new(-s_theta2_theta2_dot, c_theta2_theta2_dot),
+                        Vector2::new(
+                            -0.5 * s_theta2_theta2_dot,
+                            0.5 * c_theta2_theta2_dot,
+                        ),
+                        Vector2::new(-s_theta2_theta2_dot, c_theta2_theta2_dot),
+                        Vector2::new(-s_theta2_theta2_dot, c_theta2_theta2_dot),
+                    ],
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(-s_theta3_theta3_dot, c_theta3_theta3_dot),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(
+                            -0.5 * s_theta3_theta3_dot,
+                            0.5 * c_theta3_theta3_dot,
+                        ),
+                        Vector2::new(-s_theta3_theta3_dot, c_theta3_theta3_dot),
+                    ],
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(
+                            -0.5 * s_theta4_theta4_dot,
+                            0.5 * c_theta4_theta4_dot,
+                        ),
+                    ],
+                ],
+                point_accelerations_u: [
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(sum, sum_2),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(
+                            0.5 * l3_s_theta3_theta3_dot_sq
+                                - 0.5 * l3_c_theta3_theta3_ddot,
+                            -0.5 * l3_c_theta3_theta3_dot_sq
+                                - 0.5 * l3_s_theta3_theta3_ddot,
+                        ),
+                        Vector2::new(sum, sum_2),
+                    ],
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(
+                            0.5 * l4_s_theta4_theta4_dot_sq
+                                - 0.5 * l4_c_theta4_theta4_ddot,
+                            -0.5 * l4_c_theta4_theta4_dot_sq
+                                - 0.5 * l4_s_theta4_theta4_ddot,
+                        ),
+                    ],
+                ],
+                point_accelerations_p: [
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                    ],
+                    [
+                        Vector2::new(sum_3, sum_5),
+                        Vector2::new(sum_3, sum_5),
+                        Vector2::new(
+                            -0.5 * c_theta2_theta2_dot_sq - 0.5 * s_theta2_theta2_ddot,
+                            -0.5 * s_theta2_theta2_dot_sq + 0.5 * c_theta2_theta2_ddot,
+                        ),
+                        Vector2::new(sum_3, sum_5),
+                        Vector2::new(sum_3, sum_5),
+                    ],
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(sum_4, sum_6),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(
+                            -0.5 * c_theta3_theta3_dot_sq - 0.5 * s_theta3_theta3_ddot,
+                            -0.5 * s_theta3_theta3_dot_sq + 0.5 * c_theta3_theta3_ddot,
+                        ),
+                        Vector2::new(sum_4, sum_6),
+                    ],
+                    [
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(
+                            -0.5 * c_theta4_theta4_dot_sq - 0.5 * s_theta4_theta4_ddot,
+                            -0.5 * s_theta4_theta4_dot_sq + 0.5 * c_theta4_theta4_ddot,
+                        ),
+                    ],
+                ],
+            }
+        }
+        /// Which coordinates of u appear under `sin`/`cos` in
+        /// [`Self::sensitivity_terms_with_trig`], which reads their
+        /// sine and cosine from `trig_u` (the others' entries are not
+        /// read).
+        pub const SENSITIVITY_TRIG_U: [bool; 2] = [true, true];
+        /// Which coordinates of v appear under `sin`/`cos`, read from
+        /// `trig_v`.
+        pub const SENSITIVITY_TRIG_V: [bool; 1] = [true];
+        /// [`Self::sensitivity_terms`] with the sines and cosines of the coordinates given
+        /// (`trig_u[k]` = (sin uₖ, cos uₖ), likewise `trig_v`; those of [`Self::SENSITIVITY_TRIG_U`]
+        /// and [`Self::SENSITIVITY_TRIG_V`] are read) instead of computed: a sweep carries them from
+        /// pose to pose, as it does for [`Self::kinematics_with_trig`].
+        #[must_use]
+        #[inline(always)]
+        #[allow(unused_variables, clippy::too_many_arguments)]
+        pub fn sensitivity_terms_with_trig(
+            &self,
+            u: &SVector<f64, 2>,
+            v: &SVector<f64, 1>,
+            trig_u: &[(f64, f64); 2],
+            trig_v: &[(f64, f64); 1],
+            udot: &SVector<f64, 2>,
+            vdot: &SVector<f64, 1>,
+            uddot: &SVector<f64, 2>,
+            vddot: &SVector<f64, 1>,
+        ) -> ::linkage::SensitivityTerms<2, 4, [Vector2<f64>; 5]> {
+            let Self { l3, l4, .. } = *self;
+            let (theta3, theta4) = (u[0], u[1]);
+            let theta2 = v[0];
+            let (theta3_dot, theta4_dot) = (udot[0], udot[1]);
+            let theta2_dot = vdot[0];
+            let (theta3_ddot, theta4_ddot) = (uddot[0], uddot[1]);
+            let theta2_ddot = vddot[0];
+            let (s_theta2, c_theta2) = trig_v[0];
+            let (s_theta3, c_theta3) = trig_u[0];
+            let l3_c_theta3 = l3 * c_theta3;
+            let l3_s_theta3 = l3 * s_theta3;
+            let (s_theta4, c_theta4) = trig_u[1];
             let l4_c_theta4 = l4 * c_theta4;
             let l4_s_theta4 = l4 * s_theta4;
             let l3_s_theta3_theta3_dot = l3_s_theta3 * theta3_dot;
@@ -1700,6 +1994,32 @@ const _: () = {
             vddot: &SVector<f64, 1>,
         ) -> ::linkage::SensitivityTerms<2, 4, [Vector2<f64>; 5]> {
             Self::sensitivity_terms(self, u, v, udot, vdot, uddot, vddot)
+        }
+        const SENSITIVITY_TRIG_U: [bool; 2] = Self::SENSITIVITY_TRIG_U;
+        const SENSITIVITY_TRIG_V: [bool; 1] = Self::SENSITIVITY_TRIG_V;
+        #[inline(always)]
+        fn sensitivity_terms_with_trig(
+            &self,
+            u: &SVector<f64, 2>,
+            v: &SVector<f64, 1>,
+            trig_u: &[(f64, f64); 2],
+            trig_v: &[(f64, f64); 1],
+            udot: &SVector<f64, 2>,
+            vdot: &SVector<f64, 1>,
+            uddot: &SVector<f64, 2>,
+            vddot: &SVector<f64, 1>,
+        ) -> ::linkage::SensitivityTerms<2, 4, [Vector2<f64>; 5]> {
+            Self::sensitivity_terms_with_trig(
+                self,
+                u,
+                v,
+                trig_u,
+                trig_v,
+                udot,
+                vdot,
+                uddot,
+                vddot,
+            )
         }
         #[inline]
         fn psi_generic_params<D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy>(

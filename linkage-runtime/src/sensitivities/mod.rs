@@ -13,6 +13,7 @@ use crate::error::Error;
 use crate::linkage::Linkage;
 use crate::options::Options;
 use crate::sweep::{Drive, SweepOptions, SweepPose, SweepSummary};
+use crate::trig::{TrigCarrier, carry_pays};
 use nalgebra::{SMatrix, SVector, Vector2};
 use num_dual::DualNum;
 
@@ -40,6 +41,28 @@ pub trait Sensitivities<const M: usize, const F: usize, const K: usize>: Linkage
         &self,
         u: &SVector<f64, M>,
         v: &SVector<f64, F>,
+        udot: &SVector<f64, M>,
+        vdot: &SVector<f64, F>,
+        uddot: &SVector<f64, M>,
+        vddot: &SVector<f64, F>,
+    ) -> SensitivityTerms<M, K, Self::Points>;
+
+    /// Which coordinates of u [`Sensitivities::sensitivity_terms_with_trig`]
+    /// reads the sine and cosine of.
+    const SENSITIVITY_TRIG_U: [bool; M] = [false; M];
+    /// Which coordinates of v it reads them of.
+    const SENSITIVITY_TRIG_V: [bool; F] = [false; F];
+
+    /// [`Sensitivities::sensitivity_terms`] with the sines and cosines of
+    /// the coordinates given (`trig_u[k]` = (sin uₖ, cos uₖ), likewise
+    /// `trig_v`; only those of the masks above are read).
+    #[allow(clippy::too_many_arguments)]
+    fn sensitivity_terms_with_trig(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        trig_u: &[(f64, f64); M],
+        trig_v: &[(f64, f64); F],
         udot: &SVector<f64, M>,
         vdot: &SVector<f64, F>,
         uddot: &SVector<f64, M>,
@@ -78,13 +101,38 @@ pub trait Sensitivities<const M: usize, const F: usize, const K: usize>: Linkage
         motion: &Motion<M, F>,
         options: &Options,
     ) -> Result<Sensitivity<M, K, Self::Points>, Error> {
-        solve::sensitivities(self, motion, options)
+        solve::sensitivities(motion, options, |m| {
+            self.sensitivity_terms(&m.u, &m.v, &m.udot, &m.vdot, &m.uddot, &m.vddot)
+        })
+    }
+
+    /// [`Sensitivities::sensitivities`] with the sines and cosines of the
+    /// pose's coordinates given (those of [`Self::SENSITIVITY_TRIG_U`] and
+    /// [`Self::SENSITIVITY_TRIG_V`] are read): where the caller has them
+    /// already, the three `sincos` a four-bar's sensitivities spend most of
+    /// their time on are saved. They must be those of `motion.u` and
+    /// `motion.v`, to rounding; nothing checks that.
+    fn sensitivities_with_trig(
+        &self,
+        motion: &Motion<M, F>,
+        trig_u: &[(f64, f64); M],
+        trig_v: &[(f64, f64); F],
+        options: &Options,
+    ) -> Result<Sensitivity<M, K, Self::Points>, Error> {
+        solve::sensitivities(motion, options, |m| {
+            self.sensitivity_terms_with_trig(
+                &m.u, &m.v, trig_u, trig_v, &m.udot, &m.vdot, &m.uddot, &m.vddot,
+            )
+        })
     }
 
     /// [`Linkage::sweep_each`] with the sensitivities of every pose: the
     /// derivative of a whole coupler curve by each dimension, in constant
     /// memory. A pose whose sensitivities cannot keep the accuracy (next to
-    /// a singular pose) comes with their error; the sweep goes on.
+    /// a singular pose) comes with their error; the sweep goes on. Where the
+    /// poses are close (a dense sweep) their sines and cosines are carried
+    /// from one to the next by the angle-addition formulas, as the sweep's
+    /// own kernel does, instead of computed.
     fn sweep_sensitivities_each(
         &self,
         u0: &SVector<f64, M>,
@@ -93,11 +141,27 @@ pub trait Sensitivities<const M: usize, const F: usize, const K: usize>: Linkage
         mut on_pose: impl FnMut(&SweepPose<M, F>, Result<Sensitivity<M, K, Self::Points>, Error>),
     ) -> Result<SweepSummary<M, F>, Error> {
         let accuracy = options.options;
+        let mut trig = TrigCarrier::<M, F>::new();
+        let mut previous: Option<(SVector<f64, M>, SVector<f64, F>)> = None;
         self.sweep_each(u0, drive, options, |pose| {
-            on_pose(
-                pose,
-                self.sensitivities(&Motion::of_sweep_pose(pose), &accuracy),
-            );
+            let motion = Motion::of_sweep_pose(pose);
+            let dense = previous.is_some_and(|(u, v)| {
+                carry_pays(&Self::SENSITIVITY_TRIG_U, &u, &pose.u)
+                    && carry_pays(&Self::SENSITIVITY_TRIG_V, &v, &pose.v)
+            });
+            previous = Some((pose.u, pose.v));
+            let sensitivity = if dense {
+                let (trig_u, trig_v) = trig.at(
+                    &Self::SENSITIVITY_TRIG_U,
+                    &Self::SENSITIVITY_TRIG_V,
+                    &pose.u,
+                    &pose.v,
+                );
+                self.sensitivities_with_trig(&motion, &trig_u, &trig_v, &accuracy)
+            } else {
+                self.sensitivities(&motion, &accuracy)
+            };
+            on_pose(pose, sensitivity);
         })
     }
 }
