@@ -26,6 +26,10 @@
 //!     cargo bench --bench sensitivities            # all
 //!     cargo bench --bench sensitivities -- "k = 9"  # one group
 //!
+//! A last group times the sensitivities of every pose of a dense sweep of
+//! the bare four-bar: from scratch at each pose, and by
+//! `sweep_sensitivities_each`, which carries the poses' sines and cosines.
+//!
 //! The kernels themselves are `cargo bench --bench kernels`.
 
 use criterion::{Criterion, criterion_group, criterion_main};
@@ -424,6 +428,60 @@ fn mechanism<L, const M: usize, const K: usize>(
     group.finish();
 }
 
+/// The sensitivities of every pose of a dense sweep (the workloads' grid,
+/// 2π/1 008 000 per step, 2 000 steps from θ2 = 0.3): the sweep alone, the
+/// sweep with each pose's sensitivities from scratch, and
+/// `sweep_sensitivities_each`, which carries the poses' sines and cosines.
+fn dense_sweep(c: &mut Criterion) {
+    const STEPS: usize = 2_000;
+    let model = FOUR_BAR;
+    let step = std::f64::consts::TAU / 1_008_000.0;
+    let drive = Drive::Line {
+        from: vector![0.3],
+        to: vector![0.3 + STEPS as f64 * step],
+        steps: STEPS,
+    };
+    let options = SweepOptions::default();
+    let u0 = vector![1.2, -0.9];
+    let mut group = c.benchmark_group("k = 4 four-bar, dense sweep of 2 001 poses");
+    group.bench_function("sweep_each alone", |b| {
+        b.iter(|| {
+            model
+                .sweep_each(black_box(&u0), &drive, &options, |pose| {
+                    black_box(pose);
+                })
+                .expect("the sweep runs")
+        })
+    });
+    group.bench_function("sweep_each + sensitivities from scratch", |b| {
+        b.iter(|| {
+            model
+                .sweep_each(black_box(&u0), &drive, &options, |pose| {
+                    let motion = Motion::of_sweep_pose(pose);
+                    black_box(
+                        model
+                            .sensitivities(&motion, &options.options)
+                            .expect("regular"),
+                    );
+                })
+                .expect("the sweep runs")
+        })
+    });
+    group.bench_function(
+        "sweep_sensitivities_each (carried sines and cosines)",
+        |b| {
+            b.iter(|| {
+                model
+                    .sweep_sensitivities_each(black_box(&u0), &drive, &options, |pose, s| {
+                        black_box((pose, s.expect("regular")));
+                    })
+                    .expect("the sweep runs")
+            })
+        },
+    );
+    group.finish();
+}
+
 fn benches(c: &mut Criterion) {
     let four_bar = linkage::closed_form::FourBar {
         l1: 80.0,
@@ -447,6 +505,7 @@ fn benches(c: &mut Criterion) {
         &SIX_BAR_9,
         vector![1.369_438_4, -0.775_193_4, 2.237_243_8, -3.043_485_2],
     );
+    dense_sweep(c);
 }
 
 criterion_group! {
