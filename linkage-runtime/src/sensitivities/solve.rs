@@ -36,7 +36,7 @@
 //! computed as they read.
 
 use super::results::{Motion, Sensitivity, SensitivityTerms};
-use crate::checks::{all_finite, check_input, check_value};
+use crate::checks::{all_finite, all_finite_in, check_input, check_value};
 use crate::error::{Error, Stage};
 use crate::linalg::factor;
 use crate::options::Options;
@@ -56,12 +56,14 @@ where
 {
     // One pass over every number, and the arguments one by one (for the
     // error naming the first that is not finite) only if that fails.
-    let finite = all_finite(motion.u.as_slice())
-        & all_finite(motion.udot.as_slice())
-        & all_finite(motion.uddot.as_slice())
-        & all_finite(motion.v.as_slice())
-        & all_finite(motion.vdot.as_slice())
-        & all_finite(motion.vddot.as_slice());
+    let finite = all_finite_in(&[
+        motion.u.as_slice(),
+        motion.udot.as_slice(),
+        motion.uddot.as_slice(),
+        motion.v.as_slice(),
+        motion.vdot.as_slice(),
+        motion.vddot.as_slice(),
+    ]);
     if !finite {
         for (name, values) in [
             ("u", motion.u.as_slice()),
@@ -110,8 +112,11 @@ where
     } else {
         in_sequence(&inv.inverse, terms)
     };
-    let finite =
-        all_finite(u.as_slice()) & all_finite(udot.as_slice()) & all_finite(uddot.as_slice());
+    // ü_p alone: a NaN or an infinity in u_p or u̇_p reaches it (column j
+    // of ü_p sums B·u_p's and A·u̇_p's column j, or Ψ̈_u·u_p's and
+    // Ψ̇_u·u̇_p's, and 0·∞ and 0·NaN are NaN), so ü_p is finite only if all
+    // three are; the error names the first that is not.
+    let finite = all_finite(uddot.as_slice());
     if !finite {
         name_non_finite_term(*terms)?;
         for (quantity, values) in [
@@ -390,6 +395,17 @@ mod tests {
     fn a_non_finite_term_is_named() {
         let bad = [f64::NAN, f64::INFINITY];
         for x in bad {
+            // In Ψ_p or Ψ̇_p, which reach u_p or u̇_p first: the check of ü_p
+            // catches them too.
+            for which in [0, 1] {
+                let mut t = terms();
+                if which == 0 {
+                    t.psi_p[(0, 1)] = x;
+                } else {
+                    t.psi_p_dot[(1, 0)] = x;
+                }
+                assert_eq!(error(&t), Some(["Ψ_p", "Ψ̇_p"][which]));
+            }
             let mut t = terms();
             t.psi_p_ddot[(1, 0)] = x;
             assert_eq!(error(&t), Some("Ψ̈_p"));
