@@ -430,7 +430,7 @@ fn mechanism<L, const M: usize, const K: usize>(
 
 /// The sensitivities of every pose of a dense sweep (the workloads' grid,
 /// 2π/1 008 000 per step, 2 000 steps from θ2 = 0.3): the sweep alone, the
-/// sweep with each pose's sensitivities from scratch, and
+/// sweep with each pose's sensitivities from scratch or by num-dual, and
 /// `sweep_sensitivities_each`, which carries the poses' sines and cosines.
 fn dense_sweep(c: &mut Criterion) {
     const STEPS: usize = 2_000;
@@ -463,6 +463,15 @@ fn dense_sweep(c: &mut Criterion) {
                             .sensitivities(&motion, &options.options)
                             .expect("regular"),
                     );
+                })
+                .expect("the sweep runs")
+        })
+    });
+    group.bench_function("sweep_each + num-dual (k directions)", |b| {
+        b.iter(|| {
+            model
+                .sweep_each(black_box(&u0), &drive, &options, |pose| {
+                    black_box(by_num_dual(&model, &Motion::of_sweep_pose(pose)));
                 })
                 .expect("the sweep runs")
         })
