@@ -178,6 +178,93 @@ fn the_terms_with_the_poses_sines_and_cosines_given_are_the_same_numbers() {
     same(&FIVE_BAR, &motion);
 }
 
+/// An analysis hands the sines and cosines of its pose to the
+/// sensitivities there (`Motion::of_analysis`): the very numbers (==) of
+/// the sensitivities that compute them; a pose moved after the analysis
+/// does not use them.
+#[test]
+fn an_analysis_hands_its_sines_and_cosines_to_the_sensitivities() {
+    fn same<L, const M: usize, const F: usize, const K: usize>(
+        model: &L,
+        u_guess: SVector<f64, M>,
+        v: SVector<f64, F>,
+        vdot: SVector<f64, F>,
+        vddot: SVector<f64, F>,
+    ) where
+        L: Sensitivities<M, F, K>,
+    {
+        let options = Options::default();
+        let analysis = model
+            .analyze(&u_guess, &v, &vdot, &vddot, &options)
+            .expect("the pose assembles");
+        assert!(analysis.trig.is_some(), "the fused path keeps them");
+        let motion = Motion::of_analysis(&analysis, &v, &vdot, &vddot);
+        let bare = Motion {
+            trig: None,
+            ..motion
+        };
+        let given = model.sensitivities(&motion, &options).expect("regular");
+        assert_eq!(
+            given,
+            model.sensitivities(&bare, &options).expect("regular")
+        );
+        let mut moved = motion;
+        moved.u[0] += 1e-3;
+        let moved_bare = Motion {
+            trig: None,
+            ..moved
+        };
+        assert_eq!(
+            model.sensitivities(&moved, &options),
+            model.sensitivities(&moved_bare, &options)
+        );
+        assert_ne!(model.sensitivities(&moved, &options), Ok(given));
+    }
+    same(
+        &FourBar::WORKSHEET,
+        vector![1.2, -0.9],
+        vector![0.4],
+        vector![OMEGA2],
+        vector![3.0],
+    );
+    same(
+        &SLIDER_CRANK,
+        vector![0.0, 0.24],
+        vector![0.6],
+        vector![OMEGA2],
+        vector![-2.0],
+    );
+    same(
+        &SIX_BAR,
+        vector![1.2, -0.9, 0.5, -1.0],
+        vector![0.4],
+        vector![1.0],
+        vector![0.5],
+    );
+    same(
+        &FIVE_BAR,
+        vector![1.0, 2.0],
+        vector![1.45, 1.55],
+        vector![1.0, -0.5],
+        vector![0.3, 0.2],
+    );
+    // Without the fused path (Jacobians by num-dual) there are none to hand on.
+    let options = Options {
+        jacobian: JacobianSource::Dual,
+        ..Options::default()
+    };
+    let analysis = FourBar::WORKSHEET
+        .analyze(
+            &vector![1.2, -0.9],
+            &vector![0.4],
+            &vector![OMEGA2],
+            &vector![3.0],
+            &options,
+        )
+        .expect("the pose assembles");
+    assert!(analysis.trig.is_none());
+}
+
 /// A dense sweep carries its sines and cosines from pose to pose into the
 /// sensitivities (`sweep_sensitivities_each`): every pose's agree with those
 /// computed from scratch to rounding.

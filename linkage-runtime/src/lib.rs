@@ -48,3 +48,4 @@ pub use results::{Analysis, Iterate, Kinematics, Position, Velocity};
 pub use sensitivities::{Motion, Sensitivities, Sensitivity, SensitivityTerms};
 pub use sweep::{Drive, Event, EventKind, Sweep, SweepOptions, SweepPose, SweepSummary};
 pub use symbolic::{SymbolicMatrix, SymbolicTable};
+pub use trig::PoseTrig;

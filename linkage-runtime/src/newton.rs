@@ -17,7 +17,7 @@ use crate::linkage::Linkage;
 use crate::options::Options;
 use crate::results::{Iterate, Kinematics, Position};
 use crate::sources::psi_and_psi_u;
-use crate::trig::TrigCarrier;
+use crate::trig::{PoseTrig, TrigCarrier};
 use nalgebra::{SMatrix, SVector};
 
 /// Ψ_uᵀΨ below this fraction of ‖Ψ_u‖·‖Ψ‖ is a stationary point of ‖Ψ‖².
@@ -135,6 +135,11 @@ pub(crate) fn solve<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     })
 }
 
+/// What [`solve_fused`] returns: the pose, the fused kernel's evaluation
+/// there, and the sines and cosines it used (exact at the pose).
+pub(crate) type Converged<const M: usize, const F: usize> =
+    (Position<M>, Kinematics<M, F>, PoseTrig<M, F>);
+
 /// Plain Newton–Raphson whose every evaluation is the fused kernel
 /// ([`Linkage::kinematics_with_trig`]): Ψ, Ψ_u and Ψ_u⁻¹ for the steps and,
 /// at the iterate that converges, the velocities and accelerations too. So
@@ -150,7 +155,7 @@ pub(crate) fn solve_fused<L: Linkage<M, F> + ?Sized, const M: usize, const F: us
     vdot: &SVector<f64, F>,
     vddot: &SVector<f64, F>,
     options: &Options,
-) -> Result<(Position<M>, Kinematics<M, F>), Error> {
+) -> Result<Converged<M, F>, Error> {
     check_input("u0", u0.as_slice())?;
     check_input("v", v.as_slice())?;
     options.check()?;
@@ -158,12 +163,16 @@ pub(crate) fn solve_fused<L: Linkage<M, F> + ?Sized, const M: usize, const F: us
     // exactly where the evaluation may confirm convergence: a returned pose
     // closes to its residual as `psi` computes it, to the bit.
     let mut trig = TrigCarrier::new();
+    // The sines and cosines of the last evaluation: exact where it confirms
+    // convergence, and then handed on with the pose.
+    let mut last_trig = ([(0.0, 1.0); M], [(0.0, 1.0); F]);
     let mut evaluate = |u: &SVector<f64, M>, exact: bool| -> Result<Kinematics<M, F>, Error> {
         let (trig_u, trig_v) = if exact {
             trig.exactly_at(&L::TRIG_U, &L::TRIG_V, u, v)
         } else {
             trig.at(&L::TRIG_U, &L::TRIG_V, u, v)
         };
+        last_trig = (trig_u, trig_v);
         let k = model.kinematics_with_trig(u, v, &trig_u, &trig_v, vdot, vddot);
         check_value(Stage::Position, "Ψ", k.psi.as_slice())?;
         check_value(Stage::Position, "Ψ_u", k.psi_u.as_slice())?;
@@ -196,7 +205,14 @@ pub(crate) fn solve_fused<L: Linkage<M, F> + ?Sized, const M: usize, const F: us
                 residual,
                 psi_u: k.psi_u,
             };
-            return Ok((position, k));
+            let (sin_cos_u, sin_cos_v) = last_trig;
+            let pose_trig = PoseTrig {
+                u,
+                v: *v,
+                sin_cos_u,
+                sin_cos_v,
+            };
+            return Ok((position, k, pose_trig));
         }
         previous_step = step;
     }

@@ -1,6 +1,7 @@
 //! What the analyses return: a pose, a Newton iterate, velocities, the
 //! one-pass kinematics, and the whole analysis of a pose.
 
+use crate::trig::PoseTrig;
 use nalgebra::{SMatrix, SVector};
 
 /// An assembled pose found by Newton–Raphson.
@@ -77,4 +78,8 @@ pub struct Analysis<const M: usize, const F: usize, P> {
     pub residual: f64,
     /// The reciprocal condition number of Ψ_u at the solution.
     pub rcond: f64,
+    /// The sines and cosines the fused kernel computed at the pose (the
+    /// default options' path; `None` on the others), which
+    /// [`crate::Motion::of_analysis`] hands on to the sensitivities.
+    pub trig: Option<PoseTrig<M, F>>,
 }

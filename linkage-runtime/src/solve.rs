@@ -34,10 +34,10 @@ pub(crate) fn analyze<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>
         && options.method == AccelerationMethod::Fused
         && ordinary(vdot.amax(), true)
         && ordinary(vddot.amax(), true);
-    let (position, fused) = if fused_serves && !options.damped {
-        let (position, k) = newton::solve_fused(model, u_guess, v, vdot, vddot, options)?;
+    let (position, fused, trig) = if fused_serves && !options.damped {
+        let (position, k, trig) = newton::solve_fused(model, u_guess, v, vdot, vddot, options)?;
         let fused = fused_kinematics(&k, vdot, vddot, options)?;
-        (position, fused)
+        (position, fused, Some(trig))
     } else {
         let position = newton::solve(model, u_guess, v, options, &mut |_| {})?;
         let fused = if fused_serves {
@@ -46,7 +46,7 @@ pub(crate) fn analyze<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>
         } else {
             None
         };
-        (position, fused)
+        (position, fused, None)
     };
     let u = position.u;
     let (velocity, uddot) = if let Some(fused) = fused {
@@ -91,6 +91,7 @@ pub(crate) fn analyze<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>
         iterations: position.iterations,
         residual: position.residual,
         rcond: velocity.rcond,
+        trig,
     })
 }
 

@@ -30,6 +30,19 @@ pub(crate) struct TrigCarrier<const M: usize, const F: usize> {
 /// (sin, cos) of n angles.
 pub(crate) type SinCos<const N: usize> = [(f64, f64); N];
 
+/// The sines and cosines an analysis computed at its pose, handed on to the
+/// sensitivities there ([`crate::Motion::of_analysis`]): `sin_cos_u[k]` =
+/// `u[k].sin_cos()` for the coordinates of [`crate::Linkage::TRIG_U`], and
+/// likewise of v (the other entries unspecified). They are used only at
+/// exactly this `u` and `v`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PoseTrig<const M: usize, const F: usize> {
+    pub u: SVector<f64, M>,
+    pub v: SVector<f64, F>,
+    pub sin_cos_u: [(f64, f64); M],
+    pub sin_cos_v: [(f64, f64); F],
+}
+
 /// The ranges of |δ| carried by the short and the long series.
 const SHORT_RANGE: f64 = 1.0 / 512.0;
 const LONG_RANGE: f64 = 1.0 / 16.0;

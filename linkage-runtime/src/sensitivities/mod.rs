@@ -13,7 +13,7 @@ use crate::error::Error;
 use crate::linkage::Linkage;
 use crate::options::Options;
 use crate::sweep::{Drive, SweepOptions, SweepPose, SweepSummary};
-use crate::trig::{TrigCarrier, carry_pays};
+use crate::trig::{PoseTrig, SinCos, TrigCarrier, carry_pays};
 use nalgebra::{SMatrix, SVector, Vector2};
 use num_dual::DualNum;
 
@@ -91,7 +91,8 @@ pub trait Sensitivities<const M: usize, const F: usize, const K: usize>: Linkage
     }
 
     /// The sensitivities at a pose in motion (an assembled pose with its
-    /// velocities and accelerations, e.g. [`Motion::of_analysis`]): the
+    /// velocities and accelerations, e.g. [`Motion::of_analysis`], whose
+    /// sines and cosines they then take from the analysis): the
     /// derivative by each parameter of u, u̇, ü and of every point's
     /// position, velocity and acceleration, the driver's motion held
     /// fixed. `Singular` where Ψ_u is too ill-conditioned for them to keep
@@ -101,9 +102,15 @@ pub trait Sensitivities<const M: usize, const F: usize, const K: usize>: Linkage
         motion: &Motion<M, F>,
         options: &Options,
     ) -> Result<Sensitivity<M, K, Self::Points>, Error> {
-        solve::sensitivities(motion, options, |m| {
-            self.sensitivity_terms(&m.u, &m.v, &m.udot, &m.vdot, &m.uddot, &m.vddot)
-        })
+        match motion.trig {
+            Some(trig) if trig.u == motion.u && trig.v == motion.v => {
+                let (trig_u, trig_v) = completed::<Self, M, F, K>(&trig, &motion.u, &motion.v);
+                self.sensitivities_with_trig(motion, &trig_u, &trig_v, options)
+            }
+            _ => solve::sensitivities(motion, options, |m| {
+                self.sensitivity_terms(&m.u, &m.v, &m.udot, &m.vdot, &m.uddot, &m.vddot)
+            }),
+        }
     }
 
     /// [`Sensitivities::sensitivities`] with the sines and cosines of the
@@ -164,4 +171,30 @@ pub trait Sensitivities<const M: usize, const F: usize, const K: usize>: Linkage
             on_pose(pose, sensitivity);
         })
     }
+}
+
+/// The sines and cosines of an analysis at its pose, completed with those
+/// of the coordinates the sensitivities read and the analysis's kernel did
+/// not (a point's angle, say).
+#[inline(always)]
+fn completed<L, const M: usize, const F: usize, const K: usize>(
+    trig: &PoseTrig<M, F>,
+    u: &SVector<f64, M>,
+    v: &SVector<f64, F>,
+) -> (SinCos<M>, SinCos<F>)
+where
+    L: Sensitivities<M, F, K> + ?Sized,
+{
+    let (mut trig_u, mut trig_v) = (trig.sin_cos_u, trig.sin_cos_v);
+    for k in 0..M {
+        if L::SENSITIVITY_TRIG_U[k] && !L::TRIG_U[k] {
+            trig_u[k] = u[k].sin_cos();
+        }
+    }
+    for k in 0..F {
+        if L::SENSITIVITY_TRIG_V[k] && !L::TRIG_V[k] {
+            trig_v[k] = v[k].sin_cos();
+        }
+    }
+    (trig_u, trig_v)
 }
