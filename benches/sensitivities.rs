@@ -4,8 +4,10 @@
 //! exact sensitivities of positions, velocities and accelerations and of
 //! every point's (u_p, u̇_p, ü_p, dP/dp, dṖ/dp, dP̈/dp) three ways:
 //!
-//! - ours: `Sensitivities::sensitivities` (the generated `sensitivity_terms`
-//!   and three solves with Ψ_u⁻¹), and `sensitivity_terms` alone;
+//! - ours: `Sensitivities::sensitivities` at the analysis's pose, which
+//!   takes the pose's sines and cosines from the analysis, and the same
+//!   with them computed (a `Motion` without them), and `sensitivity_terms`
+//!   alone;
 //! - num-dual with k dual directions: the parameters as `DualSVec64<K>`
 //!   through the generated `psi_generic_params`, the derivative parts solved
 //!   with Ψ_u⁻¹ order by order (positions on the vector duals, velocities on
@@ -416,6 +418,14 @@ fn mechanism<L, const M: usize, const K: usize>(
         b.iter(|| {
             model
                 .sensitivities(black_box(&m), &options)
+                .expect("regular pose")
+        })
+    });
+    let bare = Motion { trig: None, ..m };
+    group.bench_function("sensitivities (ours, sines and cosines computed)", |b| {
+        b.iter(|| {
+            model
+                .sensitivities(black_box(&bare), &options)
                 .expect("regular pose")
         })
     });
