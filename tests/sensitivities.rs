@@ -178,12 +178,12 @@ fn the_terms_with_the_poses_sines_and_cosines_given_are_the_same_numbers() {
     same(&FIVE_BAR, &motion);
 }
 
-/// An analysis hands the sines and cosines of its pose to the
-/// sensitivities there (`Motion::of_analysis`): the very numbers (==) of
-/// the sensitivities that compute them; a pose moved after the analysis
-/// does not use them.
+/// At an analysis, `sensitivities_of` takes the sines and cosines the
+/// analysis computed at its pose: the very numbers (==) of the
+/// sensitivities that compute them; with other drivers than the analysis's
+/// it computes them.
 #[test]
-fn an_analysis_hands_its_sines_and_cosines_to_the_sensitivities() {
+fn at_an_analysis_the_sensitivities_take_its_sines_and_cosines() {
     fn same<L, const M: usize, const F: usize, const K: usize>(
         model: &L,
         u_guess: SVector<f64, M>,
@@ -199,26 +199,18 @@ fn an_analysis_hands_its_sines_and_cosines_to_the_sensitivities() {
             .expect("the pose assembles");
         assert!(analysis.trig.is_some(), "the fused path keeps them");
         let motion = Motion::of_analysis(&analysis, &v, &vdot, &vddot);
-        let bare = Motion {
-            trig: None,
-            ..motion
-        };
-        let given = model.sensitivities(&motion, &options).expect("regular");
+        let given = model
+            .sensitivities_of(&analysis, &v, &vdot, &vddot, &options)
+            .expect("regular");
         assert_eq!(
             given,
-            model.sensitivities(&bare, &options).expect("regular")
+            model.sensitivities(&motion, &options).expect("regular")
         );
-        let mut moved = motion;
-        moved.u[0] += 1e-3;
-        let moved_bare = Motion {
-            trig: None,
-            ..moved
-        };
-        assert_eq!(
-            model.sensitivities(&moved, &options),
-            model.sensitivities(&moved_bare, &options)
-        );
-        assert_ne!(model.sensitivities(&moved, &options), Ok(given));
+        let other = v.map(|x| x + 1e-3);
+        let moved = Motion::of_analysis(&analysis, &other, &vdot, &vddot);
+        let at_other = model.sensitivities_of(&analysis, &other, &vdot, &vddot, &options);
+        assert_eq!(at_other, model.sensitivities(&moved, &options));
+        assert_ne!(at_other, Ok(given));
     }
     same(
         &FourBar::WORKSHEET,
@@ -248,7 +240,7 @@ fn an_analysis_hands_its_sines_and_cosines_to_the_sensitivities() {
         vector![1.0, -0.5],
         vector![0.3, 0.2],
     );
-    // Without the fused path (Jacobians by num-dual) there are none to hand on.
+    // Without the fused path (Jacobians by num-dual) there are none to take.
     let options = Options {
         jacobian: JacobianSource::Dual,
         ..Options::default()

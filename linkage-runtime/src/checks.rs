@@ -35,11 +35,18 @@ pub(crate) fn all_finite(values: &[f64]) -> bool {
 #[inline(always)]
 pub(crate) fn all_finite_in(slices: &[&[f64]]) -> bool {
     let mut lanes = [0.0_f64; 4];
-    let mut k = 0;
     for values in slices {
-        for x in values.iter() {
-            lanes[k % 4] += x * 0.0;
-            k += 1;
+        // Whole chunks of four, then the rest, into the same four sums (a
+        // running index modulo four made `analyze` 25 % slower, the checks
+        // of its inputs no longer unrolled).
+        let mut chunks = values.chunks_exact(4);
+        for chunk in &mut chunks {
+            for (lane, x) in lanes.iter_mut().zip(chunk) {
+                *lane += x * 0.0;
+            }
+        }
+        for (lane, x) in lanes.iter_mut().zip(chunks.remainder()) {
+            *lane += x * 0.0;
         }
     }
     (lanes[0] + lanes[1]) + (lanes[2] + lanes[3]) == 0.0

@@ -80,6 +80,6 @@ pub struct Analysis<const M: usize, const F: usize, P> {
     pub rcond: f64,
     /// The sines and cosines the fused kernel computed at the pose (the
     /// default options' path; `None` on the others), which
-    /// [`crate::Motion::of_analysis`] hands on to the sensitivities.
+    /// [`crate::Sensitivities::sensitivities_of`] uses.
     pub trig: Option<PoseTrig<M, F>>,
 }

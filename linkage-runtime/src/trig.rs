@@ -31,7 +31,7 @@ pub(crate) struct TrigCarrier<const M: usize, const F: usize> {
 pub(crate) type SinCos<const N: usize> = [(f64, f64); N];
 
 /// The sines and cosines an analysis computed at its pose, handed on to the
-/// sensitivities there ([`crate::Motion::of_analysis`]): `sin_cos_u[k]` =
+/// sensitivities there ([`crate::Sensitivities::sensitivities_of`]): `sin_cos_u[k]` =
 /// `u[k].sin_cos()` for the coordinates of [`crate::Linkage::TRIG_U`], and
 /// likewise of v (the other entries unspecified). They are used only at
 /// exactly this `u` and `v`.
@@ -99,15 +99,12 @@ impl<const M: usize, const F: usize> TrigCarrier<M, F> {
     }
 }
 
-/// [`carry`] for every masked x[k]. The common case, every one within half
-/// the short range of its anchor, is done lane by lane without branches
-/// (all lanes, masked or not: the others' values are not read).
-#[inline(always)]
 /// Whether carrying the sines and cosines from the pose `from` to `to`
 /// pays: every masked coordinate moved within the short series' range, as
 /// in a dense sweep. Beyond it a direct `sin_cos` costs less than the carry
 /// and its re-anchoring (a four-bar's sensitivities in a sweep of 360 steps
 /// per revolution: 30–50 ns per pose more, measured 2026-11-23).
+#[inline]
 pub(crate) fn carry_pays<const N: usize>(
     mask: &[bool; N],
     from: &SVector<f64, N>,
@@ -116,6 +113,10 @@ pub(crate) fn carry_pays<const N: usize>(
     (0..N).all(|k| !mask[k] || (to[k] - from[k]).abs() <= SHORT_RANGE)
 }
 
+/// [`carry`] for every masked x[k]. The common case, every one within half
+/// the short range of its anchor, is done lane by lane without branches
+/// (all lanes, masked or not: the others' values are not read).
+#[inline(always)]
 fn carry_all<const N: usize>(
     mask: &[bool; N],
     anchor: &mut [f64; N],

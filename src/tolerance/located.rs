@@ -75,7 +75,6 @@ where
         vdot,
         uddot: found.uddot,
         vddot: SVector::zeros(),
-        trig: None,
     };
     let sensitivity = model.sensitivities(&motion, options)?;
     let pose = TolerancePose::with_gradients(model, &motion, &sensitivity);

@@ -93,7 +93,6 @@ impl<const M: usize, const F: usize, const K: usize> TolerancePose<M, F, K> {
             vdot,
             uddot,
             vddot,
-            ..
         } = motion;
         let lift = |into: &mut Vec<Vector2<DualSVec64<K>>>, points: L::Points| {
             into.clear();

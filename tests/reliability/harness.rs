@@ -334,7 +334,6 @@ pub(crate) fn check<L: Sensitivities<M, 1, K>, const M: usize, const K: usize>(
             vdot,
             uddot: udot,
             vddot,
-            trig: None,
         };
         if let Ok(s) = model.sensitivities(&motion, &options) {
             fine &= (0..K).all(|j| Column::of(&s, j).is_finite()) && s.rcond.is_finite();

@@ -12,6 +12,7 @@ pub use results::{Motion, Sensitivity, SensitivityTerms};
 use crate::error::Error;
 use crate::linkage::Linkage;
 use crate::options::Options;
+use crate::results::Analysis;
 use crate::sweep::{Drive, SweepOptions, SweepPose, SweepSummary};
 use crate::trig::{PoseTrig, SinCos, TrigCarrier, carry_pays};
 use nalgebra::{SMatrix, SVector, Vector2};
@@ -91,8 +92,8 @@ pub trait Sensitivities<const M: usize, const F: usize, const K: usize>: Linkage
     }
 
     /// The sensitivities at a pose in motion (an assembled pose with its
-    /// velocities and accelerations, e.g. [`Motion::of_analysis`], whose
-    /// sines and cosines they then take from the analysis): the
+    /// velocities and accelerations, e.g. [`Motion::of_analysis`]; at an
+    /// analysis, [`Sensitivities::sensitivities_of`] is faster): the
     /// derivative by each parameter of u, u̇, ü and of every point's
     /// position, velocity and acceleration, the driver's motion held
     /// fixed. `Singular` where Ψ_u is too ill-conditioned for them to keep
@@ -102,14 +103,31 @@ pub trait Sensitivities<const M: usize, const F: usize, const K: usize>: Linkage
         motion: &Motion<M, F>,
         options: &Options,
     ) -> Result<Sensitivity<M, K, Self::Points>, Error> {
-        match motion.trig {
+        solve::sensitivities(motion, options, |m| {
+            self.sensitivity_terms(&m.u, &m.v, &m.udot, &m.vdot, &m.uddot, &m.vddot)
+        })
+    }
+
+    /// The sensitivities at the pose of `analysis` (the drivers at `v`,
+    /// `vdot`, `vddot`, as given to the analysis): [`Motion::of_analysis`]
+    /// and [`Sensitivities::sensitivities`], but the sines and cosines the
+    /// analysis computed at its pose ([`Analysis::trig`]) are used rather
+    /// than computed again. The very numbers of those two calls.
+    fn sensitivities_of(
+        &self,
+        analysis: &Analysis<M, F, Self::Points>,
+        v: &SVector<f64, F>,
+        vdot: &SVector<f64, F>,
+        vddot: &SVector<f64, F>,
+        options: &Options,
+    ) -> Result<Sensitivity<M, K, Self::Points>, Error> {
+        let motion = Motion::of_analysis(analysis, v, vdot, vddot);
+        match &analysis.trig {
             Some(trig) if trig.u == motion.u && trig.v == motion.v => {
-                let (trig_u, trig_v) = completed::<Self, M, F, K>(&trig, &motion.u, &motion.v);
-                self.sensitivities_with_trig(motion, &trig_u, &trig_v, options)
+                let (trig_u, trig_v) = completed::<Self, M, F, K>(trig, &motion.u, &motion.v);
+                self.sensitivities_with_trig(&motion, &trig_u, &trig_v, options)
             }
-            _ => solve::sensitivities(motion, options, |m| {
-                self.sensitivity_terms(&m.u, &m.v, &m.udot, &m.vdot, &m.uddot, &m.vddot)
-            }),
+            _ => self.sensitivities(&motion, options),
         }
     }
 

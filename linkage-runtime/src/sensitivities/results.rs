@@ -3,7 +3,6 @@
 
 use crate::results::Analysis;
 use crate::sweep::SweepPose;
-use crate::trig::PoseTrig;
 use nalgebra::{SMatrix, SVector, Vector2};
 
 /// A pose in motion: every coordinate with its velocity and acceleration.
@@ -15,11 +14,6 @@ pub struct Motion<const M: usize, const F: usize> {
     pub vdot: SVector<f64, F>,
     pub uddot: SVector<f64, M>,
     pub vddot: SVector<f64, F>,
-    /// The sines and cosines an analysis computed at the pose, if any: the
-    /// sensitivities use them, rather than compute them again, when they
-    /// are of exactly this `u` and `v` (so a changed `u` does not use stale
-    /// ones).
-    pub trig: Option<PoseTrig<M, F>>,
 }
 
 impl<const M: usize, const F: usize> Motion<M, F> {
@@ -37,7 +31,6 @@ impl<const M: usize, const F: usize> Motion<M, F> {
             vdot: *vdot,
             uddot: analysis.uddot,
             vddot: *vddot,
-            trig: analysis.trig,
         }
     }
 
@@ -50,7 +43,6 @@ impl<const M: usize, const F: usize> Motion<M, F> {
             vdot: pose.vdot,
             uddot: pose.uddot,
             vddot: SVector::zeros(),
-            trig: None,
         }
     }
 }
