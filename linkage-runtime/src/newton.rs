@@ -163,16 +163,12 @@ pub(crate) fn solve_fused<L: Linkage<M, F> + ?Sized, const M: usize, const F: us
     // exactly where the evaluation may confirm convergence: a returned pose
     // closes to its residual as `psi` computes it, to the bit.
     let mut trig = TrigCarrier::new();
-    // The sines and cosines of the last evaluation: exact where it confirms
-    // convergence, and then handed on with the pose.
-    let mut last_trig = ([(0.0, 1.0); M], [(0.0, 1.0); F]);
     let mut evaluate = |u: &SVector<f64, M>, exact: bool| -> Result<Kinematics<M, F>, Error> {
         let (trig_u, trig_v) = if exact {
             trig.exactly_at(&L::TRIG_U, &L::TRIG_V, u, v)
         } else {
             trig.at(&L::TRIG_U, &L::TRIG_V, u, v)
         };
-        last_trig = (trig_u, trig_v);
         let k = model.kinematics_with_trig(u, v, &trig_u, &trig_v, vdot, vddot);
         check_value(Stage::Position, "Ψ", k.psi.as_slice())?;
         check_value(Stage::Position, "Ψ_u", k.psi_u.as_slice())?;
@@ -205,7 +201,8 @@ pub(crate) fn solve_fused<L: Linkage<M, F> + ?Sized, const M: usize, const F: us
                 residual,
                 psi_u: k.psi_u,
             };
-            let (sin_cos_u, sin_cos_v) = last_trig;
+            // Those of the evaluation that confirmed convergence, exact.
+            let (sin_cos_u, sin_cos_v) = trig.anchored();
             let pose_trig = PoseTrig {
                 u,
                 v: *v,

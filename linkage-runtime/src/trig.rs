@@ -74,6 +74,15 @@ impl<const M: usize, const F: usize> TrigCarrier<M, F> {
         )
     }
 
+    /// (sin, cos) at the anchors: right after [`TrigCarrier::exactly_at`],
+    /// those of the u it was given, exactly, and of v wherever v was
+    /// anchored (where it is, for a carrier that has seen one v only, as
+    /// in a Newton solve).
+    #[inline(always)]
+    pub(crate) fn anchored(&self) -> (SinCos<M>, SinCos<F>) {
+        (self.trig_u, self.trig_v)
+    }
+
     /// [`TrigCarrier::at`] with the masked coordinates of u anchored where
     /// they are: their `sin_cos` exactly, bit for bit what the generated
     /// code computes itself (v is carried; it is exact where v has not
