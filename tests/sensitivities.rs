@@ -259,7 +259,7 @@ fn at_an_analysis_the_sensitivities_take_its_sines_and_cosines() {
 
 /// A dense sweep carries its sines and cosines from pose to pose into the
 /// sensitivities (`sweep_sensitivities_each`): every pose's agree with those
-/// computed from scratch to rounding.
+/// computed from scratch to a few ulps.
 #[test]
 fn a_dense_sweep_carries_its_sines_and_cosines_into_the_sensitivities() {
     let model = FourBar::WORKSHEET;
@@ -288,8 +288,11 @@ fn a_dense_sweep_carries_its_sines_and_cosines_into_the_sensitivities() {
         })
         .expect("the sweep runs");
     assert_eq!(poses, 5_001);
+    // Measured: 6.9e-16 (u_p), 1.7e-15 (u̇_p), 2.8e-15 (ü_p), 2.3e-15
+    // (points), 2026-11-23: the carried sines and cosines are as accurate
+    // as `sin_cos`, to a few ulps.
     assert!(
-        worst.iter().all(|&d| d <= 1e-14),
+        worst.iter().all(|&d| d <= 5e-15),
         "carried against computed: {worst:?}"
     );
 }
