@@ -1,4 +1,4 @@
-//! Criterion benchmarks of the sensitivities to the parameters (issue 18):
+//! Criterion benchmarks of the sensitivities to the parameters:
 //! at one converged pose (θ2 = 20°, ω2 = 1, α2 = 0), side by side, the
 //! fused kinematics kernel and a warm analysis for reference, then the
 //! exact sensitivities of positions, velocities and accelerations and of

@@ -111,6 +111,7 @@ mod numerics;
 mod random;
 pub mod synthesis;
 pub mod tolerance;
+pub mod transmission;
 mod vectors;
 pub mod watch;
 

@@ -42,6 +42,11 @@ impl FourBar {
         }
     }
 
+    /// Grashof's classification of its lengths.
+    pub fn grashof(&self) -> crate::closed_form::Grashof {
+        self.closed_form().grashof()
+    }
+
     /// The worksheet's lengths: l = (80, 20, 50, 70) mm.
     pub const WORKSHEET: FourBar = FourBar {
         l1: 80.0,
@@ -78,6 +83,11 @@ impl BareFourBar {
             l3: self.l3,
             l4: self.l4,
         }
+    }
+
+    /// Grashof's classification of its lengths.
+    pub fn grashof(&self) -> crate::closed_form::Grashof {
+        self.closed_form().grashof()
     }
 
     /// The worksheet's lengths: l = (80, 20, 50, 70) mm.
@@ -124,6 +134,23 @@ pub struct CouplerFourBar {
 }
 
 impl CouplerFourBar {
+    /// The same four-bar in closed form: its ground link |AD|, the crank,
+    /// coupler and rocker (the closed form's frame has A at the origin and
+    /// D on the x axis).
+    pub fn closed_form(&self) -> crate::closed_form::FourBar {
+        crate::closed_form::FourBar {
+            l1: (self.xd - self.xa).hypot(self.yd - self.ya),
+            l2: self.l2,
+            l3: self.l3,
+            l4: self.l4,
+        }
+    }
+
+    /// Grashof's classification of its lengths.
+    pub fn grashof(&self) -> crate::closed_form::Grashof {
+        self.closed_form().grashof()
+    }
+
     /// The worksheet's four-bar (A at the origin, D = (80, 0) mm, l = 20,
     /// 50, 70 mm) tracing its coupler's midpoint G3: P = (25, 0) mm.
     pub const WORKSHEET: CouplerFourBar = CouplerFourBar {

@@ -154,3 +154,43 @@ fn fields_named_like_generated_temporaries() {
         .expect("a regular sweep");
     assert!(sweep.complete);
 }
+
+/// The texts a user reads (the README, the docs, the sources, examples and
+/// benchmarks with the tables they write) speak of the project's sources
+/// by what they are, never by a tracker's issue numbers.
+#[test]
+fn no_user_visible_text_names_an_issue_number() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut found = Vec::new();
+    let mut stack: Vec<std::path::PathBuf> = ["README.md", "docs", "src", "examples", "benches"]
+        .iter()
+        .map(|p| root.join(p))
+        .collect();
+    while let Some(path) = stack.pop() {
+        if path.is_dir() {
+            for entry in std::fs::read_dir(&path).unwrap() {
+                stack.push(entry.unwrap().path());
+            }
+            continue;
+        }
+        let text_file = ["md", "rs", "sh", "py", "csv", "toml"]
+            .iter()
+            .any(|e| path.extension().is_some_and(|x| x == *e));
+        if !text_file {
+            continue;
+        }
+        let text = std::fs::read_to_string(&path).unwrap();
+        for (n, line) in text.lines().enumerate() {
+            let lower = line.to_lowercase();
+            let mut rest = lower.as_str();
+            while let Some(at) = rest.find("issue") {
+                let after = rest[at + 5..].trim_start_matches([' ', '#']);
+                if after.starts_with(|c: char| c.is_ascii_digit()) {
+                    found.push(format!("{}:{}: {line}", path.display(), n + 1));
+                }
+                rest = &rest[at + 5..];
+            }
+        }
+    }
+    assert!(found.is_empty(), "issue numbers in user-visible text:\n{}", found.join("\n"));
+}

@@ -10,9 +10,10 @@ use linkage::mechanisms::FourBar;
 use linkage::nalgebra::Matrix3;
 use linkage::prelude::*;
 use linkage::synthesis::{
-    Defect, Problem, Range, Requirements, Search, SynthesisError, Timing, certify, synthesize,
+    Defect, Problem, Range, Requirements, Search, SynthesisError, Timing, Transmission, certify,
+    synthesize,
 };
-use std::f64::consts::PI;
+use std::f64::consts::{PI, TAU};
 
 /// The rocker's angle at D (from the ground line, Freudenstein's φ) of the
 /// four-bar `l` at the crank angle θ on the branch with θ3 > 0.
@@ -70,7 +71,7 @@ fn freudenstein_three_precision_points_are_reproduced() {
         .precision_points();
     let found = synthesize(
         &problem,
-        &Requirements::new(Range::Between),
+        &Requirements::new(Range::Targets),
         &Search {
             starts: 16,
             ..Search::default()
@@ -106,16 +107,51 @@ fn bad_problems_are_typed_errors() {
         .free("l4", 50.0, 90.0)
         .unwrap()
         .precision_points();
+    // Four arbitrary precision points, three unknowns: no design meets
+    // them, and the error names the closest candidate and why.
+    let found = synthesize(
+        &over,
+        &Requirements::new(Range::Targets),
+        &Search {
+            starts: 8,
+            ..Search::default()
+        },
+    )
+    .unwrap();
+    assert!(found.designs.is_empty());
+    match found.best() {
+        Err(SynthesisError::NoDesign {
+            closest: Some(closest),
+            ..
+        }) => assert!(matches!(closest.defect, Defect::Misses { .. })),
+        Err(SynthesisError::Unreachable { .. }) => {}
+        other => panic!("{other:?}"),
+    }
+    // A driver range: empty, or not holding a prescribed driver; asked of
+    // a problem that states none.
+    let three = || Problem::function(bar, "theta4", &four[..3]).unwrap();
+    assert_eq!(
+        three().driver_range(0.4, 0.4).unwrap_err(),
+        SynthesisError::EmptyRange { from: 0.4, to: 0.4 }
+    );
     assert!(matches!(
-        synthesize(
-            &over,
-            &Requirements::new(Range::Between),
-            &Search::default()
-        ),
-        Err(SynthesisError::TooManyTargets {
-            residuals: 4,
-            unknowns: 3
-        })
+        three().driver_range(0.0, f64::NAN),
+        Err(SynthesisError::EmptyRange { .. })
+    ));
+    assert_eq!(
+        three().driver_range(0.2, 1.0).unwrap_err(),
+        SynthesisError::OutsideRange {
+            target: 0,
+            driver: 0.1,
+            from: 0.2,
+            to: 1.0
+        }
+    );
+    assert!(three().driver_range(0.6, 0.0).is_ok());
+    let free = three().free("l2", 10.0, 30.0).unwrap();
+    assert!(matches!(
+        synthesize(&free, &Requirements::new(Range::Task), &Search::default()),
+        Err(SynthesisError::NoRange)
     ));
     let problem = || Problem::function(bar, "theta4", &four[..3]).unwrap();
     assert!(matches!(
@@ -161,7 +197,7 @@ fn bad_problems_are_typed_errors() {
     assert!(matches!(
         synthesize(
             &problem(),
-            &Requirements::new(Range::Between),
+            &Requirements::new(Range::Targets),
             &Search::default()
         ),
         Err(SynthesisError::NothingFree)
@@ -221,11 +257,13 @@ const AWAY: FourBar = FourBar {
 /// The wide bounds of the path problems.
 const WIDE: [(f64, f64); 3] = [(10.0, 30.0), (30.0, 70.0), (50.0, 90.0)];
 
+/// The transmission angle as a designer writes it: its cosine, from the
+/// directions C→B (θ3 + π) and C→D (θ4).
 fn transmission(min_degrees: f64) -> Requirements<'static, FourBar, 2> {
     let mut requirements = Requirements::new(Range::Revolution);
-    requirements.transmission = Some((
-        min_degrees.to_radians(),
-        Box::new(|_: &FourBar, pose: &SweepPose<2, 1>| PI - pose.u[0] + pose.u[1]),
+    requirements.min_transmission = min_degrees.to_radians();
+    requirements.transmission = Transmission::Cosine(Box::new(
+        |_: &FourBar, pose: &SweepPose<2, 1>| -(pose.u[1] - pose.u[0]).cos(),
     ));
     requirements
 }
@@ -604,7 +642,7 @@ fn three_position_motion_generation_is_reproduced() {
         .precision_points();
     let found = synthesize(
         &problem,
-        &Requirements::new(Range::Between),
+        &Requirements::new(Range::Targets),
         &Search {
             starts: 24,
             ..Search::default()
@@ -706,6 +744,7 @@ fn a_revolution_is_swept_whole_whatever_turn_each_drivers_value_is_in() {
         &bar,
         &poses,
         &drivers,
+        None,
         &requirements,
         &SweepOptions::default(),
     );
@@ -720,16 +759,22 @@ fn a_revolution_is_swept_whole_whatever_turn_each_drivers_value_is_in() {
     // turn and is certified.
     let worksheet = FourBar::WORKSHEET;
     let poses = poses_along(worksheet, vector![1.3, -0.8], &degrees);
-    assert_eq!(
-        certify(
-            &worksheet,
-            &poses,
-            &drivers,
-            &requirements,
-            &SweepOptions::default()
-        ),
-        Ok(())
-    );
+    let certificate = certify(
+        &worksheet,
+        &poses,
+        &drivers,
+        None,
+        &requirements,
+        &SweepOptions::default(),
+    )
+    .unwrap();
+    // The turn swept, from the first target on, and the worksheet's
+    // smallest transmission angle: 57.1° (cos μ = 3800/7000 at θ2 = 0).
+    assert_eq!(certificate.from, drivers[0]);
+    assert!((certificate.to - drivers[0] - TAU).abs() < 1e-12);
+    let smallest = (3800.0f64 / 7000.0).acos();
+    assert!((certificate.transmission - smallest).abs() < 1e-3, "{certificate:?}");
+    assert!(certificate.transmission >= smallest - 1e-12);
 }
 
 #[test]

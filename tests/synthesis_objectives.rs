@@ -55,7 +55,7 @@ fn a_designers_term_picks_the_scale_function_generation_leaves_free() {
     assert_eq!((problem.residuals(), problem.unknowns()), (4, 4));
     let found = synthesize(
         &problem,
-        &Requirements::new(Range::Between),
+        &Requirements::new(Range::Targets),
         &Search {
             starts: 12,
             ..Search::default()
@@ -186,7 +186,7 @@ fn a_function_over_a_range_that_a_design_generates_exactly_gives_that_design() {
     assert_eq!((problem.residuals(), problem.unknowns()), (13, 3));
     let found = synthesize(
         &problem,
-        &Requirements::new(Range::Between),
+        &Requirements::new(Range::Task),
         &Search::default(),
     )
     .unwrap();
@@ -237,8 +237,11 @@ fn a_function_fitted_over_its_range_beats_three_precision_points_there() {
         .iter()
         .map(|&t| (t, wanted(t)))
         .collect();
-    let exact = free(Problem::function(start, "theta4", &chebyshev).unwrap()).precision_points();
-    let requirements = Requirements::new(Range::Between);
+    let exact = free(Problem::function(start, "theta4", &chebyshev).unwrap())
+        .driver_range(range.0, range.1)
+        .unwrap()
+        .precision_points();
+    let requirements = Requirements::new(Range::Task);
     let search = Search::default();
     let fitted = synthesize(&fitted, &requirements, &search).unwrap();
     let exact = synthesize(&exact, &requirements, &search).unwrap();

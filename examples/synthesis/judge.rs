@@ -15,7 +15,7 @@
 use crate::tasks::FunctionTask;
 use linkage::mechanisms::{CouplerFourBar, FourBar};
 use linkage::prelude::*;
-use linkage::synthesis::{Defect, Range, Requirements, certify};
+use linkage::synthesis::{Certificate, Defect, Range, Requirements, certify};
 use std::f64::consts::{PI, TAU};
 
 /// Samples of a turn.
@@ -32,9 +32,9 @@ pub enum Verdict {
 
 impl Verdict {
     /// The certificate's answer.
-    fn of(certified: Result<(), Defect>) -> Verdict {
+    fn of(certified: Result<Certificate, Defect>) -> Verdict {
         match certified {
-            Ok(()) => Verdict::Certified,
+            Ok(_) => Verdict::Certified,
             Err(defect) => Verdict::Defective(defect),
         }
     }
@@ -257,6 +257,7 @@ pub fn path(
         model,
         &poses,
         &drivers,
+        None,
         &Requirements::new(Range::Revolution),
         &SweepOptions::default(),
     ));
@@ -367,7 +368,8 @@ pub fn function(model: &FourBar, u: &SVector<f64, 2>, task: &FunctionTask) -> Ju
         model,
         &poses,
         &drivers,
-        &Requirements::new(Range::Between),
+        Some(FunctionTask::crank_range()),
+        &Requirements::new(Range::Task),
         &SweepOptions::default(),
     ));
     Judged {

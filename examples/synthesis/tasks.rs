@@ -88,6 +88,11 @@ impl FunctionTask {
         FunctionTask { targets }
     }
 
+    /// The crank's range, from one end to the other (radians).
+    pub fn crank_range() -> (f64, f64) {
+        (CRANK.0.to_radians(), CRANK.1.to_radians())
+    }
+
     /// θ2 and the wanted φ at x.
     pub fn angles(x: f64) -> (f64, f64) {
         let theta = CRANK.0 + (CRANK.1 - CRANK.0) * (x - 1.0) / 9.0;
@@ -123,6 +128,7 @@ impl FunctionTask {
             .free("l3", 0.1, 5.0)?
             .free("l4", 0.1, 5.0)?
             .guess(vector![1.0, self.targets[0].1 - PI])
+            .driver_range(FunctionTask::crank_range().0, FunctionTask::crank_range().1)?
             .precision_points())
     }
 }

@@ -1,14 +1,19 @@
-//! The certificate of a design: a continuation sweep from target to
-//! target over the whole driver range. It must assemble everywhere, meet
-//! no singular pose (a dead point, or a branch point where it could change
+//! The certificate of a design: a continuation sweep over the whole
+//! driver range — a revolution, or the task's range from one end to the
+//! other through every target. It must assemble everywhere, meet no
+//! singular pose (a dead point, or a branch point where it could change
 //! branch), come to each target's pose on the branch it was designed on
 //! and in the targets' order, keep the transmission angle, and pass the
 //! designer's own checks. A design that fails is not returned: the defect
-//! says which and where.
+//! says which and where. One that passes gets its [`Certificate`]: the
+//! range swept, its worst transmission angle and where, its Grashof type.
 
+use crate::closed_form::Grashof;
+use crate::transmission::{acute_from_cosine, equivalent_angle};
 use linkage_runtime::{Drive, Error, EventKind, Linkage, SweepOptions, SweepPose};
 use nalgebra::SVector;
 use std::f64::consts::TAU;
+use std::fmt;
 
 /// The driver range a design must run.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -16,23 +21,55 @@ pub enum Range {
     /// A whole revolution: the targets in cyclic order, and back to the
     /// first on the same branch.
     Revolution,
-    /// From the first target to the last, the driver moving one way.
-    Between,
+    /// The task's driver range, stated in the problem
+    /// ([`Problem::driver_range`](super::Problem::driver_range); a
+    /// function over a range states its own): from its one end to the
+    /// other, the driver moving one way, through every target in order.
+    Task,
+    /// From the first target's driver to the last's, the driver moving
+    /// one way: the span the targets cover and no more, for a task that
+    /// is its targets (a body through given poses). Where the task has a
+    /// wider range of its own (a function over an interval whose precision
+    /// points lie inside it), certify over [`Range::Task`].
+    Targets,
 }
+
+/// The smallest transmission angle a design must keep by default: 40°,
+/// the textbook's lower limit for a four-bar.
+pub const DEFAULT_MIN_TRANSMISSION: f64 = 40.0 * std::f64::consts::PI / 180.0;
 
 /// What a design must satisfy over its range.
 pub struct Requirements<'a, L, const M: usize> {
     pub range: Range,
     /// Sweep steps per radian of the driver.
     pub steps_per_radian: f64,
-    /// The smallest transmission angle allowed and how to compute it at a
-    /// pose (radians; angles beyond 90° count as their supplement).
-    pub transmission: Option<(f64, TransmissionAngle<'a, L, M>)>,
+    /// The smallest transmission angle allowed (radians; an angle beyond
+    /// 90° counts as its supplement): [`DEFAULT_MIN_TRANSMISSION`] unless
+    /// set; 0 asks for none (a singular pose is refused all the same).
+    pub min_transmission: f64,
+    /// How the transmission angle is measured.
+    pub transmission: Transmission<'a, L, M>,
     /// Checks of the design itself (a Grashof type): `Err(why)` rejects it.
     pub check: Option<DesignCheck<'a, L>>,
+    /// The design's Grashof type, for the certificate (four-bars:
+    /// `FourBar::grashof` and its siblings in [`mechanisms`](crate::mechanisms)).
+    pub grashof: Option<fn(&L) -> Grashof>,
 }
 
-/// The transmission angle of a design at a pose.
+/// How a design's transmission angle is measured.
+pub enum Transmission<'a, L, const M: usize> {
+    /// The equivalent transmission angle of any mechanism, read from Ψ_u
+    /// ([`transmission::equivalent_angle`](crate::transmission::equivalent_angle)):
+    /// exactly the transmission angle of a four-bar or a slider-crank, the
+    /// worst loop's of a mechanism of several.
+    Equivalent,
+    /// The cosine of the transmission angle at a pose, as the designer
+    /// defines it (a cosine cannot wrap: any angle's cosine is the same
+    /// whatever its turns).
+    Cosine(TransmissionAngle<'a, L, M>),
+}
+
+/// The cosine of a design's transmission angle at a pose.
 pub type TransmissionAngle<'a, L, const M: usize> =
     Box<dyn Fn(&L, &SweepPose<M, 1>) -> f64 + Send + Sync + 'a>;
 
@@ -40,15 +77,34 @@ pub type TransmissionAngle<'a, L, const M: usize> =
 pub type DesignCheck<'a, L> = Box<dyn Fn(&L) -> Result<(), String> + Send + Sync + 'a>;
 
 impl<L, const M: usize> Requirements<'_, L, M> {
-    /// Run the `range`, nothing else asked.
+    /// Run the `range` keeping the equivalent transmission angle at
+    /// [`DEFAULT_MIN_TRANSMISSION`] at least, 60 sweep steps per radian,
+    /// no check of the design's own.
     pub fn new(range: Range) -> Self {
         Requirements {
             range,
             steps_per_radian: 60.0,
-            transmission: None,
+            min_transmission: DEFAULT_MIN_TRANSMISSION,
+            transmission: Transmission::Equivalent,
             check: None,
+            grashof: None,
         }
     }
+}
+
+/// What a certified design was checked over, and how well it transmits.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Certificate {
+    /// The driver range swept, in the direction of travel: from `from` to
+    /// `to` (a revolution: `to` = `from` ± 2π).
+    pub from: f64,
+    pub to: f64,
+    /// The smallest transmission angle over the range (radians, acute, as
+    /// [`Requirements::transmission`] measures it), and the driver there.
+    pub transmission: f64,
+    pub transmission_at: f64,
+    /// Its Grashof type, where [`Requirements::grashof`] gives one.
+    pub grashof: Option<Grashof>,
 }
 
 /// Why a design is not returned.
@@ -74,59 +130,147 @@ pub enum Defect {
     Check(String),
 }
 
+impl fmt::Display for Defect {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let degrees = |a: f64| a.to_degrees();
+        match self {
+            Defect::Misses { target, error } => write!(f, "it misses target {target} by {error:e}"),
+            Defect::Order { drivers } => write!(
+                f,
+                "its drivers at the targets ({drivers:?}) are not in the targets' order along the range"
+            ),
+            Defect::Stops { v, why } => {
+                write!(f, "it cannot be followed from the driver {v}: {why}")
+            }
+            Defect::Incomplete { v } => write!(f, "its sweep ends before reaching the driver {v}"),
+            Defect::Singular { v, kind } => {
+                write!(f, "it meets a singular pose ({kind:?}) at the driver {v}")
+            }
+            Defect::Branch { target, v } => write!(
+                f,
+                "at the driver {v} it reaches target {target} on another assembly branch than designed"
+            ),
+            Defect::Transmission { v, angle } => write!(
+                f,
+                "its transmission angle falls to {:.2}° at the driver {v} ({:.2}°)",
+                degrees(*angle),
+                degrees(*v)
+            ),
+            Defect::Check(why) => write!(f, "the designer's check refused it: {why}"),
+        }
+    }
+}
+
 /// Certifies the design `model` through the targets' poses `poses` at the
-/// drivers `drivers` (in the targets' order).
+/// drivers `drivers` (in the targets' order), over `requirements.range`
+/// (for [`Range::Task`], the task's range `task`, from its first end to
+/// its second; a design without one cannot be certified over it and is
+/// refused with [`Defect::Order`]).
 pub fn certify<L, const M: usize>(
     model: &L,
     poses: &[SVector<f64, M>],
     drivers: &[f64],
+    task: Option<(f64, f64)>,
     requirements: &Requirements<'_, L, M>,
     options: &SweepOptions,
-) -> Result<(), Defect>
+) -> Result<Certificate, Defect>
 where
     L: Linkage<M, 1>,
 {
     if let Some(check) = &requirements.check {
         check(model).map_err(Defect::Check)?;
     }
-    let legs = legs(drivers, requirements.range).ok_or_else(|| Defect::Order {
+    let order = || Defect::Order {
         drivers: drivers.to_vec(),
-    })?;
-    for (from, start, to, end) in legs {
-        follow(
-            model,
-            &poses[from],
-            start,
-            to,
-            &poses[end],
-            end,
-            requirements,
-            options,
-        )?;
+    };
+    let range = match requirements.range {
+        Range::Revolution => None,
+        Range::Task => Some(task.ok_or_else(order)?),
+        Range::Targets => Some(
+            drivers
+                .first()
+                .zip(drivers.last())
+                .map(|(a, b)| (*a, *b))
+                .ok_or_else(order)?,
+        ),
+    };
+    let legs = legs(drivers, range).ok_or_else(order)?;
+    let mut worst = Worst {
+        angle: f64::INFINITY,
+        at: drivers.first().copied().unwrap_or(0.0),
+    };
+    for leg in &legs {
+        follow(model, poses, leg, requirements, options, &mut worst)?;
     }
-    Ok(())
+    // The targets' own poses: each starts a leg, but a range of one
+    // target is swept nowhere.
+    for (u, &v) in poses.iter().zip(drivers) {
+        let angle = transmission_angle(model, requirements, u, v, None).unwrap_or(f64::INFINITY);
+        if angle < worst.angle {
+            worst = Worst { angle, at: v };
+        }
+    }
+    if worst.angle < requirements.min_transmission {
+        return Err(Defect::Transmission {
+            v: worst.at,
+            angle: worst.angle,
+        });
+    }
+    let (from, to) = match range {
+        Some(range) => range,
+        None => (legs[0].from, legs[legs.len() - 1].to),
+    };
+    Ok(Certificate {
+        from,
+        to,
+        transmission: worst.angle,
+        transmission_at: worst.at,
+        grashof: requirements.grashof.map(|g| g(model)),
+    })
 }
 
-/// The legs of the range: (target it starts from, driver it starts at,
-/// driver it ends at, target whose pose it must end in); `None` if the
-/// drivers are not in order. Over a revolution each leg starts where the
-/// last one ended, which may differ from its target's driver by whole
-/// turns (the same pose).
-fn legs(drivers: &[f64], range: Range) -> Option<Vec<(usize, f64, f64, usize)>> {
+/// One leg of the range: from target `start`'s pose at the driver `from`
+/// to the driver `to`, ending in target `end`'s pose if any (the legs from
+/// the first target back to the range's start and from the last target
+/// on to its end arrive at no target).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Leg {
+    start: usize,
+    from: f64,
+    to: f64,
+    end: Option<usize>,
+}
+
+/// The legs of the range (a revolution if `range` is `None`); `None` if
+/// the drivers are not in order along it, or outside it.
+fn legs(drivers: &[f64], range: Option<(f64, f64)>) -> Option<Vec<Leg>> {
     let n = drivers.len();
+    let leg = |start, from, to, end| Leg {
+        start,
+        from,
+        to,
+        end,
+    };
     match range {
-        Range::Between => {
-            let rising = n < 2 || drivers[1] > drivers[0];
-            let ordered = drivers
-                .windows(2)
-                .all(|w| (w[1] > w[0]) == rising && w[1] != w[0]);
-            ordered.then(|| {
-                (1..n)
-                    .map(|i| (i - 1, drivers[i - 1], drivers[i], i))
-                    .collect()
-            })
+        Some((from, to)) => {
+            // Each target strictly after the last in the direction of travel,
+            // all within [from, to].
+            let sign = (to - from).signum();
+            let within = drivers
+                .iter()
+                .all(|&d| sign * (d - from) >= 0.0 && sign * (to - d) >= 0.0);
+            let ordered = drivers.windows(2).all(|w| sign * (w[1] - w[0]) > 0.0);
+            if !(within && ordered && n > 0) {
+                return None;
+            }
+            let mut legs = vec![leg(0, drivers[0], from, None)];
+            legs.extend((1..n).map(|i| leg(i - 1, drivers[i - 1], drivers[i], Some(i))));
+            legs.push(leg(n - 1, drivers[n - 1], to, None));
+            // A range of one point (a single target, its own range) is
+            // swept nowhere.
+            Some(legs)
         }
-        Range::Revolution => {
+        None => {
             // Forward (or backward) gaps that add up to exactly one turn.
             let gap = |a: f64, b: f64, sign: f64| (sign * (b - a)).rem_euclid(TAU);
             for sign in [1.0, -1.0] {
@@ -141,7 +285,7 @@ fn legs(drivers: &[f64], range: Range) -> Option<Vec<(usize, f64, f64, usize)>> 
                             .map(|i| {
                                 let start = at;
                                 at += sign * if n == 1 { TAU } else { gaps[i] };
-                                (i, start, at, (i + 1) % n)
+                                leg(i, start, at, Some((i + 1) % n))
                             })
                             .collect(),
                     );
@@ -152,44 +296,77 @@ fn legs(drivers: &[f64], range: Range) -> Option<Vec<(usize, f64, f64, usize)>> 
     }
 }
 
-/// One leg: sweeps from target `from`'s pose at `v0` to the driver `to`,
-/// and checks that it ends in the pose `end_pose` of target `end`.
-#[allow(clippy::too_many_arguments)]
+/// The transmission angle at a pose as the requirements measure it; a
+/// designer's cosine reads the sweep's pose, so at a pose given alone
+/// (`pose` `None`) only the equivalent angle is measured.
+fn transmission_angle<L, const M: usize>(
+    model: &L,
+    requirements: &Requirements<'_, L, M>,
+    u: &SVector<f64, M>,
+    v: f64,
+    pose: Option<&SweepPose<M, 1>>,
+) -> Option<f64>
+where
+    L: Linkage<M, 1>,
+{
+    match (&requirements.transmission, pose) {
+        (Transmission::Equivalent, _) => {
+            Some(equivalent_angle(&model.psi_u(u, &SVector::from([v]))))
+        }
+        (Transmission::Cosine(cosine), Some(pose)) => Some(acute_from_cosine(cosine(model, pose))),
+        (Transmission::Cosine(_), None) => None,
+    }
+}
+
+/// The smallest transmission angle met so far, and the driver there.
+struct Worst {
+    angle: f64,
+    at: f64,
+}
+
+/// One leg: sweeps from its start target's pose to its end, keeping the
+/// worst transmission angle, and checks that it ends in its end target's
+/// pose.
 fn follow<L, const M: usize>(
     model: &L,
-    start: &SVector<f64, M>,
-    v0: f64,
-    to: f64,
-    end_pose: &SVector<f64, M>,
-    end: usize,
+    poses: &[SVector<f64, M>],
+    leg: &Leg,
     requirements: &Requirements<'_, L, M>,
     options: &SweepOptions,
+    worst: &mut Worst,
 ) -> Result<(), Defect>
 where
     L: Linkage<M, 1>,
 {
-    let steps = ((to - v0).abs() * requirements.steps_per_radian)
+    if leg.to == leg.from && leg.end.is_none() {
+        return Ok(());
+    }
+    let steps = ((leg.to - leg.from).abs() * requirements.steps_per_radian)
         .ceil()
         .max(2.0) as usize;
     let drive = Drive::Line {
-        from: SVector::from([v0]),
-        to: SVector::from([to]),
+        from: SVector::from([leg.from]),
+        to: SVector::from([leg.to]),
         steps,
     };
-    let mut last = *start;
-    let mut low: Option<(f64, f64)> = None;
+    let mut last = poses[leg.start];
+    let mut low = Worst {
+        angle: f64::INFINITY,
+        at: leg.from,
+    };
     let summary = model
-        .sweep_each(start, &drive, options, |pose| {
+        .sweep_each(&poses[leg.start], &drive, options, |pose| {
             last = pose.u;
-            if let Some((_, angle)) = &requirements.transmission {
-                let mu = angle(model, pose);
-                let acute = mu.abs().min(std::f64::consts::PI - mu.abs());
-                if low.is_none_or(|(_, a)| acute < a) {
-                    low = Some((pose.v[0], acute));
-                }
+            let angle = transmission_angle(model, requirements, &pose.u, pose.v[0], Some(pose))
+                .unwrap_or(f64::INFINITY);
+            if angle < low.angle {
+                low = Worst {
+                    angle,
+                    at: pose.v[0],
+                };
             }
         })
-        .map_err(|why| Defect::Stops { v: v0, why })?;
+        .map_err(|why| Defect::Stops { v: leg.from, why })?;
     if let Some(event) = summary.events.first() {
         return Err(Defect::Singular {
             v: event.v[0],
@@ -197,20 +374,36 @@ where
         });
     }
     if !summary.complete {
-        return Err(Defect::Incomplete { v: to });
+        return Err(Defect::Incomplete { v: leg.to });
     }
-    if let (Some((minimum, _)), Some((v, angle))) = (&requirements.transmission, low) {
-        if angle < *minimum {
-            return Err(Defect::Transmission { v, angle });
-        }
+    if low.angle < requirements.min_transmission {
+        return Err(Defect::Transmission {
+            v: low.at,
+            angle: low.angle,
+        });
     }
+    if low.angle < worst.angle {
+        *worst = low;
+    }
+    let Some(end) = leg.end else {
+        return Ok(());
+    };
     // The same pose, up to whole turns of an angle.
+    let end_pose = &poses[end];
     let same = (0..M).all(|i| {
         let d = last[i] - end_pose[i];
-        (d - TAU * (d / TAU).round()).abs() <= 1e-7 * end_pose[i].abs().max(1.0)
+        let d = if L::TRIG_U[i] {
+            d - TAU * (d / TAU).round()
+        } else {
+            d
+        };
+        d.abs() <= 1e-7 * end_pose[i].abs().max(1.0)
     });
     if !same {
-        return Err(Defect::Branch { target: end, v: to });
+        return Err(Defect::Branch {
+            target: end,
+            v: leg.to,
+        });
     }
     Ok(())
 }

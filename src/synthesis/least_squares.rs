@@ -42,16 +42,23 @@ pub(crate) struct Evaluation<S> {
     pub state: S,
 }
 
-/// When to stop.
+/// When to stop. Every test but `cost` is free of the problem's scale: a
+/// problem and the same problem in other units stop at the same point.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Stopping {
-    /// Stop when ½‖r‖² falls to this.
+    /// Stop when ½‖r‖² falls to this (absolute: 0, the default, stops
+    /// only at an exact zero).
     pub cost: f64,
-    /// Stop when the projected gradient's largest entry falls to this
-    /// times max(1, ‖r‖).
+    /// Stop when, for every unknown, the projected gradient's entry is at
+    /// most this times ‖Jᵢ‖·‖r‖ (Jᵢ its column of the Jacobian): the
+    /// residuals are orthogonal to every direction the unknowns can move
+    /// them in, to this cosine — a least-squares minimum.
     pub gradient: f64,
-    /// Stop when a step changes no unknown by more than this, relative to
-    /// max(1, |x|).
+    /// Stop when a step changes no unknown by more than this times its
+    /// scale: the width of its bounds, or max(1, |x|) for an unbounded one
+    /// (a free driver, an angle). Near a solution Gauss–Newton's steps
+    /// shrink quadratically, so the step that falls below this is the
+    /// last one that changed anything.
     pub step: f64,
     /// The most evaluations.
     pub evaluations: usize,
@@ -60,9 +67,9 @@ pub struct Stopping {
 impl Default for Stopping {
     fn default() -> Stopping {
         Stopping {
-            cost: 1e-30,
-            gradient: 1e-14,
-            step: 1e-15,
+            cost: 0.0,
+            gradient: 1e-13,
+            step: 1e-14,
             evaluations: 400,
         }
     }
@@ -127,7 +134,7 @@ pub fn least_squares(
         return Err(SynthesisError::NoDesign {
             refused: 0,
             failed_starts: 1,
-            first_defect: None,
+            closest: None,
         });
     };
     let found = minimize(first, x0, lower, upper, stopping, evaluate);
@@ -176,9 +183,14 @@ pub(crate) fn minimize<S>(
         for i in 0..n {
             scale[i] = scale[i].max(jtj[(i, i)]).max(f64::MIN_POSITIVE);
         }
-        // The projected gradient: what the bounds let the descent use.
-        let projected = DVector::from_fn(n, |i, _| x[i] - (x[i] - g[i]).clamp(lower[i], upper[i]));
-        if projected.amax() <= stopping.gradient * at.residuals.norm().max(1.0) {
+        // The projected gradient: what the bounds let the descent use,
+        // against the largest it could be for residuals of this size.
+        let r = at.residuals.norm();
+        let orthogonal = (0..n).all(|i| {
+            let projected = x[i] - (x[i] - g[i]).clamp(lower[i], upper[i]);
+            projected.abs() <= stopping.gradient * jtj[(i, i)].sqrt() * r
+        });
+        if orthogonal {
             break;
         }
         let held = |i: usize| (x[i] <= lower[i] && g[i] > 0.0) || (x[i] >= upper[i] && g[i] < 0.0);
@@ -207,8 +219,17 @@ pub(crate) fn minimize<S>(
         let s = within_bounds(&x, &step, lower, upper, &promise);
         let trial = &x + &s;
         let predicted = promise(&s);
-        let small =
-            |s: &DVector<f64>| (0..n).all(|i| s[i].abs() <= stopping.step * x[i].abs().max(1.0));
+        let small = |s: &DVector<f64>| {
+            (0..n).all(|i| {
+                let width = upper[i] - lower[i];
+                let scale = if width.is_finite() {
+                    width
+                } else {
+                    x[i].abs().max(1.0)
+                };
+                s[i].abs() <= stopping.step * scale
+            })
+        };
         // A step too small to change x, or one that promises no reduction:
         // converged, once λ is as small as it goes (a step is small because λ
         // is large only until λ drops). The reduction itself is computed

@@ -17,11 +17,14 @@
 //! [`synthesize`] solves it from many random starts in parallel (through
 //! [`batch`](crate::batch)) with a bounded Levenberg–Marquardt solver, and
 //! returns only **certified** designs: a continuation sweep over the whole
-//! driver range ([`Requirements`]) must assemble everywhere, meet no
-//! singular pose, reach every target on the branch it was designed on and
-//! in the targets' order, and keep the transmission angle and the
-//! designer's checks (a Grashof type). A candidate that fails is reported
-//! with its [`Defect`], never returned as a design.
+//! driver range ([`Requirements`]: a revolution, or the task's range
+//! stated in the problem) must assemble everywhere, meet no singular pose,
+//! reach every target on the branch it was designed on and in the
+//! targets' order, keep the transmission angle (40° unless asked
+//! otherwise) and pass the designer's checks (a Grashof type). Each
+//! design comes with its [`Certificate`]: the range swept, the worst
+//! transmission angle and where. A candidate that fails is reported with
+//! its [`Defect`], never returned as a design.
 
 mod certify;
 mod least_squares;
@@ -30,11 +33,14 @@ mod residuals;
 mod search;
 mod terms;
 
-pub use certify::{Defect, DesignCheck, Range, Requirements, TransmissionAngle, certify};
+pub use certify::{
+    Certificate, Defect, DesignCheck, Range, Requirements, Transmission, TransmissionAngle,
+    certify,
+};
 pub use least_squares::{LeastSquares, Stopping, least_squares};
 pub use problem::{Problem, Timing};
 pub use residuals::Evaluated;
-pub use search::{Candidate, Search, Synthesis, synthesize};
+pub use search::{Candidate, Closest, Search, Synthesis, synthesize};
 
 use crate::error::UnknownName;
 use linkage_runtime::Error;
@@ -62,22 +68,32 @@ pub enum SynthesisError {
     NonFiniteTarget,
     /// Prescribed drivers and targets differ in number.
     Timing { targets: usize, drivers: usize },
+    /// A driver range that is empty or not finite (or, with relative
+    /// timing, shorter than the drivers' spread).
+    EmptyRange { from: f64, to: f64 },
+    /// A prescribed driver outside the problem's driver range.
+    OutsideRange {
+        target: usize,
+        driver: f64,
+        from: f64,
+        to: f64,
+    },
+    /// [`Range::Task`] asked of a problem that states no driver range.
+    NoRange,
     /// No parameter is free.
     NothingFree,
-    /// Precision points: more residuals than unknowns, which the design
-    /// cannot meet in general.
-    TooManyTargets { residuals: usize, unknowns: usize },
     /// The solver's options are not usable.
     Options(Error),
     /// Every candidate missed target `target`: it is out of the design's
     /// reach (the closest any came is `error`).
     Unreachable { target: usize, error: f64 },
-    /// No certified design: `refused` candidates (the first one's defect)
-    /// and `failed_starts` starts that could not be assembled.
+    /// No certified design: `refused` candidates (the one closest to the
+    /// targets, and why it was refused) and `failed_starts` starts that
+    /// could not be assembled.
     NoDesign {
         refused: usize,
         failed_starts: usize,
-        first_defect: Option<Defect>,
+        closest: Option<Closest>,
     },
 }
 
@@ -90,11 +106,14 @@ crate::error::error_impls! {
         Self::FunctionRange(why) => ("the function's range: {why}"),
         Self::NonFiniteTarget => ("a target or a prescribed driver is not finite"),
         Self::Timing { targets, drivers } => ("{targets} targets but {drivers} prescribed drivers"),
+        Self::EmptyRange { from, to } => ("the driver range from {from} to {to} is empty, not finite, or shorter than the drivers' spread"),
+        Self::OutsideRange { target, driver, from, to } => ("target {target}'s driver {driver} lies outside the driver range from {from} to {to}"),
+        Self::NoRange => ("Range::Task needs the task's driver range: state it with Problem::driver_range"),
         Self::NothingFree => ("no parameter is free: free at least one with Problem::free"),
-        Self::TooManyTargets { residuals, unknowns } => ("{residuals} precision-point equations but only {unknowns} unknowns: the design cannot meet them all (fit them by least squares instead)"),
         Self::Options(inner) => ("the options: {inner}"),
         Self::Unreachable { target, error } => ("target {target} is out of reach: every candidate missed it, the closest by {error}"),
-        Self::NoDesign { refused, failed_starts, first_defect } => ("no certified design: {refused} candidates refused (the first: {first_defect:?}), {failed_starts} starts could not be assembled"),
+        Self::NoDesign { refused, failed_starts, closest: Some(closest) } => ("no certified design: {refused} candidates refused, {failed_starts} starts could not be assembled; {closest}"),
+        Self::NoDesign { refused, failed_starts, closest: None } => ("no certified design: {refused} candidates refused, {failed_starts} starts could not be assembled"),
     }
     wraps { UnknownName(UnknownName), Options(Error) }
 }

@@ -14,11 +14,26 @@ use nalgebra::{SVector, Vector2};
 pub enum Timing {
     /// At these driver values (one per target).
     Prescribed(Vec<f64>),
+    /// At these driver values plus one free offset, the same for every
+    /// target: the crank's rotations between the targets are prescribed,
+    /// not where it starts (the classical timed path problem). The offset
+    /// is one more unknown.
+    Relative(Vec<f64>),
     /// Whenever it can: each target's driver is an unknown too (first
-    /// guessed evenly spread over a revolution, in the targets' order; for
-    /// a start whose driver cannot turn a revolution, over the arc it
-    /// reaches).
+    /// guessed evenly spread over a revolution, or over the problem's
+    /// driver range, in the targets' order; for a start whose driver
+    /// cannot turn a revolution, over the arc it reaches).
     Free,
+}
+
+impl Timing {
+    /// The prescribed drivers (absolute or relative), if any.
+    pub(crate) fn given(&self) -> Option<&[f64]> {
+        match self {
+            Timing::Prescribed(d) | Timing::Relative(d) => Some(d),
+            Timing::Free => None,
+        }
+    }
 }
 
 /// What is matched at the targets.
@@ -65,8 +80,10 @@ pub struct Problem<L, const M: usize, const K: usize> {
     pub(crate) task: Task,
     /// Each target's values: (x, y), (y), or (x, y, angle).
     pub(crate) targets: Vec<[f64; 3]>,
-    /// Each target's driver, if prescribed.
-    pub(crate) drivers: Option<Vec<f64>>,
+    /// When each target is reached.
+    pub(crate) timing: Timing,
+    /// The task's driver range, from one end to the other, if stated.
+    pub(crate) range: Option<(f64, f64)>,
     /// A guess of the pose at the first target.
     pub(crate) guess: SVector<f64, M>,
     /// Whether every target must be met exactly (precision points).
@@ -138,7 +155,9 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
     }
 
     /// Function generation: the coordinate `coordinate` (of u) takes the
-    /// value y at the driver v, for each (v, y) of `targets`.
+    /// value y at the driver v, for each (v, y) of `targets`. The task's
+    /// input interval, which a certificate over [`Range::Task`](super::Range::Task) sweeps
+    /// whole, is stated with [`Problem::driver_range`].
     pub fn function(
         model: L,
         coordinate: &str,
@@ -158,7 +177,8 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
     /// ends included (for precision points instead, [`Problem::function`]
     /// with the points chosen). Errors: fewer than two samples, a range
     /// empty or not finite ([`SynthesisError::FunctionRange`]); a value of
-    /// the function not finite.
+    /// the function not finite. The range is the problem's driver range
+    /// ([`Problem::driver_range`]).
     pub fn function_over(
         model: L,
         coordinate: &str,
@@ -182,7 +202,7 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
                 (v, function(v))
             })
             .collect();
-        Problem::function(model, coordinate, &targets)
+        Problem::function(model, coordinate, &targets)?.driver_range(from, to)
     }
 
     /// Motion generation: the body carrying the point `point`, whose angle
@@ -225,27 +245,24 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
         {
             return Err(SynthesisError::NonFiniteTarget);
         }
-        let drivers = match timing {
-            Timing::Free => None,
-            Timing::Prescribed(drivers) => {
-                if drivers.len() != targets.len() {
-                    return Err(SynthesisError::Timing {
-                        targets: targets.len(),
-                        drivers: drivers.len(),
-                    });
-                }
-                if drivers.iter().any(|v| !v.is_finite()) {
-                    return Err(SynthesisError::NonFiniteTarget);
-                }
-                Some(drivers)
+        if let Some(drivers) = timing.given() {
+            if drivers.len() != targets.len() {
+                return Err(SynthesisError::Timing {
+                    targets: targets.len(),
+                    drivers: drivers.len(),
+                });
             }
-        };
+            if drivers.iter().any(|v| !v.is_finite()) {
+                return Err(SynthesisError::NonFiniteTarget);
+            }
+        }
         Ok(Problem {
             model,
             free: Vec::new(),
             task,
             targets,
-            drivers,
+            timing,
+            range: None,
             guess: SVector::zeros(),
             exact: false,
             terms: Vec::new(),
@@ -278,6 +295,52 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
         Ok(self)
     }
 
+    /// The task's driver range: the driver runs from `from` to `to` (either
+    /// way), and every target lies within it. A certificate over
+    /// [`Range::Task`](super::Range::Task) sweeps it whole, ends included; free drivers are
+    /// bounded to it. Errors: a range empty or not finite
+    /// ([`SynthesisError::EmptyRange`]); a prescribed driver outside it
+    /// ([`SynthesisError::OutsideRange`]). With relative timing only the
+    /// drivers' spread must fit; the offset is bounded so that all lie
+    /// within it.
+    pub fn driver_range(mut self, from: f64, to: f64) -> Result<Self, SynthesisError> {
+        if !(from.is_finite() && to.is_finite() && from != to) {
+            return Err(SynthesisError::EmptyRange { from, to });
+        }
+        let (low, high) = (from.min(to), from.max(to));
+        match &self.timing {
+            Timing::Prescribed(drivers) => {
+                if let Some((target, &driver)) = drivers
+                    .iter()
+                    .enumerate()
+                    .find(|(_, d)| !(low..=high).contains(*d))
+                {
+                    return Err(SynthesisError::OutsideRange {
+                        target,
+                        driver,
+                        from,
+                        to,
+                    });
+                }
+            }
+            Timing::Relative(drivers) => {
+                let spread = drivers.iter().fold(f64::NEG_INFINITY, |a, &d| a.max(d))
+                    - drivers.iter().fold(f64::INFINITY, |a, &d| a.min(d));
+                if spread > high - low {
+                    return Err(SynthesisError::EmptyRange { from, to });
+                }
+            }
+            Timing::Free => {}
+        }
+        self.range = Some((from, to));
+        Ok(self)
+    }
+
+    /// The task's driver range, if stated ([`Problem::driver_range`]).
+    pub fn range(&self) -> Option<(f64, f64)> {
+        self.range
+    }
+
     /// A guess of the pose at the first target (the other targets' poses
     /// follow from it by continuation).
     pub fn guess(mut self, u: SVector<f64, M>) -> Self {
@@ -285,9 +348,13 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
         self
     }
 
-    /// Every target must be met exactly (precision points): there may be
-    /// no more residuals than unknowns, and a design that misses a target
-    /// by more than rounding is not returned.
+    /// Every target must be met exactly (precision points): a design that
+    /// misses a target by more than 1e-10 of the targets' size (their
+    /// largest coordinate in absolute value; for an angle, at least 1 rad)
+    /// is not returned. More equations than unknowns are allowed: a
+    /// consistent over-determined set (points of a curve the mechanism
+    /// traces) is met to rounding; an inconsistent one is refused with its
+    /// closest miss.
     pub fn precision_points(mut self) -> Self {
         self.exact = true;
         self
@@ -309,28 +376,42 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
         self.free.len() + self.free_drivers()
     }
 
-    /// The number of targets whose driver is an unknown.
+    /// The unknowns that are drivers: one per target with free timing,
+    /// the offset with relative timing, none with prescribed timing.
     pub(crate) fn free_drivers(&self) -> usize {
-        if self.drivers.is_some() {
-            0
-        } else {
-            self.targets.len()
+        match self.timing {
+            Timing::Prescribed(_) => 0,
+            Timing::Relative(_) => 1,
+            Timing::Free => self.targets.len(),
         }
     }
 
-    /// The checks that need the whole problem: something free, and no more
-    /// precision points than the unknowns can meet.
+    /// The checks that need the whole problem: something free.
     pub(crate) fn check(&self) -> Result<(), SynthesisError> {
         if self.free.is_empty() {
             return Err(SynthesisError::NothingFree);
         }
-        if self.exact && self.residuals() > self.unknowns() {
-            return Err(SynthesisError::TooManyTargets {
-                residuals: self.residuals(),
-                unknowns: self.unknowns(),
-            });
-        }
         Ok(())
+    }
+
+    /// The size a precision point's miss is measured against: the targets'
+    /// largest coordinate in absolute value, for an angle at least 1 rad.
+    pub(crate) fn target_scale(&self) -> f64 {
+        let rows = self.task.rows();
+        let largest = self
+            .targets
+            .iter()
+            .flat_map(|t| t[..rows].iter().map(|x| x.abs()))
+            .fold(0.0, f64::max);
+        let angle = match self.task {
+            Task::Function { coordinate } => L::TRIG_U[coordinate],
+            Task::Path { .. } | Task::Motion { .. } => false,
+        };
+        if angle || largest == 0.0 {
+            largest.max(1.0)
+        } else {
+            largest
+        }
     }
 
     /// The model with the free parameters set from the unknowns `x`.
@@ -349,9 +430,20 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
 
     /// The driver at target `i` for the unknowns `x`.
     pub(crate) fn driver(&self, x: &[f64], i: usize) -> f64 {
-        match &self.drivers {
-            Some(drivers) => drivers[i],
-            None => x[self.free.len() + i],
+        match &self.timing {
+            Timing::Prescribed(drivers) => drivers[i],
+            Timing::Relative(drivers) => x[self.free.len()] + drivers[i],
+            Timing::Free => x[self.free.len() + i],
+        }
+    }
+
+    /// The column of the driver unknown that moves target `i`'s driver,
+    /// if any.
+    pub(crate) fn driver_column(&self, i: usize) -> Option<usize> {
+        match self.timing {
+            Timing::Prescribed(_) => None,
+            Timing::Relative(_) => Some(self.free.len()),
+            Timing::Free => Some(self.free.len() + i),
         }
     }
 }

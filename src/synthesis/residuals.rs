@@ -113,8 +113,8 @@ where
             for (column, free) in problem.free.iter().enumerate() {
                 jacobian[(row, column)] = by_p[r][free.index];
             }
-            if problem.drivers.is_none() {
-                jacobian[(row, problem.free.len() + i)] = rate[r];
+            if let Some(column) = problem.driver_column(i) {
+                jacobian[(row, column)] = rate[r];
             }
         }
         poses.u.push(analysis.u);

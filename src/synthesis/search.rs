@@ -5,9 +5,9 @@
 //! ranked by their error at the targets.
 
 use super::SynthesisError;
-use super::certify::{Defect, Requirements, certify};
+use super::certify::{Certificate, Defect, Range, Requirements, certify};
 use super::least_squares::{Stopping, minimize};
-use super::problem::Problem;
+use super::problem::{Problem, Timing};
 use super::residuals::{Poses, branch, evaluate};
 use crate::batch;
 use crate::random::SplitMix64;
@@ -26,17 +26,27 @@ pub struct Search {
     pub stopping: Stopping,
     /// The solves of the poses and the sweeps of the certificate.
     pub options: SweepOptions,
-    /// Stop once this many distinct designs are certified: the starts then
-    /// run in rounds of [`Search::ROUND`] (in parallel within a round), and
-    /// the search ends with the round that reaches them. `None`: every
-    /// start. Either way the result depends only on the stream, not on
-    /// the machine's cores.
+    /// Stop once this many distinct designs are certified (counting only
+    /// those within [`Search::within`]): the starts then run in rounds of
+    /// [`Search::ROUND`] (in parallel within a round), and the search ends
+    /// with the round that reaches them. `None`: every start. Either way
+    /// the result depends only on the stream, not on the machine's cores.
     pub enough: Option<usize>,
+    /// A design counts towards [`Search::enough`] only if it misses no
+    /// target by more than this (in the targets' units): "designs under a
+    /// tolerance". `None`: any certified design counts.
+    pub within: Option<f64>,
 }
 
 impl Search {
     /// Starts per round when the search may stop early.
     pub const ROUND: usize = 8;
+    /// Random designs a start draws, one after the other from its stream,
+    /// until one assembles at every target's driver and can be followed
+    /// through them (with prescribed timing most random designs cannot:
+    /// their driver does not reach every target's angle); a start none of
+    /// whose draws can is a failed start.
+    pub const DRAWS: usize = 32;
 }
 
 impl Default for Search {
@@ -47,6 +57,7 @@ impl Default for Search {
             stopping: Stopping::default(),
             options: SweepOptions::default(),
             enough: None,
+            within: None,
         }
     }
 }
@@ -59,14 +70,20 @@ pub struct Candidate<L, const M: usize> {
     pub drivers: Vec<f64>,
     /// The pose at each target.
     pub poses: Vec<SVector<f64, M>>,
-    /// The miss at each target (the norm of its residuals), and the root
-    /// mean square of all residuals.
+    /// The miss at each target: the distance from the target (a path's
+    /// point), the difference of values (a function), or the norm of the
+    /// position's and the weighted angle's misses (a motion).
     pub errors: Vec<f64>,
+    /// The root mean square of the misses over the targets, √(Σ eᵢ²/n)
+    /// (the designer's own terms not included).
     pub rms_error: f64,
     /// Evaluations of residuals and Jacobian the solver took.
     pub evaluations: usize,
     /// The start it came from.
     pub start: usize,
+    /// What its certificate found (a returned design), `None` for a
+    /// refused candidate.
+    pub certificate: Option<Certificate>,
 }
 
 impl<L, const M: usize> Candidate<L, M> {
@@ -83,10 +100,44 @@ impl<L, const M: usize> Candidate<L, M> {
     }
 }
 
+/// The refused candidate closest to the targets, and why it was refused.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Closest {
+    /// Its root-mean-square miss ([`Candidate::rms_error`]).
+    pub rms_error: f64,
+    /// The target it missed most, and by how much.
+    pub largest_error: (usize, f64),
+    pub defect: Defect,
+}
+
+impl std::fmt::Display for Closest {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let (target, error) = self.largest_error;
+        write!(
+            f,
+            "the closest candidate (RMS miss {:e}, target {target} missed by {error:e}) was refused: {}",
+            self.rms_error, self.defect
+        )
+    }
+}
+
 impl<L, const M: usize> Synthesis<L, M> {
+    /// The refused candidate closest to the targets (the smallest
+    /// [`Candidate::rms_error`]), and why it was refused.
+    pub fn closest_refused(&self) -> Option<Closest> {
+        self.refused
+            .iter()
+            .min_by(|a, b| a.0.rms_error.total_cmp(&b.0.rms_error))
+            .map(|(candidate, defect)| Closest {
+                rms_error: candidate.rms_error,
+                largest_error: candidate.largest_error(),
+                defect: defect.clone(),
+            })
+    }
+
     /// The best certified design, or why there is none: a target that
-    /// every candidate missed (out of reach), or the refusals and failed
-    /// starts.
+    /// every candidate missed (out of reach), or the refusals (the closest
+    /// one's reason) and failed starts.
     pub fn best(&self) -> Result<&Candidate<L, M>, SynthesisError> {
         if let Some(best) = self.designs.first() {
             return Ok(best);
@@ -109,7 +160,7 @@ impl<L, const M: usize> Synthesis<L, M> {
         Err(SynthesisError::NoDesign {
             refused: self.refused.len(),
             failed_starts: self.failed_starts,
-            first_defect: self.refused.first().map(|(_, d)| d.clone()),
+            closest: self.closest_refused(),
         })
     }
 }
@@ -140,6 +191,9 @@ where
 {
     problem.check()?;
     search.options.options.check()?;
+    if requirements.range == Range::Task && problem.range.is_none() {
+        return Err(SynthesisError::NoRange);
+    }
     let round = match search.enough {
         Some(_) => Search::ROUND,
         None => search.starts.max(1),
@@ -150,19 +204,25 @@ where
         failed_starts: 0,
         starts: 0,
     };
+    let counted = |designs: &[Candidate<L, M>]| {
+        designs
+            .iter()
+            .filter(|d| search.within.is_none_or(|within| d.largest_error().1 <= within))
+            .count()
+    };
     while synthesis.starts < search.starts
         && search
             .enough
-            .is_none_or(|enough| synthesis.designs.len() < enough)
+            .is_none_or(|enough| counted(&synthesis.designs) < enough)
     {
         let starts: Vec<usize> =
             (synthesis.starts..search.starts.min(synthesis.starts + round)).collect();
         // Solved and certified in parallel; kept in the starts' order.
         let outcomes = batch::map(&starts, |&start| {
-            let x0 = start_point(problem, search.stream, start);
-            let candidate = solve(problem, x0, search, start)?;
+            let mut candidate = solve(problem, search, start)?;
             let verdict = verdict(problem, &candidate, requirements, &search.options);
-            Some((candidate, verdict))
+            candidate.certificate = verdict.as_ref().ok().copied();
+            Some((candidate, verdict.map(|_| ())))
         });
         synthesis.starts += starts.len();
         for outcome in outcomes {
@@ -187,29 +247,63 @@ where
     Ok(synthesis)
 }
 
-/// Start `start`: the free parameters uniform within their bounds, the
-/// free drivers evenly spread from a random phase.
+/// A draw of `stream`: the free parameters uniform within their bounds;
+/// free drivers evenly spread from a random phase over a revolution, or
+/// over the task's range; a relative timing's offset uniform over a
+/// revolution, or over the offsets that keep every driver in the range.
 fn start_point<L, const M: usize, const K: usize>(
     problem: &Problem<L, M, K>,
-    stream: u64,
-    start: usize,
+    stream: &mut SplitMix64,
 ) -> DVector<f64>
 where
     L: Sensitivities<M, 1, K>,
 {
-    let mut stream = SplitMix64::of_sample(stream, start as u64);
     let mut x: Vec<f64> = problem
         .free
         .iter()
         .map(|f| f.lower + (f.upper - f.lower) * stream.uniform())
         .collect();
-    let phase = TAU * stream.uniform();
-    let n = problem.free_drivers();
-    x.extend((0..n).map(|i| phase + TAU * i as f64 / n as f64));
+    let phase = stream.uniform();
+    let n = problem.targets.len();
+    let (lower, upper) = driver_bounds(problem);
+    match (&problem.timing, problem.range) {
+        (Timing::Prescribed(_), _) => {}
+        (Timing::Relative(_), None) => x.push(TAU * phase),
+        (Timing::Relative(_), Some(_)) => x.push(lower + (upper - lower) * phase),
+        (Timing::Free, None) => {
+            x.extend((0..n).map(|i| TAU * phase + TAU * i as f64 / n as f64));
+        }
+        (Timing::Free, Some((from, to))) => {
+            // Evenly in the range's direction, in the targets' order.
+            x.extend((0..n).map(|i| from + (to - from) * (i as f64 + 0.5) / n as f64));
+        }
+    }
     DVector::from_vec(x)
 }
 
-/// The unknowns' bounds: the free parameters', and none on the drivers.
+/// The bounds of the driver unknowns: the task's range for free drivers;
+/// for a relative timing's offset, those that keep every driver in it;
+/// none without a range.
+fn driver_bounds<L, const M: usize, const K: usize>(problem: &Problem<L, M, K>) -> (f64, f64)
+where
+    L: Sensitivities<M, 1, K>,
+{
+    let Some((from, to)) = problem.range else {
+        return (f64::NEG_INFINITY, f64::INFINITY);
+    };
+    let (low, high) = (from.min(to), from.max(to));
+    match &problem.timing {
+        Timing::Relative(drivers) => {
+            let least = drivers.iter().copied().fold(f64::INFINITY, f64::min);
+            let most = drivers.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            (low - least, high - most)
+        }
+        _ => (low, high),
+    }
+}
+
+/// The unknowns' bounds: the free parameters', then the drivers'
+/// ([`driver_bounds`]).
 fn bounds<L, const M: usize, const K: usize>(
     problem: &Problem<L, M, K>,
 ) -> (DVector<f64>, DVector<f64>)
@@ -217,12 +311,9 @@ where
     L: Sensitivities<M, 1, K>,
 {
     let n = problem.unknowns();
-    let lower = DVector::from_fn(n, |i, _| {
-        problem.free.get(i).map_or(f64::NEG_INFINITY, |f| f.lower)
-    });
-    let upper = DVector::from_fn(n, |i, _| {
-        problem.free.get(i).map_or(f64::INFINITY, |f| f.upper)
-    });
+    let (low, high) = driver_bounds(problem);
+    let lower = DVector::from_fn(n, |i, _| problem.free.get(i).map_or(low, |f| f.lower));
+    let upper = DVector::from_fn(n, |i, _| problem.free.get(i).map_or(high, |f| f.upper));
     (lower, upper)
 }
 
@@ -253,7 +344,7 @@ where
         .ok()
         .map(|s| s.u);
     let mut u = first.and_then(|first| follow(&model, first, &drivers, options));
-    if u.is_none() && problem.drivers.is_none() {
+    if u.is_none() && problem.timing == Timing::Free && problem.range.is_none() {
         // The arc the driver reaches from the first target's driver (or,
         // if it does not assemble there, from the first of eight around
         // the turn where it does), the drivers spread over it.
@@ -328,10 +419,11 @@ where
     Some(u)
 }
 
-/// One start solved: its candidate, or `None` if it cannot be assembled.
+/// One start solved: its first draw that can be assembled, followed
+/// through the targets' drivers and evaluated there, solved; `None` if none of
+/// [`Search::DRAWS`] can.
 fn solve<L, const M: usize, const K: usize>(
     problem: &Problem<L, M, K>,
-    x0: DVector<f64>,
     search: &Search,
     start: usize,
 ) -> Option<Candidate<L, M>>
@@ -339,25 +431,29 @@ where
     L: Sensitivities<M, 1, K> + Clone,
 {
     let options: &Options = &search.options.options;
-    let mut x0 = x0;
-    let poses = first_poses(problem, &mut x0, &search.options)?;
-    let first = evaluate(problem, &x0, &poses, options)?;
+    let mut stream = SplitMix64::of_sample(search.stream, start as u64);
+    let (x0, first) = (0..Search::DRAWS).find_map(|_| {
+        let mut x0 = start_point(problem, &mut stream);
+        let poses = first_poses(problem, &mut x0, &search.options)?;
+        let first = evaluate(problem, &x0, &poses, options)?;
+        Some((x0, first))
+    })?;
     let (lower, upper) = bounds(problem);
     let found = minimize(first, x0, &lower, &upper, &search.stopping, |x, from| {
         evaluate(problem, x, from, options)
     });
     let rows = problem.task.rows();
     // Each target's miss (the designer's terms follow the targets' rows).
-    let errors = found.residuals.as_slice()[..problem.target_residuals()]
+    let errors: Vec<f64> = found.residuals.as_slice()[..problem.target_residuals()]
         .chunks(rows)
         .map(|r| r.iter().map(|x| x * x).sum::<f64>().sqrt())
         .collect();
-    let rms_error = (found.residuals.norm_squared() / found.residuals.len() as f64).sqrt();
+    let rms_error = (errors.iter().map(|e| e * e).sum::<f64>() / errors.len() as f64).sqrt();
     let x = found.x.as_slice();
     let mut drivers: Vec<f64> = (0..problem.targets.len())
         .map(|i| problem.driver(x, i))
         .collect();
-    if problem.drivers.is_none() {
+    if problem.timing == Timing::Free && problem.range.is_none() {
         one_way(&mut drivers);
     }
     Some(Candidate {
@@ -368,6 +464,7 @@ where
         rms_error,
         evaluations: found.evaluations,
         start,
+        certificate: None,
     })
 }
 
@@ -399,6 +496,10 @@ fn one_way(drivers: &mut [f64]) {
     }
 }
 
+/// How far a precision point may be missed, relative to the targets'
+/// size ([`Problem::precision_points`]).
+pub(crate) const PRECISION: f64 = 1e-10;
+
 /// Whether a candidate is returned: met (for precision points) and
 /// certified.
 fn verdict<L, const M: usize, const K: usize>(
@@ -406,18 +507,13 @@ fn verdict<L, const M: usize, const K: usize>(
     candidate: &Candidate<L, M>,
     requirements: &Requirements<'_, L, M>,
     options: &SweepOptions,
-) -> Result<(), Defect>
+) -> Result<Certificate, Defect>
 where
     L: Sensitivities<M, 1, K>,
 {
     if problem.exact {
-        let scale = problem
-            .targets
-            .iter()
-            .flat_map(|t| t.iter().map(|x| x.abs()))
-            .fold(1.0, f64::max);
         let (target, error) = candidate.largest_error();
-        if error > 1e-9 * scale {
+        if !(error <= PRECISION * problem.target_scale()) {
             return Err(Defect::Misses { target, error });
         }
     }
@@ -425,6 +521,7 @@ where
         &candidate.model,
         &candidate.poses,
         &candidate.drivers,
+        problem.range,
         requirements,
         options,
     )

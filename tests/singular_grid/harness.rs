@@ -208,7 +208,7 @@ pub(crate) fn step_counts() -> Vec<usize> {
     }
     let full = setting == "full";
     let stride = if full { 1 } else { 331 };
-    // The counts the issue reported (they put a grid pose on the f64 nearest
+    // The counts first reported (they put a grid pose on the f64 nearest
     // π for the change point l = 80/40/50/70) always.
     let mut counts: Vec<usize> = (50..=5000).step_by(stride).collect();
     counts.extend([490, 674, 698, 704, 726, 758, 760]);
