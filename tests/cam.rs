@@ -507,7 +507,9 @@ fn the_pressure_extremes_sit_where_the_reference_puts_them() {
     println!("worst: φ {worst_at:.1e} rad, θ {worst_value:.1e} rad");
     // θ of 0.2 to 0.7 rad: to rounding (a few units in the last place).
     assert!(worst_value <= 1e-15, "θ off by {worst_value:e}");
-    assert!(worst_at <= 1e-10, "φ off by {worst_at:e} rad");
+    // What the documentation states (measured: 1.3e-15 rad; Brent's search
+    // on the value alone placed them only to 4.8e-9 rad).
+    assert!(worst_at <= 1e-14, "φ off by {worst_at:e} rad");
 }
 
 #[test]
