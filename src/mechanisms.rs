@@ -138,3 +138,26 @@ impl CouplerFourBar {
         py: 0.0,
     };
 }
+
+/// An offset slider-crank: crank AB (r, θ2 its angle from the x axis, the
+/// driver), connecting rod BC (l, θ3), the slider C at (s, e) on a line
+/// parallel to the x axis, e from the crank's pivot. Its crank turns
+/// fully while l ≥ r + |e|; the slider's stroke is
+/// √((l + r)² − e²) − √((l − r)² − e²).
+#[crate::linkage(
+    u = [theta3, s],
+    v = [theta2],
+    points = [
+        B = (r * theta2.cos(), r * theta2.sin()),
+    ],
+    closure = [
+        r * theta2.cos() + l * theta3.cos() - s,
+        r * theta2.sin() + l * theta3.sin() - e,
+    ],
+)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OffsetSliderCrank {
+    pub r: f64,
+    pub l: f64,
+    pub e: f64,
+}
