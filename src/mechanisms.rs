@@ -1,7 +1,8 @@
 //! Ready mechanisms: the four-bar of the Maple worksheet, with and without
-//! its named points, and a four-bar with its ground pivots and coupler
-//! point free for path generation. The examples, tests and benchmarks use
-//! these; a user can too, without writing the attribute. (The closed-form
+//! its named points, a four-bar with its ground pivots and coupler point
+//! free for path generation, and an offset slider-crank. The examples,
+//! tests and benchmarks use these; a user can too, without writing the
+//! attribute. (The closed-form
 //! four-bar is [`crate::closed_form::FourBar`].)
 
 /// The four-bar of the Maple worksheet: ground A–D of length l1, crank AB

@@ -26,7 +26,15 @@
 //! alone) and analyse them in parallel through [`batch`](crate::batch).
 //! Where the two disagree, the response is not linear — next to a limit
 //! position, where sensitivities grow without bound and some designs of
-//! the band no longer pass.
+//! the band no longer pass. The result says when: [`Cycle::limit`] is the
+//! margin to the nearest limit position in units of the tolerances
+//! ([`limit_margin`]; [`LimitMargin::reaches_limit`] below 1), a four-bar's
+//! margin to a change of Grashof type is [`grashof_margin`], and a Monte
+//! Carlo run reports the fraction of samples that do not run the cycle,
+//! with their reasons ([`CycleSamples::failed_fraction`]).
+//!
+//! [`range`] gives the spread of a quantity's range over the cycle (the
+//! stroke) in one call, and [`monte_carlo_range`] checks it.
 //!
 //! ```
 //! use linkage::prelude::*;
