@@ -1,7 +1,8 @@
 //! Ready mechanisms: the four-bar of the Maple worksheet, with and without
-//! its named points, and a four-bar with its ground pivots and coupler
-//! point free for path generation. The examples, tests and benchmarks use
-//! these; a user can too, without writing the attribute. (The closed-form
+//! its named points, a four-bar with its ground pivots and coupler point
+//! free for path generation, and an offset slider-crank. The examples,
+//! tests and benchmarks use these; a user can too, without writing the
+//! attribute. (The closed-form
 //! four-bar is [`crate::closed_form::FourBar`].)
 
 /// The four-bar of the Maple worksheet: ground A–D of length l1, crank AB
@@ -164,4 +165,27 @@ impl CouplerFourBar {
         px: 25.0,
         py: 0.0,
     };
+}
+
+/// An offset slider-crank: crank AB (r, θ2 its angle from the x axis, the
+/// driver), connecting rod BC (l, θ3), the slider C at (s, e) on a line
+/// parallel to the x axis, e from the crank's pivot. Its crank turns
+/// fully while l ≥ r + |e|; the slider's stroke is
+/// √((l + r)² − e²) − √((l − r)² − e²).
+#[crate::linkage(
+    u = [theta3, s],
+    v = [theta2],
+    points = [
+        B = (r * theta2.cos(), r * theta2.sin()),
+    ],
+    closure = [
+        r * theta2.cos() + l * theta3.cos() - s,
+        r * theta2.sin() + l * theta3.sin() - e,
+    ],
+)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OffsetSliderCrank {
+    pub r: f64,
+    pub l: f64,
+    pub e: f64,
 }

@@ -1,6 +1,7 @@
 //! The linear estimate over a cycle: every output's value, gradient and
 //! spread at every pose of a sweep of the nominal design.
 
+use super::limit::{LimitMargin, margin_along};
 use super::output::TolerancePose;
 use super::{Output, Spread, ToleranceError, Tolerances, gradient};
 use linkage_runtime::{Drive, Motion, Sensitivities, SweepOptions, SweepSummary};
@@ -47,11 +48,17 @@ impl<const F: usize, const K: usize> Band<F, K> {
 }
 
 /// The linear estimate over a cycle: the bands of `outputs` along the
-/// sweep of `model` from `u0` along `drive`, and the sweep's summary.
+/// sweep of `model` from `u0` along `drive`, the sweep's summary, and how
+/// far the tolerance band is from a limit position.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Cycle<const M: usize, const F: usize, const K: usize> {
     pub bands: Vec<Band<F, K>>,
     pub summary: SweepSummary<M, F>,
+    /// The margin to the nearest limit position at the cycle's worst pose
+    /// ([`limit_margin`](super::limit_margin)); `None` if the sweep has
+    /// no pose. Where [`LimitMargin::reaches_limit`], the linear spreads
+    /// do not describe the band: some of its designs do not run the cycle.
+    pub limit: Option<LimitMargin<M, F, K>>,
 }
 
 impl<const M: usize, const F: usize, const K: usize> Cycle<M, F, K> {
@@ -89,7 +96,9 @@ where
             spread: Vec::new(),
         })
         .collect();
+    let mut poses = Vec::new();
     let summary = model.sweep_sensitivities_each(u0, drive, options, |pose, sensitivity| {
+        poses.push((pose.u, pose.v));
         let motion = Motion::of_sweep_pose(pose);
         let pose = match &sensitivity {
             Ok(s) => TolerancePose::with_gradients(model, &motion, s),
@@ -105,5 +114,10 @@ where
             band.spread.push(known.then(|| tolerances.spread(&g)));
         }
     })?;
-    Ok(Cycle { bands, summary })
+    let limit = margin_along(model, &poses, tolerances, &options.options);
+    Ok(Cycle {
+        bands,
+        summary,
+        limit,
+    })
 }

@@ -52,6 +52,28 @@ where
         .collect()
 }
 
+/// The extrema of a coordinate or a point's coordinate along `sweep`,
+/// values and places alone: what a Monte Carlo sample needs. Unlike
+/// [`extremes`] it asks for no sensitivities, so it also serves a sample
+/// whose cycle passes close to a singular pose, where they are refused.
+pub fn extreme_values<L, const M: usize, const K: usize>(
+    model: &L,
+    sweep: &Sweep<M, 1>,
+    output: &Output<'_, M, 1, K>,
+    options: &Options,
+) -> Result<Vec<Found<M, 1>>, ToleranceError>
+where
+    L: Sensitivities<M, 1, K>,
+{
+    let Some(watch) = output.watch() else {
+        return Err(ToleranceError::Unsupported {
+            output: output.name().to_owned(),
+            why: "only coordinates and points are located here; locate a function's extremes with watch::locate and Watch::function",
+        });
+    };
+    Ok(locate(model, sweep, &[watch.extrema()], options)?)
+}
+
 /// How the zero or extremum `found` of `output` (located along `sweep`
 /// by [`locate`], watching the same quantity) moves with the parameters.
 pub fn at_found<L, const M: usize, const K: usize>(

@@ -26,7 +26,15 @@
 //! alone) and analyse them in parallel through [`batch`](crate::batch).
 //! Where the two disagree, the response is not linear — next to a limit
 //! position, where sensitivities grow without bound and some designs of
-//! the band no longer pass.
+//! the band no longer pass. The result says when: [`Cycle::limit`] is the
+//! margin to the nearest limit position in units of the tolerances
+//! ([`limit_margin`]; [`LimitMargin::reaches_limit`] below 1), a four-bar's
+//! margin to a change of Grashof type is [`grashof_margin`], and a Monte
+//! Carlo run reports the fraction of samples that do not run the cycle,
+//! with their reasons ([`CycleSamples::failed_fraction`]).
+//!
+//! [`range`] gives the spread of a quantity's range over the cycle (the
+//! stroke) in one call, and [`monte_carlo_range`] checks it.
 //!
 //! ```
 //! use linkage::prelude::*;
@@ -55,16 +63,22 @@
 //! ```
 
 mod cycle;
+mod grashof;
+mod limit;
 mod located;
 mod monte_carlo;
 mod output;
+mod range;
 mod samples;
 mod statistics;
 
 pub use cycle::{Band, Cycle, cycle};
-pub use located::{Located, at_found, extremes};
+pub use grashof::{GrashofMargin, grashof_margin};
+pub use limit::{LimitMargin, limit_margin, limit_measure};
+pub use located::{Located, at_found, extreme_values, extremes};
 pub use monte_carlo::{CycleSamples, Failure, MonteCarlo, monte_carlo, monte_carlo_cycle};
 pub use output::{Output, TolerancePose};
+pub use range::{Range, RangeSamples, monte_carlo_range, range};
 pub use statistics::Statistics;
 
 use crate::error::{NameKind, UnknownName};
@@ -203,6 +217,28 @@ pub fn with_gradient<const K: usize>(value: f64, gradient: SVector<f64, K>) -> D
     DualSVec64::new(value, Derivative::some(gradient))
 }
 
+/// Which design an error is about.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Design {
+    /// The design passed to the call (the nominal one, unless a Monte
+    /// Carlo sample was passed).
+    Given,
+    /// The nominal design of a Monte Carlo run.
+    Nominal,
+    /// Monte Carlo sample `index` ([`MonteCarlo::sample`]).
+    Sample(usize),
+}
+
+impl std::fmt::Display for Design {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Design::Given => write!(f, "the design"),
+            Design::Nominal => write!(f, "the nominal design"),
+            Design::Sample(index) => write!(f, "Monte Carlo sample {index}"),
+        }
+    }
+}
+
 /// What went wrong in a tolerance analysis.
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
@@ -212,8 +248,8 @@ pub enum ToleranceError {
     UnknownName(UnknownName),
     /// The tolerance of parameter `parameter` is negative or not finite.
     BadTolerance { parameter: usize, value: f64 },
-    /// The nominal design cannot be analysed.
-    Kinematics(Error),
+    /// `design` cannot be analysed.
+    Kinematics { design: Design, error: Error },
     /// Its extremes cannot be located.
     Watch(WatchError),
     /// The output cannot be analysed this way.
@@ -222,14 +258,64 @@ pub enum ToleranceError {
     NoSamples,
 }
 
-crate::error::error_impls! {
-    ToleranceError {
-        Self::UnknownName(inner) => ("{inner}"),
-        Self::BadTolerance { parameter, value } => ("the tolerance of parameter {parameter} is {value}; it must be finite and not negative"),
-        Self::Kinematics(inner) => ("the nominal design: {inner}"),
-        Self::Watch(inner) => ("locating the extremes: {inner}"),
-        Self::Unsupported { output, why } => ("the output `{output}`: {why}"),
-        Self::NoSamples => ("a Monte Carlo run needs at least one sample"),
+impl ToleranceError {
+    /// The same error, said of Monte Carlo sample `index` (for a quantity
+    /// of your own computed in [`monte_carlo`]'s closure).
+    pub fn in_sample(self, index: usize) -> ToleranceError {
+        match self {
+            ToleranceError::Kinematics { error, .. } => ToleranceError::Kinematics {
+                design: Design::Sample(index),
+                error,
+            },
+            other => other,
+        }
     }
-    wraps { UnknownName(UnknownName), Kinematics(Error), Watch(WatchError) }
+}
+
+impl From<Error> for ToleranceError {
+    fn from(error: Error) -> Self {
+        ToleranceError::Kinematics {
+            design: Design::Given,
+            error,
+        }
+    }
+}
+
+impl std::fmt::Display for ToleranceError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::UnknownName(inner) => write!(f, "{inner}"),
+            Self::BadTolerance { parameter, value } => write!(
+                f,
+                "the tolerance of parameter {parameter} is {value}; it must be finite and not negative"
+            ),
+            Self::Kinematics { design, error } => write!(f, "{design}: {error}"),
+            Self::Watch(inner) => write!(f, "locating the extremes: {inner}"),
+            Self::Unsupported { output, why } => write!(f, "the output `{output}`: {why}"),
+            Self::NoSamples => write!(f, "a Monte Carlo run needs at least one sample"),
+        }
+    }
+}
+
+impl std::error::Error for ToleranceError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            Self::UnknownName(inner) => Some(inner),
+            Self::Kinematics { error, .. } => Some(error),
+            Self::Watch(inner) => Some(inner),
+            _ => None,
+        }
+    }
+}
+
+impl From<UnknownName> for ToleranceError {
+    fn from(e: UnknownName) -> Self {
+        ToleranceError::UnknownName(e)
+    }
+}
+
+impl From<WatchError> for ToleranceError {
+    fn from(e: WatchError) -> Self {
+        ToleranceError::Watch(e)
+    }
 }

@@ -2,7 +2,7 @@
 //! tolerances, analysed in parallel through [`batch`](crate::batch).
 
 use super::output::{Resolved, TolerancePose};
-use super::{Output, Statistics, ToleranceError, Tolerances};
+use super::{Design, Output, Statistics, ToleranceError, Tolerances};
 use crate::batch;
 use linkage_runtime::{Drive, Error, Event, Motion, Sensitivities, SweepOptions};
 use nalgebra::SVector;
@@ -66,6 +66,8 @@ pub enum Failure<const M: usize, const F: usize> {
     /// position ends it, or it meets singular poses the nominal does not
     /// (the first such event).
     Singular(Option<Event<M, F>>),
+    /// Its extremes cannot be located ([`monte_carlo_range`](super::monte_carlo_range)).
+    Extremes(ToleranceError),
 }
 
 /// The Monte Carlo statistics of every output at every step of the drive.
@@ -83,6 +85,14 @@ pub struct CycleSamples<const M: usize, const F: usize> {
     pub samples: usize,
     /// The samples left out, by index, and why.
     pub failures: Vec<(usize, Failure<M, F>)>,
+}
+
+impl<const M: usize, const F: usize> CycleSamples<M, F> {
+    /// The fraction of the samples left out: those that cannot be
+    /// assembled, or do not run the cycle as the nominal design does.
+    pub fn failed_fraction(&self) -> f64 {
+        self.failures.len() as f64 / self.samples as f64
+    }
 }
 
 /// The samples analysed together (their values held before they are
@@ -113,7 +123,12 @@ where
         .iter()
         .map(|o| o.resolve::<L>())
         .collect::<Result<Vec<_>, _>>()?;
-    let sweep = model.sweep(u0, drive, options)?;
+    let sweep = model
+        .sweep(u0, drive, options)
+        .map_err(|error| ToleranceError::Kinematics {
+            design: Design::Nominal,
+            error,
+        })?;
     let steps = sweep.poses.iter().map(|p| p.step + 1).max().unwrap_or(0);
     let mut nominal: Vec<Option<TolerancePose<M, F, K>>> = vec![None; steps];
     for pose in &sweep.poses {
