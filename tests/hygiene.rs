@@ -192,5 +192,9 @@ fn no_user_visible_text_names_an_issue_number() {
             }
         }
     }
-    assert!(found.is_empty(), "issue numbers in user-visible text:\n{}", found.join("\n"));
+    assert!(
+        found.is_empty(),
+        "issue numbers in user-visible text:\n{}",
+        found.join("\n")
+    );
 }

@@ -6,8 +6,8 @@
 mod coupler;
 use coupler::Coupler;
 use linkage::closed_form::{self, Grashof};
-use linkage::mechanisms::FourBar;
-use linkage::nalgebra::Matrix3;
+use linkage::mechanisms::{CouplerFourBar, FourBar};
+use linkage::nalgebra::{Matrix3, Vector3};
 use linkage::prelude::*;
 use linkage::synthesis::{
     Defect, Problem, Range, Requirements, Search, SynthesisError, Timing, Transmission, certify,
@@ -106,6 +106,7 @@ fn bad_problems_are_typed_errors() {
         .unwrap()
         .free("l4", 50.0, 90.0)
         .unwrap()
+        .guess(vector![1.3, -0.8])
         .precision_points();
     // Four arbitrary precision points, three unknowns: no design meets
     // them, and the error names the closest candidate and why.
@@ -262,9 +263,10 @@ const WIDE: [(f64, f64); 3] = [(10.0, 30.0), (30.0, 70.0), (50.0, 90.0)];
 fn transmission(min_degrees: f64) -> Requirements<'static, FourBar, 2> {
     let mut requirements = Requirements::new(Range::Revolution);
     requirements.min_transmission = min_degrees.to_radians();
-    requirements.transmission = Transmission::Cosine(Box::new(
-        |_: &FourBar, pose: &SweepPose<2, 1>| -(pose.u[1] - pose.u[0]).cos(),
-    ));
+    requirements.transmission =
+        Transmission::Cosine(Box::new(|_: &FourBar, pose: &SweepPose<2, 1>| {
+            -(pose.u[1] - pose.u[0]).cos()
+        }));
     requirements
 }
 
@@ -739,7 +741,10 @@ fn a_revolution_is_swept_whole_whatever_turn_each_drivers_value_is_in() {
         .iter()
         .map(|d: &f64| d.to_radians())
         .collect();
-    let requirements = Requirements::new(Range::Revolution);
+    // (Only the sweep through the gap is asked: the non-Grashof bar's
+    // transmission angle falls below the default 40° on the way.)
+    let mut requirements = Requirements::new(Range::Revolution);
+    requirements.min_transmission = 0.0;
     let verdict = certify(
         &bar,
         &poses,
@@ -764,7 +769,7 @@ fn a_revolution_is_swept_whole_whatever_turn_each_drivers_value_is_in() {
         &poses,
         &drivers,
         None,
-        &requirements,
+        &Requirements::new(Range::Revolution),
         &SweepOptions::default(),
     )
     .unwrap();
@@ -773,7 +778,10 @@ fn a_revolution_is_swept_whole_whatever_turn_each_drivers_value_is_in() {
     assert_eq!(certificate.from, drivers[0]);
     assert!((certificate.to - drivers[0] - TAU).abs() < 1e-12);
     let smallest = (3800.0f64 / 7000.0).acos();
-    assert!((certificate.transmission - smallest).abs() < 1e-3, "{certificate:?}");
+    assert!(
+        (certificate.transmission - smallest).abs() < 1e-3,
+        "{certificate:?}"
+    );
     assert!(certificate.transmission >= smallest - 1e-12);
 }
 
@@ -820,4 +828,421 @@ fn a_problems_jacobian_is_its_residuals_derivative() {
     // Unknowns or poses of the wrong length.
     assert!(problem.evaluate(&x[1..], &poses, &options).is_none());
     assert!(problem.evaluate(&x, &poses[1..], &options).is_none());
+}
+
+/// Freudenstein's three Chebyshev points of y = log10 x on 1 ≤ x ≤ 10,
+/// the crank over 45°…105° and θ4 (the direction C→D) as the output,
+/// written from scratch (not one of the examples' tasks): the points lie
+/// at 49.02°, 75° and 100.98°, inside the task's range. The four-bar
+/// `scale` times the size: the ground `scale`, the links free within
+/// [0.1, 5]·`scale`; its closed form's lengths beside it.
+fn log10_task(scale: f64) -> (Problem<FourBar, 2, 4>, [f64; 3]) {
+    let phi: [f64; 3] = [0.8555470979371927, 1.3089969389957472, 1.7624467800543016];
+    let psi: [f64; 3] = [2.5031314937856872, 3.2750514376378943, 3.849787933013452];
+    // cos(φ − θ4) = K1 cos φ + K2 cos θ4 + K3, K1 = l1/l4, K2 = l1/l2,
+    // K3 = (l3² − l1² − l2² − l4²)/(2 l2 l4): linear in K.
+    let a = Matrix3::from_fn(|i, j| [phi[i].cos(), psi[i].cos(), 1.0][j]);
+    let rhs = Vector3::from_fn(|i, _| (phi[i] - psi[i]).cos());
+    let k = a.lu().solve(&rhs).unwrap();
+    let (l1, l4, l2) = (scale, scale / k[0], scale / k[1]);
+    let l3 = (2.0 * l2 * l4 * k[2] + l1 * l1 + l2 * l2 + l4 * l4).sqrt();
+    let start = FourBar {
+        l1: scale,
+        l2: scale,
+        l3: 2.0 * scale,
+        l4: 2.0 * scale,
+    };
+    let targets: Vec<(f64, f64)> = phi.iter().zip(psi).map(|(&p, q)| (p, q)).collect();
+    let problem = Problem::function(start, "theta4", &targets)
+        .unwrap()
+        .free("l2", 0.1 * scale, 5.0 * scale)
+        .unwrap()
+        .free("l3", 0.1 * scale, 5.0 * scale)
+        .unwrap()
+        .free("l4", 0.1 * scale, 5.0 * scale)
+        .unwrap()
+        .guess(vector![-1.09, 2.5])
+        .driver_range(45f64.to_radians(), 105f64.to_radians())
+        .unwrap()
+        .precision_points();
+    (problem, [l2, l3, l4])
+}
+
+/// The designer's transmission angle of the task above: acos(−cos(θ3 − θ4)).
+fn transmission_of(min_degrees: f64, range: Range) -> Requirements<'static, FourBar, 2> {
+    let mut requirements = Requirements::new(range);
+    requirements.min_transmission = min_degrees.to_radians();
+    requirements.transmission =
+        Transmission::Cosine(Box::new(|_: &FourBar, pose: &SweepPose<2, 1>| {
+            -(pose.u[0] - pose.u[1]).cos()
+        }));
+    requirements.grashof = Some(FourBar::grashof);
+    requirements
+}
+
+/// The certificate covers the task's range, not only the precision
+/// points' span: the design whose transmission angle is 25.83° at the
+/// first point falls to 23.46° at the range's start, 45°, and a 25°
+/// requirement refuses it there (it was certified when only the points'
+/// span was swept). Over the points' span alone it passes, and its
+/// certificate says what it swept. The refusal names the closest
+/// candidate and why.
+#[test]
+fn a_certificate_covers_the_tasks_whole_range() {
+    let (problem, closed) = log10_task(1.0);
+    let search = Search {
+        starts: 8,
+        ..Search::default()
+    };
+    let over_points =
+        synthesize(&problem, &transmission_of(25.0, Range::Targets), &search).unwrap();
+    let design = over_points.best().unwrap();
+    assert!((design.model.l3 - closed[1]).abs() < 1e-12, "{design:?}");
+    let certificate = design.certificate.expect("a returned design is certified");
+    assert_eq!(certificate.from, 0.8555470979371927);
+    assert_eq!(certificate.to, 1.7624467800543016);
+    // Closed form at 49.02°: 25.8275°.
+    assert!((certificate.transmission.to_degrees() - 25.8275).abs() < 1e-3);
+    assert_eq!(certificate.transmission_at, certificate.from);
+    assert_eq!(certificate.grashof, Some(design.model.grashof()));
+
+    let over_task = synthesize(&problem, &transmission_of(25.0, Range::Task), &search).unwrap();
+    assert!(over_task.designs.is_empty(), "{:?}", over_task.designs);
+    let refused = over_task
+        .refused
+        .iter()
+        .find(|(c, _)| (c.model.l3 - closed[1]).abs() < 1e-12)
+        .expect("the closed form's design, refused");
+    match refused.1 {
+        Defect::Transmission { v, angle } => {
+            assert!((v - 45f64.to_radians()).abs() < 1e-12, "{v}");
+            // Closed form at 45°: 23.4579°.
+            assert!((angle.to_degrees() - 23.4579).abs() < 1e-3, "{angle}");
+        }
+        ref other => panic!("{other:?}"),
+    }
+    match over_task.best() {
+        Err(
+            e @ SynthesisError::NoDesign {
+                closest: Some(_), ..
+            },
+        ) => {
+            let SynthesisError::NoDesign {
+                closest: Some(closest),
+                ..
+            } = &e
+            else {
+                unreachable!()
+            };
+            let least = over_task
+                .refused
+                .iter()
+                .map(|(c, _)| c.rms_error)
+                .fold(f64::INFINITY, f64::min);
+            assert_eq!(closest.rms_error, least);
+            assert!(
+                e.to_string().contains("transmission angle falls to 23.46°"),
+                "{e}"
+            );
+        }
+        other => panic!("{other:?}"),
+    }
+    // With the range's start at 48°: 25.3°, certified over the task.
+    let narrower = log10_task(1.0)
+        .0
+        .driver_range(48f64.to_radians(), 105f64.to_radians());
+    let found = synthesize(
+        &narrower.unwrap(),
+        &transmission_of(25.0, Range::Task),
+        &search,
+    )
+    .unwrap();
+    let certificate = found.best().unwrap().certificate.unwrap();
+    assert_eq!(
+        (certificate.from, certificate.to),
+        (48f64.to_radians(), 105f64.to_radians())
+    );
+}
+
+/// The same task at three sizes: the solver stops at rounding whatever the
+/// units (its tests are relative), and the precision points are accepted at
+/// each. (Before, its gradient test was absolute below a residual of 1 and
+/// stopped at residuals of 1e-13 rad, the lengths 1.9e-12 from the closed
+/// form.)
+#[test]
+fn precision_points_reach_rounding_at_every_scale() {
+    for scale in [1e-3, 1.0, 1e3] {
+        let (problem, closed) = log10_task(scale);
+        let found = synthesize(
+            &problem,
+            &transmission_of(20.0, Range::Task),
+            &Search {
+                starts: 8,
+                ..Search::default()
+            },
+        )
+        .unwrap();
+        let design = found.best().unwrap();
+        let m = &design.model;
+        let off = [m.l2 - closed[0], m.l3 - closed[1], m.l4 - closed[2]]
+            .iter()
+            .fold(0.0f64, |e, x| e.max(x.abs()))
+            / scale;
+        assert!(off < 1e-14, "scale {scale}: {off:e} from the closed form");
+        assert!(design.rms_error < 1e-15, "scale {scale}: {design:?}");
+    }
+    // A path's misses are lengths: the worksheet's G3 through five timed
+    // points (ten equations, three unknowns: consistent, so precision
+    // points), at each size.
+    let (targets, drivers) = worksheet_targets();
+    for scale in [1e-3, 1.0, 1e3] {
+        let bar = FourBar {
+            l1: 80.0 * scale,
+            l2: 25.0 * scale,
+            l3: 45.0 * scale,
+            l4: 65.0 * scale,
+        };
+        let scaled: Vec<Vector2<f64>> = targets.iter().map(|t| t * scale).collect();
+        let problem = Problem::path(bar, "G3", &scaled, Timing::Prescribed(drivers.clone()))
+            .unwrap()
+            .free("l2", 10.0 * scale, 30.0 * scale)
+            .unwrap()
+            .free("l3", 30.0 * scale, 70.0 * scale)
+            .unwrap()
+            .free("l4", 50.0 * scale, 90.0 * scale)
+            .unwrap()
+            .guess(vector![1.3, -0.8])
+            .precision_points();
+        assert_eq!((problem.residuals(), problem.unknowns()), (10, 3));
+        let found = synthesize(
+            &problem,
+            &Requirements::new(Range::Revolution),
+            &Search {
+                starts: 8,
+                ..Search::default()
+            },
+        )
+        .unwrap();
+        let design = found.best().unwrap();
+        let m = &design.model;
+        let off = [
+            m.l2 - 20.0 * scale,
+            m.l3 - 50.0 * scale,
+            m.l4 - 70.0 * scale,
+        ]
+        .iter()
+        .fold(0.0f64, |e, x| e.max(x.abs()))
+            / scale;
+        assert!(off < 1e-13, "scale {scale}: {off:e}");
+        assert!(
+            design.largest_error().1 < 1e-13 * scale,
+            "scale {scale}: {design:?}"
+        );
+    }
+}
+
+/// By default a four-bar must keep a transmission angle of 40°: a
+/// crank-rocker whose angle falls to 29.7° (l = 100, 45, 70, 80: at
+/// θ2 = 180°, cos μ = (70² + 80² − 145²)/(2·70·80)) is refused there, and
+/// certified when no limit is asked, its certificate reporting that angle,
+/// where, and its Grashof type.
+#[test]
+fn by_default_a_near_dead_design_is_refused() {
+    let bar = FourBar {
+        l1: 100.0,
+        l2: 45.0,
+        l3: 70.0,
+        l4: 80.0,
+    };
+    let degrees = [30.0, 120.0, 210.0, 300.0];
+    let poses = poses_along(bar, vector![1.0, -1.5], &degrees);
+    let drivers: Vec<f64> = degrees.iter().map(|d: &f64| d.to_radians()).collect();
+    let worst = ((70.0f64 * 70.0 + 80.0 * 80.0 - 145.0 * 145.0) / (2.0 * 70.0 * 80.0))
+        .abs()
+        .acos();
+    let options = SweepOptions::default();
+    match certify(
+        &bar,
+        &poses,
+        &drivers,
+        None,
+        &Requirements::new(Range::Revolution),
+        &options,
+    ) {
+        Err(Defect::Transmission { v, angle }) => {
+            assert!(
+                (angle - worst).abs() < 1e-3 && angle >= worst - 1e-12,
+                "{angle}"
+            );
+            assert!((v - PI).abs() < 0.02, "{v}");
+        }
+        other => panic!("{other:?}"),
+    }
+    let mut none = Requirements::new(Range::Revolution);
+    none.min_transmission = 0.0;
+    none.grashof = Some(FourBar::grashof);
+    let certificate = certify(&bar, &poses, &drivers, None, &none, &options).unwrap();
+    assert!((certificate.transmission - worst).abs() < 1e-3);
+    assert!((certificate.transmission_at - PI).abs() < 0.02);
+    assert_eq!(certificate.grashof, Some(Grashof::CrankRocker));
+}
+
+/// Nine points of the worksheet's coupler curve with the crank's rotations
+/// between them prescribed and its start free (relative timing: nine
+/// dimensions and one offset, eighteen equations): consistent, so met as
+/// precision points, and the offset found.
+#[test]
+fn relative_timing_meets_a_consistent_over_determined_set() {
+    let bar = CouplerFourBar::WORKSHEET;
+    let drive = Drive::Line {
+        from: vector![0.0],
+        to: vector![TAU],
+        steps: 360,
+    };
+    let sweep = bar
+        .sweep(&vector![1.3, -0.8], &drive, &SweepOptions::default())
+        .unwrap();
+    let picks: Vec<usize> = (0..9).map(|i| 15 + 40 * i).collect();
+    let targets: Vec<Vector2<f64>> = picks
+        .iter()
+        .map(|&k| bar.point_positions(&sweep.poses[k].u, &sweep.poses[k].v)[CouplerFourBar::P])
+        .collect();
+    let offset = sweep.poses[picks[0]].v[0];
+    let relative: Vec<f64> = picks
+        .iter()
+        .map(|&k| sweep.poses[k].v[0] - offset)
+        .collect();
+    let start = CouplerFourBar {
+        xa: 3.0,
+        ya: -2.0,
+        xd: 76.0,
+        yd: 4.0,
+        l2: 22.0,
+        l3: 47.0,
+        l4: 66.0,
+        px: 20.0,
+        py: 5.0,
+    };
+    let mut problem =
+        Problem::path(start, "P", &targets, Timing::Relative(relative.clone())).unwrap();
+    for (name, lower, upper) in [
+        ("xa", -10.0, 10.0),
+        ("ya", -10.0, 10.0),
+        ("xd", 70.0, 90.0),
+        ("yd", -10.0, 10.0),
+        ("l2", 15.0, 25.0),
+        ("l3", 40.0, 60.0),
+        ("l4", 60.0, 80.0),
+        ("px", 15.0, 35.0),
+        ("py", -10.0, 10.0),
+    ] {
+        problem = problem.free(name, lower, upper).unwrap();
+    }
+    let problem = problem.guess(vector![1.3, -0.8]).precision_points();
+    assert_eq!((problem.residuals(), problem.unknowns()), (18, 10));
+    let found = synthesize(
+        &problem,
+        &Requirements::new(Range::Revolution),
+        &Search {
+            starts: 16,
+            enough: Some(1),
+            within: Some(1e-9),
+            ..Search::default()
+        },
+    )
+    .unwrap();
+    let design = found.best().unwrap();
+    assert!(design.largest_error().1 < 1e-11, "{design:?}");
+    for (d, r) in design.drivers.iter().zip(&relative) {
+        let gap = d - r - design.drivers[0];
+        assert!(gap.abs() < 1e-12, "{gap}");
+    }
+    // Every start drew a design that runs through the prescribed drivers.
+    assert_eq!(found.failed_starts, 0, "{found:?}");
+}
+
+/// `within`: a search asked for one design under a tolerance its
+/// least-squares designs cannot reach runs every start; without it, it
+/// stops with the first round that certifies one.
+#[test]
+fn a_search_for_designs_within_a_tolerance_counts_only_those() {
+    let wanted = |theta: f64| {
+        let x = 1.0 + 9.0 * theta / 60f64.to_radians();
+        (90.0 + 90.0 * x.log10()).to_radians() - PI
+    };
+    let start = FourBar {
+        l1: 1.0,
+        l2: 1.0,
+        l3: 2.0,
+        l4: 2.0,
+    };
+    let problem = Problem::function_over(start, "theta4", (0.0, 60f64.to_radians()), 11, wanted)
+        .unwrap()
+        .free("l2", 0.1, 5.0)
+        .unwrap()
+        .free("l3", 0.1, 5.0)
+        .unwrap()
+        .free("l4", 0.1, 5.0)
+        .unwrap()
+        .guess(vector![1.0, wanted(0.0)]);
+    let mut requirements = Requirements::new(Range::Task);
+    requirements.min_transmission = 0.0;
+    let search = |within| Search {
+        starts: 24,
+        enough: Some(1),
+        within,
+        ..Search::default()
+    };
+    let any = synthesize(&problem, &requirements, &search(None)).unwrap();
+    assert_eq!(any.starts, Search::ROUND);
+    let best = any.best().unwrap().largest_error().1;
+    assert!(best > 1e-3, "{best}");
+    let under = synthesize(&problem, &requirements, &search(Some(1e-6))).unwrap();
+    assert_eq!(under.starts, 24);
+}
+
+proptest::proptest! {
+    #![proptest_config(fixed_stream(6))]
+    /// Random crank-rockers at random sizes from 1e-3 to 1e3: three
+    /// precision points of their rocker's angle give them back to
+    /// rounding, the solver's stopping and the acceptance alike free of
+    /// the units.
+    #[test]
+    fn random_precision_points_are_met_to_rounding_at_any_size(
+        // Crank-rockers: l2 + 1 < 1.2 ≤ l3 + l4, the crank shortest.
+        l2 in 0.15..0.19f64, l3 in 0.5..0.6f64, l4 in 0.7..0.8f64,
+        first in 0.0..6.0f64, exponent in -3.0..3.0f64,
+    ) {
+        let scale = 10f64.powf(exponent);
+        let bar = closed_form::FourBar { l1: scale, l2: l2 * scale, l3: l3 * scale, l4: l4 * scale };
+        let thetas = [first, first + 0.6, first + 1.2];
+        let targets: Vec<(f64, f64)> = thetas
+            .iter()
+            .map(|&t| (t, bar.position(t, 1.0).unwrap()[1]))
+            .collect();
+        let [t3, t4] = bar.position(thetas[0], 1.0).unwrap();
+        let start = FourBar { l1: scale, l2: 0.17 * scale, l3: 0.5 * scale, l4: 0.7 * scale };
+        let problem = Problem::function(start, "theta4", &targets)
+            .unwrap()
+            .free("l2", 0.1 * scale, 0.25 * scale)
+            .unwrap()
+            .free("l3", 0.3 * scale, 0.9 * scale)
+            .unwrap()
+            .free("l4", 0.4 * scale, 1.0 * scale)
+            .unwrap()
+            .guess(vector![t3, t4])
+            .precision_points();
+        let mut requirements = Requirements::new(Range::Targets);
+        requirements.min_transmission = 0.0;
+        let found = synthesize(&problem, &requirements, &Search { starts: 8, ..Search::default() })
+            .unwrap();
+        let design = found.best().unwrap();
+        let m = &design.model;
+        let off = [m.l2 - bar.l2, m.l3 - bar.l3, m.l4 - bar.l4]
+            .iter()
+            .fold(0.0f64, |e, x| e.max(x.abs()))
+            / scale;
+        proptest::prop_assert!(off < 1e-12, "scale {scale:e}: {off:e} from the design, {design:?}");
+        proptest::prop_assert!(design.rms_error < 1e-14, "{design:?}");
+    }
 }

@@ -374,3 +374,8 @@ fn monte_carlo_needs_samples_and_known_names() {
     };
     assert_eq!(name.name, "G7");
 }
+
+/// Where the linear theory fails, and says so (in this binary, not one of
+/// its own: each test binary links the whole library).
+#[path = "tolerance/limits.rs"]
+mod limits;

@@ -369,7 +369,7 @@ pub fn function(model: &FourBar, u: &SVector<f64, 2>, task: &FunctionTask) -> Ju
         &poses,
         &drivers,
         Some(FunctionTask::crank_range()),
-        &Requirements::new(Range::Task),
+        &FunctionTask::requirements(),
         &SweepOptions::default(),
     ));
     Judged {

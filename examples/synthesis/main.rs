@@ -119,7 +119,7 @@ fn function(peers: Option<&[peers::Row]>) -> Result<Vec<Method>, Box<dyn Error>>
     );
     let off = |l: [f64; 3]| (0..3).map(|i| (l[i] - closed[i]).abs()).fold(0.0, f64::max);
     let problem = task.problem()?;
-    let requirements = Requirements::new(Range::Task);
+    let requirements = FunctionTask::requirements();
     let mut runs = Vec::new();
     for index in 0..ours::FUNCTION_RUNS {
         let run = ours::run(&problem, &requirements, ours::FUNCTION_STARTS, 1)?;
@@ -538,6 +538,8 @@ fn rates(
             ));
         }
     }
-    t.push_str("| a PSO rate quoted for pylinkage (source not found, not measured here) | 15 814 |\n");
+    t.push_str(
+        "| a PSO rate quoted for pylinkage (source not found, not measured here) | 15 814 |\n",
+    );
     Ok(t)
 }

@@ -5,7 +5,7 @@
 use linkage::mechanisms::{CouplerFourBar, FourBar};
 use linkage::nalgebra::Matrix3;
 use linkage::prelude::*;
-use linkage::synthesis::{Problem, SynthesisError, Timing};
+use linkage::synthesis::{Problem, Range, Requirements, SynthesisError, Timing};
 use std::f64::consts::{PI, TAU};
 
 /// The worksheet's assembly: Newton's start at θ2 = 0 (C above the ground
@@ -86,6 +86,16 @@ impl FunctionTask {
             FunctionTask::angles(x)
         });
         FunctionTask { targets }
+    }
+
+    /// What a design of this task is certified for: the crank's range
+    /// swept whole, and no smallest transmission angle — the task as
+    /// Freudenstein states it; its closed form's own design falls to 11.3°
+    /// at θ2 = 0, which the default 40° would refuse.
+    pub fn requirements() -> Requirements<'static, FourBar, 2> {
+        let mut requirements = Requirements::new(Range::Task);
+        requirements.min_transmission = 0.0;
+        requirements
     }
 
     /// The crank's range, from one end to the other (radians).

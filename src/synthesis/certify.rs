@@ -34,9 +34,20 @@ pub enum Range {
     Targets,
 }
 
-/// The smallest transmission angle a design must keep by default: 40°,
-/// the textbook's lower limit for a four-bar.
+/// The smallest transmission angle a design of one loop in two
+/// coordinates (a four-bar, a slider-crank) must keep by default: 40°, the
+/// textbook's lower limit. For such a mechanism the equivalent
+/// transmission angle is exactly the textbook's.
 pub const DEFAULT_MIN_TRANSMISSION: f64 = 40.0 * std::f64::consts::PI / 180.0;
+
+/// The smallest equivalent transmission angle a design of any other size
+/// must keep by default: 10°, a floor under near-singular poses. With more
+/// coordinates the equivalent angle depends on how they were chosen (the
+/// worksheet's four-bar described by its coupler's position and angle,
+/// four coordinates, has 33.6° where its transmission angle is 57°), so a
+/// textbook limit does not carry over: give such a mechanism its own
+/// measure ([`Transmission::Cosine`]) and limit.
+pub const DEFAULT_MIN_EQUIVALENT_ANGLE: f64 = 10.0 * std::f64::consts::PI / 180.0;
 
 /// What a design must satisfy over its range.
 pub struct Requirements<'a, L, const M: usize> {
@@ -44,8 +55,10 @@ pub struct Requirements<'a, L, const M: usize> {
     /// Sweep steps per radian of the driver.
     pub steps_per_radian: f64,
     /// The smallest transmission angle allowed (radians; an angle beyond
-    /// 90° counts as its supplement): [`DEFAULT_MIN_TRANSMISSION`] unless
-    /// set; 0 asks for none (a singular pose is refused all the same).
+    /// 90° counts as its supplement): by default
+    /// [`DEFAULT_MIN_TRANSMISSION`] for two coordinates,
+    /// [`DEFAULT_MIN_EQUIVALENT_ANGLE`] for any other number; 0 asks for
+    /// none (a singular pose is refused all the same).
     pub min_transmission: f64,
     /// How the transmission angle is measured.
     pub transmission: Transmission<'a, L, M>,
@@ -78,13 +91,19 @@ pub type DesignCheck<'a, L> = Box<dyn Fn(&L) -> Result<(), String> + Send + Sync
 
 impl<L, const M: usize> Requirements<'_, L, M> {
     /// Run the `range` keeping the equivalent transmission angle at
-    /// [`DEFAULT_MIN_TRANSMISSION`] at least, 60 sweep steps per radian,
-    /// no check of the design's own.
+    /// [`DEFAULT_MIN_TRANSMISSION`] at least (two coordinates: a four-bar's
+    /// or a slider-crank's own), or [`DEFAULT_MIN_EQUIVALENT_ANGLE`] (any
+    /// other number), 60 sweep steps per radian, no check of the design's
+    /// own.
     pub fn new(range: Range) -> Self {
         Requirements {
             range,
             steps_per_radian: 60.0,
-            min_transmission: DEFAULT_MIN_TRANSMISSION,
+            min_transmission: if M == 2 {
+                DEFAULT_MIN_TRANSMISSION
+            } else {
+                DEFAULT_MIN_EQUIVALENT_ANGLE
+            },
             transmission: Transmission::Equivalent,
             check: None,
             grashof: None,

@@ -54,11 +54,11 @@ pub struct Stopping {
     /// residuals are orthogonal to every direction the unknowns can move
     /// them in, to this cosine — a least-squares minimum.
     pub gradient: f64,
-    /// Stop when a step changes no unknown by more than this times its
-    /// scale: the width of its bounds, or max(1, |x|) for an unbounded one
-    /// (a free driver, an angle). Near a solution Gauss–Newton's steps
-    /// shrink quadratically, so the step that falls below this is the
-    /// last one that changed anything.
+    /// Stop when a step changes no unknown by more than this relative to
+    /// its size (at least 1e-3 of the largest unknown's, for one near
+    /// zero). Near a solution Gauss–Newton's steps shrink quadratically,
+    /// so the step that falls below this is the last one that changed
+    /// anything.
     pub step: f64,
     /// The most evaluations.
     pub evaluations: usize,
@@ -183,17 +183,18 @@ pub(crate) fn minimize<S>(
         for i in 0..n {
             scale[i] = scale[i].max(jtj[(i, i)]).max(f64::MIN_POSITIVE);
         }
-        // The projected gradient: what the bounds let the descent use,
-        // against the largest it could be for residuals of this size.
+        // The projected gradient (zero where a bound holds the unknown
+        // against the descent), against the largest it could be for
+        // residuals of this size. (Not x − clamp(x − g): that subtracts
+        // the gradient from x, and in units where x is large beside g it
+        // rounds to zero far from the minimum.)
+        let held = |i: usize| (x[i] <= lower[i] && g[i] > 0.0) || (x[i] >= upper[i] && g[i] < 0.0);
         let r = at.residuals.norm();
-        let orthogonal = (0..n).all(|i| {
-            let projected = x[i] - (x[i] - g[i]).clamp(lower[i], upper[i]);
-            projected.abs() <= stopping.gradient * jtj[(i, i)].sqrt() * r
-        });
+        let orthogonal =
+            (0..n).all(|i| held(i) || g[i].abs() <= stopping.gradient * jtj[(i, i)].sqrt() * r);
         if orthogonal {
             break;
         }
-        let held = |i: usize| (x[i] <= lower[i] && g[i] > 0.0) || (x[i] >= upper[i] && g[i] < 0.0);
         let mut free: Vec<usize> = (0..n).filter(|&i| !held(i)).collect();
         let lam = *lambda.get_or_insert_with(|| 1e-3 * scale.max());
         // The step on the free unknowns; an unknown at a bound that the step
@@ -219,16 +220,9 @@ pub(crate) fn minimize<S>(
         let s = within_bounds(&x, &step, lower, upper, &promise);
         let trial = &x + &s;
         let predicted = promise(&s);
+        let size = x.amax();
         let small = |s: &DVector<f64>| {
-            (0..n).all(|i| {
-                let width = upper[i] - lower[i];
-                let scale = if width.is_finite() {
-                    width
-                } else {
-                    x[i].abs().max(1.0)
-                };
-                s[i].abs() <= stopping.step * scale
-            })
+            (0..n).all(|i| s[i].abs() <= stopping.step * x[i].abs().max(1e-3 * size))
         };
         // A step too small to change x, or one that promises no reduction:
         // converged, once λ is as small as it goes (a step is small because λ

@@ -20,8 +20,8 @@
 //! driver range ([`Requirements`]: a revolution, or the task's range
 //! stated in the problem) must assemble everywhere, meet no singular pose,
 //! reach every target on the branch it was designed on and in the
-//! targets' order, keep the transmission angle (40° unless asked
-//! otherwise) and pass the designer's checks (a Grashof type). Each
+//! targets' order, keep the transmission angle (a four-bar's 40° unless
+//! asked otherwise) and pass the designer's checks (a Grashof type). Each
 //! design comes with its [`Certificate`]: the range swept, the worst
 //! transmission angle and where. A candidate that fails is reported with
 //! its [`Defect`], never returned as a design.
@@ -34,8 +34,8 @@ mod search;
 mod terms;
 
 pub use certify::{
-    Certificate, Defect, DesignCheck, Range, Requirements, Transmission, TransmissionAngle,
-    certify,
+    Certificate, DEFAULT_MIN_EQUIVALENT_ANGLE, DEFAULT_MIN_TRANSMISSION, Defect, DesignCheck,
+    Range, Requirements, Transmission, TransmissionAngle, certify,
 };
 pub use least_squares::{LeastSquares, Stopping, least_squares};
 pub use problem::{Problem, Timing};

@@ -207,7 +207,11 @@ where
     let counted = |designs: &[Candidate<L, M>]| {
         designs
             .iter()
-            .filter(|d| search.within.is_none_or(|within| d.largest_error().1 <= within))
+            .filter(|d| {
+                search
+                    .within
+                    .is_none_or(|within| d.largest_error().1 <= within)
+            })
             .count()
     };
     while synthesis.starts < search.starts
