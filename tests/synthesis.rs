@@ -993,8 +993,12 @@ fn precision_points_reach_rounding_at_every_scale() {
     }
     // A path's misses are lengths: the worksheet's G3 through five timed
     // points (ten equations, three unknowns: consistent, so precision
-    // points), at each size.
+    // points), at each size. (The targets are the sweep's points, closed to
+    // Newton's tolerance: the worksheet's lengths meet them to 1e-12, and
+    // the designs found at the three sizes agree with each other to
+    // rounding.)
     let (targets, drivers) = worksheet_targets();
+    let mut found_lengths = Vec::new();
     for scale in [1e-3, 1.0, 1e3] {
         let bar = FourBar {
             l1: 80.0 * scale,
@@ -1033,11 +1037,17 @@ fn precision_points_reach_rounding_at_every_scale() {
         .iter()
         .fold(0.0f64, |e, x| e.max(x.abs()))
             / scale;
-        assert!(off < 1e-13, "scale {scale}: {off:e}");
+        assert!(off < 1e-12, "scale {scale}: {off:e}");
         assert!(
             design.largest_error().1 < 1e-13 * scale,
             "scale {scale}: {design:?}"
         );
+        found_lengths.push([m.l2 / scale, m.l3 / scale, m.l4 / scale]);
+    }
+    for lengths in &found_lengths {
+        for (a, b) in lengths.iter().zip(&found_lengths[1]) {
+            assert!((a / b - 1.0).abs() < 1e-14, "{found_lengths:?}");
+        }
     }
 }
 
