@@ -7,4 +7,7 @@
 fn diagnostics() {
     let cases = trybuild::TestCases::new();
     cases.compile_fail("tests/ui/*.rs");
+    // The uses of every generated item the tests of mistakes include, with
+    // the types the attribute gives them when it has no mistake.
+    cases.pass("tests/ui/every_item/no_mistake.rs");
 }

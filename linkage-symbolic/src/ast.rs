@@ -26,7 +26,13 @@ pub struct Field {
 
 /// A bracketed list as written, with the span of its brackets.
 pub struct List<T> {
+    /// The entries that parsed (a malformed one is reported and left out).
     pub items: Vec<T>,
+    /// The number of entries written, malformed ones included: the size
+    /// the list was meant to have (0 for a list not given).
+    pub written: usize,
+    /// What is written between the brackets.
+    pub tokens: TokenStream,
     pub span: Span,
 }
 
@@ -34,8 +40,27 @@ impl<T> List<T> {
     fn empty() -> List<T> {
         List {
             items: Vec::new(),
+            written: 0,
+            tokens: TokenStream::new(),
             span: Span::call_site(),
         }
+    }
+}
+
+impl List<Ident> {
+    /// The number of names the list was meant to hold: its entries as
+    /// written, a name already in `earlier` or earlier in the list counted
+    /// once.
+    pub fn meant(&self, earlier: &[Ident]) -> usize {
+        let mut seen: Vec<String> = earlier.iter().map(crate::lower::unraw).collect();
+        let repeated = (self.items.iter().map(crate::lower::unraw))
+            .filter(|name| {
+                let repeated = seen.contains(name);
+                seen.push(name.clone());
+                repeated
+            })
+            .count();
+        self.written - repeated
     }
 }
 
@@ -249,12 +274,16 @@ fn parse_list<T>(
             return None;
         }
     };
-    let items = split_commas(group.stream())
+    let chunks = split_commas(group.stream());
+    let written = chunks.len();
+    let items = chunks
         .into_iter()
         .filter_map(|chunk| parse_item(chunk, errors))
         .collect();
     Some(List {
         items,
+        written,
+        tokens: group.stream(),
         span: group.span(),
     })
 }

@@ -90,6 +90,58 @@ pub fn resolve(input: &Input, lowered: &mut Lowered, errors: &mut Errors) {
     lowered.design = design;
 }
 
+/// The number of parameters the attribute asks for, read from what is
+/// written even when it has mistakes (the items of the error path have the
+/// sizes they would have without them): the entries of `params`, a name
+/// listed twice counted once; or else, as [`resolve`] decides, the `f64`
+/// fields the closure equations or the points use, here every field they
+/// name (only a use that cancels, `l1 - l1`, which `resolve` leaves out,
+/// counts differently). `None` when no closure equation is written.
+pub fn count_as_written(input: &Input) -> Option<usize> {
+    if let Some(list) = &input.params {
+        return Some(list.meant(&[]));
+    }
+    if input.closure.written == 0 {
+        return None;
+    }
+    // A coordinate or a point of the same name hides a field.
+    let declared: Vec<String> = (input.u.items.iter())
+        .chain(&input.v.items)
+        .chain(input.points.items.iter().map(|p| &p.name))
+        .map(unraw)
+        .collect();
+    let fields: Vec<String> = (input.fields.iter())
+        .filter(|f| f.is_f64)
+        .map(|f| unraw(&f.ident))
+        .filter(|name| !declared.contains(name))
+        .collect();
+    let mut named = Vec::new();
+    for list in [&input.closure.tokens, &input.points.tokens] {
+        names_in(list.clone(), &fields, &mut named);
+    }
+    Some(named.len())
+}
+
+/// Adds to `named` each of `fields` that `tokens` names as a variable (not
+/// after `.` or `::`: `B.x`, `theta2.cos()`, `consts::PI` are not fields).
+fn names_in(tokens: proc_macro2::TokenStream, fields: &[String], named: &mut Vec<String>) {
+    use proc_macro2::TokenTree;
+    let mut after_path_or_dot = false;
+    for tt in tokens {
+        match &tt {
+            TokenTree::Group(g) => names_in(g.stream(), fields, named),
+            TokenTree::Ident(ident) => {
+                let name = unraw(ident);
+                if !after_path_or_dot && fields.contains(&name) && !named.contains(&name) {
+                    named.push(name);
+                }
+            }
+            TokenTree::Punct(_) | TokenTree::Literal(_) => {}
+        }
+        after_path_or_dot = matches!(&tt, TokenTree::Punct(p) if matches!(p.as_char(), '.' | ':'));
+    }
+}
+
 /// Which parameters the closure equations or a point depend on.
 fn used_params(lowered: &mut Lowered) -> Vec<bool> {
     let roots: Vec<_> = lowered
@@ -105,4 +157,57 @@ fn used_params(lowered: &mut Lowered) -> Vec<bool> {
                 .any(|&r| lowered.dag.diff(r, Symbol::Param(k)) != Dag::ZERO)
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::count_as_written;
+    use crate::ast::Input;
+    use crate::errors::Errors;
+    use quote::quote;
+
+    fn count(attr: proc_macro2::TokenStream) -> Option<usize> {
+        let item = quote!(
+            struct Bar {
+                l1: f64,
+                l2: f64,
+                l3: f64,
+                mass: f64,
+                x: f64,
+                label: u32,
+            }
+        );
+        count_as_written(&Input::parse(attr, item, &mut Errors::default()).unwrap())
+    }
+
+    /// Without `params`, the `f64` fields the equations or the points
+    /// name (`mass` as a receiver too), whatever their mistakes; not a
+    /// point's coordinate, a constant's path, a coordinate of the same
+    /// name, or a field that is not `f64`.
+    #[test]
+    fn by_default_the_fields_the_equations_name() {
+        let n = count(quote!(
+            u = [theta3],
+            v = [theta2],
+            points = [B = (l3 * thta2.cos(), label * 1.0)],
+            closure = [l1 * theta2.cos() + B.x + mass.cos() + l2 / std::f64::consts::PI - tht]
+        ));
+        assert_eq!(n, Some(4));
+        let coordinate = count(quote!(u = [l1], v = [theta2], closure = [l1 + l2 * theta2]));
+        assert_eq!(coordinate, Some(1));
+        assert_eq!(count(quote!(u = [theta3], v = [theta2])), None);
+    }
+
+    /// With `params`, its entries as written: a misspelt or malformed one
+    /// counts, a name listed twice counts once.
+    #[test]
+    fn with_params_its_entries() {
+        let n = count(quote!(
+            u = [theta3],
+            v = [theta2],
+            closure = [l1 * theta3 + l2 * theta2],
+            params = [l1, l22, l1, 3.0]
+        ));
+        assert_eq!(n, Some(3));
+    }
 }

@@ -1,34 +1,69 @@
 //! The error path: when the attribute has mistakes, the struct still gets
 //! every generated item, with bodies that never run (the build fails on
-//! the reported errors) and generic in the dimensions, so that whatever
-//! sizes the user's other code passes it still type-checks and only the
+//! the reported errors) and with the types it has without the mistakes,
+//! so that the rest of the user's code still type-checks and only the
 //! attribute's real mistakes are reported — as thiserror's `fallback.rs`.
+//!
+//! Every dimension the attribute gives, as far as it was read, is that
+//! number: m from `u` (or else the number of closure equations), f from
+//! `v`, the points from `points`, k from `params` or else the fields the
+//! equations use, each list's entries as written (a malformed one
+//! included, a name written twice counted once). A generic trait impl
+//! would leave a call such as `bar.sensitivities_of(..)` ambiguous, and a
+//! slice is not the array a user's code passes on
+//! (`Tolerances::by_name(&Bar::PARAM_NAMES, ..)`). Only a dimension the
+//! attribute does not give stays generic.
 //!
 //! The generic parameters have names no user identifier takes
 //! (`__LINKAGE_M`, ...): a struct called `M` or `F` must not turn a
 //! dimension into a type.
 
-use super::quantities::{Arg, QUANTITIES, Quantity, Scalar, Shape, Trait};
+use super::quantities::{QUANTITIES, Scalar, Shape, Trait};
 use super::signature::{self, Dim, Dims};
 use linkage_symbolic::ast::Input;
-use proc_macro2::{Ident, TokenStream};
+use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
+
+/// The dimensions as far as the attribute gives them.
+fn dims(input: &Input) -> Dims {
+    let [m, f, n, k] = ["__LINKAGE_M", "__LINKAGE_F", "__LINKAGE_N", "__LINKAGE_K"]
+        .map(|s| format_ident!("{}", s));
+    let given = |written: usize| (written > 0).then_some(written);
+    let m = Dim::known_or_generic(
+        given(input.u.meant(&[])).or(given(input.closure.written)),
+        &m,
+    );
+    let f = Dim::known_or_generic(given(input.v.meant(&input.u.items)), &f);
+    let n = Dim::known_or_generic(m.value().zip(f.value()).map(|(m, f)| m + f), &n);
+    let k = Dim::known_or_generic(linkage_symbolic::params::count_as_written(input), &k);
+    Dims {
+        m,
+        f,
+        n,
+        np: Dim::known(input.points.written),
+        k,
+    }
+}
+
+/// A constant array of `dim` elements (`[&str; n]`, `[bool; n]`), or a
+/// slice where the number is not known.
+fn names_const(name: &str, dim: &Dim, element: TokenStream, value: TokenStream) -> TokenStream {
+    let name = format_ident!("{}", name);
+    match dim.value() {
+        Some(n) => {
+            let n = proc_macro2::Literal::usize_unsuffixed(n);
+            quote!(pub const #name: [#element; #n] = [#value; #n];)
+        }
+        None => quote!(pub const #name: &'static [#element] = &[];),
+    }
+}
 
 /// The struct as written, followed by the fallback items.
 pub fn fallback(input: &Input) -> TokenStream {
     let item = &input.item;
     let ty = &item.ident;
     let (impl_generics, ty_generics, where_clause) = item.generics.split_for_impl();
-    let [m, f, n, k] = ["__LINKAGE_M", "__LINKAGE_F", "__LINKAGE_N", "__LINKAGE_K"]
-        .map(|s| format_ident!("{}", s));
-    let np = input.points.items.len();
-    let dims = Dims {
-        m: Dim::generic(&m),
-        f: Dim::generic(&f),
-        n: Dim::generic(&n),
-        np: Dim::known(np),
-        k: Dim::generic(&k),
-    };
+    let dims = dims(input);
     let never = quote!(::core::unimplemented!(
         "#[linkage::linkage] on this struct has errors"
     ));
@@ -40,11 +75,28 @@ pub fn fallback(input: &Input) -> TokenStream {
         .map(|p| p.name.to_string())
         .collect();
     let point_indices = super::point_indices(names.iter().map(String::as_str));
+    let str_ = quote!(&'static str);
+    let consts = [
+        names_const("U_NAMES", &dims.m, str_.clone(), quote!("")),
+        names_const("V_NAMES", &dims.f, str_.clone(), quote!("")),
+        names_const("POINT_NAMES", &dims.np, str_.clone(), quote!("")),
+        names_const("PARAM_NAMES", &dims.k, str_, quote!("")),
+        names_const("TRIG_U", &dims.m, quote!(bool), quote!(false)),
+        names_const("TRIG_V", &dims.f, quote!(bool), quote!(false)),
+        names_const("SENSITIVITY_TRIG_U", &dims.m, quote!(bool), quote!(false)),
+        names_const("SENSITIVITY_TRIG_V", &dims.f, quote!(bool), quote!(false)),
+    ];
     let inherent = QUANTITIES.iter().filter(|q| q.function).map(|q| {
         let fn_name = format_ident!("{}", q.name);
-        let generics = function_generics(q, &m, &f, &n, &k);
         let args = signature::args(q, &dims, |_| false);
         let ret = signature::output_type(q, &dims, false);
+        let dual = (q.scalar == Scalar::Dual).then(|| {
+            let d = signature::dual();
+            quote!(#d: ::linkage::num_dual::DualNum<Primitive = f64> + Copy)
+        });
+        let generic_dims = dims.generic_params(&quote!(#(#args)* #ret));
+        let generics: Vec<TokenStream> = dual.into_iter().chain(generic_dims).collect();
+        let generics = (!generics.is_empty()).then(|| quote!(<#(#generics),*>));
         quote! {
             #[allow(clippy::too_many_arguments)]
             pub fn #fn_name #generics(&self, #(#args),*) -> #ret {
@@ -74,24 +126,33 @@ pub fn fallback(input: &Input) -> TokenStream {
             .collect::<Vec<_>>()
     };
     let (kinematics, sensitivities) = (in_trait(Trait::Linkage), in_trait(Trait::Sensitivities));
-    let mut generics = item.generics.clone();
-    generics.params.push(syn::parse_quote!(const #m: usize));
-    generics.params.push(syn::parse_quote!(const #f: usize));
-    let (trait_generics, _, _) = generics.split_for_impl();
-    let mut generics_k = generics.clone();
-    generics_k.params.push(syn::parse_quote!(const #k: usize));
-    let (sensitivity_generics, _, _) = generics_k.split_for_impl();
-    let np = proc_macro2::Literal::usize_unsuffixed(np);
+    let (m, f, k, np) = (
+        &dims.m.tokens(),
+        &dims.f.tokens(),
+        &dims.k.tokens(),
+        &dims.np.tokens(),
+    );
+    // Each trait impl generic in the dimensions it leaves open.
+    let impl_generics_over = |trait_: &TokenStream| {
+        let mut generics = item.generics.clone();
+        for param in dims.generic_params(trait_) {
+            generics.params.push(syn::parse_quote!(#param));
+        }
+        generics
+    };
+    let linkage = quote!(::linkage::Linkage<#m, #f>);
+    let sensitivities_trait = quote!(::linkage::Sensitivities<#m, #f, #k>);
+    let linkage_generics = impl_generics_over(&linkage);
+    let sensitivity_generics = impl_generics_over(&sensitivities_trait);
+    let (linkage_generics, _, _) = linkage_generics.split_for_impl();
+    let (sensitivity_generics, _, _) = sensitivity_generics.split_for_impl();
     quote! {
         #item
         const _: () = {
             use ::linkage::nalgebra::{SMatrix, SVector, Vector2};
             #[allow(dead_code, unused_variables)]
             impl #impl_generics #ty #ty_generics #where_clause {
-                pub const U_NAMES: &'static [&'static str] = &[];
-                pub const V_NAMES: &'static [&'static str] = &[];
-                pub const POINT_NAMES: &'static [&'static str] = &[];
-                pub const PARAM_NAMES: &'static [&'static str] = &[];
+                #(#consts)*
                 #point_indices
                 pub const SYMBOLIC: ::linkage::SymbolicTable = ::linkage::SymbolicTable {
                     name: #name,
@@ -103,7 +164,7 @@ pub fn fallback(input: &Input) -> TokenStream {
                 #(#inherent)*
             }
             #[allow(unused_variables)]
-            impl #trait_generics ::linkage::Linkage<#m, #f> for #ty #ty_generics #where_clause {
+            impl #linkage_generics #linkage for #ty #ty_generics #where_clause {
                 type Points = [Vector2<f64>; #np];
                 const U_NAMES: [&'static str; #m] = [""; #m];
                 const V_NAMES: [&'static str; #f] = [""; #f];
@@ -112,7 +173,7 @@ pub fn fallback(input: &Input) -> TokenStream {
                 #(#kinematics)*
             }
             #[allow(unused_variables)]
-            impl #sensitivity_generics ::linkage::Sensitivities<#m, #f, #k> for #ty #ty_generics #where_clause {
+            impl #sensitivity_generics #sensitivities_trait for #ty #ty_generics #where_clause {
                 const PARAM_NAMES: [&'static str; #k] = [""; #k];
                 fn params(&self) -> SVector<f64, #k> {
                     #never
@@ -124,18 +185,4 @@ pub fn fallback(input: &Input) -> TokenStream {
             }
         };
     }
-}
-
-/// A fallback function's own generic parameters: the dual number type if
-/// any, then the dimensions it uses.
-fn function_generics(q: &Quantity, m: &Ident, f: &Ident, n: &Ident, k: &Ident) -> TokenStream {
-    let dual = (q.scalar == Scalar::Dual).then(|| {
-        let d = signature::dual();
-        quote!(#d: ::linkage::num_dual::DualNum<Primitive = f64> + Copy,)
-    });
-    let full = (q.shape == Shape::Full).then(|| quote!(, const #n: usize));
-    let by_params = matches!(q.shape, Shape::ByParams | Shape::SensitivityTerms)
-        || q.args.contains(&Arg::Params);
-    let params = by_params.then(|| quote!(, const #k: usize));
-    quote!(<#dual const #m: usize, const #f: usize #full #params>)
 }

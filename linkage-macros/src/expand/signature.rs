@@ -1,7 +1,8 @@
 //! The signatures of the generated functions, from the table of
 //! quantities: one rule for every argument and result type, whether the
-//! dimensions are the model's numbers (the items, the trait impl) or
-//! generic parameters (the error-path fallback).
+//! dimensions are the model's numbers (the items, the trait impl) or, on
+//! the error path, the numbers the attribute gives as far as it was read
+//! and generic parameters for the others (the fallback).
 
 use super::quantities::{Arg, Length, Quantity, Scalar, Shape};
 use proc_macro2::{Ident, Literal, TokenStream};
@@ -29,6 +30,39 @@ impl Dim {
             value: None,
         }
     }
+
+    /// The number if it is known, else the generic parameter `name`.
+    pub fn known_or_generic(value: Option<usize>, name: &Ident) -> Dim {
+        value.map_or_else(|| Dim::generic(name), Dim::known)
+    }
+
+    /// The number or the generic parameter, as written in a type.
+    pub fn tokens(&self) -> TokenStream {
+        self.tokens.clone()
+    }
+
+    /// The number, if known.
+    pub fn value(&self) -> Option<usize> {
+        self.value
+    }
+
+    /// The declaration `const NAME: usize` of a generic dimension.
+    fn generic_param(&self) -> Option<TokenStream> {
+        let name = &self.tokens;
+        self.value.is_none().then(|| quote!(const #name: usize))
+    }
+
+    /// Whether `tokens` name this dimension, if it is generic.
+    fn generic_in(&self, tokens: &TokenStream) -> bool {
+        fn names(tokens: &TokenStream, name: &str) -> bool {
+            tokens.clone().into_iter().any(|tt| match tt {
+                proc_macro2::TokenTree::Ident(i) => i == name,
+                proc_macro2::TokenTree::Group(g) => names(&g.stream(), name),
+                _ => false,
+            })
+        }
+        self.value.is_none() && names(tokens, &self.tokens.to_string())
+    }
 }
 
 /// The dimensions of a model: m dependent coordinates, f driving ones, m +
@@ -43,6 +77,17 @@ pub struct Dims {
 }
 
 impl Dims {
+    /// The declarations of the generic dimensions that `tokens` (types, a
+    /// signature) name, in the order m, f, n, np, k: an item generic in
+    /// exactly the dimensions its types leave open.
+    pub fn generic_params(&self, tokens: &TokenStream) -> Vec<TokenStream> {
+        [&self.m, &self.f, &self.n, &self.np, &self.k]
+            .into_iter()
+            .filter(|d| d.generic_in(tokens))
+            .filter_map(Dim::generic_param)
+            .collect()
+    }
+
     pub fn known(m: usize, f: usize, np: usize, k: usize) -> Dims {
         Dims {
             m: Dim::known(m),
