@@ -105,6 +105,7 @@ pub mod closed_form;
 pub mod draw;
 pub mod error;
 pub mod ground;
+pub mod least_squares;
 pub mod machine;
 pub mod mechanisms;
 mod numerics;

@@ -13,9 +13,9 @@
 #![allow(dead_code)]
 
 use crate::machine::{Data, Shaper, machine, synthesize};
+use linkage::least_squares::{LeastSquaresError, Stopping, least_squares};
 use linkage::machine::{MachineError, Motor};
 use linkage::nalgebra::{DMatrix, DVector};
-use linkage::synthesis::{Stopping, SynthesisError, least_squares};
 use std::f64::consts::TAU;
 
 /// The free variables, in order, and their bounds.
@@ -126,7 +126,7 @@ pub fn minimise(course: &Data) -> Result<Optimum, Box<dyn std::error::Error>> {
             DMatrix::from_row_slice(1, g.len(), (g / (2.0 * r)).as_slice()),
         ))
     })
-    .map_err(|e: SynthesisError| e.to_string())?;
+    .map_err(|e: LeastSquaresError| e.to_string())?;
     let (flywheel, gradient) = flywheel(course, &found.x)?;
     Ok(Optimum {
         x: found.x,

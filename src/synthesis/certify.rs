@@ -8,9 +8,10 @@
 //! says which and where. One that passes gets its [`Certificate`]: the
 //! range swept, its worst transmission angle and where, its Grashof type.
 
+use super::continuation;
 use crate::closed_form::Grashof;
 use crate::transmission::{acute_from_cosine, equivalent_angle};
-use linkage_runtime::{Drive, Error, EventKind, Linkage, SweepOptions, SweepPose};
+use linkage_runtime::{Error, EventKind, Linkage, SweepOptions, SweepPose};
 use nalgebra::SVector;
 use std::f64::consts::TAU;
 use std::fmt;
@@ -360,22 +361,17 @@ where
     if leg.to == leg.from && leg.end.is_none() {
         return Ok(());
     }
-    let steps = ((leg.to - leg.from).abs() * requirements.steps_per_radian)
-        .ceil()
-        .max(2.0) as usize;
-    let drive = Drive::Line {
-        from: SVector::from([leg.from]),
-        to: SVector::from([leg.to]),
-        steps,
-    };
-    let mut last = poses[leg.start];
     let mut low = Worst {
         angle: f64::INFINITY,
         at: leg.from,
     };
-    let summary = model
-        .sweep_each(&poses[leg.start], &drive, options, |pose| {
-            last = pose.u;
+    let followed = continuation::follow(
+        model,
+        &poses[leg.start],
+        (leg.from, leg.to),
+        requirements.steps_per_radian,
+        options,
+        |pose| {
             let angle = transmission_angle(model, requirements, &pose.u, pose.v[0], Some(pose))
                 .unwrap_or(f64::INFINITY);
             if angle < low.angle {
@@ -384,8 +380,10 @@ where
                     at: pose.v[0],
                 };
             }
-        })
-        .map_err(|why| Defect::Stops { v: leg.from, why })?;
+        },
+    )
+    .map_err(|why| Defect::Stops { v: leg.from, why })?;
+    let summary = &followed.summary;
     if let Some(event) = summary.events.first() {
         return Err(Defect::Singular {
             v: event.v[0],
@@ -407,18 +405,7 @@ where
     let Some(end) = leg.end else {
         return Ok(());
     };
-    // The same pose, up to whole turns of an angle.
-    let end_pose = &poses[end];
-    let same = (0..M).all(|i| {
-        let d = last[i] - end_pose[i];
-        let d = if L::TRIG_U[i] {
-            d - TAU * (d / TAU).round()
-        } else {
-            d
-        };
-        d.abs() <= 1e-7 * end_pose[i].abs().max(1.0)
-    });
-    if !same {
+    if !continuation::same_pose::<L, M>(&followed.u, &poses[end], 1e-7) {
         return Err(Defect::Branch {
             target: end,
             v: leg.to,

@@ -27,17 +27,17 @@
 //! its [`Defect`], never returned as a design.
 
 mod certify;
-mod least_squares;
+mod continuation;
 mod problem;
 mod residuals;
 mod search;
 mod terms;
 
+pub use crate::least_squares::Stopping;
 pub use certify::{
     Certificate, DEFAULT_MIN_EQUIVALENT_ANGLE, DEFAULT_MIN_TRANSMISSION, Defect, DesignCheck,
     Range, Requirements, Transmission, TransmissionAngle, certify,
 };
-pub use least_squares::{LeastSquares, Stopping, least_squares};
 pub use problem::{Problem, Timing};
 pub use residuals::Evaluated;
 pub use search::{Candidate, Closest, Search, Synthesis, synthesize};

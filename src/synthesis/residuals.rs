@@ -4,8 +4,8 @@
 //! the free parameters; its velocity at unit driver speed gives the column
 //! of a free driver.
 
-use super::least_squares::Evaluation;
 use super::problem::{Problem, Task};
+use crate::least_squares::Evaluation;
 use linkage_runtime::{Linkage, Motion, Options, Sensitivities, invert};
 use nalgebra::{DMatrix, DVector, SVector};
 use std::f64::consts::TAU;

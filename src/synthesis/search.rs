@@ -6,12 +6,13 @@
 
 use super::SynthesisError;
 use super::certify::{Certificate, Defect, Range, Requirements, certify};
-use super::least_squares::{Stopping, minimize};
+use super::continuation;
 use super::problem::{Problem, Timing};
 use super::residuals::{Poses, branch, evaluate};
 use crate::batch;
+use crate::least_squares::{Stopping, minimize};
 use crate::random::SplitMix64;
-use linkage_runtime::{Drive, Options, Sensitivities, SweepOptions};
+use linkage_runtime::{Options, Sensitivities, SweepOptions};
 use nalgebra::{DVector, SVector};
 use std::f64::consts::TAU;
 
@@ -20,9 +21,9 @@ use std::f64::consts::TAU;
 pub struct Search {
     /// Random starts, solved in parallel.
     pub starts: usize,
-    /// The random stream the starts are drawn from (each start a function
-    /// of it and its index).
-    pub stream: u64,
+    /// The seed of the random numbers the starts are drawn from (each
+    /// start a function of it and its index alone).
+    pub seed: u64,
     pub stopping: Stopping,
     /// The solves of the poses and the sweeps of the certificate.
     pub options: SweepOptions,
@@ -30,7 +31,7 @@ pub struct Search {
     /// those within [`Search::within`]): the starts then run in rounds of
     /// [`Search::ROUND`] (in parallel within a round), and the search ends
     /// with the round that reaches them. `None`: every start. Either way
-    /// the result depends only on the stream, not on the machine's cores.
+    /// the result depends only on the seed, not on the machine's cores.
     pub enough: Option<usize>,
     /// A design counts towards [`Search::enough`] only if it misses no
     /// target by more than this (in the targets' units): "designs under a
@@ -53,7 +54,7 @@ impl Default for Search {
     fn default() -> Search {
         Search {
             starts: 64,
-            stream: 1,
+            seed: 1,
             stopping: Stopping::default(),
             options: SweepOptions::default(),
             enough: None,
@@ -223,7 +224,7 @@ where
             (synthesis.starts..search.starts.min(synthesis.starts + round)).collect();
         // Solved and certified in parallel; kept in the starts' order.
         let outcomes = batch::map(&starts, |&start| {
-            let mut candidate = solve(problem, search, start)?;
+            let mut candidate = solve(problem, search, requirements.steps_per_radian, start)?;
             let verdict = verdict(problem, &candidate, requirements, &search.options);
             candidate.certificate = verdict.as_ref().ok().copied();
             Some((candidate, verdict.map(|_| ())))
@@ -331,6 +332,7 @@ where
 fn first_poses<L, const M: usize, const K: usize>(
     problem: &Problem<L, M, K>,
     x: &mut DVector<f64>,
+    steps_per_radian: f64,
     options: &SweepOptions,
 ) -> Option<Poses<M>>
 where
@@ -347,7 +349,9 @@ where
         )
         .ok()
         .map(|s| s.u);
-    let mut u = first.and_then(|first| follow(&model, first, &drivers, options));
+    let mut u = first.and_then(|first| {
+        continuation::through(&model, first, &drivers, steps_per_radian, options)
+    });
     if u.is_none() && problem.timing == Timing::Free && problem.range.is_none() {
         // The arc the driver reaches from the first target's driver (or,
         // if it does not assemble there, from the first of eight around
@@ -358,16 +362,10 @@ where
             at.ok().map(|s| (v, s.u))
         })?;
         let reach = |to: f64| {
-            let drive = Drive::Line {
-                from: SVector::from([v0]),
-                to: SVector::from([to]),
-                steps: ((to - v0).abs() * 30.0).ceil() as usize,
-            };
-            let mut last = v0;
-            let summary = model
-                .sweep_each(&u0, &drive, options, |pose| last = pose.v[0])
-                .ok()?;
-            Some((last, summary.complete))
+            let followed =
+                continuation::follow(&model, &u0, (v0, to), steps_per_radian, options, |_| {})
+                    .ok()?;
+            Some((followed.v, followed.summary.complete))
         };
         let (high, whole) = reach(v0 + TAU)?;
         let (low, high) = if whole {
@@ -379,7 +377,7 @@ where
             *d = low + (high - low) * (i as f64 + 0.5) / n as f64;
         }
         let arc: Vec<f64> = std::iter::once(v0).chain(drivers.iter().copied()).collect();
-        u = Some(follow(&model, u0, &arc, options)?.split_off(1));
+        u = Some(continuation::through(&model, u0, &arc, steps_per_radian, options)?.split_off(1));
         for (i, d) in drivers.iter().enumerate() {
             x[problem.free.len() + i] = *d;
         }
@@ -393,52 +391,23 @@ where
     Some(Poses { u, branch })
 }
 
-/// The poses at `drivers` followed by continuation from `first` at the
-/// first of them; `None` if a sweep stops.
-fn follow<L, const M: usize, const K: usize>(
-    model: &L,
-    first: SVector<f64, M>,
-    drivers: &[f64],
-    options: &SweepOptions,
-) -> Option<Vec<SVector<f64, M>>>
-where
-    L: Sensitivities<M, 1, K>,
-{
-    let mut u = vec![first];
-    for pair in drivers.windows(2) {
-        let drive = Drive::Line {
-            from: SVector::from([pair[0]]),
-            to: SVector::from([pair[1]]),
-            steps: ((pair[1] - pair[0]).abs() * 30.0).ceil().max(2.0) as usize,
-        };
-        let mut last = None;
-        let summary = model
-            .sweep_each(u.last()?, &drive, options, |pose| last = Some(pose.u))
-            .ok()?;
-        if !summary.complete {
-            return None;
-        }
-        u.push(last?);
-    }
-    Some(u)
-}
-
 /// One start solved: its first draw that can be assembled, followed
 /// through the targets' drivers and evaluated there, solved; `None` if none of
 /// [`Search::DRAWS`] can.
 fn solve<L, const M: usize, const K: usize>(
     problem: &Problem<L, M, K>,
     search: &Search,
+    steps_per_radian: f64,
     start: usize,
 ) -> Option<Candidate<L, M>>
 where
     L: Sensitivities<M, 1, K> + Clone,
 {
     let options: &Options = &search.options.options;
-    let mut stream = SplitMix64::of_sample(search.stream, start as u64);
+    let mut stream = SplitMix64::of_sample(search.seed, start as u64);
     let (x0, first) = (0..Search::DRAWS).find_map(|_| {
         let mut x0 = start_point(problem, &mut stream);
-        let poses = first_poses(problem, &mut x0, &search.options)?;
+        let poses = first_poses(problem, &mut x0, steps_per_radian, &search.options)?;
         let first = evaluate(problem, &x0, &poses, options)?;
         Some((x0, first))
     })?;
@@ -532,7 +501,8 @@ where
 }
 
 /// Two candidates are the same design if their free parameters agree to
-/// 1e-6 of their bounds' widths and their drivers to 1e-6 (modulo a turn).
+/// 1e-6 of their bounds' widths and their drivers to 1e-6 (an angle's up
+/// to whole turns).
 fn same_design<L, const M: usize, const K: usize>(
     problem: &Problem<L, M, K>,
     a: &Candidate<L, M>,
@@ -546,9 +516,10 @@ where
         .free
         .iter()
         .all(|f| (pa[f.index] - pb[f.index]).abs() <= 1e-6 * (f.upper - f.lower));
-    let drivers = a.drivers.iter().zip(&b.drivers).all(|(x, y)| {
-        let d = x - y;
-        (d - TAU * (d / TAU).round()).abs() <= 1e-6
-    });
+    let drivers = a
+        .drivers
+        .iter()
+        .zip(&b.drivers)
+        .all(|(x, y)| continuation::same_driver::<L, M>(*x, *y, 1e-6));
     params && drivers
 }

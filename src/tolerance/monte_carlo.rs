@@ -7,12 +7,12 @@ use crate::batch;
 use linkage_runtime::{Drive, Error, Event, Motion, Sensitivities, SweepOptions};
 use nalgebra::SVector;
 
-/// A Monte Carlo run: how many samples, and the random stream they are drawn
-/// from (a number: the same number, the same samples).
+/// A Monte Carlo run: how many samples, and the seed of the random numbers
+/// they are drawn from (the same seed, the same samples).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct MonteCarlo {
     pub samples: usize,
-    pub stream: u64,
+    pub seed: u64,
 }
 
 impl MonteCarlo {
@@ -28,7 +28,7 @@ impl MonteCarlo {
         L: Sensitivities<M, F, K> + Clone,
     {
         let mut sample = model.clone();
-        sample.set_params(&(model.params() + tolerances.deviation(self.stream, index)));
+        sample.set_params(&(model.params() + tolerances.deviation(self.seed, index)));
         sample
     }
 }
@@ -59,6 +59,7 @@ where
 
 /// Why a sample was left out of a cycle's statistics.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum Failure<const M: usize, const F: usize> {
     /// It cannot be assembled, or its sweep failed.
     Kinematics(Error),

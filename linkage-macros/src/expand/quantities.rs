@@ -298,7 +298,7 @@ pub const QUANTITIES: &[Quantity] = &[
         |d| &d.psi_u_udot_u,
         |c| {
             format!(
-                "([Ψ_u]u̇)_u, the {m}×{m} Jacobian of Ψ_u u̇ with respect to u: the first block of method B (the worksheet's `Hu_u`).",
+                "([Ψ_u]u̇)_u, the {m}×{m} Jacobian of Ψ_u u̇ with respect to u: the first block of method B.",
                 m = c.m
             )
         },
@@ -337,7 +337,7 @@ pub const QUANTITIES: &[Quantity] = &[
         |d| &d.psi_v_vdot_v,
         |c| {
             format!(
-                "([Ψ_v]v̇)_v, the {}×{} Jacobian of Ψ_v v̇ with respect to v (the worksheet's `Hv_v`).",
+                "([Ψ_v]v̇)_v, the {}×{} Jacobian of Ψ_v v̇ with respect to v.",
                 c.m, c.f
             )
         },
@@ -350,7 +350,7 @@ pub const QUANTITIES: &[Quantity] = &[
         |d| &d.psi_u_dot,
         |c| {
             format!(
-                "Ψ̇_u = Σₖ ∂Ψ_u/∂qₖ q̇ₖ, the time derivative of Ψ_u ({m}×{m}): method A (the worksheet's `d_ps_u_pu`).",
+                "Ψ̇_u = Σₖ ∂Ψ_u/∂qₖ q̇ₖ, the time derivative of Ψ_u ({m}×{m}): method A.",
                 m = c.m
             )
         },
@@ -363,7 +363,7 @@ pub const QUANTITIES: &[Quantity] = &[
         |d| &d.psi_v_dot,
         |c| {
             format!(
-                "Ψ̇_v = Σₖ ∂Ψ_v/∂qₖ q̇ₖ, the time derivative of Ψ_v ({}×{}): method A (the worksheet's `d_ps_v_pu`).",
+                "Ψ̇_v = Σₖ ∂Ψ_v/∂qₖ q̇ₖ, the time derivative of Ψ_v ({}×{}): method A.",
                 c.m, c.f
             )
         },

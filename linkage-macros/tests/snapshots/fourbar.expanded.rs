@@ -149,8 +149,7 @@ const _: () = {
             psi_u[(1, 1)] = l4_c_theta4;
             (psi, psi_u)
         }
-        /// ([Ψ_u]u̇)_u, the 2×2 Jacobian of Ψ_u u̇ with respect to u: the first block of method B
-        /// (the worksheet's `Hu_u`).
+        /// ([Ψ_u]u̇)_u, the 2×2 Jacobian of Ψ_u u̇ with respect to u: the first block of method B.
         ///
         /// ```text
         /// [ -l3·cos θ3·θ̇3   -l4·cos θ4·θ̇4 ]
@@ -207,7 +206,7 @@ const _: () = {
         ) -> SMatrix<f64, 2, 2> {
             SMatrix::<f64, 2, 2>::zeros()
         }
-        /// ([Ψ_v]v̇)_v, the 2×1 Jacobian of Ψ_v v̇ with respect to v (the worksheet's `Hv_v`).
+        /// ([Ψ_v]v̇)_v, the 2×1 Jacobian of Ψ_v v̇ with respect to v.
         ///
         /// ```text
         /// [ -l2·cos θ2·θ̇2 ]
@@ -229,8 +228,7 @@ const _: () = {
             psi_v_vdot_v[1] = -l2 * s_theta2 * theta2_dot;
             psi_v_vdot_v
         }
-        /// Ψ̇_u = Σₖ ∂Ψ_u/∂qₖ q̇ₖ, the time derivative of Ψ_u (2×2): method A (the worksheet's
-        /// `d_ps_u_pu`).
+        /// Ψ̇_u = Σₖ ∂Ψ_u/∂qₖ q̇ₖ, the time derivative of Ψ_u (2×2): method A.
         ///
         /// ```text
         /// [ -l3·cos θ3·θ̇3   -l4·cos θ4·θ̇4 ]
@@ -256,8 +254,7 @@ const _: () = {
             psi_u_dot[(1, 1)] = -l4 * s_theta4 * theta4_dot;
             psi_u_dot
         }
-        /// Ψ̇_v = Σₖ ∂Ψ_v/∂qₖ q̇ₖ, the time derivative of Ψ_v (2×1): method A (the worksheet's
-        /// `d_ps_v_pu`).
+        /// Ψ̇_v = Σₖ ∂Ψ_v/∂qₖ q̇ₖ, the time derivative of Ψ_v (2×1): method A.
         ///
         /// ```text
         /// [ -l2·cos θ2·θ̇2 ]

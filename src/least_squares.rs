@@ -23,8 +23,32 @@
 //! reduces the cost (a minimum at rounding level, or a fold of the
 //! assembly the start cannot get past).
 
-use super::SynthesisError;
 use nalgebra::{DMatrix, DVector};
+
+/// A least-squares problem that cannot be started.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum LeastSquaresError {
+    /// The bounds of unknown `unknown` are empty or not finite, or the
+    /// bounds and the start differ in length (NaN then stands for the
+    /// missing bound).
+    EmptyBounds {
+        unknown: usize,
+        lower: f64,
+        upper: f64,
+    },
+    /// The residuals cannot be evaluated at the start (or are not finite,
+    /// or of the wrong shape there).
+    NotEvaluable,
+}
+
+crate::error::error_impls! {
+    LeastSquaresError {
+        Self::EmptyBounds { unknown, lower, upper } => ("the bounds [{lower}, {upper}] of unknown {unknown} are empty, not finite, or missing"),
+        Self::NotEvaluable => ("the residuals cannot be evaluated at the start (or are not finite there)"),
+    }
+    wraps {}
+}
 
 /// Failed trials in a row after which the solver stops. Each failure
 /// raises λ (by a factor that doubles each time), so by then the steps
@@ -32,6 +56,13 @@ use nalgebra::{DMatrix, DVector};
 /// sits at a minimum to rounding (above [`Stopping::cost`]), or against a
 /// fold of the assembly its steps cannot cross.
 pub(crate) const STALLED: usize = 20;
+
+/// A step below this relative to x is at rounding level if the one before
+/// it was too and it did not halve it: the solver then stops where it is
+/// (Gauss–Newton's steps near a solution shrink quadratically; steps that
+/// stop shrinking there are the residuals' rounding, amplified along the
+/// least determined direction).
+const ROUNDING_STEP: f64 = 1e-10;
 
 /// The residuals and their Jacobian at a point, and whatever the
 /// evaluation carries to the next (the poses, to start the next solves
@@ -49,10 +80,12 @@ pub struct Stopping {
     /// Stop when ½‖r‖² falls to this (absolute: 0, the default, stops
     /// only at an exact zero).
     pub cost: f64,
-    /// Stop when, for every unknown, the projected gradient's entry is at
-    /// most this times ‖Jᵢ‖·‖r‖ (Jᵢ its column of the Jacobian): the
-    /// residuals are orthogonal to every direction the unknowns can move
-    /// them in, to this cosine — a least-squares minimum.
+    /// Stop when no unknown free to move (not held at a bound by the
+    /// gradient) can change the cost c = ½‖r‖² by more than this relative
+    /// to c per relative change of itself: |∂c/∂xᵢ|·|xᵢ| ≤ `gradient`·c
+    /// (|xᵢ| at least 1e-3 of the largest unknown's) — a minimum, in any
+    /// units. (Where the residuals can vanish the ratio grows as they
+    /// shrink, so the solver polishes on to rounding.)
     pub gradient: f64,
     /// Stop when a step changes no unknown by more than this relative to
     /// its size (at least 1e-3 of the largest unknown's, for one near
@@ -69,7 +102,7 @@ impl Default for Stopping {
         Stopping {
             cost: 0.0,
             gradient: 1e-13,
-            step: 1e-14,
+            step: 1e-15,
             evaluations: 400,
         }
     }
@@ -87,22 +120,21 @@ pub struct LeastSquares {
 }
 
 /// Minimises ½‖r(x)‖² for `lower` ≤ x ≤ `upper` from `x0` (projected onto
-/// the bounds) by the bounded Levenberg–Marquardt method the synthesis
-/// uses (see the module's documentation): for objectives of one's own —
+/// the bounds) by the bounded Levenberg–Marquardt method
+/// [`synthesis`](crate::synthesis) uses (see the module's documentation): for objectives of one's own —
 /// a design's cost with its exact gradient, say (a scalar cost c ≥ 0 as
 /// the one residual √c, its Jacobian ∇c/(2√c)). `residuals` gives r(x)
 /// and ∂r/∂x, or `None` where x cannot be evaluated (a trial there only
 /// shortens the step). Typed errors: bounds of the wrong length, empty or
-/// not finite ([`SynthesisError::EmptyBounds`], the unknown named by its
-/// index), and a start that cannot be evaluated
-/// ([`SynthesisError::NoDesign`]).
+/// not finite ([`LeastSquaresError::EmptyBounds`]), and a start that
+/// cannot be evaluated ([`LeastSquaresError::NotEvaluable`]).
 pub fn least_squares(
     x0: DVector<f64>,
     lower: &DVector<f64>,
     upper: &DVector<f64>,
     stopping: &Stopping,
     mut residuals: impl FnMut(&DVector<f64>) -> Option<(DVector<f64>, DMatrix<f64>)>,
-) -> Result<LeastSquares, SynthesisError> {
+) -> Result<LeastSquares, LeastSquaresError> {
     let n = x0.len();
     for i in 0..n.max(lower.len()).max(upper.len()) {
         let (lo, hi) = (
@@ -110,8 +142,8 @@ pub fn least_squares(
             upper.get(i).copied().unwrap_or(f64::NAN),
         );
         if !(lo <= hi && lo.is_finite() && hi.is_finite()) || i >= n {
-            return Err(SynthesisError::EmptyBounds {
-                parameter: format!("unknown {i}"),
+            return Err(LeastSquaresError::EmptyBounds {
+                unknown: i,
                 lower: lo,
                 upper: hi,
             });
@@ -131,11 +163,7 @@ pub fn least_squares(
         })
     };
     let Some(first) = evaluate(&x0, &()) else {
-        return Err(SynthesisError::NoDesign {
-            refused: 0,
-            failed_starts: 1,
-            closest: None,
-        });
+        return Err(LeastSquaresError::NotEvaluable);
     };
     let found = minimize(first, x0, lower, upper, stopping, evaluate);
     Ok(LeastSquares {
@@ -172,6 +200,8 @@ pub(crate) fn minimize<S>(
     let mut evaluations = 1;
     let mut iterations = 0;
     let mut failures = 0;
+    // The last accepted step's size relative to x (see `ROUNDING_STEP`).
+    let mut last_step = f64::INFINITY;
     // JᵀJ and g of the current point, kept while trials are rejected.
     let mut normal: Option<(DMatrix<f64>, DVector<f64>)> = None;
     while evaluations < stopping.evaluations && cost > stopping.cost && failures < STALLED {
@@ -184,15 +214,16 @@ pub(crate) fn minimize<S>(
             scale[i] = scale[i].max(jtj[(i, i)]).max(f64::MIN_POSITIVE);
         }
         // The projected gradient (zero where a bound holds the unknown
-        // against the descent), against the largest it could be for
-        // residuals of this size. (Not x − clamp(x − g): that subtracts
-        // the gradient from x, and in units where x is large beside g it
-        // rounds to zero far from the minimum.)
+        // against the descent) against the cost. (Not x − clamp(x − g):
+        // that subtracts the gradient from x, and in units where x is
+        // large beside g it rounds to zero far from the minimum.)
         let held = |i: usize| (x[i] <= lower[i] && g[i] > 0.0) || (x[i] >= upper[i] && g[i] < 0.0);
-        let r = at.residuals.norm();
-        let orthogonal =
-            (0..n).all(|i| held(i) || g[i].abs() <= stopping.gradient * jtj[(i, i)].sqrt() * r);
-        if orthogonal {
+        let size = x.amax();
+        let stationary = (0..n).all(|i| {
+            let scale = x[i].abs().max(1e-3 * size);
+            held(i) || g[i] == 0.0 || scale > 0.0 && g[i].abs() * scale <= stopping.gradient * cost
+        });
+        if stationary {
             break;
         }
         let mut free: Vec<usize> = (0..n).filter(|&i| !held(i)).collect();
@@ -220,10 +251,12 @@ pub(crate) fn minimize<S>(
         let s = within_bounds(&x, &step, lower, upper, &promise);
         let trial = &x + &s;
         let predicted = promise(&s);
-        let size = x.amax();
-        let small = |s: &DVector<f64>| {
-            (0..n).all(|i| s[i].abs() <= stopping.step * x[i].abs().max(1e-3 * size))
+        let relative = |s: &DVector<f64>| {
+            (0..n)
+                .map(|i| s[i].abs() / x[i].abs().max(1e-3 * size))
+                .fold(0.0, f64::max)
         };
+        let small = |s: &DVector<f64>| relative(s) <= stopping.step;
         // A step too small to change x, or one that promises no reduction:
         // converged, once λ is as small as it goes (a step is small because λ
         // is large only until λ drops). The reduction itself is computed
@@ -253,6 +286,15 @@ pub(crate) fn minimize<S>(
         match accepted {
             Some((next, trial_cost, rho)) => {
                 failures = 0;
+                // Near a solution Gauss–Newton's steps shrink at least
+                // quadratically; a step at rounding level that does not
+                // halve the last one is noise (in an ill-conditioned
+                // direction, a drift): the point before it was as good.
+                let size_of_step = relative(&s);
+                if size_of_step <= ROUNDING_STEP && size_of_step > 0.5 * last_step {
+                    break;
+                }
+                last_step = size_of_step;
                 x = trial;
                 at = next;
                 normal = None;
@@ -373,7 +415,7 @@ mod tests {
                 residuals,
             );
             assert!(
-                matches!(e, Err(SynthesisError::EmptyBounds { .. })),
+                matches!(e, Err(LeastSquaresError::EmptyBounds { .. })),
                 "{e:?}"
             );
         }
@@ -385,7 +427,7 @@ mod tests {
             &Stopping::default(),
             never,
         );
-        assert!(matches!(e, Err(SynthesisError::NoDesign { .. })), "{e:?}");
+        assert_eq!(e, Err(LeastSquaresError::NotEvaluable));
     }
 
     #[test]
