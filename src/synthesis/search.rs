@@ -486,7 +486,9 @@ where
 {
     if problem.exact {
         let (target, error) = candidate.largest_error();
-        if !(error <= PRECISION * problem.target_scale()) {
+        // (A NaN miss is no meeting either.)
+        let met = error <= PRECISION * problem.target_scale();
+        if !met {
             return Err(Defect::Misses { target, error });
         }
     }
