@@ -108,6 +108,7 @@ pub mod ground;
 pub mod machine;
 pub mod mechanisms;
 mod numerics;
+pub mod quantity;
 mod random;
 pub mod synthesis;
 pub mod tolerance;
