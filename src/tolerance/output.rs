@@ -6,7 +6,7 @@ use super::{ToleranceError, with_gradient};
 use crate::quantity::{self, Axis, Names, Of, Pose, Quantity};
 use crate::watch::Watch;
 use linkage_runtime::{Motion, Sensitivities, Sensitivity};
-use nalgebra::{SVector, Vector2};
+use nalgebra::Vector2;
 use num_dual::DualSVec64;
 
 /// A pose in motion whose coordinates and points carry their gradients by
@@ -54,54 +54,14 @@ impl<const M: usize, const F: usize, const K: usize> Pose<DualSVec64<K>, M, F> {
         model: &L,
         motion: &Motion<M, F>,
     ) -> TolerancePose<M, F, K> {
-        let zero = SVector::from_element(DualSVec64::from_re(0.0));
-        let mut pose = TolerancePose {
-            v: zero,
-            vdot: zero,
-            vddot: zero,
-            u: SVector::from_element(DualSVec64::from_re(0.0)),
-            udot: SVector::from_element(DualSVec64::from_re(0.0)),
-            uddot: SVector::from_element(DualSVec64::from_re(0.0)),
-            points: Vec::new(),
-            point_velocities: Vec::new(),
-            point_accelerations: Vec::new(),
-            names: L::POINT_NAMES,
-        };
-        pose.set_plain(model, motion);
-        pose
+        Pose::lifted(model, motion, DualSVec64::from_re)
     }
 
     /// Makes this the pose `motion` of `model`, its numbers carrying no
     /// gradient, in the memory it has (a Monte Carlo sample's poses, one
     /// after the other).
     pub fn set_plain<L: Sensitivities<M, F, K>>(&mut self, model: &L, motion: &Motion<M, F>) {
-        let Motion {
-            u,
-            v,
-            udot,
-            vdot,
-            uddot,
-            vddot,
-        } = motion;
-        let lift = |into: &mut Vec<Vector2<DualSVec64<K>>>, points: L::Points| {
-            into.clear();
-            into.extend(points.as_ref().iter().map(|p| p.map(DualSVec64::from_re)));
-        };
-        self.v = v.map(DualSVec64::from_re);
-        self.vdot = vdot.map(DualSVec64::from_re);
-        self.vddot = vddot.map(DualSVec64::from_re);
-        self.u = u.map(DualSVec64::from_re);
-        self.udot = udot.map(DualSVec64::from_re);
-        self.uddot = uddot.map(DualSVec64::from_re);
-        lift(&mut self.points, model.point_positions(u, v));
-        lift(
-            &mut self.point_velocities,
-            model.point_velocities(u, v, udot, vdot),
-        );
-        lift(
-            &mut self.point_accelerations,
-            model.point_accelerations(u, v, udot, vdot, uddot, vddot),
-        );
+        self.set(model, motion, DualSVec64::from_re);
     }
 }
 
