@@ -98,9 +98,9 @@ fn describe(name: &str, of: Of) -> String {
 /// A quantity with its names resolved to indices into a [`Pose`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Resolved<G> {
-    /// The coordinate u[i].
+    /// The coordinate `u[i]`.
     U(usize, Of),
-    /// The driver v[i].
+    /// The driver `v[i]`.
     V(usize, Of),
     /// The point `points[i]`.
     Point(usize, Axis, Of),
