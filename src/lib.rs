@@ -67,6 +67,9 @@
 //! - [`watch`]: the dead centres, strokes and extremes along a sweep,
 //!   located in the driver to rounding.
 //! - [`batch`]: many designs or drives at once, in parallel.
+//! - [`quantity`]: a model's names and the quantities of a pose (a
+//!   coordinate, a point's x or y, their rates, a function of the pose)
+//!   that every analysis names and reads.
 //! - `draw` (feature, default): pictures of poses, animations, motion
 //!   diagrams; [`machine`] and [`cam`]: reduced dynamics, flywheel, joint
 //!   reactions, cam design; [`mechanisms`]: the worksheet's four-bar and a
@@ -109,6 +112,7 @@ pub mod least_squares;
 pub mod machine;
 pub mod mechanisms;
 mod numerics;
+pub mod quantity;
 mod random;
 pub mod synthesis;
 pub mod tolerance;

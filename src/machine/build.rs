@@ -5,7 +5,7 @@ use super::body::MassBody;
 use super::cycle::GridPose;
 use super::load::{LoadKind, ResolvedLoad, unit_direction};
 use super::{Body, Load, Machine, MachineError};
-use crate::error::{NameKind, UnknownName};
+use crate::quantity::Names;
 use linkage_runtime::{Drive, Linkage, Options, SweepOptions};
 use nalgebra::{SVector, Vector2};
 use std::f64::consts::TAU;
@@ -32,45 +32,6 @@ impl<L: Linkage<M, 1>, const M: usize> Machine<L, M> {
             grid: 720,
             options: Options::default(),
         }
-    }
-}
-
-/// The model's point and coordinate names, to resolve what a body or a
-/// load names.
-pub(crate) struct Names {
-    pub(crate) points: &'static [&'static str],
-    /// u, then v.
-    pub(crate) coordinates: Vec<&'static str>,
-}
-
-impl Names {
-    pub(crate) fn of<L: Linkage<M, F>, const M: usize, const F: usize>() -> Names {
-        Names {
-            points: L::POINT_NAMES,
-            coordinates: L::U_NAMES.iter().chain(&L::V_NAMES).copied().collect(),
-        }
-    }
-
-    /// The index of the point `name`, which `owner` names.
-    pub(crate) fn point(&self, owner: &str, name: &str) -> Result<usize, UnknownName> {
-        self.points.iter().position(|n| *n == name).ok_or_else(|| {
-            UnknownName::new(NameKind::Point, owner, name, self.points.iter().copied())
-        })
-    }
-
-    /// The index of the coordinate `name`, which `owner` names.
-    pub(crate) fn coordinate(&self, owner: &str, name: &str) -> Result<usize, UnknownName> {
-        self.coordinates
-            .iter()
-            .position(|n| *n == name)
-            .ok_or_else(|| {
-                UnknownName::new(
-                    NameKind::Coordinate,
-                    owner,
-                    name,
-                    self.coordinates.iter().copied(),
-                )
-            })
     }
 }
 
@@ -129,7 +90,7 @@ impl<L: Linkage<M, 1>, const M: usize> MachineBuilder<L, M> {
             kinks: Vec::new(),
             work: Vec::new(),
             moment_scale: 0.0,
-            coordinates: names.coordinates,
+            coordinates: names.coordinates().to_vec(),
         };
         // Displacements are measured from the positions at φ = 0.
         let start = machine.pose(0.0)?;

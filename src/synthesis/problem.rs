@@ -5,7 +5,7 @@
 
 use super::SynthesisError;
 use super::terms::Term;
-use crate::error::{NameKind, UnknownName};
+use crate::quantity::{self, Names};
 use linkage_runtime::{Linkage, Sensitivities};
 use nalgebra::{SVector, Vector2};
 
@@ -271,14 +271,7 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
 
     /// Frees the parameter `name`, within [lower, upper].
     pub fn free(mut self, name: &str, lower: f64, upper: f64) -> Result<Self, SynthesisError> {
-        let Some(index) = L::param_index(name) else {
-            return Err(SynthesisError::UnknownName(UnknownName::new(
-                NameKind::Parameter,
-                "the synthesis problem",
-                name,
-                L::PARAM_NAMES.iter().copied(),
-            )));
-        };
+        let index = quantity::parameter(&L::PARAM_NAMES, OWNER, name)?;
         if !(lower.is_finite() && upper.is_finite() && lower < upper) {
             return Err(SynthesisError::EmptyBounds {
                 parameter: name.to_owned(),
@@ -448,28 +441,18 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
     }
 }
 
+/// Who names the points, coordinates and parameters of a synthesis.
+const OWNER: &str = "the synthesis problem";
+
 fn point_index<L: Linkage<M, 1>, const M: usize, const K: usize>(
     name: &str,
 ) -> Result<usize, SynthesisError> {
-    L::point_index(name).ok_or_else(|| {
-        SynthesisError::UnknownName(UnknownName::new(
-            NameKind::Point,
-            "the synthesis problem",
-            name,
-            L::POINT_NAMES.iter().copied(),
-        ))
-    })
+    Ok(Names::of::<L, M, 1>().point(OWNER, name)?)
 }
 
+/// The index of a solved coordinate (of u).
 fn coordinate_index<L: Linkage<M, 1>, const M: usize, const K: usize>(
     name: &str,
 ) -> Result<usize, SynthesisError> {
-    L::U_NAMES.iter().position(|n| *n == name).ok_or_else(|| {
-        SynthesisError::UnknownName(UnknownName::new(
-            NameKind::Coordinate,
-            "the synthesis problem",
-            name,
-            L::U_NAMES.iter().copied(),
-        ))
-    })
+    Ok(Names::of::<L, M, 1>().solved(OWNER, name)?)
 }

@@ -108,7 +108,7 @@ where
             let y = output.at(&pose, &pose);
             let g = gradient(&y);
             let known = sensitivity.is_ok() && y.re.is_finite() && g.iter().all(|x| x.is_finite());
-            band.v.push(pose.v);
+            band.v.push(pose.v.map(|x| x.re));
             band.value.push(y.re);
             band.gradient.push(known.then_some(g));
             band.spread.push(known.then(|| tolerances.spread(&g)));

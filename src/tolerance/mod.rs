@@ -81,7 +81,8 @@ pub use output::{Output, TolerancePose};
 pub use range::{Range, RangeSamples, monte_carlo_range, range};
 pub use statistics::Statistics;
 
-use crate::error::{NameKind, UnknownName};
+use crate::error::UnknownName;
+use crate::quantity;
 use crate::watch::WatchError;
 use linkage_runtime::Error;
 use nalgebra::SVector;
@@ -155,15 +156,7 @@ impl<const K: usize> Tolerances<K> {
     ) -> Result<Tolerances<K>, ToleranceError> {
         let mut each = [Tolerance::EXACT; K];
         for (name, tolerance) in given {
-            let Some(i) = names.iter().position(|n| n == name) else {
-                return Err(ToleranceError::UnknownName(UnknownName::new(
-                    NameKind::Parameter,
-                    "the tolerances",
-                    name,
-                    names.iter().copied(),
-                )));
-            };
-            each[i] = *tolerance;
+            each[quantity::parameter(names, "the tolerances", name)?] = *tolerance;
         }
         Tolerances::new(each)
     }

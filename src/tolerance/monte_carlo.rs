@@ -168,7 +168,10 @@ where
     }
     Ok(CycleSamples {
         names: outputs.iter().map(|o| o.name().to_owned()).collect(),
-        v: nominal.iter().map(|p| p.as_ref().map(|p| p.v)).collect(),
+        v: nominal
+            .iter()
+            .map(|p| p.as_ref().map(|p| p.v.map(|x| x.re)))
+            .collect(),
         statistics,
         samples: run.samples,
         failures,

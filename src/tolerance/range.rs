@@ -22,6 +22,7 @@ use super::output::Resolved;
 use super::{
     Design, Output, Spread, Statistics, ToleranceError, Tolerances, gradient, with_gradient,
 };
+use crate::quantity::Resolved as Named;
 use crate::watch::{Axis, Found, FoundKind, Of};
 use linkage_runtime::{Drive, Sensitivities, SweepOptions};
 use nalgebra::SVector;
@@ -123,10 +124,13 @@ where
     let u_p = position_sensitivity(model, u, v)?;
     let u =
         SVector::<DualSVec64<K>, M>::from_fn(|i, _| with_gradient(u[i], u_p.row(i).transpose()));
+    let Resolved::Quantity(output) = output else {
+        return None;
+    };
     match *output {
-        Resolved::U(i, Of::Position) => Some(u[i]),
-        Resolved::V(i, Of::Position) => Some(DualSVec64::from_re(v[i])),
-        Resolved::Point(i, axis, Of::Position) => {
+        Named::U(i, Of::Position) => Some(u[i]),
+        Named::V(i, Of::Position) => Some(DualSVec64::from_re(v[i])),
+        Named::Point(i, axis, Of::Position) => {
             let params = model.params();
             let p = SVector::from_fn(|j, _| with_gradient(params[j], unit(j)));
             let v = v.map(DualSVec64::from_re);

@@ -43,28 +43,15 @@
 
 mod path;
 
+pub use crate::quantity::{Axis, Of};
 pub use path::PathPose;
 
-use crate::error::{NameKind, UnknownName};
+use crate::error::UnknownName;
 use crate::numerics::root;
+use crate::quantity::{Names, Quantity, Resolved};
 use linkage_runtime::{Error, Linkage, Options, Stage, Sweep, invert};
 use nalgebra::SVector;
 use num_dual::Dual64;
-
-/// Which derivative in time of a coordinate or a point is watched.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Of {
-    Position,
-    Velocity,
-    Acceleration,
-}
-
-/// A component of a point's position, velocity or acceleration.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Axis {
-    X,
-    Y,
-}
 
 /// What to look for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -77,40 +64,34 @@ pub enum Find {
     Both,
 }
 
+/// A function of a path pose, watched.
+type PathFunction<'a, const M: usize, const F: usize> = Box<dyn Fn(&PathPose<M, F>) -> Dual64 + 'a>;
+
+/// A watched quantity with its names resolved to indices.
+type Watched<'w, const M: usize, const F: usize> = Resolved<&'w PathFunction<'w, M, F>>;
+
 /// A quantity to watch along a sweep and what to find of it.
 pub struct Watch<'a, const M: usize, const F: usize> {
-    name: String,
     find: Find,
-    quantity: Quantity<'a, M, F>,
-}
-
-enum Quantity<'a, const M: usize, const F: usize> {
-    Coordinate(String, Of),
-    Point(String, Axis, Of),
-    Function(Box<dyn Fn(&PathPose<M, F>) -> Dual64 + 'a>),
+    quantity: Quantity<PathFunction<'a, M, F>>,
 }
 
 impl<'a, const M: usize, const F: usize> Watch<'a, M, F> {
+    fn of(quantity: Quantity<PathFunction<'a, M, F>>) -> Self {
+        Watch {
+            find: Find::Both,
+            quantity,
+        }
+    }
+
     /// A coordinate of u or v, by its name in the attribute.
     pub fn coordinate(name: &str, of: Of) -> Self {
-        Watch {
-            name: describe(name, of),
-            find: Find::Both,
-            quantity: Quantity::Coordinate(name.into(), of),
-        }
+        Watch::of(Quantity::coordinate(name, of))
     }
 
     /// A component of a named point.
     pub fn point(name: &str, axis: Axis, of: Of) -> Self {
-        let component = match axis {
-            Axis::X => "x",
-            Axis::Y => "y",
-        };
-        Watch {
-            name: describe(&format!("{name}.{component}"), of),
-            find: Find::Both,
-            quantity: Quantity::Point(name.into(), axis, of),
-        }
+        Watch::of(Quantity::point(name, axis, of))
     }
 
     /// A function of the pose, written on dual numbers so that it carries
@@ -118,11 +99,12 @@ impl<'a, const M: usize, const F: usize> Watch<'a, M, F> {
     /// `atan2`, `sqrt`, …): the transmission angle θ4 − θ3 of a four-bar is
     /// `|p| p.u[1] - p.u[0]`.
     pub fn function(name: &str, f: impl Fn(&PathPose<M, F>) -> Dual64 + 'a) -> Self {
-        Watch {
-            name: name.into(),
-            find: Find::Both,
-            quantity: Quantity::Function(Box::new(f)),
-        }
+        Watch::of(Quantity::function(name, Box::new(f)))
+    }
+
+    /// The same coordinate or point as a watch; `None` for a function.
+    pub(crate) fn named<G>(quantity: &Quantity<G>) -> Option<Self> {
+        quantity.named().map(Watch::of)
     }
 
     /// Only the zeros.
@@ -144,70 +126,7 @@ impl<'a, const M: usize, const F: usize> Watch<'a, M, F> {
     /// What it watches, for reports: "s", "velocity of s", "P.x", or the
     /// function's name.
     pub fn name(&self) -> &str {
-        &self.name
-    }
-
-    /// The quantity on the model `L`, as a function of a path pose; an
-    /// unknown name is an error.
-    fn resolve<L: Linkage<M, F>>(&self) -> Result<Resolved<'_, M, F>, UnknownName> {
-        let unknown = |kind, name: &str, known: Vec<&'static str>| {
-            UnknownName::new(kind, &self.name, name, known)
-        };
-        Ok(match &self.quantity {
-            Quantity::Coordinate(name, of) => {
-                let of = *of;
-                if let Some(i) = L::U_NAMES.iter().position(|n| n == name) {
-                    Resolved::U(i, of)
-                } else if let Some(i) = L::V_NAMES.iter().position(|n| n == name) {
-                    Resolved::V(i, of)
-                } else {
-                    let known = L::U_NAMES.iter().chain(&L::V_NAMES).copied().collect();
-                    return Err(unknown(NameKind::Coordinate, name, known));
-                }
-            }
-            Quantity::Point(name, axis, of) => match L::point_index(name) {
-                Some(i) => Resolved::Point(i, *axis, *of),
-                None => return Err(unknown(NameKind::Point, name, L::POINT_NAMES.to_vec())),
-            },
-            Quantity::Function(f) => Resolved::Function(f.as_ref()),
-        })
-    }
-}
-
-fn describe(name: &str, of: Of) -> String {
-    match of {
-        Of::Position => name.to_owned(),
-        Of::Velocity => format!("velocity of {name}"),
-        Of::Acceleration => format!("acceleration of {name}"),
-    }
-}
-
-/// A watched quantity with its names resolved to indices.
-enum Resolved<'w, const M: usize, const F: usize> {
-    U(usize, Of),
-    V(usize, Of),
-    Point(usize, Axis, Of),
-    Function(&'w dyn Fn(&PathPose<M, F>) -> Dual64),
-}
-
-impl<const M: usize, const F: usize> Resolved<'_, M, F> {
-    fn at(&self, p: &PathPose<M, F>) -> Dual64 {
-        let pick = |x: &nalgebra::Vector2<Dual64>, axis: Axis| match axis {
-            Axis::X => x.x,
-            Axis::Y => x.y,
-        };
-        match *self {
-            Resolved::U(i, Of::Position) => p.u[i],
-            Resolved::U(i, Of::Velocity) => p.udot[i],
-            Resolved::U(i, Of::Acceleration) => p.uddot[i],
-            Resolved::V(i, Of::Position) => p.v[i],
-            Resolved::V(i, Of::Velocity) => p.vdot[i],
-            Resolved::V(_, Of::Acceleration) => Dual64::from(0.0),
-            Resolved::Point(i, axis, Of::Position) => pick(&p.points[i], axis),
-            Resolved::Point(i, axis, Of::Velocity) => pick(&p.point_velocities[i], axis),
-            Resolved::Point(i, axis, Of::Acceleration) => pick(&p.point_accelerations[i], axis),
-            Resolved::Function(f) => f(p),
-        }
+        self.quantity.name()
     }
 }
 
@@ -291,9 +210,10 @@ pub fn locate<L: Linkage<M, F>, const M: usize, const F: usize>(
     options: &Options,
 ) -> Result<Vec<Found<M, F>>, WatchError> {
     options.check()?;
+    let names = Names::of::<L, M, F>();
     let resolved = watches
         .iter()
-        .map(|w| w.resolve::<L>())
+        .map(|w| w.quantity.resolve(&names))
         .collect::<Result<Vec<_>, _>>()?;
     let mut nodes = Vec::with_capacity(sweep.poses.len());
     for p in &sweep.poses {
@@ -329,7 +249,7 @@ pub fn locate<L: Linkage<M, F>, const M: usize, const F: usize>(
                 let g = quantity.at(&at.pose);
                 if !(g.re.is_finite() && g.eps.is_finite()) {
                     return Err(WatchError::NonFinite {
-                        watch: watch.name.clone(),
+                        watch: watch.name().to_owned(),
                         v: at.v[0],
                     });
                 }
@@ -374,7 +294,7 @@ fn node<L: Linkage<M, F>, const M: usize, const F: usize>(
         }));
     }
     let pose = path::path_pose(model, u, v, direction, speed, &inverse.inverse);
-    if !pose.is_finite() {
+    if !path::is_finite(&pose) {
         return Err(WatchError::NonFinite {
             watch: "the pose's path derivatives".into(),
             v: v[0],
@@ -397,7 +317,7 @@ fn refine<L: Linkage<M, F>, const M: usize, const F: usize>(
     a: &Node<M, F>,
     to: SVector<f64, F>,
     length: f64,
-    quantity: &Resolved<'_, M, F>,
+    quantity: &Watched<'_, M, F>,
     extremum: bool,
     options: &Options,
 ) -> Result<Node<M, F>, WatchError> {

@@ -9,6 +9,7 @@
 //! u⁽ᵏ⁾ = −Ψ_u⁻¹ (that k-th derivative). Three evaluations of the generated
 //! `psi_generic` give u′, u″, u‴, exact to rounding for any mechanism.
 
+use crate::quantity::Pose;
 use linkage_runtime::Linkage;
 use nalgebra::{SMatrix, SVector, Vector2};
 use num_dual::{Dual3_64, Dual64};
@@ -19,60 +20,29 @@ use num_dual::{Dual3_64, Dual64};
 ///
 /// The velocities and accelerations are for the driver moving at the
 /// sweep's speed σ with no driver acceleration: u̇ = u′σ, ü = u″σ²
-/// (and so d/ds u̇ = u″σ, d/ds ü = u‴σ²), as in the sweep's poses.
-#[derive(Clone, Debug, PartialEq)]
-pub struct PathPose<const M: usize, const F: usize> {
-    pub v: SVector<Dual64, F>,
-    pub vdot: SVector<Dual64, F>,
-    pub u: SVector<Dual64, M>,
-    pub udot: SVector<Dual64, M>,
-    pub uddot: SVector<Dual64, M>,
-    /// The named points, in the order of [`Linkage::POINT_NAMES`].
-    pub points: Vec<Vector2<Dual64>>,
-    pub point_velocities: Vec<Vector2<Dual64>>,
-    pub point_accelerations: Vec<Vector2<Dual64>>,
-    names: &'static [&'static str],
-}
+/// (and so d/ds u̇ = u″σ, d/ds ü = u‴σ²), as in the sweep's poses; `vddot`
+/// is zero.
+pub type PathPose<const M: usize, const F: usize> = Pose<Dual64, M, F>;
 
-impl<const M: usize, const F: usize> PathPose<M, F> {
-    /// The position of the point `name`, if the model has it.
-    pub fn point(&self, name: &str) -> Option<Vector2<Dual64>> {
-        self.index(name).map(|i| self.points[i])
-    }
-
-    /// The velocity of the point `name`, if the model has it.
-    pub fn point_velocity(&self, name: &str) -> Option<Vector2<Dual64>> {
-        self.index(name).map(|i| self.point_velocities[i])
-    }
-
-    /// The acceleration of the point `name`, if the model has it.
-    pub fn point_acceleration(&self, name: &str) -> Option<Vector2<Dual64>> {
-        self.index(name).map(|i| self.point_accelerations[i])
-    }
-
-    fn index(&self, name: &str) -> Option<usize> {
-        self.names.iter().position(|n| *n == name)
-    }
-
-    /// Whether every number is finite.
-    pub(super) fn is_finite(&self) -> bool {
-        let duals = self
-            .v
-            .iter()
-            .chain(&self.vdot)
-            .chain(&self.u)
-            .chain(&self.udot)
-            .chain(&self.uddot);
-        let points = self
-            .points
-            .iter()
-            .chain(&self.point_velocities)
-            .chain(&self.point_accelerations)
-            .flat_map(|p| p.iter());
-        duals
-            .chain(points)
-            .all(|x| x.re.is_finite() && x.eps.is_finite())
-    }
+/// Whether every number of the pose is finite.
+pub(super) fn is_finite<const M: usize, const F: usize>(pose: &PathPose<M, F>) -> bool {
+    let duals = pose
+        .v
+        .iter()
+        .chain(&pose.vdot)
+        .chain(&pose.vddot)
+        .chain(&pose.u)
+        .chain(&pose.udot)
+        .chain(&pose.uddot);
+    let points = pose
+        .points
+        .iter()
+        .chain(&pose.point_velocities)
+        .chain(&pose.point_accelerations)
+        .flat_map(|p| p.iter());
+    duals
+        .chain(points)
+        .all(|x| x.re.is_finite() && x.eps.is_finite())
 }
 
 /// The pose (u, v) of `model`, a solution of Ψ = 0 with Ψ_u⁻¹ =
@@ -112,6 +82,7 @@ pub(super) fn path_pose<L: Linkage<M, F>, const M: usize, const F: usize>(
     PathPose {
         v: SVector::from_fn(|i, _| dual(v[i], direction[i])),
         vdot: SVector::from_fn(|i, _| dual(direction[i] * s, 0.0)),
+        vddot: SVector::from_element(Dual64::from(0.0)),
         u: coordinates(0, 1.0),
         udot: coordinates(1, s),
         uddot: coordinates(2, s * s),

@@ -15,7 +15,7 @@ use super::animation::animate_values;
 use super::geometry::{Capsule, cross};
 use super::layout::Layout;
 use super::style;
-use super::{Frame, Scene, SceneError, unknown};
+use super::{Frame, Scene, SceneError};
 use crate::draw::svg::{Writer, fmt};
 use nalgebra::Vector2;
 
@@ -181,7 +181,7 @@ impl Scene {
             ),
         ] {
             for name in names {
-                let k = frame.index(name).ok_or_else(|| unknown(frame, name))?;
+                let k = frame.point(name)?;
                 let vector = kind.vectors(frame)?[k];
                 let base = frame.positions[k];
                 found.push((

@@ -3,7 +3,7 @@
 
 use super::arrows::Kind;
 use super::style;
-use super::{Frame, Scene, SceneError, finite, resolve, unknown};
+use super::{Frame, Scene, SceneError, finite, resolve};
 use crate::draw::svg::{Writer, fmt, nice_below};
 use nalgebra::Vector2;
 
@@ -94,7 +94,7 @@ impl Scene {
             ] {
                 if let Some(vectors) = vectors {
                     for name in names {
-                        let k = frame.index(name).ok_or_else(|| unknown(frame, name))?;
+                        let k = frame.point(name)?;
                         let tip = frame.positions[k] + vectors[k] * scale;
                         finite(tip, "arrow's tip", name)?;
                         bounds.add(tip);
@@ -169,7 +169,7 @@ impl Scene {
         let mut extent = Bounds::default();
         for frame in frames {
             for name in names {
-                let k = frame.index(name).ok_or_else(|| unknown(frame, name))?;
+                let k = frame.point(name)?;
                 let vector = kind.vectors(frame)?[k];
                 finite(vector, kind.plural(), name)?;
                 longest = longest.max(vector.norm());

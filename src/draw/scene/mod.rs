@@ -70,6 +70,7 @@ mod symbols;
 
 use crate::error::{NameKind, UnknownName};
 use crate::ground::Ground;
+use crate::quantity;
 use linkage_runtime::{Analysis, Linkage, SweepPose};
 use nalgebra::{SVector, Vector2};
 use symbols::{ground_symbol, guide_symbol};
@@ -189,6 +190,12 @@ impl Frame {
 
     fn index(&self, name: &str) -> Option<usize> {
         self.names.iter().position(|n| n == name)
+    }
+
+    /// The index of the point `name`, which the scene names.
+    fn point(&self, name: &str) -> Result<usize, UnknownName> {
+        let names = self.names.iter().map(String::as_str);
+        quantity::find(NameKind::Point, "scene", name, names)
     }
 }
 
@@ -473,28 +480,19 @@ pub(super) fn finite(p: Vector2<f64>, what: &'static str, name: &str) -> Result<
     }
 }
 
-pub(super) fn unknown(frame: &Frame, name: &str) -> SceneError {
-    SceneError::UnknownName(UnknownName::new(
-        NameKind::Point,
-        "scene",
-        name,
-        frame.names.iter().map(String::as_str),
-    ))
-}
-
 /// A name's position: the frame's point, else the scene's ground pivot.
 pub(super) fn resolve(
     frame: &Frame,
     name: &str,
     ground: &[(String, Vector2<f64>)],
 ) -> Result<Vector2<f64>, SceneError> {
-    let at = match frame.index(name) {
-        Some(k) => frame.positions[k],
-        None => ground
+    let at = match frame.point(name) {
+        Ok(k) => frame.positions[k],
+        Err(unknown) => ground
             .iter()
             .find(|(n, _)| n == name)
             .map(|(_, p)| *p)
-            .ok_or_else(|| unknown(frame, name))?,
+            .ok_or(unknown)?,
     };
     finite(at, "position", name)?;
     Ok(at)

@@ -5,11 +5,11 @@
 use super::{
     Kinetostatics, KinetostaticsError, PointRef, ResolvedGuide, ResolvedJoint, StaticBody,
 };
-use crate::error::{NameKind, UnknownName};
+use crate::error::NameKind;
 use crate::ground::Ground;
 use crate::machine::Machine;
-use crate::machine::build::Names;
 use crate::machine::load::LoadKind;
+use crate::quantity::{self, Names};
 use linkage_runtime::Linkage;
 use nalgebra::Vector2;
 
@@ -177,41 +177,23 @@ impl<'m, L: Linkage<M, 1>, const M: usize> KinetostaticsBuilder<'m, L, M> {
             )?;
         }
         let body_index = |owner: &str, name: &str| -> Result<usize, KinetostaticsError> {
-            if name == "ground" {
-                return Ok(0);
-            }
-            self.bodies
-                .iter()
-                .position(|b| b == name)
-                .map(|k| k + 1)
-                .ok_or_else(|| {
-                    UnknownName::new(
-                        NameKind::Body,
-                        owner,
-                        name,
-                        std::iter::once("ground").chain(self.bodies.iter().map(String::as_str)),
-                    )
-                    .into()
-                })
+            Ok(quantity::body(
+                self.bodies.iter().map(String::as_str),
+                owner,
+                name,
+            )?)
         };
         let point_names = L::POINT_NAMES;
         let point_ref = |owner: &str, name: &str| -> Result<PointRef, KinetostaticsError> {
-            if let Some(k) = point_names.iter().position(|n| *n == name) {
-                return Ok(PointRef::Model(k));
-            }
-            if let Some((_, p)) = self.ground_points.iter().find(|(n, _)| n == name) {
-                return Ok(PointRef::Ground(*p));
-            }
-            Err(UnknownName::new(
-                NameKind::Point,
-                owner,
-                name,
-                point_names
-                    .iter()
-                    .copied()
-                    .chain(self.ground_points.iter().map(|(n, _)| n.as_str())),
-            )
-            .into())
+            let known = point_names
+                .iter()
+                .copied()
+                .chain(self.ground_points.iter().map(|(n, _)| n.as_str()));
+            let k = quantity::find(NameKind::Point, owner, name, known)?;
+            Ok(match k.checked_sub(point_names.len()) {
+                None => PointRef::Model(k),
+                Some(g) => PointRef::Ground(self.ground_points[g].1),
+            })
         };
         let names = Names::of::<L, M, 1>();
         let mut joints = Vec::new();
