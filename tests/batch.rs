@@ -113,9 +113,12 @@ fn a_design_that_cannot_be_assembled_fails_alone() {
 #[test]
 fn init_receives_the_job_index() {
     let batch = batch::sweeps(&jobs(), &sweep_options(), |k| vec![k], |_, _| {});
+    assert_eq!(batch.len(), jobs().len());
     for (k, result) in batch.iter().enumerate() {
-        if let Ok(swept) = result {
-            assert_eq!(swept.value, vec![k]);
+        match result {
+            Ok(swept) => assert_eq!(swept.value, vec![k]),
+            // The one design that cannot be assembled, as above.
+            Err(e) => assert!(k == 7 && matches!(e, Error::CannotAssemble { .. }), "{k}: {e:?}"),
         }
     }
 }
