@@ -113,8 +113,10 @@ pub fn minimise(course: &Data) -> Result<Optimum, Box<dyn std::error::Error>> {
         cost: 0.0,
         // ∇J_PRI is known to ≈ 1e-7 of its size (J_PRI's extremes are
         // located to the precision of f64, the work integrated to ≈ 1e-13):
-        // stop where the projected gradient of ½r² = ½J_PRI is at that.
-        gradient: 1e-6,
+        // stop where a relative change of any variable free to move changes
+        // J_PRI by at most 1e-8 of itself (for λ_S3 ≈ 0.05, ∂J_PRI/∂λ_S3
+        // within 2e-7 of J_PRI: the gradient resolved, with room).
+        gradient: 1e-8,
         step: 1e-10,
         evaluations: 100,
     };
