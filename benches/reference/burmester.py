@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Burmester's centre and circle points at 50 digits: the independent
 reference of the four- and five-position motion-generation tests
-(tests/burmester.rs).
+(tests/synthesis/burmester.rs).
 
     python3 benches/reference/burmester.py
 

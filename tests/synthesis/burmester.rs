@@ -9,9 +9,7 @@
 //! differ only by our solver's rounding, amplified by the problem's
 //! conditioning (see [`FIVE`] and [`FOUR`]).
 
-#[path = "common/coupler.rs"]
-mod coupler;
-use coupler::Coupler;
+use crate::coupler::Coupler;
 use linkage::prelude::*;
 use linkage::synthesis::{
     Candidate, Defect, Problem, Range, Requirements, Search, Synthesis, Timing, certify, synthesize,

@@ -2,8 +2,13 @@
 //! three-precision-point function generation, path generation through
 //! points of a known coupler curve, and the typed errors of bad problems.
 
-#[path = "common/coupler.rs"]
+/// Burmester's four- and five-position motion generation against a
+/// 50-digit reference.
+mod burmester;
+#[path = "../common/coupler.rs"]
 mod coupler;
+/// The designer's terms, curves and functions over a range.
+mod objectives;
 use coupler::Coupler;
 use linkage::closed_form::{self, Grashof};
 use linkage::mechanisms::{CouplerFourBar, FourBar};
