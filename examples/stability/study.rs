@@ -2,7 +2,7 @@
 //! four-bar, against the 50-digit reference of `tests/data/`.
 //!
 //! Shared by `cargo run --release --example stability` (the charts),
-//! `tests/stability_near_singular.rs` (the assertions) and
+//! `tests/sweep/stability_near_singular.rs` (the assertions) and
 //! `tests/diagrams.rs` (the charts' legends).
 #![allow(dead_code)]
 

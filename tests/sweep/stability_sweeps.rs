@@ -3,9 +3,7 @@
 //! silent branch flip (every pose checked against the closed form on the
 //! branch it must be on), every singular pose located and classified.
 
-mod common;
-
-use common::{FourBar, SIX_BAR, SLIDER_CRANK, SLIDER_DRIVEN, SixBar, SliderDriven};
+use crate::common::{FourBar, SIX_BAR, SLIDER_CRANK, SLIDER_DRIVEN, SixBar, SliderDriven};
 use linkage::closed_form::{self, Grashof, circle_intersection};
 use linkage::prelude::*;
 use std::f64::consts::{PI, TAU};
@@ -372,7 +370,7 @@ fn six_bar_full_cycle_never_flips() {
 /// space (both turning, at different rates), against its closed form.
 #[test]
 fn five_bar_along_a_path_of_both_drivers() {
-    let bar = common::FIVE_BAR;
+    let bar = crate::common::FIVE_BAR;
     let closed = |t2: f64, t5: f64| {
         let b = Vector2::new(bar.l2 * t2.cos(), bar.l2 * t2.sin());
         let d = Vector2::new(bar.l1 + bar.l5 * t5.cos(), bar.l5 * t5.sin());
@@ -413,7 +411,7 @@ fn five_bar_along_a_path_of_both_drivers() {
 /// driver at the sweep's speed: ω2 = 400 rpm over the worksheet's cycle.
 #[test]
 fn sweep_kinematics_match_analyze() {
-    let omega2 = common::OMEGA2;
+    let omega2 = crate::common::OMEGA2;
     let options = SweepOptions {
         speed: omega2,
         ..SweepOptions::default()

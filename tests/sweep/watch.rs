@@ -4,9 +4,7 @@
 //! extrema of the Maple worksheet's four-bar over a revolution
 //! (`tests/data/fourbar_extrema.csv`).
 
-mod common;
-
-use common::{FIVE_BAR, FourBar, OMEGA2, SLIDER_CRANK, rel};
+use crate::common::{FIVE_BAR, FourBar, OMEGA2, SLIDER_CRANK, rel};
 use linkage::prelude::*;
 use linkage::watch::{Axis, Found, FoundKind, Of, Watch, WatchError, locate};
 use std::f64::consts::{PI, TAU};
@@ -122,7 +120,7 @@ fn the_worksheets_extrema_over_a_revolution_match_the_50_digit_references() {
     ];
     let sweep = sweep_of(&bar, u0, 0.0, TAU, 360, OMEGA2);
     let mut checked = 0;
-    for line in include_str!("data/fourbar_extrema.csv").lines().skip(3) {
+    for line in include_str!("../data/fourbar_extrema.csv").lines().skip(3) {
         let cells: Vec<&str> = line.split(',').collect();
         let (quantity, extremum) = (cells[0], cells[1]);
         let at: f64 = cells[2].parse().unwrap();

@@ -3,7 +3,7 @@
 //! `Ok`; the other methods' behaviour is recorded. (The same study draws
 //! the charts of `cargo run --release --example stability`.)
 
-#[path = "../examples/stability/study.rs"]
+#[path = "../../examples/stability/study.rs"]
 mod study;
 
 use study::{Case, Method, Row, run};

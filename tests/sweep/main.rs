@@ -1,0 +1,12 @@
+//! Sweeps: tracked over full cycles through singular poses, each method
+//! near singular poses against the 50-digit reference, and the zeros and
+//! extrema located along them (one binary: each links the whole library).
+
+#[path = "../common/mod.rs"]
+mod common;
+/// Near singular poses, each method against the 50-digit reference.
+mod stability_near_singular;
+/// Tracked sweeps over full cycles.
+mod stability_sweeps;
+/// Zeros and extrema along a sweep.
+mod watch;
