@@ -73,7 +73,11 @@ pub fn fallback(input: &Input) -> TokenStream {
             })
             .collect::<Vec<_>>()
     };
-    let (kinematics, sensitivities) = (in_trait(Trait::Linkage), in_trait(Trait::Sensitivities));
+    let (kinematics, kernel, sensitivities) = (
+        in_trait(Trait::Linkage),
+        in_trait(Trait::SensitivityKernel),
+        in_trait(Trait::Sensitivities),
+    );
     let mut generics = item.generics.clone();
     generics.params.push(syn::parse_quote!(const #m: usize));
     generics.params.push(syn::parse_quote!(const #f: usize));
@@ -110,6 +114,10 @@ pub fn fallback(input: &Input) -> TokenStream {
                 const POINT_NAMES: &'static [&'static str] = &[];
                 const SYMBOLIC: ::linkage::SymbolicTable = Self::SYMBOLIC;
                 #(#kinematics)*
+            }
+            #[allow(unused_variables)]
+            impl #sensitivity_generics ::linkage::SensitivityKernel<#m, #f, #k> for #ty #ty_generics #where_clause {
+                #(#kernel)*
             }
             #[allow(unused_variables)]
             impl #sensitivity_generics ::linkage::Sensitivities<#m, #f, #k> for #ty #ty_generics #where_clause {
