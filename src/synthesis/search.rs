@@ -13,6 +13,7 @@ use crate::batch;
 use crate::random::SplitMix64;
 use linkage_runtime::{Drive, Options, Sensitivities, SweepOptions};
 use nalgebra::{DVector, SVector};
+use std::cmp::Ordering;
 use std::f64::consts::TAU;
 
 /// How to search.
@@ -517,7 +518,9 @@ where
 {
     if problem.exact {
         let (target, error) = candidate.largest_error();
-        if !(error <= PRECISION * problem.target_scale()) {
+        // Refused unless within the precision (a NaN is not).
+        let within = error.partial_cmp(&(PRECISION * problem.target_scale()));
+        if !matches!(within, Some(Ordering::Less | Ordering::Equal)) {
             return Err(Defect::Misses { target, error });
         }
     }
