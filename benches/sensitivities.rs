@@ -139,7 +139,7 @@ fn motion<L: Linkage<M, 1>, const M: usize>(model: &L, u0: SVector<f64, M>) -> M
     let analysis = model
         .analyze(&u, &v, &vdot, &vddot, &Options::default())
         .expect("regular pose");
-    Motion::of_analysis(&analysis, &v, &vdot, &vddot)
+    Motion::of_analysis(&analysis)
 }
 
 /// The derivative part of a vector dual number (zero when num-dual left it
@@ -427,7 +427,7 @@ fn mechanism<L, const M: usize, const K: usize>(
     group.bench_function("sensitivities_of (ours, at the analysis)", |b| {
         b.iter(|| {
             model
-                .sensitivities_of(black_box(&analysis), &m.v, &m.vdot, &m.vddot, &options)
+                .sensitivities_of(black_box(&analysis), &options)
                 .expect("regular pose")
         })
     });

@@ -48,8 +48,8 @@
 //! ```
 
 use linkage_runtime::{
-    Analysis, Drive, Error, Linkage, Motion, Options, Sensitivities, Sensitivity, SweepOptions,
-    SweepPose, SweepSummary,
+    Analysis, Drive, Error, Linkage, Options, Sensitivities, Sensitivity, SweepOptions, SweepPose,
+    SweepSummary,
 };
 use nalgebra::SVector;
 #[cfg(feature = "parallel")]
@@ -204,8 +204,7 @@ where
             let analysis =
                 job.model
                     .analyze(&job.u_guess, &job.v, &job.vdot, &job.vddot, options)?;
-            let motion = Motion::of_analysis(&analysis, &job.v, &job.vdot, &job.vddot);
-            let sensitivity = job.model.sensitivities(&motion, options)?;
+            let sensitivity = job.model.sensitivities_of(&analysis, options)?;
             Ok((analysis, sensitivity))
         })
         .collect()

@@ -209,7 +209,7 @@ fn batch_sensitivities_equal_single_ones() {
         }
         let (analysis, s) = result.unwrap();
         let job = &jobs[k];
-        let motion = Motion::of_analysis(&analysis, &job.v, &job.vdot, &job.vddot);
+        let motion = Motion::of_analysis(&analysis);
         assert_eq!(s, job.model.sensitivities(&motion, &options).unwrap());
     }
 }

@@ -26,7 +26,7 @@ where
     let analysis = model
         .analyze(&u_guess, &v, &vdot, &vddot, &options)
         .expect("the pose assembles");
-    let motion = Motion::of_analysis(&analysis, &v, &vdot, &vddot);
+    let motion = Motion::of_analysis(&analysis);
     let s = model
         .sensitivities(&motion, &options)
         .expect("a regular pose has sensitivities");
@@ -133,11 +133,6 @@ fn the_terms_with_the_poses_sines_and_cosines_given_are_the_same_numbers() {
             &m.u, &m.v, &trig_u, &trig_v, &m.udot, &m.vdot, &m.uddot, &m.vddot,
         );
         assert_eq!(given, computed);
-        let options = Options::default();
-        assert_eq!(
-            model.sensitivities_with_trig(m, &trig_u, &trig_v, &options),
-            model.sensitivities(m, &options)
-        );
     }
     let four_bar = FourBar::WORKSHEET;
     let (motion, _) = at(
@@ -178,10 +173,10 @@ fn the_terms_with_the_poses_sines_and_cosines_given_are_the_same_numbers() {
     same(&FIVE_BAR, &motion);
 }
 
-/// At an analysis, `sensitivities_of` takes the sines and cosines the
-/// analysis computed at its pose: the very numbers (==) of the
-/// sensitivities that compute them; with other drivers than the analysis's
-/// it computes them.
+/// At an analysis, `sensitivities_of` takes the drivers the analysis was
+/// given and the sines and cosines it computed at its pose: the very
+/// numbers (==) of the sensitivities that compute them; at a pose moved
+/// from the one the analysis found it computes them.
 #[test]
 fn at_an_analysis_the_sensitivities_take_its_sines_and_cosines() {
     fn same<L, const M: usize, const F: usize, const K: usize>(
@@ -197,20 +192,35 @@ fn at_an_analysis_the_sensitivities_take_its_sines_and_cosines() {
         let analysis = model
             .analyze(&u_guess, &v, &vdot, &vddot, &options)
             .expect("the pose assembles");
-        assert!(analysis.trig.is_some(), "the fused path keeps them");
-        let motion = Motion::of_analysis(&analysis, &v, &vdot, &vddot);
+        let motion = Motion::of_analysis(&analysis);
+        assert_eq!(
+            motion,
+            Motion {
+                u: analysis.u,
+                v,
+                udot: analysis.udot,
+                vdot,
+                uddot: analysis.uddot,
+                vddot,
+            }
+        );
         let given = model
-            .sensitivities_of(&analysis, &v, &vdot, &vddot, &options)
+            .sensitivities_of(&analysis, &options)
             .expect("regular");
         assert_eq!(
             given,
             model.sensitivities(&motion, &options).expect("regular")
         );
-        let other = v.map(|x| x + 1e-3);
-        let moved = Motion::of_analysis(&analysis, &other, &vdot, &vddot);
-        let at_other = model.sensitivities_of(&analysis, &other, &vdot, &vddot, &options);
-        assert_eq!(at_other, model.sensitivities(&moved, &options));
-        assert_ne!(at_other, Ok(given));
+        // Its pose moved (its fields are the caller's): the sines and
+        // cosines of the pose it found are not those of this one.
+        let mut moved = analysis;
+        moved.u = analysis.u.map(|x| x + 1e-3);
+        let at_moved = model.sensitivities_of(&moved, &options);
+        assert_eq!(
+            at_moved,
+            model.sensitivities(&Motion::of_analysis(&moved), &options)
+        );
+        assert_ne!(at_moved, Ok(given));
     }
     same(
         &FourBar::WORKSHEET,
@@ -240,7 +250,8 @@ fn at_an_analysis_the_sensitivities_take_its_sines_and_cosines() {
         vector![1.0, -0.5],
         vector![0.3, 0.2],
     );
-    // Without the fused path (Jacobians by num-dual) there are none to take.
+    // Without the fused path (Jacobians by num-dual) there are none to
+    // take: the sensitivities compute them.
     let options = Options {
         jacobian: JacobianSource::Dual,
         ..Options::default()
@@ -254,7 +265,10 @@ fn at_an_analysis_the_sensitivities_take_its_sines_and_cosines() {
             &options,
         )
         .expect("the pose assembles");
-    assert!(analysis.trig.is_none());
+    assert_eq!(
+        FourBar::WORKSHEET.sensitivities_of(&analysis, &options),
+        FourBar::WORKSHEET.sensitivities(&Motion::of_analysis(&analysis), &options)
+    );
 }
 
 /// A dense sweep carries its sines and cosines from pose to pose into the
@@ -354,7 +368,7 @@ fn scaling_every_length_changes_no_angle() {
             )
             .unwrap();
         u = a.u;
-        let motion = Motion::of_analysis(&a, &vector![theta2], &vector![OMEGA2], &vector![2.0]);
+        let motion = Motion::of_analysis(&a);
         let s = model.sensitivities(&motion, &options).unwrap();
         for (name, matrix) in [("θ", s.u), ("ω", s.udot), ("α", s.uddot)] {
             let sum = matrix * l;

@@ -30,8 +30,9 @@ pub(crate) fn all_finite(values: &[f64]) -> bool {
 /// sum with a NaN is NaN. Four sums side by side, so that each addition
 /// need not wait for the one before (a single running sum costs an
 /// addition's latency per entry), and one set of them for all the slices
-/// (a four-bar's sensitivities checked their six inputs in one pass 3 ns
-/// faster than slice by slice, 2026-11-23).
+/// (one pass over a four-bar's six inputs to the sensitivities is faster
+/// than slice by slice: docs/performance.md, "Measurements behind the
+/// code").
 #[inline(always)]
 pub(crate) fn all_finite_in(slices: &[&[f64]]) -> bool {
     let mut lanes = [0.0_f64; 4];

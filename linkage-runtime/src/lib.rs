@@ -45,7 +45,8 @@ pub use linalg::{Inverse, determinant, invert, scaled_svd};
 pub use linkage::Linkage;
 pub use options::{AccelerationMethod, JacobianSource, Options};
 pub use results::{Analysis, Iterate, Kinematics, Position, Velocity};
+#[doc(hidden)]
+pub use sensitivities::SensitivityKernel;
 pub use sensitivities::{Motion, Sensitivities, Sensitivity, SensitivityTerms};
 pub use sweep::{Drive, Event, EventKind, Sweep, SweepOptions, SweepPose, SweepSummary};
 pub use symbolic::{SymbolicMatrix, SymbolicTable};
-pub use trig::PoseTrig;

@@ -53,9 +53,9 @@ pub fn invert<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
     }
     // m ≤ 3: scaled by 1 but at an extreme scale, so that one inversion, in
     // line, serves both. The result of an out-of-line inversion merged with
-    // the ordinary one's stayed in memory, and a four-bar's fused
-    // kinematics kernel took ≈ 62 ns against 55 now (best of 5 runs,
-    // 2026-11-23).
+    // the ordinary one's stayed in memory, which slowed a four-bar's fused
+    // kinematics kernel (docs/performance.md, "Measurements behind the
+    // code").
     let (p, reciprocal) = if extreme {
         power_of_two_and_reciprocal(scale)
     } else {
@@ -75,8 +75,8 @@ pub fn invert<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
 
 /// [`invert`] for m > 3 at an extreme scale, out of line: Gauss–Jordan
 /// elimination costs enough that the merged result's round trip through
-/// memory does not show, and in line the six-bar's fused kernel was 5 %
-/// slower (203 ns against 194).
+/// memory does not show, and in line the six-bar's fused kernel was slower
+/// (docs/performance.md, "Measurements behind the code").
 #[cold]
 #[inline(never)]
 fn invert_scaled<const M: usize>(a: &SMatrix<f64, M, M>, scale: f64) -> Inverse<M> {

@@ -78,8 +78,14 @@ pub struct Analysis<const M: usize, const F: usize, P> {
     pub residual: f64,
     /// The reciprocal condition number of Ψ_u at the solution.
     pub rcond: f64,
+    /// The drivers v, v̇, v̈ the analysis was given (read by
+    /// [`crate::Motion::of_analysis`]), kept so that the sensitivities at
+    /// the analysis need not be given them again.
+    pub(crate) v: SVector<f64, F>,
+    pub(crate) vdot: SVector<f64, F>,
+    pub(crate) vddot: SVector<f64, F>,
     /// The sines and cosines the fused kernel computed at the pose (the
     /// default options' path; `None` on the others), which
     /// [`crate::Sensitivities::sensitivities_of`] uses.
-    pub trig: Option<PoseTrig<M, F>>,
+    pub(crate) trig: Option<PoseTrig<M, F>>,
 }

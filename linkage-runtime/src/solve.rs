@@ -91,6 +91,9 @@ pub(crate) fn analyze<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>
         iterations: position.iterations,
         residual: position.residual,
         rcond: velocity.rcond,
+        v: *v,
+        vdot: *vdot,
+        vddot: *vddot,
         trig,
     })
 }

@@ -36,11 +36,11 @@ pub(crate) type SinCos<const N: usize> = [(f64, f64); N];
 /// likewise of v (the other entries unspecified). They are used only at
 /// exactly this `u` and `v`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct PoseTrig<const M: usize, const F: usize> {
-    pub u: SVector<f64, M>,
-    pub v: SVector<f64, F>,
-    pub sin_cos_u: [(f64, f64); M],
-    pub sin_cos_v: [(f64, f64); F],
+pub(crate) struct PoseTrig<const M: usize, const F: usize> {
+    pub(crate) u: SVector<f64, M>,
+    pub(crate) v: SVector<f64, F>,
+    pub(crate) sin_cos_u: [(f64, f64); M],
+    pub(crate) sin_cos_v: [(f64, f64); F],
 }
 
 /// The ranges of |δ| carried by the short and the long series.
@@ -111,8 +111,8 @@ impl<const M: usize, const F: usize> TrigCarrier<M, F> {
 /// Whether carrying the sines and cosines from the pose `from` to `to`
 /// pays: every masked coordinate moved within the short series' range, as
 /// in a dense sweep. Beyond it a direct `sin_cos` costs less than the carry
-/// and its re-anchoring (a four-bar's sensitivities in a sweep of 360 steps
-/// per revolution: 30–50 ns per pose more, measured 2026-11-23).
+/// and its re-anchoring (docs/performance.md, "Measurements behind the
+/// code").
 #[inline]
 pub(crate) fn carry_pays<const N: usize>(
     mask: &[bool; N],

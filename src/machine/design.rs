@@ -23,8 +23,7 @@
 use super::load::LoadKind;
 use super::{Applied, EnergyMethod, Machine, MachineError, Pose};
 use crate::numerics;
-use linkage_runtime::{Linkage, Motion, Sensitivities, Sensitivity};
-use nalgebra::SVector;
+use linkage_runtime::{Linkage, Sensitivities, Sensitivity};
 use std::f64::consts::TAU;
 
 /// A machine ready to be differentiated by its design: the model's
@@ -112,13 +111,7 @@ impl<L: Linkage<M, 1>, const M: usize> Machine<L, M> {
         L: Sensitivities<M, 1, K>,
     {
         let analysis = self.analysis(phi)?;
-        let motion = Motion::of_analysis(
-            &analysis,
-            &SVector::<f64, 1>::from_element(phi),
-            &SVector::<f64, 1>::from_element(1.0),
-            &SVector::<f64, 1>::zeros(),
-        );
-        let sensitivity = self.model.sensitivities(&motion, &self.options)?;
+        let sensitivity = self.model.sensitivities_of(&analysis, &self.options)?;
         Ok((self.pose_of(phi, &analysis), sensitivity))
     }
 }

@@ -6,7 +6,7 @@
 
 use super::problem::{Problem, Task};
 use crate::least_squares::Evaluation;
-use linkage_runtime::{Linkage, Motion, Options, Sensitivities, invert};
+use linkage_runtime::{Linkage, Options, Sensitivities, invert};
 use nalgebra::{DMatrix, DVector, SVector};
 use std::f64::consts::TAU;
 
@@ -57,8 +57,7 @@ where
         if branch != from.branch[i] {
             return None;
         }
-        let motion = Motion::of_analysis(&analysis, &v, &vdot, &vddot);
-        let sensitivity = model.sensitivities(&motion, options).ok()?;
+        let sensitivity = model.sensitivities_of(&analysis, options).ok()?;
         // The matched values (and their rates along the driver), row by row.
         let (value, rate, by_p): (Vec<f64>, Vec<f64>, Vec<SVector<f64, K>>) = match problem.task {
             Task::Path { point } => {

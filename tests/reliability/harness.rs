@@ -279,7 +279,7 @@ pub(crate) fn check<L: Sensitivities<M, 1, K>, const M: usize, const K: usize>(
                 }
                 (x, y) => prop_assert!(false, "the methods disagree on success: {x:?} vs {y:?}"),
             }
-            check_sensitivities(model, &Motion::of_analysis(&a, &v, &vdot, &vddot), tally)?;
+            check_sensitivities(model, &Motion::of_analysis(&a), tally)?;
         }
         Err(e) => {
             t.error(&e);

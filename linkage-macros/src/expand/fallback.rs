@@ -125,7 +125,11 @@ pub fn fallback(input: &Input) -> TokenStream {
             })
             .collect::<Vec<_>>()
     };
-    let (kinematics, sensitivities) = (in_trait(Trait::Linkage), in_trait(Trait::Sensitivities));
+    let (kinematics, kernel, sensitivities) = (
+        in_trait(Trait::Linkage),
+        in_trait(Trait::SensitivityKernel),
+        in_trait(Trait::Sensitivities),
+    );
     let (m, f, k, np) = (
         &dims.m.tokens(),
         &dims.f.tokens(),
@@ -142,6 +146,7 @@ pub fn fallback(input: &Input) -> TokenStream {
     };
     let linkage = quote!(::linkage::Linkage<#m, #f>);
     let sensitivities_trait = quote!(::linkage::Sensitivities<#m, #f, #k>);
+    let kernel_trait = quote!(::linkage::SensitivityKernel<#m, #f, #k>);
     let linkage_generics = impl_generics_over(&linkage);
     let sensitivity_generics = impl_generics_over(&sensitivities_trait);
     let (linkage_generics, _, _) = linkage_generics.split_for_impl();
@@ -171,6 +176,10 @@ pub fn fallback(input: &Input) -> TokenStream {
                 const POINT_NAMES: &'static [&'static str] = &[];
                 const SYMBOLIC: ::linkage::SymbolicTable = Self::SYMBOLIC;
                 #(#kinematics)*
+            }
+            #[allow(unused_variables)]
+            impl #sensitivity_generics #kernel_trait for #ty #ty_generics #where_clause {
+                #(#kernel)*
             }
             #[allow(unused_variables)]
             impl #sensitivity_generics #sensitivities_trait for #ty #ty_generics #where_clause {

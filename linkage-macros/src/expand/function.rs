@@ -106,8 +106,8 @@ impl Generator<'_> {
         let statements = &body.statements;
         // No `#[inline]`: the kernels are compiled in the user's crate, where
         // LLVM chooses; the hint made a Newton step (Ψ and Ψ_u inlined into
-        // the caller) ≈ 15 % slower (`cargo bench --bench kernels`,
-        // 2026-11-23). The trait's delegations carry it instead.
+        // the caller) slower (docs/performance.md, "Measurements behind the
+        // code"). The trait's delegations carry it instead.
         quote! {
             #doc
             #[must_use]

@@ -404,6 +404,7 @@ mod tests {
         sensitivities.extend(["params".to_owned(), "set_params".to_owned()]);
         let in_trait = BTreeMap::from([
             ("Linkage".to_owned(), of(Trait::Linkage)),
+            ("SensitivityKernel".to_owned(), of(Trait::SensitivityKernel)),
             ("Sensitivities".to_owned(), sensitivities),
         ]);
         let keys: BTreeSet<String> = QUANTITIES

@@ -90,6 +90,10 @@ pub enum Trait {
     Linkage,
     /// `linkage::Sensitivities<m, f, k>`: the derivatives by the parameters.
     Sensitivities,
+    /// `linkage::SensitivityKernel<m, f, k>`: the generated terms the
+    /// sensitivities are solved from, which the runtime calls (hidden from
+    /// the documentation: not an entry point).
+    SensitivityKernel,
 }
 
 /// The number type of a function: `f64`, or any dual number of num-dual
@@ -520,7 +524,7 @@ pub const QUANTITIES: &[Quantity] = &[
         scalar: Scalar::F64,
         source: Source::SensitivityTerms { with_trig: false },
         function: true,
-        in_trait: Some(Trait::Sensitivities),
+        in_trait: Some(Trait::SensitivityKernel),
         key: None,
         doc: |c| {
             format!(
@@ -548,7 +552,7 @@ pub const QUANTITIES: &[Quantity] = &[
         scalar: Scalar::F64,
         source: Source::SensitivityTerms { with_trig: true },
         function: true,
-        in_trait: Some(Trait::Sensitivities),
+        in_trait: Some(Trait::SensitivityKernel),
         key: None,
         doc: |_| {
             "[`Self::sensitivity_terms`] with the sines and cosines of the coordinates \

@@ -150,21 +150,28 @@ impl Generator<'_> {
                 /// [`Self::sensitivity_terms_with_trig`], which reads their
                 /// sine and cosine from `trig_u` (the others' entries are not
                 /// read).
+                #[doc(hidden)]
                 pub const SENSITIVITY_TRIG_U: [bool; #ml] = #mask_u;
                 /// Which coordinates of v appear under `sin`/`cos`, read from
                 /// `trig_v`.
+                #[doc(hidden)]
                 pub const SENSITIVITY_TRIG_V: [bool; #fl] = #mask_v;
             }
         } else {
             quote!()
         };
+        // The kernel with the sines and cosines given is the runtime's (a
+        // sweep's or an analysis's), not an entry point: out of the
+        // documentation, as `linkage::SensitivityKernel` is.
+        let hidden = with_trig.then(|| quote!(#[doc(hidden)]));
         // `#[inline(always)]`, unlike the kernels (see `function.rs`): the
         // terms are read once, by the solve that follows, and in line the
-        // struct of them need not be written out (a four-bar's
-        // sensitivities at k = 4: 102 → 88 ns, measured 2026-11-23).
+        // struct of them need not be written out (docs/performance.md,
+        // "Measurements behind the code").
         quote! {
             #masks
             #doc
+            #hidden
             #[must_use]
             #[inline(always)]
             #[allow(unused_variables, clippy::too_many_arguments)]

@@ -1,6 +1,6 @@
-//! The `Linkage` and `Sensitivities` impls: every quantity of the table
-//! that the trait has, delegating to the inherent function of the same
-//! name.
+//! The `Linkage`, `SensitivityKernel` and `Sensitivities` impls: every
+//! quantity of the table that the trait has, delegating to the inherent
+//! function of the same name.
 
 use super::Generator;
 use super::quantities::{QUANTITIES, Source, Trait};
@@ -53,8 +53,11 @@ impl Generator<'_> {
                 })
                 .collect::<Vec<_>>()
         };
-        let (kinematics, sensitivities) =
-            (functions(Trait::Linkage), functions(Trait::Sensitivities));
+        let (kinematics, kernel, sensitivities) = (
+            functions(Trait::Linkage),
+            functions(Trait::SensitivityKernel),
+            functions(Trait::Sensitivities),
+        );
         let lowered = &self.model.lowered;
         let param_idents: Vec<_> = lowered
             .design
@@ -71,6 +74,11 @@ impl Generator<'_> {
                 const POINT_NAMES: &'static [&'static str] = &Self::POINT_NAMES;
                 const SYMBOLIC: ::linkage::SymbolicTable = Self::SYMBOLIC;
                 #(#kinematics)*
+            }
+
+            #[automatically_derived]
+            impl #impl_generics ::linkage::SensitivityKernel<#m, #f, #k> for #ty #ty_generics #where_clause {
+                #(#kernel)*
             }
 
             #[automatically_derived]

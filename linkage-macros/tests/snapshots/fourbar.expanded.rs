@@ -994,14 +994,17 @@ const _: () = {
         /// [`Self::sensitivity_terms_with_trig`], which reads their
         /// sine and cosine from `trig_u` (the others' entries are not
         /// read).
+        #[doc(hidden)]
         pub const SENSITIVITY_TRIG_U: [bool; 2] = [true, true];
         /// Which coordinates of v appear under `sin`/`cos`, read from
         /// `trig_v`.
+        #[doc(hidden)]
         pub const SENSITIVITY_TRIG_V: [bool; 1] = [true];
         /// [`Self::sensitivity_terms`] with the sines and cosines of the coordinates given
         /// (`trig_u[k]` = (sin uₖ, cos uₖ), likewise `trig_v`; those of [`Self::SENSITIVITY_TRIG_U`]
         /// and [`Self::SENSITIVITY_TRIG_V`] are read) instead of computed: a sweep carries them from
         /// pose to pose, as it does for [`Self::kinematics_with_trig`].
+        #[doc(hidden)]
         #[must_use]
         #[inline(always)]
         #[allow(unused_variables, clippy::too_many_arguments)]
@@ -1963,23 +1966,7 @@ const _: () = {
         }
     }
     #[automatically_derived]
-    impl ::linkage::Sensitivities<2, 1, 4> for FourBar {
-        const PARAM_NAMES: [&'static str; 4] = Self::PARAM_NAMES;
-        #[inline]
-        fn params(&self) -> SVector<f64, 4> {
-            SVector::<f64, 4>::from([self.l1, self.l2, self.l3, self.l4])
-        }
-        #[inline]
-        fn set_params(&mut self, params: &SVector<f64, 4>) {
-            self.l1 = params[0];
-            self.l2 = params[1];
-            self.l3 = params[2];
-            self.l4 = params[3];
-        }
-        #[inline]
-        fn psi_p(&self, u: &SVector<f64, 2>, v: &SVector<f64, 1>) -> SMatrix<f64, 2, 4> {
-            Self::psi_p(self, u, v)
-        }
+    impl ::linkage::SensitivityKernel<2, 1, 4> for FourBar {
         #[inline]
         fn sensitivity_terms(
             &self,
@@ -2017,6 +2004,25 @@ const _: () = {
                 uddot,
                 vddot,
             )
+        }
+    }
+    #[automatically_derived]
+    impl ::linkage::Sensitivities<2, 1, 4> for FourBar {
+        const PARAM_NAMES: [&'static str; 4] = Self::PARAM_NAMES;
+        #[inline]
+        fn params(&self) -> SVector<f64, 4> {
+            SVector::<f64, 4>::from([self.l1, self.l2, self.l3, self.l4])
+        }
+        #[inline]
+        fn set_params(&mut self, params: &SVector<f64, 4>) {
+            self.l1 = params[0];
+            self.l2 = params[1];
+            self.l3 = params[2];
+            self.l4 = params[3];
+        }
+        #[inline]
+        fn psi_p(&self, u: &SVector<f64, 2>, v: &SVector<f64, 1>) -> SMatrix<f64, 2, 4> {
+            Self::psi_p(self, u, v)
         }
         #[inline]
         fn psi_generic_params<D: ::linkage::num_dual::DualNum<Primitive = f64> + Copy>(

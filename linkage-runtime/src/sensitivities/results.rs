@@ -17,20 +17,16 @@ pub struct Motion<const M: usize, const F: usize> {
 }
 
 impl<const M: usize, const F: usize> Motion<M, F> {
-    /// The pose of an analysis at the driver values it was given.
-    pub fn of_analysis<P>(
-        analysis: &Analysis<M, F, P>,
-        v: &SVector<f64, F>,
-        vdot: &SVector<f64, F>,
-        vddot: &SVector<f64, F>,
-    ) -> Motion<M, F> {
+    /// The pose of an analysis, its drivers at the values the analysis was
+    /// given.
+    pub fn of_analysis<P>(analysis: &Analysis<M, F, P>) -> Motion<M, F> {
         Motion {
             u: analysis.u,
-            v: *v,
+            v: analysis.v,
             udot: analysis.udot,
-            vdot: *vdot,
+            vdot: analysis.vdot,
             uddot: analysis.uddot,
-            vddot: *vddot,
+            vddot: analysis.vddot,
         }
     }
 

@@ -29,11 +29,10 @@
 //!
 //! which is how they are computed for m ≤ 3: the five products by Ψ_u⁻¹ do
 //! not wait for one another, and the chain from Ψ_u⁻¹ to ü_p is three
-//! products long instead of five (a four-bar's sensitivities at k = 4:
-//! 108 → 88 ns, best of 5, 2026-11-23). For larger m the 2m³
-//! multiplications of A and B cost more than the wait saves (the six-bar's
-//! at k = 10: 692 ns in sequence against 860 ns), and the formulas are
-//! computed as they read.
+//! products long instead of five. For larger m the 2m³ multiplications of
+//! A and B cost more than the wait saves, and the formulas are computed as
+//! they read (the timings of both orders: docs/performance.md,
+//! "Measurements behind the code").
 
 use super::results::{Motion, Sensitivity, SensitivityTerms};
 use crate::checks::{all_finite, all_finite_in, check_input, check_value};
