@@ -24,7 +24,7 @@
 //!
 //! let crank = SliderCrank { r: 0.05, l: 0.2, e: 0.0 };
 //! let pose = crank.analyze(&vector![-0.1, 0.25], &vector![0.0], &vector![10.0], &vector![0.0], &Options::default())?;
-//! let motion = Motion::of_analysis(&pose, &vector![0.0], &vector![10.0], &vector![0.0]);
+//! let motion = Motion::of_analysis(&pose);
 //! let pose = Pose::of(&crank, &motion);
 //! let names = Names::of::<SliderCrank, 2, 1>();
 //! // The crank pin's velocity is r·ω upwards at θ2 = 0.

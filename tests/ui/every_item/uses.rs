@@ -29,7 +29,7 @@ fn as_they_come(bar: &FourBar) -> bool {
         return false;
     };
     let largest = bar
-        .sensitivities_of(&analysis, &v, &vdot, &vddot, &options)
+        .sensitivities_of(&analysis, &options)
         .map(|s| s.u.amax());
     let columns = bar.psi_p(&u, &v).ncols() + FourBar::PARAM_NAMES.len();
     largest.is_ok() && columns == 8
@@ -104,10 +104,10 @@ fn main() {
         .unwrap();
     let analysis = bar.analyze(&u, &v, &vdot, &vddot, &options).unwrap();
     let c: Vector2<f64> = analysis.points[FourBar::C];
-    let motion = Motion::of_analysis(&analysis, &v, &vdot, &vddot);
+    let motion = Motion::of_analysis(&analysis);
     let _: Sensitivity<2, 4, [Vector2<f64>; 2]> = bar.sensitivities(&motion, &options).unwrap();
     let sensitivity = bar
-        .sensitivities_of(&analysis, &v, &vdot, &vddot, &options)
+        .sensitivities_of(&analysis, &options)
         .unwrap();
     let _: Sensitivity<2, 4, [Vector2<f64>; 2]> = sensitivity;
     let spread = tolerances.spread(&sensitivity.u.row(0).transpose());
