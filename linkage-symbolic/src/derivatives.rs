@@ -140,7 +140,7 @@ impl Derivatives {
 
         // The sensitivities' terms: the derivatives by u and by p of Ψ,
         // Ψ̇ = Ψ_q q̇ and Ψ̈ = Ψ_q q̈ + γ.
-        let by_param: Vec<Symbol> = lowered.design.iter().map(|&k| Symbol::Param(k)).collect();
+        let by_param: Vec<Symbol> = lowered.params.iter().map(|&k| Symbol::Param(k)).collect();
         let k = by_param.len();
         let second: Vec<Id> = (0..m)
             .map(|i| {
@@ -248,7 +248,7 @@ impl Derivatives {
 
     /// The number of parameters differentiated by.
     pub fn k(&self) -> usize {
-        self.lowered.design.len()
+        self.lowered.params.len()
     }
 
     pub fn dag(&self) -> &Dag {

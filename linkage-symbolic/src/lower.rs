@@ -37,11 +37,11 @@ pub const SUPPORTED: &str = "sin, cos, tan, asin, acos, atan, atan2, sinh, cosh,
 /// The mechanism after name resolution: the DAG and its roots.
 pub struct Lowered {
     pub dag: Dag,
-    /// The `f64` fields, in order: `Symbol::Param(k)` is `params[k]`.
-    pub params: Vec<Ident>,
-    /// The parameters p to differentiate by, as indices into `params`
+    /// The `f64` fields, in order: `Symbol::Param(k)` is `fields[k]`.
+    pub fields: Vec<Ident>,
+    /// The parameters p to differentiate by, as indices into `fields`
     /// (set by [`crate::params::resolve`]; empty until then).
-    pub design: Vec<u16>,
+    pub params: Vec<u16>,
     /// u then v: `Symbol::Coord(k)` is `coords[k]`.
     pub coords: Vec<Ident>,
     pub m: usize,
@@ -190,8 +190,8 @@ pub fn lower(input: &Input, errors: &mut Errors) -> Option<Lowered> {
     }
     Some(Lowered {
         dag: lowerer.dag,
-        params,
-        design: Vec::new(),
+        fields: params,
+        params: Vec::new(),
         coords,
         m,
         f,
@@ -617,17 +617,18 @@ impl Lowered {
         unraw(&self.coords[k])
     }
 
-    pub fn param_name(&self, k: usize) -> String {
-        unraw(&self.params[k])
+    /// The span-free name of the field `k` (`Symbol::Param(k)`).
+    pub fn field_name(&self, k: usize) -> String {
+        unraw(&self.fields[k])
     }
 
     /// The names of the symbols, for generated code and formulas.
     pub fn names(&self) -> crate::names::SymbolNames {
         crate::names::SymbolNames::new(
-            (0..self.params.len()).map(|k| self.param_name(k)).collect(),
+            (0..self.fields.len()).map(|k| self.field_name(k)).collect(),
             (0..self.coords.len()).map(|k| self.coord_name(k)).collect(),
             self.m,
-            self.design.clone(),
+            self.params.clone(),
         )
     }
 }

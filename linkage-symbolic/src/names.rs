@@ -93,50 +93,50 @@ pub fn subscript(digits: &str) -> String {
 /// `Symbol::Coord(k)`), with their velocities and accelerations.
 #[derive(Clone, Debug)]
 pub struct SymbolNames {
-    params: Vec<String>,
+    fields: Vec<String>,
     coords: Vec<String>,
     /// How many coordinates are dependent (u); the rest are driving (v).
     m: usize,
-    /// The parameters p differentiated by, as indices into `params`.
-    design: Vec<u16>,
+    /// The parameters p differentiated by, as indices into `fields`.
+    params: Vec<u16>,
 }
 
 impl SymbolNames {
     /// The names as written by the user (raw identifiers without `r#`).
     pub fn new(
-        params: Vec<String>,
+        fields: Vec<String>,
         coords: Vec<String>,
         m: usize,
-        design: Vec<u16>,
+        params: Vec<u16>,
     ) -> SymbolNames {
         SymbolNames {
-            params,
+            fields,
             coords,
             m,
-            design,
+            params,
         }
     }
 
     /// The position in p of the parameter `Symbol::Param(k)`, if it is one
     /// of the parameters differentiated by.
-    pub fn design_index(&self, k: u16) -> Option<usize> {
-        self.design.iter().position(|&d| d == k)
+    pub fn param_index(&self, k: u16) -> Option<usize> {
+        self.params.iter().position(|&d| d == k)
     }
 
     /// The parameters differentiated by, in the order of p, as a formula
     /// writes them.
-    pub fn design_display(&self) -> Vec<String> {
-        self.design
+    pub fn params_display(&self) -> Vec<String> {
+        self.params
             .iter()
-            .map(|&k| greek(&self.params[k as usize]))
+            .map(|&k| greek(&self.fields[k as usize]))
             .collect()
     }
 
     /// The parameters differentiated by, in the order of p, as written.
-    pub fn design_code(&self) -> Vec<String> {
-        self.design
+    pub fn params_code(&self) -> Vec<String> {
+        self.params
             .iter()
-            .map(|&k| self.params[k as usize].clone())
+            .map(|&k| self.fields[k as usize].clone())
             .collect()
     }
 
@@ -149,7 +149,7 @@ impl SymbolNames {
     /// `theta3_ddot`, `pi`.
     pub fn code(&self, s: Symbol) -> String {
         match s {
-            Symbol::Param(k) => self.params[k as usize].clone(),
+            Symbol::Param(k) => self.fields[k as usize].clone(),
             Symbol::Coord(k) => self.coords[k as usize].clone(),
             Symbol::Vel(k) => format!("{}_dot", self.coords[k as usize]),
             Symbol::Acc(k) => format!("{}_ddot", self.coords[k as usize]),
@@ -161,7 +161,7 @@ impl SymbolNames {
     /// avoid them.
     pub fn all_code(&self) -> impl Iterator<Item = String> + '_ {
         let n = self.coords.len() as u16;
-        self.params.iter().cloned().chain(
+        self.fields.iter().cloned().chain(
             (0..n).flat_map(|k| {
                 [Symbol::Coord(k), Symbol::Vel(k), Symbol::Acc(k)].map(|s| self.code(s))
             }),
@@ -173,7 +173,7 @@ impl SymbolNames {
     /// (`θ̇3`) and accelerations two (`θ̈3`).
     pub fn display(&self, s: Symbol) -> String {
         match s {
-            Symbol::Param(k) => greek(&self.params[k as usize]),
+            Symbol::Param(k) => greek(&self.fields[k as usize]),
             Symbol::Coord(k) => greek(&self.coords[k as usize]),
             Symbol::Vel(k) => dotted(&greek(&self.coords[k as usize]), '\u{307}'),
             Symbol::Acc(k) => dotted(&greek(&self.coords[k as usize]), '\u{308}'),

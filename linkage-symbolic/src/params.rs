@@ -7,27 +7,27 @@ use crate::dag::{Dag, Symbol};
 use crate::errors::Errors;
 use crate::lower::{Lowered, unraw};
 
-/// Sets `lowered.design`; every mistake of `params` is recorded in
+/// Sets `lowered.params`; every mistake of `params` is recorded in
 /// `errors` with the span of the name.
 pub fn resolve(input: &Input, lowered: &mut Lowered, errors: &mut Errors) {
     let used = used_params(lowered);
     let Some(list) = &input.params else {
-        lowered.design = (0..lowered.params.len() as u16)
+        lowered.params = (0..lowered.fields.len() as u16)
             .filter(|&k| used[k as usize])
             .collect();
         return;
     };
     let struct_name = &input.item.ident;
-    let usable: Vec<String> = (0..lowered.params.len())
+    let usable: Vec<String> = (0..lowered.fields.len())
         .filter(|&k| used[k])
-        .map(|k| lowered.param_name(k))
+        .map(|k| lowered.field_name(k))
         .collect();
     let listing = if usable.is_empty() {
         "none: the equations use no `f64` field".to_owned()
     } else {
         usable.join(", ")
     };
-    let mut design: Vec<u16> = Vec::new();
+    let mut params: Vec<u16> = Vec::new();
     let mut seen: Vec<(String, proc_macro2::Span)> = Vec::new();
     for ident in &list.items {
         let name = unraw(ident);
@@ -41,10 +41,10 @@ pub fn resolve(input: &Input, lowered: &mut Lowered, errors: &mut Errors) {
             continue;
         }
         seen.push((name.clone(), ident.span()));
-        let param = (0..lowered.params.len()).find(|&k| lowered.param_name(k) == name);
+        let param = (0..lowered.fields.len()).find(|&k| lowered.field_name(k) == name);
         let message = match param {
             Some(k) if used[k] => {
-                design.push(k as u16);
+                params.push(k as u16);
                 continue;
             }
             Some(_) => format!(
@@ -87,7 +87,7 @@ pub fn resolve(input: &Input, lowered: &mut Lowered, errors: &mut Errors) {
         };
         errors.push(syn::Error::new(ident.span(), message));
     }
-    lowered.design = design;
+    lowered.params = params;
 }
 
 /// The number of parameters the attribute asks for, read from what is
@@ -150,7 +150,7 @@ fn used_params(lowered: &mut Lowered) -> Vec<bool> {
         .copied()
         .chain(lowered.points.iter().flat_map(|(_, x, y)| [*x, *y]))
         .collect();
-    (0..lowered.params.len() as u16)
+    (0..lowered.fields.len() as u16)
         .map(|k| {
             roots
                 .iter()

@@ -145,7 +145,7 @@ impl<'a> Generator<'a> {
                 .map(|p| p.name.as_str())
                 .collect::<Vec<_>>()
                 .join(", "),
-            p_list: self.names.design_display().join(", "),
+            p_list: self.names.params_display().join(", "),
             k: self.k,
             agreement: agreement.to_owned(),
         }
@@ -239,7 +239,7 @@ impl<'a> Generator<'a> {
             .iter()
             .map(linkage_symbolic::lower::unraw);
         let point_names = self.model.points.iter().map(|p| p.name.as_str());
-        let param_names = self.names.design_code();
+        let param_names = self.names.params_code();
         let kl = Literal::usize_unsuffixed(self.k);
         let (ml, fl, npl) = (
             Literal::usize_unsuffixed(self.m),

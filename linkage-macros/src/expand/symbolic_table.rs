@@ -22,7 +22,7 @@ impl Generator<'_> {
         let v_labels: Vec<String> = (m..m + f).map(|k| self.names.coord(k)).collect();
         let q_labels: Vec<String> = (0..m + f).map(|k| self.names.coord(k)).collect();
         let point_labels: Vec<String> = model.points.iter().map(|p| p.name.clone()).collect();
-        let p_labels = self.names.design_display();
+        let p_labels = self.names.params_display();
         let point_xy_labels: Vec<String> = model
             .points
             .iter()

@@ -60,9 +60,9 @@ impl Generator<'_> {
         );
         let lowered = &self.model.lowered;
         let param_idents: Vec<_> = lowered
-            .design
+            .params
             .iter()
-            .map(|&k| &lowered.params[k as usize])
+            .map(|&k| &lowered.fields[k as usize])
             .collect();
         let indices = (0..param_idents.len()).map(Literal::usize_unsuffixed);
         quote! {

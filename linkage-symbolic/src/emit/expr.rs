@@ -71,7 +71,7 @@ impl Emitter<'_> {
                     order.sort_by_key(|(_, name)| *name == "params");
                     let mut lines = Vec::new();
                     for (k, name) in order {
-                        lines.push(match self.names.design_index(k) {
+                        lines.push(match self.names.param_index(k) {
                             Some(i) => {
                                 reads.p = true;
                                 let i = Literal::usize_unsuffixed(i);
