@@ -89,12 +89,16 @@ impl std::error::Error for UnknownName {}
 ///
 /// An enum that can meet an unknown name wraps [`UnknownName`] like any
 /// other error: `UnknownName(UnknownName)`, displayed as `("{inner}")`.
+/// An optional `sources { Variant(Inner) }` after `wraps` gives such a
+/// variant its source but no `From`: where an inner error means one thing
+/// only (the options of a search), `?` must not label every other one so.
 macro_rules! error_impls {
     (
         $error:ident {
             $($pattern:pat => ($($format:tt)+),)*
         }
         wraps { $($variant:ident($inner:ty)),* $(,)? }
+        $(sources { $($source:ident($source_inner:ty)),* $(,)? })?
     ) => {
         impl std::fmt::Display for $error {
             fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -108,6 +112,7 @@ macro_rules! error_impls {
             fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
                 match self {
                     $(Self::$variant(inner) => Some(inner),)*
+                    $($(Self::$source(inner) => Some(inner),)*)?
                     #[allow(unreachable_patterns)]
                     _ => None,
                 }

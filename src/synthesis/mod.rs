@@ -110,10 +110,11 @@ crate::error::error_impls! {
         Self::OutsideRange { target, driver, from, to } => ("target {target}'s driver {driver} lies outside the driver range from {from} to {to}"),
         Self::NoRange => ("Range::Task needs the task's driver range: state it with Problem::driver_range"),
         Self::NothingFree => ("no parameter is free: free at least one with Problem::free"),
-        Self::Options(inner) => ("the options: {inner}"),
+        Self::Options(inner) => ("the search's options: {inner}"),
         Self::Unreachable { target, error } => ("target {target} is out of reach: every candidate missed it, the closest by {error}"),
         Self::NoDesign { refused, failed_starts, closest: Some(closest) } => ("no certified design: {refused} candidates refused, {failed_starts} starts could not be assembled; {closest}"),
         Self::NoDesign { refused, failed_starts, closest: None } => ("no certified design: {refused} candidates refused, {failed_starts} starts could not be assembled"),
     }
-    wraps { UnknownName(UnknownName), Options(Error) }
+    wraps { UnknownName(UnknownName) }
+    sources { Options(Error) }
 }

@@ -191,7 +191,11 @@ where
     L: Sensitivities<M, 1, K> + Clone + Sync + Send,
 {
     problem.check()?;
-    search.options.options.check()?;
+    search
+        .options
+        .options
+        .check()
+        .map_err(SynthesisError::Options)?;
     if requirements.range == Range::Task && problem.range.is_none() {
         return Err(SynthesisError::NoRange);
     }
