@@ -245,7 +245,7 @@ fn monte_carlo_confirms_the_linear_spreads_of_the_worksheets_four_bar() {
     let outputs = four_bar_outputs();
     let run = MonteCarlo {
         samples: 4000,
-        seed: 11,
+        random_state: 11,
     };
     let cycle = tolerance::cycle(&bar, &u0, &drive, &options, &outputs, &tolerances).unwrap();
     let samples =
@@ -295,7 +295,7 @@ fn monte_carlo_is_the_same_on_any_number_of_threads() {
     let outputs = four_bar_outputs();
     let run = MonteCarlo {
         samples: 1500,
-        seed: 3,
+        random_state: 3,
     };
     let on = |threads| {
         rayon::ThreadPoolBuilder::new()
@@ -332,7 +332,7 @@ fn near_the_grashof_limit_some_designs_lock_up_and_are_reported() {
     let outputs = [Output::coordinate("theta4", Of::Position)];
     let run = MonteCarlo {
         samples: 2000,
-        seed: 5,
+        random_state: 5,
     };
     let samples =
         tolerance::monte_carlo_cycle(&bar, &u0, &drive, &options, &outputs, &tolerances, &run)
@@ -342,7 +342,7 @@ fn near_the_grashof_limit_some_designs_lock_up_and_are_reported() {
     // 0.3 mm, about 3 % of them).
     let non_grashof: Vec<usize> = (0..run.samples)
         .filter(|&i| {
-            let d = tolerances.deviation(run.seed, i);
+            let d = tolerances.deviation(run.random_state, i);
             d[0] + d[1] - d[2] - d[3] > 0.3
         })
         .collect();
@@ -360,7 +360,7 @@ fn monte_carlo_needs_samples_and_known_names() {
     let (bar, u0, drive, options, tolerances) = four_bar_case();
     let none = MonteCarlo {
         samples: 0,
-        seed: 0,
+        random_state: 0,
     };
     let outputs = four_bar_outputs();
     assert!(matches!(

@@ -67,7 +67,7 @@ where
 pub fn every(starts: usize, stream: u64) -> Search {
     Search {
         starts,
-        seed: stream,
+        random_state: stream,
         ..Search::default()
     }
 }

@@ -16,7 +16,7 @@ use std::f64::consts::{PI, TAU};
 /// The Monte Carlo run of every study.
 pub const RUN: MonteCarlo = MonteCarlo {
     samples: 100_000,
-    seed: 2026,
+    random_state: 2026,
 };
 
 /// The crank's speed: 400 rpm, as in the worksheet.

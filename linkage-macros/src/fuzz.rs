@@ -20,7 +20,7 @@
 //! are proptest campaigns instead — a corpus of real attributes mutated
 //! token by token (deleted, duplicated, swapped, replaced by tokens from a
 //! dictionary of the attribute's words and Rust's awkward literals), plus
-//! token soup and random expression trees — with a fixed seed so that a CI
+//! token soup and random expression trees — with a fixed random state so that a CI
 //! failure reproduces, and shrinking to the smallest failing input.
 //!
 //! The number of cases per campaign is `LINKAGE_FUZZ_CASES` (default 1000,

@@ -262,7 +262,7 @@ fn direct<D: DualNum<Primitive = f64> + Copy>(t: &Tree, x: D, y: D) -> D {
     }
 }
 
-/// A fixed seed, so that CI runs the same cases every time; set
+/// A fixed random state, so that CI runs the same cases every time; set
 /// `PROPTEST_RNG_SEED` (a number) to explore others.
 fn config(cases: u32) -> ProptestConfig {
     let mut config = ProptestConfig::with_cases(cases);

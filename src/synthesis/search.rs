@@ -21,9 +21,10 @@ use std::f64::consts::TAU;
 pub struct Search {
     /// Random starts, solved in parallel.
     pub starts: usize,
-    /// The seed of the random numbers the starts are drawn from (each
-    /// start a function of it and its index alone).
-    pub seed: u64,
+    /// The state the random numbers of the starts begin from: each start
+    /// is a function of it and the start's index alone (the same state,
+    /// the same starts).
+    pub random_state: u64,
     pub stopping: Stopping,
     /// The solves of the poses and the sweeps of the certificate.
     pub options: SweepOptions,
@@ -31,7 +32,7 @@ pub struct Search {
     /// those within [`Search::within`]): the starts then run in rounds of
     /// [`Search::ROUND`] (in parallel within a round), and the search ends
     /// with the round that reaches them. `None`: every start. Either way
-    /// the result depends only on the seed, not on the machine's cores.
+    /// the result depends only on the random state, not on the machine's cores.
     pub enough: Option<usize>,
     /// A design counts towards [`Search::enough`] only if it misses no
     /// target by more than this (in the targets' units): "designs under a
@@ -54,7 +55,7 @@ impl Default for Search {
     fn default() -> Search {
         Search {
             starts: 64,
-            seed: 1,
+            random_state: 1,
             stopping: Stopping::default(),
             options: SweepOptions::default(),
             enough: None,
@@ -408,7 +409,7 @@ where
     L: Sensitivities<M, 1, K> + Clone,
 {
     let options: &Options = &search.options.options;
-    let mut stream = SplitMix64::of_sample(search.seed, start as u64);
+    let mut stream = SplitMix64::of_sample(search.random_state, start as u64);
     let (x0, first) = (0..Search::DRAWS).find_map(|_| {
         let mut x0 = start_point(problem, &mut stream);
         let poses = first_poses(problem, &mut x0, steps_per_radian, &search.options)?;

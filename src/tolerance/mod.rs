@@ -22,7 +22,7 @@
 //!
 //! The linear estimate is exact to first order. [`monte_carlo`] and
 //! [`monte_carlo_cycle`] check it: they draw designs within the tolerances
-//! (reproducibly: each sample is a function of its run's seed and its index
+//! (reproducibly: each sample is a function of its run's random state and its index
 //! alone) and analyse them in parallel through [`batch`](crate::batch).
 //! Where the two disagree, the response is not linear — next to a limit
 //! position, where sensitivities grow without bound and some designs of

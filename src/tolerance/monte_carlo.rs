@@ -7,12 +7,12 @@ use crate::batch;
 use linkage_runtime::{Drive, Error, Event, Motion, Sensitivities, SweepOptions};
 use nalgebra::SVector;
 
-/// A Monte Carlo run: how many samples, and the seed of the random numbers
-/// they are drawn from (the same seed, the same samples).
+/// A Monte Carlo run: how many samples, and the state their random numbers
+/// begin from (the same state, the same samples).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct MonteCarlo {
     pub samples: usize,
-    pub seed: u64,
+    pub random_state: u64,
 }
 
 impl MonteCarlo {
@@ -28,7 +28,7 @@ impl MonteCarlo {
         L: Sensitivities<M, F, K> + Clone,
     {
         let mut sample = model.clone();
-        sample.set_params(&(model.params() + tolerances.deviation(self.seed, index)));
+        sample.set_params(&(model.params() + tolerances.deviation(self.random_state, index)));
         sample
     }
 }

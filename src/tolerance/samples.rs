@@ -1,9 +1,9 @@
-//! The Monte Carlo samples: each a function of its run's seed and its index
+//! The Monte Carlo samples: each a function of its run's random state and its index
 //! alone, so that a run gives the same samples on any number of threads
 //! and any sample can be drawn again by itself.
 //!
 //! A SplitMix64 stream per sample ([`crate::random`]), started at a state
-//! mixed from the seed and the index.
+//! mixed from the random state and the index.
 
 use super::{Tolerance, Tolerances};
 use crate::random::SplitMix64;
@@ -11,9 +11,9 @@ use nalgebra::SVector;
 
 impl<const K: usize> Tolerances<K> {
     /// The deviation of the parameters in Monte Carlo sample `index` of the
-    /// run of seed `seed`: uniform within each band, normal with each σ.
-    pub fn deviation(&self, seed: u64, index: usize) -> SVector<f64, K> {
-        let mut stream = SplitMix64::of_sample(seed, index as u64);
+    /// run of random state `random_state`: uniform within each band, normal with each σ.
+    pub fn deviation(&self, random_state: u64, index: usize) -> SVector<f64, K> {
+        let mut stream = SplitMix64::of_sample(random_state, index as u64);
         SVector::from_fn(|i, _| match self.get(i) {
             Tolerance::Band(t) => t * (2.0 * stream.uniform() - 1.0),
             Tolerance::Normal(sigma) => sigma * stream.normal(),
@@ -50,7 +50,7 @@ mod tests {
         assert!((square[0] / (4.0 / 3.0) - 1.0).abs() < 0.01, "{square}");
         assert!((square[1] / 0.25 - 1.0).abs() < 0.01, "{square}");
         assert_eq!(square[2], 0.0);
-        // Reproducible by index, different between indices and seeds.
+        // Reproducible by index, different between indices and random states.
         assert_eq!(tolerances.deviation(7, 12), tolerances.deviation(7, 12));
         assert_ne!(tolerances.deviation(7, 12), tolerances.deviation(7, 13));
         assert_ne!(tolerances.deviation(7, 12), tolerances.deviation(8, 12));

@@ -115,7 +115,7 @@ fn the_fraction_of_designs_that_do_not_run_the_cycle_is_reported() {
     // fail fails, and a few more at most.
     let run = MonteCarlo {
         samples: 600,
-        seed: 9,
+        random_state: 9,
     };
     let output = Output::coordinate("s", Of::Position);
     for (l, expected) in [(60.05, 0.3177), (60.2, 0.0208), (120.0, 0.0)] {
@@ -134,7 +134,7 @@ fn the_fraction_of_designs_that_do_not_run_the_cycle_is_reported() {
         .unwrap();
         let must_fail: Vec<usize> = (0..run.samples)
             .filter(|&i| {
-                let d = tolerances().deviation(run.seed, i);
+                let d = tolerances().deviation(run.random_state, i);
                 l + d[1] < R + d[0] + E + d[2]
             })
             .collect();
@@ -148,7 +148,7 @@ fn the_fraction_of_designs_that_do_not_run_the_cycle_is_reported() {
         // that their sweep cannot be followed past it.
         let mut closest: f64 = 0.0;
         for (i, why) in &sampled.failures {
-            let d = tolerances().deviation(run.seed, *i);
+            let d = tolerances().deviation(run.random_state, *i);
             let excess = l + d[1] - R - d[0] - E - d[2];
             if must_fail.contains(i) {
                 assert!(
@@ -251,7 +251,7 @@ fn kinematic_errors_say_which_design() {
     let (_, drive) = cycle_of(&crank);
     let run = MonteCarlo {
         samples: 4,
-        seed: 1,
+        random_state: 1,
     };
     let output = Output::coordinate("s", Of::Position);
     let options = SweepOptions::default();
