@@ -57,13 +57,6 @@ crate::error::error_impls! {
 /// fold of the assembly its steps cannot cross.
 pub(crate) const STALLED: usize = 20;
 
-/// A step below this relative to x is at rounding level if the one before
-/// it was too and it did not halve it: the solver then stops where it is
-/// (Gauss–Newton's steps near a solution shrink quadratically; steps that
-/// stop shrinking there are the residuals' rounding, amplified along the
-/// least determined direction).
-const ROUNDING_STEP: f64 = 1e-10;
-
 /// The residuals and their Jacobian at a point, and whatever the
 /// evaluation carries to the next (the poses, to start the next solves
 /// from).
@@ -200,8 +193,6 @@ pub(crate) fn minimize<S>(
     let mut evaluations = 1;
     let mut iterations = 0;
     let mut failures = 0;
-    // The last accepted step's size relative to x (see `ROUNDING_STEP`).
-    let mut last_step = f64::INFINITY;
     // JᵀJ and g of the current point, kept while trials are rejected.
     let mut normal: Option<(DMatrix<f64>, DVector<f64>)> = None;
     while evaluations < stopping.evaluations && cost > stopping.cost && failures < STALLED {
@@ -251,12 +242,9 @@ pub(crate) fn minimize<S>(
         let s = within_bounds(&x, &step, lower, upper, &promise);
         let trial = &x + &s;
         let predicted = promise(&s);
-        let relative = |s: &DVector<f64>| {
-            (0..n)
-                .map(|i| s[i].abs() / x[i].abs().max(1e-3 * size))
-                .fold(0.0, f64::max)
+        let small = |s: &DVector<f64>| {
+            (0..n).all(|i| s[i].abs() <= stopping.step * x[i].abs().max(1e-3 * size))
         };
-        let small = |s: &DVector<f64>| relative(s) <= stopping.step;
         // A step too small to change x, or one that promises no reduction:
         // converged, once λ is as small as it goes (a step is small because λ
         // is large only until λ drops). The reduction itself is computed
@@ -286,15 +274,6 @@ pub(crate) fn minimize<S>(
         match accepted {
             Some((next, trial_cost, rho)) => {
                 failures = 0;
-                // Near a solution Gauss–Newton's steps shrink at least
-                // quadratically; a step at rounding level that does not
-                // halve the last one is noise (in an ill-conditioned
-                // direction, a drift): the point before it was as good.
-                let size_of_step = relative(&s);
-                if size_of_step <= ROUNDING_STEP && size_of_step > 0.5 * last_step {
-                    break;
-                }
-                last_step = size_of_step;
                 x = trial;
                 at = next;
                 normal = None;

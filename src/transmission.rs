@@ -15,8 +15,7 @@
 //! transmission angle, and the slider-crank's. For several loops it is
 //! governed by the worst-conditioned loop.
 
-use linkage_runtime::Linkage;
-use nalgebra::{SMatrix, SVector};
+use nalgebra::SMatrix;
 
 /// The equivalent transmission angle of a pose whose Jacobian by the
 /// dependent coordinates is `psi_u` (radians, in [0, π/2]; see the
@@ -43,19 +42,6 @@ pub fn equivalent_angle<const M: usize>(psi_u: &SMatrix<f64, M, M>) -> f64 {
         return 0.0;
     }
     (1.0 - smallest).acos()
-}
-
-/// The equivalent transmission angle of `model` at the pose (`u`, `v`)
-/// ([`equivalent_angle`] of its Ψ_u).
-pub fn equivalent_angle_at<L, const M: usize, const F: usize>(
-    model: &L,
-    u: &SVector<f64, M>,
-    v: &SVector<f64, F>,
-) -> f64
-where
-    L: Linkage<M, F>,
-{
-    equivalent_angle(&model.psi_u(u, v))
 }
 
 /// The acute angle whose cosine is `cosine` in absolute value (radians,

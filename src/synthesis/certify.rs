@@ -222,9 +222,11 @@ where
     for leg in &legs {
         follow(model, poses, leg, requirements, options, &mut worst)?;
     }
-    // The targets' own poses: each starts a leg, but a range of one
-    // target is swept nowhere.
-    for (u, &v) in poses.iter().zip(drivers) {
+    // A range of one target is swept nowhere: its pose is the range.
+    let swept = legs
+        .iter()
+        .any(|leg| leg.from != leg.to || leg.end.is_some());
+    for (u, &v) in poses.iter().zip(drivers).filter(|_| !swept) {
         let angle = transmission_angle(model, requirements, u, v, None).unwrap_or(f64::INFINITY);
         if angle < worst.angle {
             worst = Worst { angle, at: v };
