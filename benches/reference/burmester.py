@@ -66,26 +66,13 @@ four-bar's own dyads are then Burmester dyads only to rounding), and a set
 of general poses (not a four-bar's). Four poses: the first four of each.
 """
 import os
-import subprocess
 import sys
 from functools import lru_cache
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
-VENV = os.path.join(HERE, ".venv")
-PY = os.path.join(VENV, "bin", "python")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from reference_venv import ROOT, ensure_venv  # noqa: E402
 
-
-def ensure_venv():
-    if os.path.abspath(sys.prefix) == os.path.abspath(VENV):
-        return
-    if not os.path.exists(PY):
-        subprocess.check_call([sys.executable, "-m", "venv", VENV])
-        subprocess.check_call([PY, "-m", "pip", "install", "--quiet", "mpmath==1.3.0"])
-    os.execv(PY, [PY, os.path.abspath(__file__)] + sys.argv[1:])
-
-
-ensure_venv()
+ensure_venv(__file__)
 
 import mpmath as mp  # noqa: E402
 

@@ -28,26 +28,12 @@ writes is inside a piece (θ' = 0 there, θ'' of the right sign), so that its
 abscissa is a well-defined number the test can measure.
 """
 import os
-import subprocess
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
-VENV = os.path.join(HERE, ".venv")
-PY = os.path.join(VENV, "bin", "python")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from reference_venv import ROOT, ensure_venv  # noqa: E402
 
-
-def ensure_venv():
-    if os.path.abspath(sys.prefix) == os.path.abspath(VENV):
-        return
-    if not os.path.exists(PY):
-        subprocess.check_call([sys.executable, "-m", "venv", VENV])
-        subprocess.check_call([PY, "-m", "pip", "install", "--quiet", "mpmath==1.3.0"])
-    os.execv(PY, [PY, os.path.abspath(__file__)] + sys.argv[1:])
-
-
-if os.environ.get("CAM_REFERENCE_NO_VENV") != "1":
-    ensure_venv()
+ensure_venv(__file__)
 
 import mpmath as mp  # noqa: E402
 
