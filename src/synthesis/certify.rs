@@ -223,20 +223,13 @@ where
         follow(model, poses, leg, requirements, options, &mut worst)?;
     }
     // A range of one target is swept nowhere: its pose is the range.
-    let swept = legs
-        .iter()
-        .any(|leg| leg.from != leg.to || leg.end.is_some());
-    for (u, &v) in poses.iter().zip(drivers).filter(|_| !swept) {
-        let angle = transmission_angle(model, requirements, u, v, None).unwrap_or(f64::INFINITY);
-        if angle < worst.angle {
-            worst = Worst { angle, at: v };
+    if !legs.iter().any(Leg::sweeps) {
+        for (u, &v) in poses.iter().zip(drivers) {
+            let angle =
+                transmission_angle(model, requirements, u, v, None).unwrap_or(f64::INFINITY);
+            worst.meet(angle, v);
         }
-    }
-    if worst.angle < requirements.min_transmission {
-        return Err(Defect::Transmission {
-            v: worst.at,
-            angle: worst.angle,
-        });
+        worst.keeps(requirements.min_transmission)?;
     }
     let (from, to) = match range {
         Some(range) => range,
@@ -261,6 +254,14 @@ struct Leg {
     from: f64,
     to: f64,
     end: Option<usize>,
+}
+
+impl Leg {
+    /// Whether the leg is swept: it moves the driver or arrives at a
+    /// target (a whole turn back to the start).
+    fn sweeps(&self) -> bool {
+        self.from != self.to || self.end.is_some()
+    }
 }
 
 /// The legs of the range (a revolution if `range` is `None`); `None` if
@@ -288,8 +289,6 @@ fn legs(drivers: &[f64], range: Option<(f64, f64)>) -> Option<Vec<Leg>> {
             let mut legs = vec![leg(0, drivers[0], from, None)];
             legs.extend((1..n).map(|i| leg(i - 1, drivers[i - 1], drivers[i], Some(i))));
             legs.push(leg(n - 1, drivers[n - 1], to, None));
-            // A range of one point (a single target, its own range) is
-            // swept nowhere.
             Some(legs)
         }
         None => {
@@ -346,6 +345,26 @@ struct Worst {
     at: f64,
 }
 
+impl Worst {
+    /// Takes in the angle `angle` met at the driver `at`.
+    fn meet(&mut self, angle: f64, at: f64) {
+        if angle < self.angle {
+            *self = Worst { angle, at };
+        }
+    }
+
+    /// The requirement's smallest angle kept, or the defect where not.
+    fn keeps(&self, min: f64) -> Result<(), Defect> {
+        if self.angle < min {
+            return Err(Defect::Transmission {
+                v: self.at,
+                angle: self.angle,
+            });
+        }
+        Ok(())
+    }
+}
+
 /// One leg: sweeps from its start target's pose to its end, keeping the
 /// worst transmission angle, and checks that it ends in its end target's
 /// pose.
@@ -360,7 +379,7 @@ fn follow<L, const M: usize>(
 where
     L: Linkage<M, 1>,
 {
-    if leg.to == leg.from && leg.end.is_none() {
+    if !leg.sweeps() {
         return Ok(());
     }
     let mut low = Worst {
@@ -376,12 +395,7 @@ where
         |pose| {
             let angle = transmission_angle(model, requirements, &pose.u, pose.v[0], Some(pose))
                 .unwrap_or(f64::INFINITY);
-            if angle < low.angle {
-                low = Worst {
-                    angle,
-                    at: pose.v[0],
-                };
-            }
+            low.meet(angle, pose.v[0]);
         },
     )
     .map_err(|why| Defect::Stops { v: leg.from, why })?;
@@ -395,15 +409,8 @@ where
     if !summary.complete {
         return Err(Defect::Incomplete { v: leg.to });
     }
-    if low.angle < requirements.min_transmission {
-        return Err(Defect::Transmission {
-            v: low.at,
-            angle: low.angle,
-        });
-    }
-    if low.angle < worst.angle {
-        *worst = low;
-    }
+    low.keeps(requirements.min_transmission)?;
+    worst.meet(low.angle, low.at);
     let Some(end) = leg.end else {
         return Ok(());
     };

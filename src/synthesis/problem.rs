@@ -26,6 +26,15 @@ pub enum Timing {
     Free,
 }
 
+/// The smallest and the largest of `values`.
+pub(crate) fn extent(values: &[f64]) -> (f64, f64) {
+    values
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
+            (a.min(v), b.max(v))
+        })
+}
+
 impl Timing {
     /// The prescribed drivers (absolute or relative), if any.
     pub(crate) fn given(&self) -> Option<&[f64]> {
@@ -317,9 +326,8 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
                 }
             }
             Timing::Relative(drivers) => {
-                let spread = drivers.iter().fold(f64::NEG_INFINITY, |a, &d| a.max(d))
-                    - drivers.iter().fold(f64::INFINITY, |a, &d| a.min(d));
-                if spread > high - low {
+                let (least, most) = extent(drivers);
+                if most - least > high - low {
                     return Err(SynthesisError::EmptyRange { from, to });
                 }
             }

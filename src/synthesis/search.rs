@@ -7,7 +7,7 @@
 use super::SynthesisError;
 use super::certify::{Certificate, Defect, Range, Requirements, certify};
 use super::continuation;
-use super::problem::{Problem, Timing};
+use super::problem::{Problem, Timing, extent};
 use super::residuals::{Poses, branch, evaluate};
 use crate::batch;
 use crate::least_squares::{Stopping, minimize};
@@ -304,8 +304,7 @@ where
     let (low, high) = (from.min(to), from.max(to));
     match &problem.timing {
         Timing::Relative(drivers) => {
-            let least = drivers.iter().copied().fold(f64::INFINITY, f64::min);
-            let most = drivers.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            let (least, most) = extent(drivers);
             (low - least, high - most)
         }
         _ => (low, high),
