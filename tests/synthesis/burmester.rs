@@ -9,6 +9,7 @@
 //! differ only by our solver's rounding, amplified by the problem's
 //! conditioning (see [`ROUNDING`] and [`FOUR`]).
 
+use crate::Freed;
 use crate::coupler::Coupler;
 use linkage::prelude::*;
 use linkage::synthesis::{
@@ -197,11 +198,9 @@ fn motion(
     start: Coupler,
     bounds: &[(&str, f64, f64)],
 ) -> Problem<Coupler, 4, 10> {
-    let mut problem = Problem::motion(start, "P", "theta3", poses, Timing::Free).unwrap();
-    for (name, lower, upper) in bounds {
-        problem = problem.free(name, *lower, *upper).unwrap();
-    }
-    problem
+    Problem::motion(start, "P", "theta3", poses, Timing::Free)
+        .unwrap()
+        .freed(bounds)
         .guess(vector![poses[0].0.x, poses[0].0.y, poses[0].1, 0.0])
         .precision_points()
 }

@@ -66,12 +66,7 @@ fn freudenstein_three_precision_points_are_reproduced() {
         .collect();
     let problem = Problem::function(start, "theta4", &targets)
         .unwrap()
-        .free("l2", 0.1, 0.5)
-        .unwrap()
-        .free("l3", 0.3, 1.2)
-        .unwrap()
-        .free("l4", 0.3, 1.2)
-        .unwrap()
+        .freed(&[("l2", 0.1, 0.5), ("l3", 0.3, 1.2), ("l4", 0.3, 1.2)])
         .guess(vector![1.3, -0.8])
         .precision_points();
     let found = synthesize(
@@ -105,12 +100,7 @@ fn bad_problems_are_typed_errors() {
     let four = [(0.1, -0.8), (0.3, -0.85), (0.5, -0.9), (0.7, -0.95)];
     let over = Problem::function(bar, "theta4", &four)
         .unwrap()
-        .free("l2", 10.0, 30.0)
-        .unwrap()
-        .free("l3", 30.0, 70.0)
-        .unwrap()
-        .free("l4", 50.0, 90.0)
-        .unwrap()
+        .freed(&[("l2", 10.0, 30.0), ("l3", 30.0, 70.0), ("l4", 50.0, 90.0)])
         .guess(vector![1.3, -0.8])
         .precision_points();
     // Four arbitrary precision points, three unknowns: no design meets
@@ -242,12 +232,7 @@ fn g3_path(
     let [(a, b), (c, d), (e, f)] = bounds;
     Problem::path(start, "G3", targets, Timing::Free)
         .unwrap()
-        .free("l2", a, b)
-        .unwrap()
-        .free("l3", c, d)
-        .unwrap()
-        .free("l4", e, f)
-        .unwrap()
+        .freed(&[("l2", a, b), ("l3", c, d), ("l4", e, f)])
         .guess(vector![1.3, -0.8])
 }
 
@@ -633,18 +618,14 @@ fn three_position_motion_generation_is_reproduced() {
     };
     let problem = Problem::motion(start, "P", "theta3", &poses, Timing::Free)
         .unwrap()
-        .free("xa", -20.0, 20.0)
-        .unwrap()
-        .free("ya", -20.0, 20.0)
-        .unwrap()
-        .free("xd", 60.0, 100.0)
-        .unwrap()
-        .free("yd", -20.0, 20.0)
-        .unwrap()
-        .free("l2", 10.0, 30.0)
-        .unwrap()
-        .free("l4", 50.0, 90.0)
-        .unwrap()
+        .freed(&[
+            ("xa", -20.0, 20.0),
+            ("ya", -20.0, 20.0),
+            ("xd", 60.0, 100.0),
+            ("yd", -20.0, 20.0),
+            ("l2", 10.0, 30.0),
+            ("l4", 50.0, 90.0),
+        ])
         .guess(vector![poses[0].0.x, poses[0].0.y, poses[0].1, -1.2])
         .precision_points();
     let found = synthesize(
@@ -860,12 +841,11 @@ fn log10_task(scale: f64) -> (Problem<FourBar, 2, 4>, [f64; 3]) {
     let targets: Vec<(f64, f64)> = phi.iter().zip(psi).map(|(&p, q)| (p, q)).collect();
     let problem = Problem::function(start, "theta4", &targets)
         .unwrap()
-        .free("l2", 0.1 * scale, 5.0 * scale)
-        .unwrap()
-        .free("l3", 0.1 * scale, 5.0 * scale)
-        .unwrap()
-        .free("l4", 0.1 * scale, 5.0 * scale)
-        .unwrap()
+        .freed(&[
+            ("l2", 0.1 * scale, 5.0 * scale),
+            ("l3", 0.1 * scale, 5.0 * scale),
+            ("l4", 0.1 * scale, 5.0 * scale),
+        ])
         .guess(vector![-1.09, 2.5])
         .driver_range(45f64.to_radians(), 105f64.to_radians())
         .unwrap()
@@ -1014,12 +994,11 @@ fn precision_points_reach_rounding_at_every_scale() {
         let scaled: Vec<Vector2<f64>> = targets.iter().map(|t| t * scale).collect();
         let problem = Problem::path(bar, "G3", &scaled, Timing::Prescribed(drivers.clone()))
             .unwrap()
-            .free("l2", 10.0 * scale, 30.0 * scale)
-            .unwrap()
-            .free("l3", 30.0 * scale, 70.0 * scale)
-            .unwrap()
-            .free("l4", 50.0 * scale, 90.0 * scale)
-            .unwrap()
+            .freed(&[
+                ("l2", 10.0 * scale, 30.0 * scale),
+                ("l3", 30.0 * scale, 70.0 * scale),
+                ("l4", 50.0 * scale, 90.0 * scale),
+            ])
             .guess(vector![1.3, -0.8])
             .precision_points();
         assert_eq!((problem.residuals(), problem.unknowns()), (10, 3));
@@ -1138,22 +1117,21 @@ fn relative_timing_meets_a_consistent_over_determined_set() {
         px: 20.0,
         py: 5.0,
     };
-    let mut problem =
-        Problem::path(start, "P", &targets, Timing::Relative(relative.clone())).unwrap();
-    for (name, lower, upper) in [
-        ("xa", -10.0, 10.0),
-        ("ya", -10.0, 10.0),
-        ("xd", 70.0, 90.0),
-        ("yd", -10.0, 10.0),
-        ("l2", 15.0, 25.0),
-        ("l3", 40.0, 60.0),
-        ("l4", 60.0, 80.0),
-        ("px", 15.0, 35.0),
-        ("py", -10.0, 10.0),
-    ] {
-        problem = problem.free(name, lower, upper).unwrap();
-    }
-    let problem = problem.guess(vector![1.3, -0.8]).precision_points();
+    let problem = Problem::path(start, "P", &targets, Timing::Relative(relative.clone()))
+        .unwrap()
+        .freed(&[
+            ("xa", -10.0, 10.0),
+            ("ya", -10.0, 10.0),
+            ("xd", 70.0, 90.0),
+            ("yd", -10.0, 10.0),
+            ("l2", 15.0, 25.0),
+            ("l3", 40.0, 60.0),
+            ("l4", 60.0, 80.0),
+            ("px", 15.0, 35.0),
+            ("py", -10.0, 10.0),
+        ])
+        .guess(vector![1.3, -0.8])
+        .precision_points();
     assert_eq!((problem.residuals(), problem.unknowns()), (18, 10));
     let found = synthesize(
         &problem,
@@ -1193,12 +1171,7 @@ fn a_search_for_designs_within_a_tolerance_counts_only_those() {
     };
     let problem = Problem::function_over(start, "theta4", (0.0, 60f64.to_radians()), 11, wanted)
         .unwrap()
-        .free("l2", 0.1, 5.0)
-        .unwrap()
-        .free("l3", 0.1, 5.0)
-        .unwrap()
-        .free("l4", 0.1, 5.0)
-        .unwrap()
+        .freed(&[("l2", 0.1, 5.0), ("l3", 0.1, 5.0), ("l4", 0.1, 5.0)])
         .guess(vector![1.0, wanted(0.0)]);
     let mut requirements = Requirements::new(Range::Task);
     requirements.min_transmission = 0.0;
@@ -1239,12 +1212,11 @@ proptest::proptest! {
         let start = FourBar { l1: scale, l2: 0.17 * scale, l3: 0.5 * scale, l4: 0.7 * scale };
         let problem = Problem::function(start, "theta4", &targets)
             .unwrap()
-            .free("l2", 0.1 * scale, 0.25 * scale)
-            .unwrap()
-            .free("l3", 0.3 * scale, 0.9 * scale)
-            .unwrap()
-            .free("l4", 0.4 * scale, 1.0 * scale)
-            .unwrap()
+            .freed(&[
+                ("l2", 0.1 * scale, 0.25 * scale),
+                ("l3", 0.3 * scale, 0.9 * scale),
+                ("l4", 0.4 * scale, 1.0 * scale),
+            ])
             .guess(vector![t3, t4])
             .precision_points();
         let mut requirements = Requirements::new(Range::Targets);
@@ -1259,5 +1231,19 @@ proptest::proptest! {
             / scale;
         proptest::prop_assert!(off < 1e-12, "scale {scale:e}: {off:e} from the design, {design:?}");
         proptest::prop_assert!(design.rms_error < 1e-14, "{design:?}");
+    }
+}
+
+/// Frees several parameters at once: the tests' builder chains.
+pub(crate) trait Freed {
+    /// Each (name, lower, upper) of `bounds` freed, in order.
+    fn freed(self, bounds: &[(&str, f64, f64)]) -> Self;
+}
+
+impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Freed for Problem<L, M, K> {
+    fn freed(self, bounds: &[(&str, f64, f64)]) -> Self {
+        bounds.iter().fold(self, |problem, &(name, lower, upper)| {
+            problem.free(name, lower, upper).unwrap()
+        })
     }
 }

@@ -2,6 +2,7 @@
 //! numbers, their exact gradient with them), a closed target curve, and a
 //! function fitted over a range by least squares.
 
+use crate::Freed;
 use linkage::mechanisms::FourBar;
 use linkage::prelude::*;
 use linkage::synthesis::{Problem, Range, Requirements, Search, SynthesisError, synthesize};
@@ -41,14 +42,12 @@ fn a_designers_term_picks_the_scale_function_generation_leaves_free() {
     };
     let problem = Problem::function(start, "theta4", &targets)
         .unwrap()
-        .free("l1", 1.0, 3.0)
-        .unwrap()
-        .free("l2", 0.2, 1.0)
-        .unwrap()
-        .free("l3", 0.6, 2.4)
-        .unwrap()
-        .free("l4", 0.6, 2.4)
-        .unwrap()
+        .freed(&[
+            ("l1", 1.0, 3.0),
+            ("l2", 0.2, 1.0),
+            ("l3", 0.6, 2.4),
+            ("l4", 0.6, 2.4),
+        ])
         .term("ground link of 2", |p| p[0] - 2.0)
         .guess(vector![1.3, -0.8])
         .precision_points();
@@ -106,12 +105,7 @@ fn a_closed_target_curve_is_fitted_by_least_squares() {
     };
     let problem = Problem::curve(start, "G3", &curve, 24)
         .unwrap()
-        .free("l2", 10.0, 30.0)
-        .unwrap()
-        .free("l3", 30.0, 70.0)
-        .unwrap()
-        .free("l4", 50.0, 90.0)
-        .unwrap()
+        .freed(&[("l2", 10.0, 30.0), ("l3", 30.0, 70.0), ("l4", 50.0, 90.0)])
         .guess(vector![1.3, -0.8]);
     let found = synthesize(
         &problem,
@@ -176,12 +170,7 @@ fn a_function_over_a_range_that_a_design_generates_exactly_gives_that_design() {
         |v| theta4(&worksheet, (v0, &u0), v),
     )
     .unwrap()
-    .free("l2", 10.0, 30.0)
-    .unwrap()
-    .free("l3", 30.0, 70.0)
-    .unwrap()
-    .free("l4", 50.0, 90.0)
-    .unwrap()
+    .freed(&[("l2", 10.0, 30.0), ("l3", 30.0, 70.0), ("l4", 50.0, 90.0)])
     .guess(vector![1.3, -0.8]);
     assert_eq!((problem.residuals(), problem.unknowns()), (13, 3));
     let found = synthesize(
@@ -221,12 +210,7 @@ fn a_function_fitted_over_its_range_beats_three_precision_points_there() {
     };
     let free = |problem: Problem<FourBar, 2, 4>| {
         problem
-            .free("l2", 0.1, 5.0)
-            .unwrap()
-            .free("l3", 0.1, 5.0)
-            .unwrap()
-            .free("l4", 0.1, 5.0)
-            .unwrap()
+            .freed(&[("l2", 0.1, 5.0), ("l3", 0.1, 5.0), ("l4", 0.1, 5.0)])
             .guess(vector![1.0, wanted(0.0)])
     };
     let range = (0.0, 60f64.to_radians());
