@@ -229,3 +229,6 @@ where
     }
     (trig_u, trig_v)
 }
+
+#[cfg(test)]
+mod tests;
