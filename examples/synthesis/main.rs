@@ -538,8 +538,5 @@ fn rates(
             ));
         }
     }
-    t.push_str(
-        "| a PSO rate quoted for pylinkage (source not found, not measured here) | 15 814 |\n",
-    );
     Ok(t)
 }

@@ -205,7 +205,6 @@ pub(crate) fn solve_fused<L: Linkage<M, F> + ?Sized, const M: usize, const F: us
             let (sin_cos_u, sin_cos_v) = trig.anchored();
             let pose_trig = PoseTrig {
                 u,
-                v: *v,
                 sin_cos_u,
                 sin_cos_v,
             };

@@ -62,7 +62,12 @@ pub struct Kinematics<const M: usize, const F: usize> {
 
 /// Positions, velocities and accelerations of a pose, of the coordinates
 /// and of the points.
-#[derive(Clone, Copy, Debug, PartialEq)]
+///
+/// Two analyses are equal when their public fields are and they were given
+/// the same drivers (which [`crate::Motion::of_analysis`] reads); the sines
+/// and cosines one may keep for [`crate::Sensitivities::sensitivities_of`]
+/// change none of its numbers, and are not compared.
+#[derive(Clone, Copy, Debug)]
 pub struct Analysis<const M: usize, const F: usize, P> {
     pub u: SVector<f64, M>,
     pub udot: SVector<f64, M>,
@@ -88,4 +93,40 @@ pub struct Analysis<const M: usize, const F: usize, P> {
     /// default options' path; `None` on the others), which
     /// [`crate::Sensitivities::sensitivities_of`] uses.
     pub(crate) trig: Option<PoseTrig<M, F>>,
+}
+
+impl<const M: usize, const F: usize, P: PartialEq> PartialEq for Analysis<M, F, P> {
+    fn eq(&self, other: &Self) -> bool {
+        // Every field but `trig`, named so that a field added later is not
+        // left out unseen.
+        let Analysis {
+            u,
+            udot,
+            uddot,
+            ratios,
+            points,
+            point_velocities,
+            point_accelerations,
+            iterations,
+            residual,
+            rcond,
+            v,
+            vdot,
+            vddot,
+            trig: _,
+        } = self;
+        *u == other.u
+            && *udot == other.udot
+            && *uddot == other.uddot
+            && *ratios == other.ratios
+            && *points == other.points
+            && *point_velocities == other.point_velocities
+            && *point_accelerations == other.point_accelerations
+            && *iterations == other.iterations
+            && *residual == other.residual
+            && *rcond == other.rcond
+            && *v == other.v
+            && *vdot == other.vdot
+            && *vddot == other.vddot
+    }
 }

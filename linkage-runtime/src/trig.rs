@@ -33,12 +33,12 @@ pub(crate) type SinCos<const N: usize> = [(f64, f64); N];
 /// The sines and cosines an analysis computed at its pose, handed on to the
 /// sensitivities there ([`crate::Sensitivities::sensitivities_of`]): `sin_cos_u[k]` =
 /// `u[k].sin_cos()` for the coordinates of [`crate::Linkage::TRIG_U`], and
-/// likewise of v (the other entries unspecified). They are used only at
-/// exactly this `u` and `v`.
+/// likewise of the analysis's drivers v (the other entries unspecified).
+/// They are used only at exactly this `u`: the analysis's own `u` may be
+/// changed by its caller, its drivers may not.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct PoseTrig<const M: usize, const F: usize> {
     pub(crate) u: SVector<f64, M>,
-    pub(crate) v: SVector<f64, F>,
     pub(crate) sin_cos_u: [(f64, f64); M],
     pub(crate) sin_cos_v: [(f64, f64); F],
 }

@@ -135,7 +135,7 @@ pub trait Sensitivities<const M: usize, const F: usize, const K: usize>:
     ) -> Result<Sensitivity<M, K, Self::Points>, Error> {
         let motion = Motion::of_analysis(analysis);
         match &analysis.trig {
-            Some(trig) if trig.u == motion.u && trig.v == motion.v => {
+            Some(trig) if trig.u == motion.u => {
                 let (trig_u, trig_v) = completed::<Self, M, F, K>(trig, &motion.u, &motion.v);
                 with_trig(self, &motion, &trig_u, &trig_v, options)
             }
@@ -229,3 +229,6 @@ where
     }
     (trig_u, trig_v)
 }
+
+#[cfg(test)]
+mod tests;
