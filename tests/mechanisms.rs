@@ -11,7 +11,8 @@
 mod common;
 
 use common::{BOOM, Boom, FIVE_BAR, SIX_BAR, SLIDER_CRANK, SixBar, check_invariants};
-use linkage::mechanisms::{CouplerFourBar, FourBar};
+use linkage::closed_form::{self, Grashof};
+use linkage::mechanisms::{BareFourBar, CouplerFourBar, FourBar};
 use linkage::prelude::*;
 use std::f64::consts::TAU;
 
@@ -182,4 +183,71 @@ fn coupler_four_bar_frame() {
         );
         assert!(CouplerFourBar::WORKSHEET.psi(&u, &v).norm() < 1e-12);
     }
+}
+
+/// Link lengths (l1, l2, l3, l4) of each Grashof class, the ground l1
+/// first.
+const CLASSES: [([f64; 4], Grashof); 6] = [
+    ([80.0, 20.0, 50.0, 70.0], Grashof::CrankRocker),
+    ([20.0, 80.0, 50.0, 70.0], Grashof::DoubleCrank),
+    ([80.0, 50.0, 20.0, 70.0], Grashof::GrashofDoubleRocker),
+    ([80.0, 70.0, 50.0, 20.0], Grashof::RockerCrank),
+    ([80.0, 55.0, 60.0, 70.0], Grashof::TripleRocker),
+    ([80.0, 30.0, 50.0, 60.0], Grashof::ChangePoint),
+];
+
+fn reference([l1, l2, l3, l4]: [f64; 4]) -> Grashof {
+    closed_form::FourBar { l1, l2, l3, l4 }.grashof()
+}
+
+/// The ready four-bars' Grashof type is the closed form's, for each class.
+#[test]
+fn four_bar_and_bare_four_bar_grashof_is_the_closed_forms() {
+    for (lengths, class) in CLASSES {
+        let [l1, l2, l3, l4] = lengths;
+        assert_eq!(reference(lengths), class, "{lengths:?}");
+        let named = FourBar { l1, l2, l3, l4 };
+        let bare = BareFourBar { l1, l2, l3, l4 };
+        assert_eq!(named.grashof(), reference(lengths), "FourBar {lengths:?}");
+        assert_eq!(
+            bare.grashof(),
+            reference(lengths),
+            "BareFourBar {lengths:?}"
+        );
+    }
+}
+
+/// `CouplerFourBar`'s ground is |AD| wherever its pivots are: A moved off
+/// the origin and D off A's horizontal, at a distance l1 along (4, 3)/5 or
+/// (−3, 4)/5 (exact in binary, so that the change point stays one). Read
+/// as xd − xa alone, the change point would be a crank-rocker.
+#[test]
+fn coupler_four_bar_grashof_takes_its_ground_from_the_pivots() {
+    let (xa, ya) = (3.0, -2.0);
+    for (along, across) in [(4.0, 3.0), (-3.0, 4.0)] {
+        for (lengths, class) in CLASSES {
+            let [l1, l2, l3, l4] = lengths;
+            let bar = CouplerFourBar {
+                xa,
+                ya,
+                xd: xa + l1 * along / 5.0,
+                yd: ya + l1 * across / 5.0,
+                l2,
+                l3,
+                l4,
+                ..CouplerFourBar::WORKSHEET
+            };
+            assert_eq!(bar.closed_form().l1, l1, "{lengths:?}");
+            assert_eq!(bar.grashof(), reference(lengths), "{lengths:?}");
+            assert_eq!(bar.grashof(), class, "{lengths:?}");
+        }
+    }
+    let [l1, l2, l3, l4] = CLASSES[5].0;
+    let x_only = closed_form::FourBar {
+        l1: l1 * 4.0 / 5.0,
+        l2,
+        l3,
+        l4,
+    };
+    assert_eq!(x_only.grashof(), Grashof::CrankRocker);
 }

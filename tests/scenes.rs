@@ -360,6 +360,29 @@ fn bad_scenes_are_typed_errors() {
         matches!(&err, SceneError::UnknownName(UnknownName { kind: NameKind::Point, name, known, .. }) if name == "A" && known.contains("G3")),
         "{err}"
     );
+    assert_eq!(
+        err.to_string(),
+        "`scene` names the point `A`, which is not defined (the points: B, C, G2, G3, G4)"
+    );
+    // A ground pivot resolves where no frame point has its name; a name
+    // that is neither fails with the same error.
+    let grounded = Scene::new().ground("A", [0.0, 0.0]);
+    assert!(
+        grounded
+            .clone()
+            .link(["A", "B"])
+            .render(&frame, &[])
+            .is_ok()
+    );
+    assert_eq!(
+        grounded.link(["A", "Q"]).render(&frame, &[]).unwrap_err(),
+        SceneError::UnknownName(UnknownName {
+            kind: NameKind::Point,
+            owner: "scene".into(),
+            name: "Q".into(),
+            known: "B, C, G2, G3, G4".into(),
+        })
+    );
     let positions_only =
         Frame::positions(&FourBar::WORKSHEET, &pose.u, &vector![20f64.to_radians()]);
     assert_eq!(

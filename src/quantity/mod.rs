@@ -1,11 +1,11 @@
 //! Named quantities of a pose, for every analysis that reads one: the
-//! lookup of a model's names ([`Names`], [`find`], [`parameter`],
-//! [`body`]), each failing with the one [`UnknownName`](crate::error::UnknownName)
-//! error, and the selector of a quantity of a pose ([`Quantity`]: a
-//! coordinate, a point's x or y, at position, velocity or acceleration
-//! level, or a function of the pose), which reads a [`Pose`] whose numbers
-//! are plain (`f64`), dual numbers that carry a rate ([`watch`](crate::watch))
-//! or dual vectors that carry a gradient ([`tolerance`](crate::tolerance)).
+//! lookup of a model's names ([`Names`]), each failing with the one
+//! [`UnknownName`](crate::error::UnknownName) error, and the selector of a
+//! quantity of a pose ([`Quantity`]: a coordinate, a point's x or y, at
+//! position, velocity or acceleration level, or a function of the pose),
+//! which reads a [`Pose`] whose numbers are plain (`f64`), dual numbers
+//! that carry a rate ([`watch`](crate::watch)) or dual vectors that carry a
+//! gradient ([`tolerance`](crate::tolerance)).
 //!
 //! ```
 //! use linkage::prelude::*;
@@ -41,7 +41,8 @@ mod names;
 mod pose;
 mod selector;
 
-pub use names::{Names, body, find, parameter};
+pub use names::Names;
+pub(crate) use names::{body, find, parameter};
 pub use pose::Pose;
 pub use selector::{Quantity, Resolved};
 

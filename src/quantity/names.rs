@@ -7,7 +7,12 @@ use linkage_runtime::Linkage;
 
 /// The index of `name` among `known`; if it is not there, the error of
 /// `owner` naming the `kind` `name`.
-pub fn find<'a, I>(kind: NameKind, owner: &str, name: &str, known: I) -> Result<usize, UnknownName>
+pub(crate) fn find<'a, I>(
+    kind: NameKind,
+    owner: &str,
+    name: &str,
+    known: I,
+) -> Result<usize, UnknownName>
 where
     I: IntoIterator<Item = &'a str>,
     I::IntoIter: Clone,
@@ -21,13 +26,13 @@ where
 
 /// The index of the parameter `name` among a model's `params`
 /// (`PARAM_NAMES`), which `owner` names.
-pub fn parameter(params: &[&str], owner: &str, name: &str) -> Result<usize, UnknownName> {
+pub(crate) fn parameter(params: &[&str], owner: &str, name: &str) -> Result<usize, UnknownName> {
     find(NameKind::Parameter, owner, name, params.iter().copied())
 }
 
 /// The index of the body `name`, which `owner` names, among the ground
 /// (index 0) and `bodies` (from index 1).
-pub fn body<'a, I>(bodies: I, owner: &str, name: &str) -> Result<usize, UnknownName>
+pub(crate) fn body<'a, I>(bodies: I, owner: &str, name: &str) -> Result<usize, UnknownName>
 where
     I: IntoIterator<Item = &'a str>,
     I::IntoIter: Clone,

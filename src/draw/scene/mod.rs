@@ -70,7 +70,6 @@ mod symbols;
 
 use crate::error::{NameKind, UnknownName};
 use crate::ground::Ground;
-use crate::quantity;
 use linkage_runtime::{Analysis, Linkage, SweepPose};
 use nalgebra::{SVector, Vector2};
 use symbols::{ground_symbol, guide_symbol};
@@ -194,8 +193,14 @@ impl Frame {
 
     /// The index of the point `name`, which the scene names.
     fn point(&self, name: &str) -> Result<usize, UnknownName> {
+        self.index(name).ok_or_else(|| self.unknown(name))
+    }
+
+    /// The error of the scene naming `name`, which is none of the frame's
+    /// points: built only once a lookup has failed.
+    fn unknown(&self, name: &str) -> UnknownName {
         let names = self.names.iter().map(String::as_str);
-        quantity::find(NameKind::Point, "scene", name, names)
+        UnknownName::new(NameKind::Point, "scene", name, names)
     }
 }
 
@@ -486,13 +491,13 @@ pub(super) fn resolve(
     name: &str,
     ground: &[(String, Vector2<f64>)],
 ) -> Result<Vector2<f64>, SceneError> {
-    let at = match frame.point(name) {
-        Ok(k) => frame.positions[k],
-        Err(unknown) => ground
+    let at = match frame.index(name) {
+        Some(k) => frame.positions[k],
+        None => ground
             .iter()
             .find(|(n, _)| n == name)
             .map(|(_, p)| *p)
-            .ok_or(unknown)?,
+            .ok_or_else(|| frame.unknown(name))?,
     };
     finite(at, "position", name)?;
     Ok(at)
