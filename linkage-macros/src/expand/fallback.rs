@@ -18,6 +18,7 @@
 //! (`__LINKAGE_M`, ...): a struct called `M` or `F` must not turn a
 //! dimension into a type.
 
+use super::constants;
 use super::quantities::{QUANTITIES, Scalar, Shape, Trait};
 use super::signature::{self, Dim, Dims};
 use linkage_symbolic::ast::Input;
@@ -45,19 +46,6 @@ fn dims(input: &Input) -> Dims {
     }
 }
 
-/// A constant array of `dim` elements (`[&str; n]`, `[bool; n]`), or a
-/// slice where the number is not known.
-fn names_const(name: &str, dim: &Dim, element: TokenStream, value: TokenStream) -> TokenStream {
-    let name = format_ident!("{}", name);
-    match dim.value() {
-        Some(n) => {
-            let n = proc_macro2::Literal::usize_unsuffixed(n);
-            quote!(pub const #name: [#element; #n] = [#value; #n];)
-        }
-        None => quote!(pub const #name: &'static [#element] = &[];),
-    }
-}
-
 /// The struct as written, followed by the fallback items.
 pub fn fallback(input: &Input) -> TokenStream {
     let item = &input.item;
@@ -75,17 +63,13 @@ pub fn fallback(input: &Input) -> TokenStream {
         .map(|p| p.name.to_string())
         .collect();
     let point_indices = super::point_indices(names.iter().map(String::as_str));
-    let str_ = quote!(&'static str);
-    let consts = [
-        names_const("U_NAMES", &dims.m, str_.clone(), quote!("")),
-        names_const("V_NAMES", &dims.f, str_.clone(), quote!("")),
-        names_const("POINT_NAMES", &dims.np, str_.clone(), quote!("")),
-        names_const("PARAM_NAMES", &dims.k, str_, quote!("")),
-        names_const("TRIG_U", &dims.m, quote!(bool), quote!(false)),
-        names_const("TRIG_V", &dims.f, quote!(bool), quote!(false)),
-        names_const("SENSITIVITY_TRIG_U", &dims.m, quote!(bool), quote!(false)),
-        names_const("SENSITIVITY_TRIG_V", &dims.f, quote!(bool), quote!(false)),
-    ];
+    let consts = constants::all().map(|c| c.placeholder(&dims, false));
+    let (u_names, v_names, param_names) = (
+        constants::U_NAMES.placeholder(&dims, true),
+        constants::V_NAMES.placeholder(&dims, true),
+        constants::PARAM_NAMES.placeholder(&dims, true),
+    );
+    let symbolic_name = format_ident!("{}", constants::SYMBOLIC);
     let inherent = QUANTITIES.iter().filter(|q| q.function).map(|q| {
         let fn_name = format_ident!("{}", q.name);
         let args = signature::args(q, &dims, |_| false);
@@ -159,7 +143,7 @@ pub fn fallback(input: &Input) -> TokenStream {
             impl #impl_generics #ty #ty_generics #where_clause {
                 #(#consts)*
                 #point_indices
-                pub const SYMBOLIC: ::linkage::SymbolicTable = ::linkage::SymbolicTable {
+                pub const #symbolic_name: ::linkage::SymbolicTable = ::linkage::SymbolicTable {
                     name: #name,
                     u: &[],
                     v: &[],
@@ -171,8 +155,8 @@ pub fn fallback(input: &Input) -> TokenStream {
             #[allow(unused_variables)]
             impl #linkage_generics #linkage for #ty #ty_generics #where_clause {
                 type Points = [Vector2<f64>; #np];
-                const U_NAMES: [&'static str; #m] = [""; #m];
-                const V_NAMES: [&'static str; #f] = [""; #f];
+                #u_names
+                #v_names
                 const POINT_NAMES: &'static [&'static str] = &[];
                 const SYMBOLIC: ::linkage::SymbolicTable = Self::SYMBOLIC;
                 #(#kinematics)*
@@ -183,7 +167,7 @@ pub fn fallback(input: &Input) -> TokenStream {
             }
             #[allow(unused_variables)]
             impl #sensitivity_generics #sensitivities_trait for #ty #ty_generics #where_clause {
-                const PARAM_NAMES: [&'static str; #k] = [""; #k];
+                #param_names
                 fn params(&self) -> SVector<f64, #k> {
                     #never
                 }
