@@ -7,7 +7,8 @@
 //! Every dimension the attribute gives, as far as it was read, is that
 //! number: m from `u` (or else the number of closure equations), f from
 //! `v`, the points from `points`, k from `params` or else the fields the
-//! equations use, each list's entries as written (a malformed one
+//! equations use (as the pipeline resolved them where it lowered the
+//! equations), each list's entries as written (a malformed one
 //! included, a name written twice counted once). A generic trait impl
 //! would leave a call such as `bar.sensitivities_of(..)` ambiguous, and a
 //! slice is not the array a user's code passes on
@@ -21,13 +22,14 @@
 use super::constants;
 use super::quantities::{QUANTITIES, Scalar, Shape, Trait};
 use super::signature::{self, Dim, Dims};
+use linkage_symbolic::Unbuilt;
 use linkage_symbolic::ast::Input;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
 /// The dimensions as far as the attribute gives them.
-fn dims(input: &Input) -> Dims {
-    let [m, f, n, k] = ["__LINKAGE_M", "__LINKAGE_F", "__LINKAGE_N", "__LINKAGE_K"]
+fn dims(input: &Input, unbuilt: &Unbuilt) -> Dims {
+    let [m, f, n, k_name] = ["__LINKAGE_M", "__LINKAGE_F", "__LINKAGE_N", "__LINKAGE_K"]
         .map(|s| format_ident!("{}", s));
     let given = |written: usize| (written > 0).then_some(written);
     let m = Dim::known_or_generic(
@@ -36,7 +38,8 @@ fn dims(input: &Input) -> Dims {
     );
     let f = Dim::known_or_generic(given(input.v.meant(&input.u.items)), &f);
     let n = Dim::known_or_generic(m.value().zip(f.value()).map(|(m, f)| m + f), &n);
-    let k = Dim::known_or_generic(linkage_symbolic::params::count_as_written(input), &k);
+    let k = linkage_symbolic::params::count_as_written(input, unbuilt.params);
+    let k = Dim::known_or_generic(k, &k_name);
     Dims {
         m,
         f,
@@ -47,11 +50,11 @@ fn dims(input: &Input) -> Dims {
 }
 
 /// The struct as written, followed by the fallback items.
-pub fn fallback(input: &Input) -> TokenStream {
+pub fn fallback(input: &Input, unbuilt: &Unbuilt) -> TokenStream {
     let item = &input.item;
     let ty = &item.ident;
     let (impl_generics, ty_generics, where_clause) = item.generics.split_for_impl();
-    let dims = dims(input);
+    let dims = dims(input, unbuilt);
     let never = quote!(::core::unimplemented!(
         "#[linkage::linkage] on this struct has errors"
     ));

@@ -18,6 +18,7 @@ mod symbolic_table;
 mod trait_impl;
 
 use function::Output;
+use linkage_symbolic::Unbuilt;
 use linkage_symbolic::ast::Input;
 use linkage_symbolic::dag::{Dag, Id};
 use linkage_symbolic::derivatives::Derivatives;
@@ -32,13 +33,15 @@ use quote::{format_ident, quote};
 /// or, if the attribute has mistakes, every error plus the fallback items
 /// so that the rest of the user's code still type-checks.
 pub fn expand(attr: TokenStream, item: TokenStream) -> TokenStream {
-    let (input, result) = run(attr, item.clone());
-    match result {
+    let run = run(attr, item.clone());
+    match run.result {
         Ok(tokens) => tokens,
         Err(error) => {
             let compile_errors = error.to_compile_error();
             // The struct with the fallback items, or the item as written.
-            let item = input.as_ref().map(fallback::fallback).unwrap_or(item);
+            let item = (run.input.as_ref())
+                .map(|input| fallback::fallback(input, &run.unbuilt))
+                .unwrap_or(item);
             quote! {
                 #item
                 #compile_errors
@@ -47,19 +50,30 @@ pub fn expand(attr: TokenStream, item: TokenStream) -> TokenStream {
     }
 }
 
-/// The pipeline's verdict: the parsed input, if the item is a struct, and
-/// the generated items or every error found — always one or the other.
-pub fn run(
-    attr: TokenStream,
-    item: TokenStream,
-) -> (Option<Input>, Result<TokenStream, syn::Error>) {
+/// The pipeline's verdict: the generated items or every error found —
+/// always one or the other.
+pub struct Run {
+    /// The parsed input, if the item is a struct.
+    pub input: Option<Input>,
+    pub result: Result<TokenStream, syn::Error>,
+    /// What the pipeline read of an attribute with mistakes.
+    pub unbuilt: Unbuilt,
+}
+
+pub fn run(attr: TokenStream, item: TokenStream) -> Run {
     let mut errors = Errors::default();
     let input = Input::parse(attr, item, &mut errors);
-    let generated = input
-        .as_ref()
-        .and_then(|input| linkage_symbolic::build(input, &mut errors))
-        .zip(input.as_ref())
-        .map(|(model, input)| Generator::new(input, &model).items());
+    let mut unbuilt = Unbuilt::default();
+    let generated =
+        input
+            .as_ref()
+            .and_then(|input| match linkage_symbolic::build(input, &mut errors) {
+                Ok(model) => Some(Generator::new(input, &model).items()),
+                Err(partial) => {
+                    unbuilt = partial;
+                    None
+                }
+            });
     let result = match (errors.combined(), generated) {
         (None, Some(tokens)) => Ok(tokens),
         (Some(error), _) => Err(error),
@@ -71,7 +85,11 @@ pub fn run(
              error: please report it with the attribute)",
         )),
     };
-    (input, result)
+    Run {
+        input,
+        result,
+        unbuilt,
+    }
 }
 
 /// The items of one model.
@@ -451,6 +469,35 @@ mod tests {
                 assert_eq!(declared, 1, "`{name}` with `{theta3}` in the closure");
             }
         }
+    }
+
+    /// On the error path, where the equations were lowered, k is the
+    /// number of parameters the pipeline resolved: a field whose uses
+    /// cancel (`l1 - l1`) is none, as it is none without the mistake (here
+    /// a reserved name for a point).
+    #[test]
+    fn the_fallbacks_k_is_the_parameters_resolved() {
+        let tokens = expand(
+            quote!(
+                u = [theta3],
+                v = [theta2],
+                points = [params = (l2 * theta2.cos(), l2 * theta2.sin())],
+                closure = [l2 * theta2.cos() + l3 * theta3.cos() + l1 - l1]
+            ),
+            quote!(
+                pub struct Bar {
+                    pub l1: f64,
+                    pub l2: f64,
+                    pub l3: f64,
+                }
+            ),
+        );
+        let text = tokens.to_string();
+        assert!(text.contains("compile_error"), "the mistake is reported");
+        assert!(
+            text.contains("const PARAM_NAMES : [& 'static str ; 2]"),
+            "{text}"
+        );
     }
 
     /// The four-bar of the worksheet, formatted as `cargo expand` shows it.
