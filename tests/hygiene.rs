@@ -3,7 +3,7 @@
 //! `N`, `D`, `U`, `V`, `Self_`), and fields named like the generated
 //! temporaries and locals (`s_theta3`, `c_theta3`, `psi`, `inverse`, ...),
 //! compile and give the same numbers as the plain four-bar. (The error path
-//! on such a struct is `tests/ui/struct_named_m.rs`.)
+//! on such a struct is `tests/ui/struct_named_f.rs`.)
 
 use linkage::prelude::*;
 

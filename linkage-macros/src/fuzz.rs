@@ -290,7 +290,7 @@ fn apply(atoms: &mut Vec<Atom>, edit: &Edit) {
 /// What one run of the attribute showed; `Err` says which property failed.
 fn check(attr: TokenStream, item: TokenStream) -> Result<Verdict, TestCaseError> {
     let item_is_rust = syn::parse2::<syn::Item>(item.clone()).is_ok();
-    let (_, result) = run(attr.clone(), item.clone());
+    let result = run(attr.clone(), item.clone()).result;
     let verdict = match &result {
         Ok(_) => Verdict::Accepted,
         Err(error) => {
@@ -334,7 +334,7 @@ fn corpus_is_accepted() {
     for (attr, item) in CORPUS {
         let attr = TokenStream::from_str(attr).expect("tokens");
         let item = TokenStream::from_str(item).expect("tokens");
-        match run(attr, item).1 {
+        match run(attr, item).result {
             Ok(_) => {}
             Err(e) => panic!("a corpus entry is rejected: {e}"),
         }

@@ -31,8 +31,6 @@ pub struct List<T> {
     /// The number of entries written, malformed ones included: the size
     /// the list was meant to have (0 for a list not given).
     pub written: usize,
-    /// What is written between the brackets.
-    pub tokens: TokenStream,
     pub span: Span,
 }
 
@@ -41,7 +39,6 @@ impl<T> List<T> {
         List {
             items: Vec::new(),
             written: 0,
-            tokens: TokenStream::new(),
             span: Span::call_site(),
         }
     }
@@ -75,6 +72,10 @@ pub struct Input {
     /// The parameters to differentiate by, as written (`None`: every `f64`
     /// field the equations use).
     pub params: Option<List<Ident>>,
+    /// The bracketed lists of `points` and `closure` as written, malformed
+    /// entries included: where [`crate::params::count_as_written`] looks
+    /// for the fields the equations name when they could not be lowered.
+    pub equation_tokens: TokenStream,
     /// Whether `u`, `v` and `closure` were all given and well-formed (if
     /// not, the errors say why and the lists above are empty).
     pub complete: bool,
@@ -103,6 +104,7 @@ impl Input {
         let mut points = None;
         let mut closure = None;
         let mut params = None;
+        let mut equation_tokens = TokenStream::new();
         let mut seen: Vec<(String, Span)> = Vec::new();
         // Keys written, even malformed, or suggested for a misspelt key: no
         // "missing" error for them, the error on the key itself says it all.
@@ -128,12 +130,26 @@ impl Input {
                 continue;
             }
             seen.push((name.clone(), key.span()));
+            // The equations' tokens kept, the names' dropped.
+            let tokens = &mut equation_tokens;
             match name.as_str() {
-                "u" => u = parse_list(&key, value, errors, parse_ident),
-                "v" => v = parse_list(&key, value, errors, parse_ident),
-                "points" => points = parse_list(&key, value, errors, parse_point),
-                "closure" => closure = parse_list(&key, value, errors, parse_expr),
-                "params" => params = parse_list(&key, value, errors, parse_param),
+                "u" => u = parse_list(&key, value, errors, parse_ident).map(|(list, _)| list),
+                "v" => v = parse_list(&key, value, errors, parse_ident).map(|(list, _)| list),
+                "points" => {
+                    points = parse_list(&key, value, errors, parse_point).map(|(list, written)| {
+                        tokens.extend([written]);
+                        list
+                    })
+                }
+                "closure" => {
+                    closure = parse_list(&key, value, errors, parse_expr).map(|(list, written)| {
+                        tokens.extend([written]);
+                        list
+                    })
+                }
+                "params" => {
+                    params = parse_list(&key, value, errors, parse_param).map(|(list, _)| list)
+                }
                 other => {
                     let hint = match crate::suggest::closest(other, KEYS.iter().copied()) {
                         Some(k) => format!("; did you mean `{k}`?"),
@@ -173,6 +189,7 @@ impl Input {
             points,
             closure: closure.unwrap_or_else(List::empty),
             params,
+            equation_tokens,
             complete,
         })
     }
@@ -255,13 +272,14 @@ fn parse_entry(chunk: &TokenStream, errors: &mut Errors) -> Option<(Ident, Vec<T
     Some((key, iter.collect()))
 }
 
-/// `[a, b, c]`, each element parsed by `parse_item`.
+/// `[a, b, c]`, each element parsed by `parse_item`; with the list as
+/// written.
 fn parse_list<T>(
     key: &Ident,
     value: Vec<TokenTree>,
     errors: &mut Errors,
     parse_item: fn(TokenStream, &mut Errors) -> Option<T>,
-) -> Option<List<T>> {
+) -> Option<(List<T>, TokenTree)> {
     let group = match value.as_slice() {
         [TokenTree::Group(g)] if g.delimiter() == Delimiter::Bracket => g.clone(),
         _ => {
@@ -280,12 +298,12 @@ fn parse_list<T>(
         .into_iter()
         .filter_map(|chunk| parse_item(chunk, errors))
         .collect();
-    Some(List {
+    let list = List {
         items,
         written,
-        tokens: group.stream(),
         span: group.span(),
-    })
+    };
+    Some((list, TokenTree::Group(group)))
 }
 
 fn parse_ident(chunk: TokenStream, errors: &mut Errors) -> Option<Ident> {

@@ -51,7 +51,7 @@ mod suggest;
 pub mod valid;
 
 #[cfg(feature = "syntax")]
-pub use pipeline::build;
+pub use pipeline::{Unbuilt, build};
 
 #[cfg(feature = "syntax")]
 mod pipeline {
@@ -59,23 +59,38 @@ mod pipeline {
     use crate::derivatives::Derivatives;
     use crate::errors::Errors;
 
+    /// An attribute with mistakes, as far as [`build`] read it: what the
+    /// items the struct still gets take their sizes from.
+    #[derive(Debug, Default)]
+    pub struct Unbuilt {
+        /// The number of parameters p [`crate::params::resolve`] found,
+        /// when the equations and the points were lowered.
+        pub params: Option<usize>,
+    }
+
     /// Stages 2 and 3 on a parsed attribute: names resolved, counts and
-    /// structural rank checked, every derivative built. `None` when the
-    /// attribute has mistakes, every one of them recorded in `errors`.
-    pub fn build(input: &Input, errors: &mut Errors) -> Option<Derivatives> {
+    /// structural rank checked, every derivative built. When the attribute
+    /// has mistakes, every one of them is recorded in `errors` and the
+    /// error is what was read of it.
+    pub fn build(input: &Input, errors: &mut Errors) -> Result<Derivatives, Unbuilt> {
         if !input.complete {
-            return None;
+            return Err(Unbuilt::default());
         }
         let shape_ok = crate::valid::check_shape(input, errors);
-        let mut lowered = crate::lower::lower(input, errors)?;
-        if !shape_ok {
-            return None;
+        let Some(mut lowered) = crate::lower::lower(input, errors) else {
+            return Err(Unbuilt::default());
+        };
+        // The structure needs as many equations as coordinates of u; the
+        // parameters do not.
+        if shape_ok {
+            crate::valid::check_structure(input, &mut lowered, errors);
         }
-        crate::valid::check_structure(input, &mut lowered, errors);
         crate::params::resolve(input, &mut lowered, errors);
         if !errors.is_empty() {
-            return None;
+            return Err(Unbuilt {
+                params: Some(lowered.params.len()),
+            });
         }
-        Some(Derivatives::build(lowered))
+        Ok(Derivatives::build(lowered))
     }
 }

@@ -93,16 +93,23 @@ pub fn resolve(input: &Input, lowered: &mut Lowered, errors: &mut Errors) {
 /// The number of parameters the attribute asks for, read from what is
 /// written even when it has mistakes (the items of the error path have the
 /// sizes they would have without them): the entries of `params`, a name
-/// listed twice counted once; or else, as [`resolve`] decides, the `f64`
-/// fields the closure equations or the points use, here every field they
-/// name (only a use that cancels, `l1 - l1`, which `resolve` leaves out,
-/// counts differently). `None` when no closure equation is written.
-pub fn count_as_written(input: &Input) -> Option<usize> {
+/// listed twice counted once; or else the parameters [`resolve`] found,
+/// `resolved`, when every equation and point was read and lowered; or
+/// else, only then read from the tokens, every `f64` field the closure
+/// equations or the points name (where a use that cancels, `l1 - l1`,
+/// counts, which `resolve` leaves out). `None` when no closure equation is
+/// written.
+pub fn count_as_written(input: &Input, resolved: Option<usize>) -> Option<usize> {
     if let Some(list) = &input.params {
         return Some(list.meant(&[]));
     }
     if input.closure.written == 0 {
         return None;
+    }
+    let all_read = input.closure.items.len() == input.closure.written
+        && input.points.items.len() == input.points.written;
+    if let Some(k) = resolved.filter(|_| all_read) {
+        return Some(k);
     }
     // A coordinate or a point of the same name hides a field.
     let declared: Vec<String> = (input.u.items.iter())
@@ -116,9 +123,7 @@ pub fn count_as_written(input: &Input) -> Option<usize> {
         .filter(|name| !declared.contains(name))
         .collect();
     let mut named = Vec::new();
-    for list in [&input.closure.tokens, &input.points.tokens] {
-        names_in(list.clone(), &fields, &mut named);
-    }
+    names_in(input.equation_tokens.clone(), &fields, &mut named);
     Some(named.len())
 }
 
@@ -177,7 +182,13 @@ mod tests {
                 label: u32,
             }
         );
-        count_as_written(&Input::parse(attr, item, &mut Errors::default()).unwrap())
+        // As the error path asks: after the pipeline, with what it found.
+        let mut errors = Errors::default();
+        let input = Input::parse(attr, item, &mut errors).unwrap();
+        let resolved = crate::build(&input, &mut errors)
+            .err()
+            .and_then(|unbuilt| unbuilt.params);
+        count_as_written(&input, resolved)
     }
 
     /// Without `params`, the `f64` fields the equations or the points
@@ -196,6 +207,26 @@ mod tests {
         let coordinate = count(quote!(u = [l1], v = [theta2], closure = [l1 + l2 * theta2]));
         assert_eq!(coordinate, Some(1));
         assert_eq!(count(quote!(u = [theta3], v = [theta2])), None);
+    }
+
+    /// Where the equations were lowered, the parameters `resolve` found,
+    /// whatever the mistakes elsewhere: a field whose uses cancel is not
+    /// one (here one equation for two coordinates of u). A malformed entry
+    /// leaves the equations unread, and then every field they name counts.
+    #[test]
+    fn where_lowered_the_parameters_resolve_found() {
+        let n = count(quote!(
+            u = [theta3, x4],
+            v = [theta2],
+            closure = [l2 * theta2.cos() + l3 * theta3.cos() + l1 - l1]
+        ));
+        assert_eq!(n, Some(2));
+        let malformed = count(quote!(
+            u = [theta3, x4],
+            v = [theta2],
+            closure = [l2 * theta2.cos() + l3 * theta3.cos() + l1 - l1, mass +]
+        ));
+        assert_eq!(malformed, Some(4));
     }
 
     /// With `params`, its entries as written: a misspelt or malformed one

@@ -7,7 +7,8 @@
 //! Every dimension the attribute gives, as far as it was read, is that
 //! number: m from `u` (or else the number of closure equations), f from
 //! `v`, the points from `points`, k from `params` or else the fields the
-//! equations use, each list's entries as written (a malformed one
+//! equations use (as the pipeline resolved them where it lowered the
+//! equations), each list's entries as written (a malformed one
 //! included, a name written twice counted once). A generic trait impl
 //! would leave a call such as `bar.sensitivities_of(..)` ambiguous, and a
 //! slice is not the array a user's code passes on
@@ -18,15 +19,17 @@
 //! (`__LINKAGE_M`, ...): a struct called `M` or `F` must not turn a
 //! dimension into a type.
 
+use super::constants;
 use super::quantities::{QUANTITIES, Scalar, Shape, Trait};
 use super::signature::{self, Dim, Dims};
+use linkage_symbolic::Unbuilt;
 use linkage_symbolic::ast::Input;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
 /// The dimensions as far as the attribute gives them.
-fn dims(input: &Input) -> Dims {
-    let [m, f, n, k] = ["__LINKAGE_M", "__LINKAGE_F", "__LINKAGE_N", "__LINKAGE_K"]
+fn dims(input: &Input, unbuilt: &Unbuilt) -> Dims {
+    let [m, f, n, k_name] = ["__LINKAGE_M", "__LINKAGE_F", "__LINKAGE_N", "__LINKAGE_K"]
         .map(|s| format_ident!("{}", s));
     let given = |written: usize| (written > 0).then_some(written);
     let m = Dim::known_or_generic(
@@ -35,7 +38,8 @@ fn dims(input: &Input) -> Dims {
     );
     let f = Dim::known_or_generic(given(input.v.meant(&input.u.items)), &f);
     let n = Dim::known_or_generic(m.value().zip(f.value()).map(|(m, f)| m + f), &n);
-    let k = Dim::known_or_generic(linkage_symbolic::params::count_as_written(input), &k);
+    let k = linkage_symbolic::params::count_as_written(input, unbuilt.params);
+    let k = Dim::known_or_generic(k, &k_name);
     Dims {
         m,
         f,
@@ -45,25 +49,12 @@ fn dims(input: &Input) -> Dims {
     }
 }
 
-/// A constant array of `dim` elements (`[&str; n]`, `[bool; n]`), or a
-/// slice where the number is not known.
-fn names_const(name: &str, dim: &Dim, element: TokenStream, value: TokenStream) -> TokenStream {
-    let name = format_ident!("{}", name);
-    match dim.value() {
-        Some(n) => {
-            let n = proc_macro2::Literal::usize_unsuffixed(n);
-            quote!(pub const #name: [#element; #n] = [#value; #n];)
-        }
-        None => quote!(pub const #name: &'static [#element] = &[];),
-    }
-}
-
 /// The struct as written, followed by the fallback items.
-pub fn fallback(input: &Input) -> TokenStream {
+pub fn fallback(input: &Input, unbuilt: &Unbuilt) -> TokenStream {
     let item = &input.item;
     let ty = &item.ident;
     let (impl_generics, ty_generics, where_clause) = item.generics.split_for_impl();
-    let dims = dims(input);
+    let dims = dims(input, unbuilt);
     let never = quote!(::core::unimplemented!(
         "#[linkage::linkage] on this struct has errors"
     ));
@@ -75,17 +66,13 @@ pub fn fallback(input: &Input) -> TokenStream {
         .map(|p| p.name.to_string())
         .collect();
     let point_indices = super::point_indices(names.iter().map(String::as_str));
-    let str_ = quote!(&'static str);
-    let consts = [
-        names_const("U_NAMES", &dims.m, str_.clone(), quote!("")),
-        names_const("V_NAMES", &dims.f, str_.clone(), quote!("")),
-        names_const("POINT_NAMES", &dims.np, str_.clone(), quote!("")),
-        names_const("PARAM_NAMES", &dims.k, str_, quote!("")),
-        names_const("TRIG_U", &dims.m, quote!(bool), quote!(false)),
-        names_const("TRIG_V", &dims.f, quote!(bool), quote!(false)),
-        names_const("SENSITIVITY_TRIG_U", &dims.m, quote!(bool), quote!(false)),
-        names_const("SENSITIVITY_TRIG_V", &dims.f, quote!(bool), quote!(false)),
-    ];
+    let consts = constants::all().map(|c| c.placeholder(&dims, false));
+    let (u_names, v_names, param_names) = (
+        constants::U_NAMES.placeholder(&dims, true),
+        constants::V_NAMES.placeholder(&dims, true),
+        constants::PARAM_NAMES.placeholder(&dims, true),
+    );
+    let symbolic_name = format_ident!("{}", constants::SYMBOLIC);
     let inherent = QUANTITIES.iter().filter(|q| q.function).map(|q| {
         let fn_name = format_ident!("{}", q.name);
         let args = signature::args(q, &dims, |_| false);
@@ -159,7 +146,7 @@ pub fn fallback(input: &Input) -> TokenStream {
             impl #impl_generics #ty #ty_generics #where_clause {
                 #(#consts)*
                 #point_indices
-                pub const SYMBOLIC: ::linkage::SymbolicTable = ::linkage::SymbolicTable {
+                pub const #symbolic_name: ::linkage::SymbolicTable = ::linkage::SymbolicTable {
                     name: #name,
                     u: &[],
                     v: &[],
@@ -171,8 +158,8 @@ pub fn fallback(input: &Input) -> TokenStream {
             #[allow(unused_variables)]
             impl #linkage_generics #linkage for #ty #ty_generics #where_clause {
                 type Points = [Vector2<f64>; #np];
-                const U_NAMES: [&'static str; #m] = [""; #m];
-                const V_NAMES: [&'static str; #f] = [""; #f];
+                #u_names
+                #v_names
                 const POINT_NAMES: &'static [&'static str] = &[];
                 const SYMBOLIC: ::linkage::SymbolicTable = Self::SYMBOLIC;
                 #(#kinematics)*
@@ -183,7 +170,7 @@ pub fn fallback(input: &Input) -> TokenStream {
             }
             #[allow(unused_variables)]
             impl #sensitivity_generics #sensitivities_trait for #ty #ty_generics #where_clause {
-                const PARAM_NAMES: [&'static str; #k] = [""; #k];
+                #param_names
                 fn params(&self) -> SVector<f64, #k> {
                     #never
                 }

@@ -2,6 +2,7 @@
 //! solve, γ and the acceleration solve in one pass of straight-line code.
 
 use super::Generator;
+use super::constants::TRIG;
 use super::docs::doc_attributes;
 use super::function::{assemble, reaches};
 use linkage_symbolic::dag::{Dag, Id, Symbol};
@@ -154,15 +155,14 @@ impl Generator<'_> {
                 let flags = range.map(|k| phased.trig_coords.contains(&k));
                 quote!([#(#flags),*])
             };
-            let (mask_u, mask_v) = (mask(0..m), mask(m..m + f));
+            let dims = self.dims();
+            let [trig_u_const, trig_v_const] = &TRIG;
+            let masks = [
+                trig_u_const.declare(&dims, mask(0..m)),
+                trig_v_const.declare(&dims, mask(m..m + f)),
+            ];
             return quote! {
-                /// Which coordinates of u appear under `sin`/`cos` in
-                /// [`Self::kinematics_with_trig`], which reads their sine and
-                /// cosine from `trig_u` (the others' entries are not read).
-                pub const TRIG_U: [bool; #ml] = #mask_u;
-                /// Which coordinates of v appear under `sin`/`cos`, read from
-                /// `trig_v`.
-                pub const TRIG_V: [bool; #fl] = #mask_v;
+                #(#masks)*
                 #doc
                 #[must_use]
                 #[inline(always)]

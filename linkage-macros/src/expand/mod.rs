@@ -1,9 +1,11 @@
 //! The items the attribute emits, assembled with `quote!` from the table of
 //! quantities (`quantities.rs`): the inherent functions (`function.rs`,
 //! `kinematics.rs`, `generic.rs`), the `Linkage` impl (`trait_impl.rs`),
-//! the symbolic table (`symbolic_table.rs`) and, when the attribute has
-//! mistakes, the fallback (`fallback.rs`).
+//! the symbolic table (`symbolic_table.rs`), the associated constants
+//! (`constants.rs`) and, when the attribute has mistakes, the fallback
+//! (`fallback.rs`).
 
+mod constants;
 mod docs;
 mod fallback;
 mod function;
@@ -16,13 +18,14 @@ mod symbolic_table;
 mod trait_impl;
 
 use function::Output;
+use linkage_symbolic::Unbuilt;
 use linkage_symbolic::ast::Input;
 use linkage_symbolic::dag::{Dag, Id};
 use linkage_symbolic::derivatives::Derivatives;
 use linkage_symbolic::display::Formatter;
 use linkage_symbolic::errors::Errors;
 use linkage_symbolic::names::SymbolNames;
-use proc_macro2::{Literal, TokenStream};
+use proc_macro2::TokenStream;
 use quantities::{DocContext, QUANTITIES, Quantity, Scalar, Source};
 use quote::{format_ident, quote};
 
@@ -30,13 +33,15 @@ use quote::{format_ident, quote};
 /// or, if the attribute has mistakes, every error plus the fallback items
 /// so that the rest of the user's code still type-checks.
 pub fn expand(attr: TokenStream, item: TokenStream) -> TokenStream {
-    let (input, result) = run(attr, item.clone());
-    match result {
+    let run = run(attr, item.clone());
+    match run.result {
         Ok(tokens) => tokens,
         Err(error) => {
             let compile_errors = error.to_compile_error();
             // The struct with the fallback items, or the item as written.
-            let item = input.as_ref().map(fallback::fallback).unwrap_or(item);
+            let item = (run.input.as_ref())
+                .map(|input| fallback::fallback(input, &run.unbuilt))
+                .unwrap_or(item);
             quote! {
                 #item
                 #compile_errors
@@ -45,19 +50,30 @@ pub fn expand(attr: TokenStream, item: TokenStream) -> TokenStream {
     }
 }
 
-/// The pipeline's verdict: the parsed input, if the item is a struct, and
-/// the generated items or every error found — always one or the other.
-pub fn run(
-    attr: TokenStream,
-    item: TokenStream,
-) -> (Option<Input>, Result<TokenStream, syn::Error>) {
+/// The pipeline's verdict: the generated items or every error found —
+/// always one or the other.
+pub struct Run {
+    /// The parsed input, if the item is a struct.
+    pub input: Option<Input>,
+    pub result: Result<TokenStream, syn::Error>,
+    /// What the pipeline read of an attribute with mistakes.
+    pub unbuilt: Unbuilt,
+}
+
+pub fn run(attr: TokenStream, item: TokenStream) -> Run {
     let mut errors = Errors::default();
     let input = Input::parse(attr, item, &mut errors);
-    let generated = input
-        .as_ref()
-        .and_then(|input| linkage_symbolic::build(input, &mut errors))
-        .zip(input.as_ref())
-        .map(|(model, input)| Generator::new(input, &model).items());
+    let mut unbuilt = Unbuilt::default();
+    let generated =
+        input
+            .as_ref()
+            .and_then(|input| match linkage_symbolic::build(input, &mut errors) {
+                Ok(model) => Some(Generator::new(input, &model).items()),
+                Err(partial) => {
+                    unbuilt = partial;
+                    None
+                }
+            });
     let result = match (errors.combined(), generated) {
         (None, Some(tokens)) => Ok(tokens),
         (Some(error), _) => Err(error),
@@ -69,7 +85,11 @@ pub fn run(
              error: please report it with the attribute)",
         )),
     };
-    (input, result)
+    Run {
+        input,
+        result,
+        unbuilt,
+    }
 }
 
 /// The items of one model.
@@ -226,29 +246,25 @@ impl<'a> Generator<'a> {
             .iter()
             .filter(|q| q.function)
             .map(|q| self.inherent(q, &context));
-        let u_names = self
-            .input
-            .u
-            .items
-            .iter()
-            .map(linkage_symbolic::lower::unraw);
-        let v_names = self
-            .input
-            .v
-            .items
-            .iter()
-            .map(linkage_symbolic::lower::unraw);
-        let point_names = self.model.points.iter().map(|p| p.name.as_str());
+        let (u_names, v_names) = (&self.input.u.items, &self.input.v.items);
+        let u_names: Vec<String> = u_names.iter().map(linkage_symbolic::lower::unraw).collect();
+        let v_names: Vec<String> = v_names.iter().map(linkage_symbolic::lower::unraw).collect();
+        let point_names: Vec<&str> = self.model.points.iter().map(|p| p.name.as_str()).collect();
         let param_names = self.names.params_code();
-        let kl = Literal::usize_unsuffixed(self.k);
-        let (ml, fl, npl) = (
-            Literal::usize_unsuffixed(self.m),
-            Literal::usize_unsuffixed(self.f),
-            Literal::usize_unsuffixed(self.np),
-        );
+        let dims = self.dims();
+        let names = constants::NAMES.iter().map(|c| {
+            let value = match c.per {
+                constants::Per::U => quote!([#(#u_names),*]),
+                constants::Per::V => quote!([#(#v_names),*]),
+                constants::Per::Point => quote!([#(#point_names),*]),
+                constants::Per::Param => quote!([#(#param_names),*]),
+            };
+            c.declare(&dims, value)
+        });
         let point_indices = point_indices(self.model.points.iter().map(|p| p.name.as_str()));
         let symbolic = self.symbolic_table();
         let trait_impl = self.trait_impl();
+        let symbolic_name = format_ident!("{}", constants::SYMBOLIC);
         quote! {
             #item
             const _: () = {
@@ -256,20 +272,13 @@ impl<'a> Generator<'a> {
 
                 #[automatically_derived]
                 impl #impl_generics #ty #ty_generics #where_clause {
-                    /// The dependent coordinates u, in order.
-                    pub const U_NAMES: [&'static str; #ml] = [#(#u_names),*];
-                    /// The driving coordinates v, in order.
-                    pub const V_NAMES: [&'static str; #fl] = [#(#v_names),*];
-                    /// The named points, in order.
-                    pub const POINT_NAMES: [&'static str; #npl] = [#(#point_names),*];
-                    /// The parameters p the sensitivities differentiate by, in order.
-                    pub const PARAM_NAMES: [&'static str; #kl] = [#(#param_names),*];
+                    #(#names)*
                     #point_indices
 
                     #(#functions)*
 
                     /// Every generated quantity as a readable formula, for printing.
-                    pub const SYMBOLIC: ::linkage::SymbolicTable = #symbolic;
+                    pub const #symbolic_name: ::linkage::SymbolicTable = #symbolic;
                 }
 
                 #trait_impl
@@ -283,21 +292,13 @@ impl<'a> Generator<'a> {
 /// (The error path emits them too, so that code naming points keeps
 /// type-checking while the attribute has mistakes.)
 ///
-/// A name that is not an identifier, repeats, or is taken by another
-/// generated item (`SYMBOLIC`, …) gets none: on the error path the names
-/// have not been checked, and a bad one must not add an error of its own.
+/// A name that is not an identifier, repeats, or is taken by a generated
+/// constant (`SYMBOLIC`, `SENSITIVITY_TRIG_U`, …: [`constants::taken`])
+/// gets none: on the error path the names have not been checked, and a bad
+/// one must not add an error of its own.
 pub(super) fn point_indices<'a>(names: impl Iterator<Item = &'a str>) -> TokenStream {
-    const TAKEN: [&str; 7] = [
-        "U_NAMES",
-        "PARAM_NAMES",
-        "V_NAMES",
-        "POINT_NAMES",
-        "SYMBOLIC",
-        "TRIG_U",
-        "TRIG_V",
-    ];
     let mut seen = std::collections::HashSet::new();
-    let usable = |name: &str| syn::parse_str::<syn::Ident>(name).is_ok() && !TAKEN.contains(&name);
+    let usable = |name: &str| syn::parse_str::<syn::Ident>(name).is_ok() && !constants::taken(name);
     let consts = names.enumerate().filter_map(|(i, name)| {
         if !usable(name) || !seen.insert(name.to_owned()) {
             return None;
@@ -421,6 +422,81 @@ mod tests {
         assert!(
             quote!(#broken).to_string().contains("compile_error"),
             "the broken attribute reports its mistake"
+        );
+    }
+
+    /// A point named like a generated constant gets no index constant: the
+    /// name is declared once in the struct's inherent items, by the
+    /// generated constant, whether the attribute has a mistake or not.
+    #[test]
+    fn a_point_named_like_a_generated_constant_is_declared_once() {
+        let names = super::constants::all().map(|c| c.name);
+        for name in names.chain([super::constants::SYMBOLIC]) {
+            for theta3 in ["theta3", "thta3"] {
+                let point = quote::format_ident!("{}", name);
+                let theta3 = quote::format_ident!("{}", theta3);
+                let tokens = expand(
+                    quote!(
+                        u = [theta3],
+                        v = [theta2],
+                        points = [#point = (l2 * theta2.cos(), l2 * theta2.sin())],
+                        closure = [l2 * theta2.cos() + l3 * #theta3.cos()]
+                    ),
+                    quote!(
+                        pub struct Bar {
+                            pub l2: f64,
+                            pub l3: f64,
+                        }
+                    ),
+                );
+                let file: syn::File = syn::parse2(tokens).unwrap();
+                let mut declared = 0;
+                for item in &file.items {
+                    let syn::Item::Const(c) = item else { continue };
+                    let syn::Expr::Block(block) = &*c.expr else {
+                        continue;
+                    };
+                    for stmt in &block.block.stmts {
+                        let syn::Stmt::Item(syn::Item::Impl(i)) = stmt else {
+                            continue;
+                        };
+                        declared += (i.items.iter())
+                            .filter(|it| matches!(it, syn::ImplItem::Const(c) if c.ident == name))
+                            .filter(|_| i.trait_.is_none())
+                            .count();
+                    }
+                }
+                assert_eq!(declared, 1, "`{name}` with `{theta3}` in the closure");
+            }
+        }
+    }
+
+    /// On the error path, where the equations were lowered, k is the
+    /// number of parameters the pipeline resolved: a field whose uses
+    /// cancel (`l1 - l1`) is none, as it is none without the mistake (here
+    /// a reserved name for a point).
+    #[test]
+    fn the_fallbacks_k_is_the_parameters_resolved() {
+        let tokens = expand(
+            quote!(
+                u = [theta3],
+                v = [theta2],
+                points = [params = (l2 * theta2.cos(), l2 * theta2.sin())],
+                closure = [l2 * theta2.cos() + l3 * theta3.cos() + l1 - l1]
+            ),
+            quote!(
+                pub struct Bar {
+                    pub l1: f64,
+                    pub l2: f64,
+                    pub l3: f64,
+                }
+            ),
+        );
+        let text = tokens.to_string();
+        assert!(text.contains("compile_error"), "the mistake is reported");
+        assert!(
+            text.contains("const PARAM_NAMES : [& 'static str ; 2]"),
+            "{text}"
         );
     }
 

@@ -4,6 +4,7 @@
 //! and the same of every point.
 
 use super::Generator;
+use super::constants::SENSITIVITY_TRIG;
 use super::docs::doc_attributes;
 use super::function::{assemble, reads};
 use super::quantities::Quantity;
@@ -144,19 +145,13 @@ impl Generator<'_> {
                 let flags = range.map(|k| phased.trig_coords.contains(&k));
                 quote!([#(#flags),*])
             };
+            let [u_const, v_const] = &SENSITIVITY_TRIG;
             let (mask_u, mask_v) = (mask(0..m), mask(m..m + f));
-            quote! {
-                /// Which coordinates of u appear under `sin`/`cos` in
-                /// [`Self::sensitivity_terms_with_trig`], which reads their
-                /// sine and cosine from `trig_u` (the others' entries are not
-                /// read).
-                #[doc(hidden)]
-                pub const SENSITIVITY_TRIG_U: [bool; #ml] = #mask_u;
-                /// Which coordinates of v appear under `sin`/`cos`, read from
-                /// `trig_v`.
-                #[doc(hidden)]
-                pub const SENSITIVITY_TRIG_V: [bool; #fl] = #mask_v;
-            }
+            let (mask_u, mask_v) = (
+                u_const.declare(&dims, mask_u),
+                v_const.declare(&dims, mask_v),
+            );
+            quote!(#mask_u #mask_v)
         } else {
             quote!()
         };

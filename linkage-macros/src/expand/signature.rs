@@ -46,14 +46,9 @@ impl Dim {
         self.value
     }
 
-    /// The declaration `const NAME: usize` of a generic dimension.
-    fn generic_param(&self) -> Option<TokenStream> {
-        let name = &self.tokens;
-        self.value.is_none().then(|| quote!(const #name: usize))
-    }
-
-    /// Whether `tokens` name this dimension, if it is generic.
-    fn generic_in(&self, tokens: &TokenStream) -> bool {
+    /// The declaration `const NAME: usize` of this dimension if it is
+    /// generic and `tokens` name it.
+    fn generic_param_in(&self, tokens: &TokenStream) -> Option<TokenStream> {
         fn names(tokens: &TokenStream, name: &str) -> bool {
             tokens.clone().into_iter().any(|tt| match tt {
                 proc_macro2::TokenTree::Ident(i) => i == name,
@@ -61,7 +56,9 @@ impl Dim {
                 _ => false,
             })
         }
-        self.value.is_none() && names(tokens, &self.tokens.to_string())
+        let name = &self.tokens;
+        (self.value.is_none() && names(tokens, &name.to_string()))
+            .then(|| quote!(const #name: usize))
     }
 }
 
@@ -83,8 +80,7 @@ impl Dims {
     pub fn generic_params(&self, tokens: &TokenStream) -> Vec<TokenStream> {
         [&self.m, &self.f, &self.n, &self.np, &self.k]
             .into_iter()
-            .filter(|d| d.generic_in(tokens))
-            .filter_map(Dim::generic_param)
+            .filter_map(|d| d.generic_param_in(tokens))
             .collect()
     }
 
