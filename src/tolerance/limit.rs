@@ -258,7 +258,6 @@ where
 /// The parameters p and the pose u on dual numbers carrying their
 /// gradients by p, u moving with them at a fixed driver (`u_p`, from
 /// [`position_sensitivity`] or a sweep's sensitivities).
-#[allow(clippy::type_complexity)]
 pub(super) fn moving_with_params<L, const M: usize, const F: usize, const K: usize>(
     model: &L,
     u: &SVector<f64, M>,
