@@ -92,6 +92,9 @@ impl std::error::Error for UnknownName {}
 /// An optional `sources { Variant(Inner) }` after `wraps` gives such a
 /// variant its source but no `From`: where an inner error means one thing
 /// only (the options of a search), `?` must not label every other one so.
+/// An optional `field_sources { Variant.field }` after that gives a struct
+/// variant its field as its source (no `From`: the other fields need
+/// values).
 macro_rules! error_impls {
     (
         $error:ident {
@@ -99,6 +102,7 @@ macro_rules! error_impls {
         }
         wraps { $($variant:ident($inner:ty)),* $(,)? }
         $(sources { $($source:ident($source_inner:ty)),* $(,)? })?
+        $(field_sources { $($field_variant:ident.$field:ident),* $(,)? })?
     ) => {
         impl std::fmt::Display for $error {
             fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -113,6 +117,7 @@ macro_rules! error_impls {
                 match self {
                     $(Self::$variant(inner) => Some(inner),)*
                     $($(Self::$source(inner) => Some(inner),)*)?
+                    $($(Self::$field_variant { $field, .. } => Some($field),)*)?
                     #[allow(unreachable_patterns)]
                     _ => None,
                 }

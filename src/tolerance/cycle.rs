@@ -1,7 +1,7 @@
 //! The linear estimate over a cycle: every output's value, gradient and
 //! spread at every pose of a sweep of the nominal design.
 
-use super::limit::{LimitMargin, margin_along};
+use super::limit::{LimitMargin, WorstPose};
 use super::output::TolerancePose;
 use super::{Output, Spread, ToleranceError, Tolerances, gradient};
 use linkage_runtime::{Drive, Motion, Sensitivities, SweepOptions, SweepSummary};
@@ -96,9 +96,12 @@ where
             spread: Vec::new(),
         })
         .collect();
-    let mut poses = Vec::new();
+    let mut worst = WorstPose::default();
     let summary = model.sweep_sensitivities_each(u0, drive, options, |pose, sensitivity| {
-        poses.push((pose.u, pose.v));
+        // The margin to a limit position from the sweep's u_p where it has
+        // them.
+        let u_p = sensitivity.as_ref().ok().map(|s| &s.u);
+        worst.push(model, &pose.u, &pose.v, u_p, tolerances);
         let motion = Motion::of_sweep_pose(pose);
         let pose = match &sensitivity {
             Ok(s) => TolerancePose::with_gradients(model, &motion, s),
@@ -114,7 +117,7 @@ where
             band.spread.push(known.then(|| tolerances.spread(&g)));
         }
     })?;
-    let limit = margin_along(model, &poses, tolerances, &options.options);
+    let limit = worst.refine(model, tolerances, &options.options);
     Ok(Cycle {
         bands,
         summary,

@@ -9,7 +9,7 @@
 //! sees the same thing from the poses: a crank that stops turning meets a
 //! limit position.
 
-use super::{Spread, Tolerances};
+use super::{Spread, Tolerances, distance};
 use crate::closed_form::FourBar;
 use nalgebra::SVector;
 
@@ -29,9 +29,9 @@ pub struct GrashofMargin {
 
 impl GrashofMargin {
     /// Whether some designs of the band are of another Grashof type:
-    /// distance < 1 (or not known).
+    /// distance < 1.
     pub fn crosses(&self) -> bool {
-        self.distance.is_nan() || self.distance < 1.0
+        self.distance < 1.0
     }
 }
 
@@ -47,17 +47,10 @@ pub fn grashof_margin(bar: &FourBar, tolerances: &Tolerances<4>) -> GrashofMargi
     gradient[order[3]] = 1.0;
     let sum = gradient.dot(&SVector::from(lengths));
     let spread = tolerances.spread(&gradient);
-    let distance = if spread.worst_case > 0.0 {
-        sum.abs() / spread.worst_case
-    } else if sum != 0.0 {
-        f64::INFINITY
-    } else {
-        0.0
-    };
     GrashofMargin {
         sum,
         gradient,
         spread,
-        distance,
+        distance: distance(sum.abs(), &spread),
     }
 }

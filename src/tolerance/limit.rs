@@ -25,10 +25,10 @@
 //! band reach a limit position: they cannot be assembled over the whole
 //! cycle, or they lock.
 
-use super::{Spread, Tolerances, gradient, with_gradient};
-use linkage_runtime::invert;
-use linkage_runtime::{Options, Sensitivities, Sweep};
-use nalgebra::SVector;
+use super::{Spread, Tolerances, distance, gradient, with_gradient};
+use crate::numerics::minimize;
+use linkage_runtime::{Options, Sensitivities, Sweep, determinant, invert};
+use nalgebra::{ComplexField, DMatrix, SMatrix, SVector};
 use num_dual::{Dual, DualNum, DualSVec64};
 
 /// The margin of a cycle to the nearest limit position, at its worst pose.
@@ -45,15 +45,16 @@ pub struct LimitMargin<const M: usize, const F: usize, const K: usize> {
     /// Its spread under the tolerances.
     pub spread: Spread,
     /// q / Σ |∂q/∂pᵢ| tᵢ: how many times the worst-case change of q the
-    /// margin is (infinite where q does not depend on the dimensions).
+    /// margin is (infinite where q does not depend on the dimensions, 0
+    /// where its change is not known: Ψ_u exactly singular).
     pub distance: f64,
 }
 
 impl<const M: usize, const F: usize, const K: usize> LimitMargin<M, F, K> {
     /// Whether the tolerance band reaches a limit position: distance < 1
-    /// (or not known).
+    /// (which includes a change not known, distance 0).
     pub fn reaches_limit(&self) -> bool {
-        self.distance.is_nan() || self.distance < 1.0
+        self.distance < 1.0
     }
 
     /// The linear estimate of the fraction of designs that reach the limit
@@ -97,104 +98,146 @@ pub fn limit_margin<L, const M: usize, const F: usize, const K: usize>(
 where
     L: Sensitivities<M, F, K>,
 {
-    let poses: Vec<_> = sweep.poses.iter().map(|p| (p.u, p.v)).collect();
-    margin_along(model, &poses, tolerances, options)
+    let mut worst = WorstPose::default();
+    for pose in &sweep.poses {
+        worst.push(model, &pose.u, &pose.v, None, tolerances);
+    }
+    worst.refine(model, tolerances, options)
 }
 
-/// [`limit_margin`] along the poses (u, v) of a sweep, in its order.
-pub(super) fn margin_along<L, const M: usize, const F: usize, const K: usize>(
-    model: &L,
-    poses: &[(SVector<f64, M>, SVector<f64, F>)],
-    tolerances: &Tolerances<K>,
-    options: &Options,
-) -> Option<LimitMargin<M, F, K>>
-where
-    L: Sensitivities<M, F, K>,
-{
-    let at = |u: &SVector<f64, M>, v: &SVector<f64, F>| margin_at(model, u, v, tolerances);
-    let (k, worst) = poses
-        .iter()
-        .enumerate()
-        .map(|(k, (u, v))| (k, at(u, v)))
-        .min_by(|a, b| a.1.distance.total_cmp(&b.1.distance))?;
-    let branch = |u: &SVector<f64, M>, v: &SVector<f64, F>| invert(&model.psi_u(u, v)).det > 0.0;
-    let here = branch(&poses[k].0, &poses[k].1);
-    // Golden-section search on the path through the neighbours, t in
-    // [−1, 1]: t < 0 towards the pose before, t > 0 towards the one after.
-    let side = |j: Option<usize>| {
-        j.and_then(|j| poses.get(j))
-            .filter(|(u, v)| branch(u, v) == here)
-    };
-    let (before, after) = (side(k.checked_sub(1)), side(Some(k + 1)));
-    let trial = |t: f64| -> Option<LimitMargin<M, F, K>> {
-        let (other, w) = if t < 0.0 { (before?, -t) } else { (after?, t) };
-        let guess = poses[k].0 * (1.0 - w) + other.0 * w;
-        let v = poses[k].1 * (1.0 - w) + other.1 * w;
-        let u = model.solve_position(&guess, &v, options).ok()?.u;
-        (branch(&u, &v) == here).then(|| at(&u, &v))
-    };
-    let distance = |t: f64| trial(t).map_or(f64::INFINITY, |m| m.distance);
-    let (mut lo, mut hi) = (
-        if before.is_some() { -1.0 } else { 0.0 },
-        if after.is_some() { 1.0 } else { 0.0 },
-    );
-    let ratio = (5f64.sqrt() - 1.0) / 2.0;
-    let (mut a, mut b) = (hi - ratio * (hi - lo), lo + ratio * (hi - lo));
-    let (mut da, mut db) = (distance(a), distance(b));
-    for _ in 0..80 {
-        if hi - lo <= 1e-12 {
-            break;
-        }
-        if da < db {
-            (hi, b, db) = (b, a, da);
-            a = hi - ratio * (hi - lo);
-            da = distance(a);
-        } else {
-            (lo, a, da) = (a, b, db);
-            b = lo + ratio * (hi - lo);
-            db = distance(b);
+/// A pose (u, v).
+type Pose<const M: usize, const F: usize> = (SVector<f64, M>, SVector<f64, F>);
+
+/// The worst pose of a sweep so far, pose by pose in its order, with its
+/// neighbours: [`limit_margin`] as the sweep goes.
+pub(super) struct WorstPose<const M: usize, const F: usize, const K: usize> {
+    /// The pose before the one pushed next.
+    previous: Option<Pose<M, F>>,
+    /// The smallest margin (the first of equals), the pose before it and
+    /// the pose after it.
+    worst: Option<(LimitMargin<M, F, K>, Option<Pose<M, F>>, Option<Pose<M, F>>)>,
+}
+
+impl<const M: usize, const F: usize, const K: usize> Default for WorstPose<M, F, K> {
+    fn default() -> Self {
+        WorstPose {
+            previous: None,
+            worst: None,
         }
     }
-    let refined = trial(0.5 * (lo + hi)).filter(|m| m.distance < worst.distance);
-    Some(refined.unwrap_or(worst))
 }
 
-/// The margin at one pose.
+impl<const M: usize, const F: usize, const K: usize> WorstPose<M, F, K> {
+    /// The next pose (u, v) of the sweep, with u_p there if it is known
+    /// (a sweep's sensitivities), else computed here.
+    pub(super) fn push<L>(
+        &mut self,
+        model: &L,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        u_p: Option<&SMatrix<f64, M, K>>,
+        tolerances: &Tolerances<K>,
+    ) where
+        L: Sensitivities<M, F, K>,
+    {
+        let u_p = u_p.copied().or_else(|| position_sensitivity(model, u, v));
+        let margin = margin_at(model, u, v, u_p.as_ref(), tolerances);
+        // The pose after the worst so far, if the worst was the last.
+        if let Some((_, _, after)) = &mut self.worst
+            && after.is_none()
+        {
+            *after = Some((*u, *v));
+        }
+        let previous = self.previous.replace((*u, *v));
+        match &self.worst {
+            Some((worst, _, _)) if margin.distance >= worst.distance => {}
+            _ => self.worst = Some((margin, previous, None)),
+        }
+    }
+
+    /// The smallest margin, refined between the neighbours of the worst
+    /// pose (on its branch) by Brent's method along the straight path
+    /// through them, poses solved with `options`; `None` if no pose was
+    /// pushed.
+    pub(super) fn refine<L>(
+        self,
+        model: &L,
+        tolerances: &Tolerances<K>,
+        options: &Options,
+    ) -> Option<LimitMargin<M, F, K>>
+    where
+        L: Sensitivities<M, F, K>,
+    {
+        let (worst, before, after) = self.worst?;
+        let branch =
+            |u: &SVector<f64, M>, v: &SVector<f64, F>| determinant(&model.psi_u(u, v)) > 0.0;
+        let here = branch(&worst.u, &worst.v);
+        let side = |pose: Option<Pose<M, F>>| pose.filter(|(u, v)| branch(u, v) == here);
+        let (before, after) = (side(before), side(after));
+        // t in [−1, 1]: t < 0 towards the pose before, t > 0 towards the
+        // one after.
+        let mut best = worst;
+        let mut distance = |t: f64| -> Result<f64, std::convert::Infallible> {
+            let towards = if t < 0.0 {
+                before.map(|p| (p, -t))
+            } else {
+                after.map(|p| (p, t))
+            };
+            let Some(((u_other, v_other), w)) = towards else {
+                return Ok(f64::INFINITY);
+            };
+            let guess = worst.u * (1.0 - w) + u_other * w;
+            let v = worst.v * (1.0 - w) + v_other * w;
+            let Ok(solved) = model.solve_position(&guess, &v, options) else {
+                return Ok(f64::INFINITY);
+            };
+            if branch(&solved.u, &v) != here {
+                return Ok(f64::INFINITY);
+            }
+            let u_p = position_sensitivity(model, &solved.u, &v);
+            let margin = margin_at(model, &solved.u, &v, u_p.as_ref(), tolerances);
+            if margin.distance < best.distance {
+                best = margin;
+            }
+            Ok(margin.distance)
+        };
+        let lo = if before.is_some() { -1.0 } else { 0.0 };
+        let hi = if after.is_some() { 1.0 } else { 0.0 };
+        // The minimum is flat (quadratic): t to √ε, beyond which the
+        // distance no longer changes in f64.
+        let Ok(_) = minimize(&mut distance, lo, hi, f64::EPSILON.sqrt());
+        Some(best)
+    }
+}
+
+/// The margin at one pose, u_p = −Ψ_u⁻¹Ψ_p there (`None` where Ψ_u is
+/// exactly singular: q = 0, its change unknown).
 fn margin_at<L, const M: usize, const F: usize, const K: usize>(
     model: &L,
     u: &SVector<f64, M>,
     v: &SVector<f64, F>,
+    u_p: Option<&SMatrix<f64, M, K>>,
     tolerances: &Tolerances<K>,
 ) -> LimitMargin<M, F, K>
 where
     L: Sensitivities<M, F, K>,
 {
-    let params = model.params();
-    let q = match position_sensitivity(model, u, v) {
+    let q = match u_p {
         Some(u_p) => {
-            let u = SVector::from_fn(|i, _| with_gradient(u[i], u_p.row(i).transpose()));
-            let p = SVector::from_fn(|i, _| with_gradient(params[i], unit(i)));
+            let (p, u) = moving_with_params(model, u, u_p);
             measure::<L, DualSVec64<K>, M, F, K>(model, &p, &u, &v.map(DualSVec64::from_re))
         }
-        // Ψ_u exactly singular: q = 0, its change unknown.
         None => with_gradient(0.0, SVector::repeat(f64::NAN)),
     };
     let g = gradient(&q);
     let spread = tolerances.spread(&g);
-    let distance = if spread.worst_case > 0.0 {
-        q.re / spread.worst_case
-    } else if spread.worst_case == 0.0 && q.re > 0.0 {
-        f64::INFINITY
-    } else {
-        f64::NAN
-    };
     LimitMargin {
         v: *v,
         u: *u,
         measure: q.re,
         gradient: g,
         spread,
-        distance: if distance.is_nan() { 0.0 } else { distance },
+        distance: distance(q.re, &spread),
     }
 }
 
@@ -204,7 +247,7 @@ pub(super) fn position_sensitivity<L, const M: usize, const F: usize, const K: u
     model: &L,
     u: &SVector<f64, M>,
     v: &SVector<f64, F>,
-) -> Option<nalgebra::SMatrix<f64, M, K>>
+) -> Option<SMatrix<f64, M, K>>
 where
     L: Sensitivities<M, F, K>,
 {
@@ -212,9 +255,22 @@ where
     (inverse.rcond > 0.0).then(|| -(inverse.inverse * model.psi_p(u, v)))
 }
 
-/// The unit vector along parameter `i`.
-pub(super) fn unit<const K: usize>(i: usize) -> SVector<f64, K> {
-    SVector::from_fn(|j, _| if j == i { 1.0 } else { 0.0 })
+/// The parameters p and the pose u on dual numbers carrying their
+/// gradients by p, u moving with them at a fixed driver (`u_p`, from
+/// [`position_sensitivity`] or a sweep's sensitivities).
+pub(super) fn moving_with_params<L, const M: usize, const F: usize, const K: usize>(
+    model: &L,
+    u: &SVector<f64, M>,
+    u_p: &SMatrix<f64, M, K>,
+) -> (SVector<DualSVec64<K>, K>, SVector<DualSVec64<K>, M>)
+where
+    L: Sensitivities<M, F, K>,
+{
+    // (SVector::ith needs a typenum for K; the identity's columns do not.)
+    let (params, identity) = (model.params(), SMatrix::<f64, K, K>::identity());
+    let p = SVector::from_fn(|i, _| with_gradient(params[i], identity.column(i).into_owned()));
+    let u = SVector::from_fn(|i, _| with_gradient(u[i], u_p.row(i).transpose()));
+    (p, u)
 }
 
 /// q on dual numbers D (which carry any derivatives of u, v and p): Ψ_u's
@@ -227,55 +283,29 @@ fn measure<L, D, const M: usize, const F: usize, const K: usize>(
 ) -> D
 where
     L: Sensitivities<M, F, K>,
-    D: DualNum<Primitive = f64> + Copy,
+    D: DualNum<Primitive = f64> + ComplexField + Copy,
 {
     let zero = D::from(0.0);
     let lift = |x: &D| Dual::new(*x, zero);
     let (p, v) = (params.map(|x| lift(&x)), v.map(|x| lift(&x)));
-    let mut columns = [[zero; M]; M];
+    // Dynamically sized: nalgebra's determinant needs a typenum for a
+    // const size, which a generic M has not.
+    let mut psi_u = DMatrix::<D>::from_element(M, M, zero);
     let mut norms = D::from(1.0);
-    for (j, column) in columns.iter_mut().enumerate() {
+    for j in 0..M {
         let u = SVector::<Dual<D>, M>::from_fn(|i, _| {
             Dual::new(u[i], D::from(if i == j { 1.0 } else { 0.0 }))
         });
         let psi = model.psi_generic_params(&p, &u, &v);
         let mut norm = zero;
-        for (c, x) in column.iter_mut().zip(psi.iter()) {
-            *c = x.eps;
+        for (i, x) in psi.iter().enumerate() {
+            psi_u[(i, j)] = x.eps;
             norm += x.eps * x.eps;
         }
         norms *= norm;
     }
-    let det = determinant(columns);
+    let det = psi_u.determinant();
     det * det / norms
-}
-
-/// The determinant of a small matrix on dual numbers, by elimination with
-/// partial pivoting on the real parts.
-fn determinant<D: DualNum<Primitive = f64> + Copy, const M: usize>(mut a: [[D; M]; M]) -> D {
-    let mut det = D::from(1.0);
-    for c in 0..M {
-        let pivot = (c..M)
-            .max_by(|&i, &j| a[i][c].re().abs().total_cmp(&a[j][c].re().abs()))
-            .unwrap_or(c);
-        if a[pivot][c].re() == 0.0 {
-            return D::from(0.0);
-        }
-        if pivot != c {
-            a.swap(pivot, c);
-            det = -det;
-        }
-        det *= a[c][c];
-        let (upper, lower) = a.split_at_mut(c + 1);
-        let pivot_row = &upper[c];
-        for row in lower.iter_mut() {
-            let factor = row[c] / pivot_row[c];
-            for (x, above) in row.iter_mut().zip(pivot_row).skip(c + 1) {
-                *x -= factor * *above;
-            }
-        }
-    }
-    det
 }
 
 /// The complementary error function, to 1.2e-7 relative (Numerical
@@ -310,11 +340,17 @@ mod tests {
     #[test]
     fn the_determinant_of_dual_matrices() {
         let d = |x: f64| DualSVec64::<1>::new(x, num_dual::Derivative::some(SVector::repeat(x)));
-        // det [[0, 2, 1], [1, 1, 0], [3, 0, 1]] = 0·1 − 2·1 + 1·(−3) = −5, pivoting needed.
-        let a = [[0.0, 2.0, 1.0], [1.0, 1.0, 0.0], [3.0, 0.0, 1.0]].map(|r| r.map(d));
-        let det = determinant(a);
-        assert!((det.re + 5.0).abs() < 1e-15);
+        // det [[0, 2, 1], [1, 1, 0], [3, 0, 1]] = 0·1 − 2·1 + 1·(−3) = −5.
+        let a = SMatrix::<f64, 3, 3>::new(0.0, 2.0, 1.0, 1.0, 1.0, 0.0, 3.0, 0.0, 1.0);
+        assert_eq!(a.map(d).determinant().re, -5.0);
         // Every entry scaled by (1 + ε): det scales by (1 + ε)³, so its ε-part is 3·det.
-        assert!((gradient(&det)[0] + 15.0).abs() < 1e-14);
+        assert_eq!(gradient(&a.map(d).determinant())[0], -15.0);
+        // Four by four, by nalgebra's LU with pivoting (a zero first pivot):
+        // det = −(1·2·3·4) after swapping the first two rows of diag(…).
+        let b = SMatrix::<f64, 4, 4>::new(
+            0.0, 2.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 3.0, 0.0, 0.0, 0.0, 0.0, 4.0,
+        );
+        let det = b.map(d).determinant();
+        assert!((det.re + 24.0).abs() < 1e-13 && (gradient(&det)[0] + 96.0).abs() < 1e-12);
     }
 }

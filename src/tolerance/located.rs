@@ -11,7 +11,7 @@
 
 use super::output::TolerancePose;
 use super::{Output, ToleranceError, gradient, with_gradient};
-use crate::watch::{Found, FoundKind, locate};
+use crate::watch::{Found, FoundKind, Watch, locate};
 use linkage_runtime::{Motion, Options, Sensitivities, Sweep};
 use nalgebra::SVector;
 use num_dual::DualSVec64;
@@ -65,13 +65,20 @@ pub fn extreme_values<L, const M: usize, const K: usize>(
 where
     L: Sensitivities<M, 1, K>,
 {
-    let Some(watch) = output.watch() else {
-        return Err(ToleranceError::Unsupported {
+    Ok(locate(model, sweep, &[watch_of(output)?], options)?)
+}
+
+/// The watch of the extrema of a coordinate or a point's coordinate.
+pub(super) fn watch_of<const M: usize, const K: usize>(
+    output: &Output<'_, M, 1, K>,
+) -> Result<Watch<'static, M, 1>, ToleranceError> {
+    match output.watch() {
+        Some(watch) => Ok(watch.extrema()),
+        None => Err(ToleranceError::Unsupported {
             output: output.name().to_owned(),
             why: "only coordinates and points are located here; locate a function's extremes with watch::locate and Watch::function",
-        });
-    };
-    Ok(locate(model, sweep, &[watch.extrema()], options)?)
+        }),
+    }
 }
 
 /// How the zero or extremum `found` of `output` (located along `sweep`

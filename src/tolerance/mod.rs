@@ -205,6 +205,18 @@ pub fn gradient<const K: usize>(x: &DualSVec64<K>) -> SVector<f64, K> {
     x.eps.unwrap_generic(nalgebra::Const::<K>, nalgebra::U1)
 }
 
+/// How many times the worst-case change of a result its margin (≥ 0) is:
+/// margin / Σ |gᵢ| tᵢ; infinite where the result does not depend on the
+/// dimensions and the margin is positive; 0 where the margin is 0 or its
+/// change is not known.
+pub(super) fn distance(margin: f64, spread: &Spread) -> f64 {
+    match spread.worst_case {
+        w if w > 0.0 && margin >= 0.0 => margin / w,
+        w if w == 0.0 && margin > 0.0 => f64::INFINITY,
+        _ => 0.0,
+    }
+}
+
 /// A value with the gradient `gradient`.
 pub fn with_gradient<const K: usize>(value: f64, gradient: SVector<f64, K>) -> DualSVec64<K> {
     DualSVec64::new(value, Derivative::some(gradient))
@@ -265,6 +277,8 @@ impl ToleranceError {
     }
 }
 
+/// A kinematic error of the design given (not of a Monte Carlo sample:
+/// [`ToleranceError::in_sample`] says which).
 impl From<Error> for ToleranceError {
     fn from(error: Error) -> Self {
         ToleranceError::Kinematics {
@@ -274,41 +288,17 @@ impl From<Error> for ToleranceError {
     }
 }
 
-impl std::fmt::Display for ToleranceError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Self::UnknownName(inner) => write!(f, "{inner}"),
-            Self::BadTolerance { parameter, value } => write!(
-                f,
-                "the tolerance of parameter {parameter} is {value}; it must be finite and not negative"
-            ),
-            Self::Kinematics { design, error } => write!(f, "{design}: {error}"),
-            Self::Watch(inner) => write!(f, "locating the extremes: {inner}"),
-            Self::Unsupported { output, why } => write!(f, "the output `{output}`: {why}"),
-            Self::NoSamples => write!(f, "a Monte Carlo run needs at least one sample"),
-        }
+crate::error::error_impls! {
+    ToleranceError {
+        Self::UnknownName(inner) => ("{inner}"),
+        Self::BadTolerance { parameter, value } => (
+            "the tolerance of parameter {parameter} is {value}; it must be finite and not negative"
+        ),
+        Self::Kinematics { design, error } => ("{design}: {error}"),
+        Self::Watch(inner) => ("locating the extremes: {inner}"),
+        Self::Unsupported { output, why } => ("the output `{output}`: {why}"),
+        Self::NoSamples => ("a Monte Carlo run needs at least one sample"),
     }
-}
-
-impl std::error::Error for ToleranceError {
-    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
-        match self {
-            Self::UnknownName(inner) => Some(inner),
-            Self::Kinematics { error, .. } => Some(error),
-            Self::Watch(inner) => Some(inner),
-            _ => None,
-        }
-    }
-}
-
-impl From<UnknownName> for ToleranceError {
-    fn from(e: UnknownName) -> Self {
-        ToleranceError::UnknownName(e)
-    }
-}
-
-impl From<WatchError> for ToleranceError {
-    fn from(e: WatchError) -> Self {
-        ToleranceError::Watch(e)
-    }
+    wraps { UnknownName(UnknownName), Watch(WatchError) }
+    field_sources { Kinematics.error }
 }

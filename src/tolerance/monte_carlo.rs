@@ -92,8 +92,13 @@ impl<const M: usize, const F: usize> CycleSamples<M, F> {
     /// The fraction of the samples left out: those that cannot be
     /// assembled, or do not run the cycle as the nominal design does.
     pub fn failed_fraction(&self) -> f64 {
-        self.failures.len() as f64 / self.samples as f64
+        failed_fraction(&self.failures, self.samples)
     }
+}
+
+/// The fraction of `samples` that `failures` lists.
+pub(super) fn failed_fraction<T>(failures: &[T], samples: usize) -> f64 {
+    failures.len() as f64 / samples as f64
 }
 
 /// The samples analysed together (their values held before they are

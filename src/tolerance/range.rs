@@ -15,13 +15,11 @@
 //! the tolerances, values alone ([`extreme_values`]), and says which
 //! samples have none and why.
 
-use super::limit::{position_sensitivity, unit};
-use super::located::{Located, at_found, extreme_values};
-use super::monte_carlo::{Failure, MonteCarlo, monte_carlo};
+use super::limit::{moving_with_params, position_sensitivity};
+use super::located::{Located, at_found, extreme_values, watch_of};
+use super::monte_carlo::{Failure, MonteCarlo, failed_fraction, monte_carlo};
 use super::output::Resolved;
-use super::{
-    Design, Output, Spread, Statistics, ToleranceError, Tolerances, gradient, with_gradient,
-};
+use super::{Design, Output, Spread, Statistics, ToleranceError, Tolerances, gradient};
 use crate::quantity::Resolved as Named;
 use crate::watch::{Axis, Found, FoundKind, Of};
 use linkage_runtime::{Drive, Sensitivities, SweepOptions};
@@ -31,7 +29,7 @@ use num_dual::DualSVec64;
 /// The range of an output over the cycle and its spread.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Range<const K: usize> {
-    /// The largest of the located minima, with its gradient and place.
+    /// The smallest of the located minima, with its gradient and place.
     pub min: Located<K>,
     /// The largest of the located maxima.
     pub max: Located<K>,
@@ -84,13 +82,10 @@ where
         })
     };
     let (Some(min), Some(max)) = (
-        widest(&found, |f| f.kind, |f| f.value, FoundKind::Minimum).map(located),
-        widest(&found, |f| f.kind, |f| f.value, FoundKind::Maximum).map(located),
+        widest(&found, FoundKind::Minimum).map(located),
+        widest(&found, FoundKind::Maximum).map(located),
     ) else {
-        return Err(ToleranceError::Unsupported {
-            output: output.name().to_owned(),
-            why: "it has no located maximum or no located minimum over the cycle",
-        });
+        return Err(no_extremes(output));
     };
     let (min, max) = (min?, max?);
     let value = max.value - min.value;
@@ -121,18 +116,22 @@ fn position_value<L, const M: usize, const K: usize>(
 where
     L: Sensitivities<M, 1, K>,
 {
-    let u_p = position_sensitivity(model, u, v)?;
-    let u =
-        SVector::<DualSVec64<K>, M>::from_fn(|i, _| with_gradient(u[i], u_p.row(i).transpose()));
     let Resolved::Quantity(output) = output else {
         return None;
     };
+    let at_position = matches!(
+        *output,
+        Named::U(_, Of::Position) | Named::V(_, Of::Position) | Named::Point(_, _, Of::Position)
+    );
+    if !at_position {
+        return None;
+    }
+    let u_p = position_sensitivity(model, u, v)?;
+    let (p, u) = moving_with_params(model, u, &u_p);
     match *output {
-        Named::U(i, Of::Position) => Some(u[i]),
-        Named::V(i, Of::Position) => Some(DualSVec64::from_re(v[i])),
-        Named::Point(i, axis, Of::Position) => {
-            let params = model.params();
-            let p = SVector::from_fn(|j, _| with_gradient(params[j], unit(j)));
+        Named::U(i, _) => Some(u[i]),
+        Named::V(i, _) => Some(DualSVec64::from_re(v[i])),
+        Named::Point(i, axis, _) => {
             let v = v.map(DualSVec64::from_re);
             let points = model.point_positions_generic_params(&p, &u, &v);
             let point = points.as_ref()[i];
@@ -146,16 +145,19 @@ where
 }
 
 /// The smallest minimum or the largest maximum of those found.
-fn widest<T>(
-    found: &[T],
-    kind: impl Fn(&T) -> FoundKind,
-    value: impl Fn(&T) -> f64,
-    wanted: FoundKind,
-) -> Option<&T> {
-    let of_kind = found.iter().filter(|f| kind(f) == wanted);
+fn widest<const M: usize>(found: &[Found<M, 1>], wanted: FoundKind) -> Option<&Found<M, 1>> {
+    let of_kind = found.iter().filter(|f| f.kind == wanted);
     match wanted {
-        FoundKind::Minimum => of_kind.min_by(|a, b| value(a).total_cmp(&value(b))),
-        _ => of_kind.max_by(|a, b| value(a).total_cmp(&value(b))),
+        FoundKind::Minimum => of_kind.min_by(|a, b| a.value.total_cmp(&b.value)),
+        _ => of_kind.max_by(|a, b| a.value.total_cmp(&b.value)),
+    }
+}
+
+/// The error of an output without a located maximum or minimum.
+fn no_extremes<const M: usize, const K: usize>(output: &Output<'_, M, 1, K>) -> ToleranceError {
+    ToleranceError::Unsupported {
+        output: output.name().to_owned(),
+        why: "it has no located maximum or no located minimum over the cycle",
     }
 }
 
@@ -175,7 +177,7 @@ impl<const M: usize> RangeSamples<M> {
     /// assembled, do not run the cycle as the nominal design does, or
     /// whose extremes cannot be located.
     pub fn failed_fraction(&self) -> f64 {
-        self.failures.len() as f64 / self.samples as f64
+        failed_fraction(&self.failures, self.samples)
     }
 }
 
@@ -201,8 +203,9 @@ where
             design: Design::Nominal,
             error,
         })?;
-    // The output's names are checked once, on the nominal design.
-    extreme_values(model, &nominal, output, &options.options)?;
+    // The output is checked once: its names, and that it can be located.
+    output.resolve::<L>()?;
+    watch_of(output)?;
     let events = nominal.events.len();
     let ranges = monte_carlo(model, tolerances, run, |sample: &L| {
         let sweep = sample
@@ -213,13 +216,12 @@ where
         }
         let found =
             extreme_values(sample, &sweep, output, &options.options).map_err(Failure::Extremes)?;
-        let of = |kind| widest(&found, |f: &Found<M, 1>| f.kind, |f| f.value, kind);
-        match (of(FoundKind::Minimum), of(FoundKind::Maximum)) {
+        match (
+            widest(&found, FoundKind::Minimum),
+            widest(&found, FoundKind::Maximum),
+        ) {
             (Some(min), Some(max)) => Ok(max.value - min.value),
-            _ => Err(Failure::Extremes(ToleranceError::Unsupported {
-                output: output.name().to_owned(),
-                why: "it has no located maximum or no located minimum over the cycle",
-            })),
+            _ => Err(Failure::Extremes(no_extremes(output))),
         }
     })?;
     let mut statistics = Statistics::default();
