@@ -12,8 +12,9 @@ use syn::{Expr, Ident};
 /// A named point: `B = (x, y)`.
 pub struct PointDef {
     pub name: Ident,
-    pub x: Expr,
-    pub y: Expr,
+    /// `(x, y)`; `None` when they are malformed (already reported): the
+    /// point's name is still known, so its uses report nothing more.
+    pub coords: Option<(Expr, Expr)>,
 }
 
 /// A field of the struct.
@@ -133,8 +134,8 @@ impl Input {
             // The equations' tokens kept, the names' dropped.
             let tokens = &mut equation_tokens;
             match name.as_str() {
-                "u" => u = parse_list(&key, value, errors, parse_ident).map(|(list, _)| list),
-                "v" => v = parse_list(&key, value, errors, parse_ident).map(|(list, _)| list),
+                "u" => u = parse_names(&key, value, errors, parse_ident),
+                "v" => v = parse_names(&key, value, errors, parse_ident),
                 "points" => {
                     points = parse_list(&key, value, errors, parse_point).map(|(list, written)| {
                         tokens.extend([written]);
@@ -147,9 +148,7 @@ impl Input {
                         list
                     })
                 }
-                "params" => {
-                    params = parse_list(&key, value, errors, parse_param).map(|(list, _)| list)
-                }
+                "params" => params = parse_names(&key, value, errors, parse_param),
                 other => {
                     let hint = match crate::suggest::closest(other, KEYS.iter().copied()) {
                         Some(k) => format!("; did you mean `{k}`?"),
@@ -272,6 +271,29 @@ fn parse_entry(chunk: &TokenStream, errors: &mut Errors) -> Option<(Ident, Vec<T
     Some((key, iter.collect()))
 }
 
+/// `[a, b, c]` of names (`u`, `v`, `params`). A single name written
+/// without its brackets, `v = theta2`, is reported and read as `[theta2]`,
+/// so that the mechanism's sizes stay known and nothing else is reported.
+fn parse_names(
+    key: &Ident,
+    value: Vec<TokenTree>,
+    errors: &mut Errors,
+    parse_item: fn(TokenStream, &mut Errors) -> Option<Ident>,
+) -> Option<List<Ident>> {
+    if let [TokenTree::Ident(name)] = value.as_slice() {
+        errors.push(syn::Error::new(
+            name.span(),
+            format!("`{key}` takes a bracketed list: `{key} = [{name}]`"),
+        ));
+        return Some(List {
+            items: vec![name.clone()],
+            written: 1,
+            span: name.span(),
+        });
+    }
+    parse_list(key, value, errors, parse_item).map(|(list, _)| list)
+}
+
 /// `[a, b, c]`, each element parsed by `parse_item`; with the list as
 /// written.
 fn parse_list<T>(
@@ -342,7 +364,8 @@ fn parse_expr(chunk: TokenStream, errors: &mut Errors) -> Option<Expr> {
     }
 }
 
-/// `B = (x, y)`
+/// `B = (x, y)`. A malformed entry whose name can be read is kept, without
+/// coordinates, so that its uses elsewhere report nothing more.
 fn parse_point(chunk: TokenStream, errors: &mut Errors) -> Option<PointDef> {
     let tokens: Vec<TokenTree> = chunk.clone().into_iter().collect();
     let shape_error = |errors: &mut Errors| {
@@ -351,17 +374,19 @@ fn parse_point(chunk: TokenStream, errors: &mut Errors) -> Option<PointDef> {
             "a point is written `Name = (x, y)`, e.g. `B = (l2 * theta2.cos(), l2 * theta2.sin())`",
         ));
     };
-    let (name, coords) = match tokens.as_slice() {
-        [
-            TokenTree::Ident(name),
-            TokenTree::Punct(eq),
-            TokenTree::Group(g),
-        ] if eq.as_char() == '=' && g.delimiter() == Delimiter::Parenthesis => {
-            (name.clone(), g.clone())
-        }
+    let name = match tokens.as_slice() {
+        [TokenTree::Ident(name), TokenTree::Punct(eq), ..] if eq.as_char() == '=' => name.clone(),
         _ => {
             shape_error(errors);
             return None;
+        }
+    };
+    let malformed = |name: Ident| Some(PointDef { name, coords: None });
+    let coords = match &tokens[2..] {
+        [TokenTree::Group(g)] if g.delimiter() == Delimiter::Parenthesis => g.clone(),
+        _ => {
+            shape_error(errors);
+            return malformed(name);
         }
     };
     let parts = split_commas(coords.stream());
@@ -373,10 +398,15 @@ fn parse_point(chunk: TokenStream, errors: &mut Errors) -> Option<PointDef> {
                 parts.len()
             ),
         ));
-        return None;
+        return malformed(name);
     }
     let mut parts = parts.into_iter();
-    let x = parse_expr(parts.next()?, errors);
-    let y = parse_expr(parts.next()?, errors);
-    Some(PointDef { name, x: x?, y: y? })
+    let (x, y) = match (parts.next(), parts.next()) {
+        (Some(x), Some(y)) => (parse_expr(x, errors), parse_expr(y, errors)),
+        _ => (None, None),
+    };
+    Some(PointDef {
+        name,
+        coords: x.zip(y),
+    })
 }

@@ -166,8 +166,11 @@ pub fn lower(input: &Input, errors: &mut Errors) -> Option<Lowered> {
     let mut points = Vec::new();
     let mut ok = true;
     for p in &input.points.items {
-        let x = lowerer.lower(&p.x);
-        let y = lowerer.lower(&p.y);
+        // Malformed coordinates were reported where they were read.
+        let (x, y) = match &p.coords {
+            Some((x, y)) => (lowerer.lower(x), lowerer.lower(y)),
+            None => (None, None),
+        };
         let (x, y) = match (x, y) {
             (Some(x), Some(y)) => (x, y),
             _ => {

@@ -107,7 +107,8 @@ pub fn count_as_written(input: &Input, resolved: Option<usize>) -> Option<usize>
         return None;
     }
     let all_read = input.closure.items.len() == input.closure.written
-        && input.points.items.len() == input.points.written;
+        && input.points.items.len() == input.points.written
+        && input.points.items.iter().all(|p| p.coords.is_some());
     if let Some(k) = resolved.filter(|_| all_read) {
         return Some(k);
     }
