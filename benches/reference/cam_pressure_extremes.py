@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The extremes of a cam's pressure angle at 50 digits: the independent
-reference of `Cam::pressure_extremes` (tests/cam.rs).
+reference of `Cam::pressure_extremes` (tests/machine/cam.rs).
 
     python3 benches/reference/cam_pressure_extremes.py
 
@@ -215,7 +215,7 @@ def main():
         print(cam["name"], mp.nstr(phi_max, 20), mp.nstr(th_max, 20), mp.nstr(phi_min, 20), mp.nstr(th_min, 20))
     path = os.path.join(ROOT, "tests", "data", "cam_pressure_extremes.csv")
     with open(path, "w") as out:
-        out.write("# The extremes of the pressure angle of four cams over a turn (tests/cam.rs builds the same cams),\n")
+        out.write("# The extremes of the pressure angle of four cams over a turn (tests/machine/cam.rs builds the same cams),\n")
         out.write("# made by benches/reference/cam_pressure_extremes.py (mpmath 1.3.0, 50 digits; roots of dθ/dφ, 40 digits kept).\n")
         out.write("# theta_second: d²θ/dφ² there (rad/rad²), the scale of how flat the extreme is.\n")
         out.write("cam,extreme,phi,theta,theta_second\n")

@@ -11,7 +11,7 @@
 //! at D, slides in a vertical slot of the ram (5), which translates
 //! horizontally at the height y_F.
 //!
-//! Shared by `examples/shaper` and `tests/shaper/`.
+//! Shared by `examples/shaper` and `tests/machine/shaper/`.
 
 #![allow(dead_code)]
 

@@ -8,7 +8,7 @@
 //! (`Machine::design`, the envelope theorem) and the bounded
 //! Levenberg–Marquardt solver on the one residual √J_PRI.
 //!
-//! Shared by `examples/shaper` and `tests/shaper/`.
+//! Shared by `examples/shaper` and `tests/machine/shaper/`.
 
 #![allow(dead_code)]
 

@@ -2,10 +2,10 @@
 //! position and a branch point, Newton's iterations, and methods A and B
 //! against the condition number of Ψᵤ. Each picture has one legend, above
 //! its panels, whose swatches are drawn in the styles of the curves they
-//! name (`tests/diagrams.rs` checks that).
+//! name (`tests/draw/diagrams.rs` checks that).
 //!
 //! Shared by `cargo run --release --example stability` and
-//! `tests/diagrams.rs`.
+//! `tests/draw/diagrams.rs`.
 
 use crate::study::{Case, Method, MethodsRow, Row};
 use plotters::prelude::*;

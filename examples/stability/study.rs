@@ -3,7 +3,7 @@
 //!
 //! Shared by `cargo run --release --example stability` (the charts),
 //! `tests/sweep/stability_near_singular.rs` (the assertions) and
-//! `tests/diagrams.rs` (the charts' legends).
+//! `tests/draw/diagrams.rs` (the charts' legends).
 #![allow(dead_code)]
 
 use linkage::mechanisms::BareFourBar;

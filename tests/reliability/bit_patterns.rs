@@ -3,7 +3,7 @@
 //! drives. No panic, and no NaN or ∞ in any `Ok`. (Their sweeps are not
 //! held to the branch-continuity check: with an angle of 1e180 rad, whose
 //! ulp is 1e164, velocity ratios are not resolved. The four-bar sweeps
-//! (`four_bar_sweeps.rs`) and `tests/singular_grid/` are.)
+//! (`four_bar_sweeps.rs`) and `tests/sweep/singular_grid/` are.)
 
 use crate::common::FourBar;
 use crate::harness::{all_finite, runner};

@@ -30,6 +30,9 @@
 mod common;
 
 mod bit_patterns;
+/// The same through the machine, the cam, the diagrams and the scenes.
+#[cfg(feature = "draw")]
+mod facade;
 mod four_bar_sweeps;
 mod four_bars;
 mod harness;

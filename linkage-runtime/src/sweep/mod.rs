@@ -32,7 +32,7 @@
 //!
 //! Both kinds are located to rounding: within 1e-12·max(1, |v|) of the
 //! exact driver value (the worst of the targeted campaign in
-//! `tests/singular_grid/`, every step count from 50 to 5000 with a grid
+//! `tests/sweep/singular_grid/`, every step count from 50 to 5000 with a grid
 //! pose on the singular one or a few ulps off, is 1.7e-15).
 
 // The files, each using only those before it:

@@ -1,0 +1,14 @@
+//! Pictures: scenes read back from their SVG, and the legends of charts and
+//! diagrams (the stability study's charts among them).
+
+#[path = "../../examples/stability/charts.rs"]
+mod charts;
+#[path = "../common/mod.rs"]
+mod common;
+#[path = "../../examples/support/page.rs"]
+mod page;
+#[path = "../../examples/stability/study.rs"]
+mod study;
+
+mod diagrams;
+mod scenes;

@@ -1,0 +1,13 @@
+//! Positions, velocities, accelerations and sensitivities: the Maple
+//! worksheet's four-bar number by number, both acceleration methods, five
+//! more mechanisms, the typed errors of bad input, and batches.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod acceleration_methods;
+mod batch;
+mod errors;
+mod fourbar_worksheet;
+mod mechanisms;
+mod sensitivities;
