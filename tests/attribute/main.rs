@@ -5,6 +5,8 @@
 
 #[path = "../common/mod.rs"]
 mod common;
+#[path = "../models/mod.rs"]
+mod models;
 
 mod attribute_forms;
 mod diagnostics;

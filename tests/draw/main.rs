@@ -5,6 +5,8 @@
 mod charts;
 #[path = "../common/mod.rs"]
 mod common;
+#[path = "../models/mod.rs"]
+mod models;
 #[path = "../../examples/support/page.rs"]
 mod page;
 #[path = "../../examples/stability/study.rs"]

@@ -2,7 +2,8 @@
 //! kinematics say — the worksheet's points and arrow tips read back from
 //! the drawing — and every bad input a typed error.
 
-use crate::common::{FourBar, OMEGA2, SLIDER_CRANK, SliderCrank};
+use crate::common::{FourBar, OMEGA2};
+use crate::models::{SLIDER_CRANK, SliderCrank};
 use linkage::draw::diagrams::{DiagramError, Diagrams};
 use linkage::draw::scene::{Frame, Scene, SceneError};
 use linkage::error::{NameKind, UnknownName};

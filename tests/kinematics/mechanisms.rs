@@ -8,7 +8,8 @@
 //! Ψ_q, γ and point kinematics equal num-dual's derivatives of the generic
 //! closure equations.
 
-use crate::common::{BOOM, Boom, FIVE_BAR, SIX_BAR, SLIDER_CRANK, SixBar, check_invariants};
+use crate::common::check_invariants;
+use crate::models::{BOOM, Boom, FIVE_BAR, SIX_BAR, SLIDER_CRANK, SixBar};
 use linkage::closed_form::{self, Grashof};
 use linkage::mechanisms::{BareFourBar, CouplerFourBar, FourBar};
 use linkage::prelude::*;

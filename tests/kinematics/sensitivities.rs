@@ -3,8 +3,9 @@
 //! differences, and the 50-digit references of mpmath; the scaling
 //! identity of the four-bar.
 
+use crate::common::OMEGA2;
 use crate::common::sensitivity::{Column, by_differences, by_dual};
-use crate::common::{BOOM, FIVE_BAR, OMEGA2, SIX_BAR, SLIDER_CRANK};
+use crate::models::{BOOM, FIVE_BAR, SIX_BAR, SLIDER_CRANK};
 use linkage::mechanisms::FourBar;
 use linkage::prelude::*;
 
@@ -153,7 +154,7 @@ fn the_terms_with_the_poses_sines_and_cosines_given_are_the_same_numbers() {
     same(&SLIDER_CRANK, &motion);
     // The slider's position s is under no sine or cosine.
     assert_eq!(
-        crate::common::SliderCrank::SENSITIVITY_TRIG_U,
+        crate::models::SliderCrank::SENSITIVITY_TRIG_U,
         [true, false]
     );
     let (motion, _) = at(

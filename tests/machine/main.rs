@@ -6,6 +6,8 @@
 mod common;
 #[path = "../../examples/shaper/machine.rs"]
 mod machine;
+#[path = "../models/mod.rs"]
+mod models;
 #[path = "../../examples/shaper/redesign.rs"]
 mod redesign;
 

@@ -28,6 +28,8 @@
 
 #[path = "../common/mod.rs"]
 mod common;
+#[path = "../models/mod.rs"]
+mod models;
 
 mod bit_patterns;
 /// The same through the machine, the cam, the diagrams and the scenes.

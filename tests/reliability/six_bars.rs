@@ -1,8 +1,8 @@
 //! Random six-bars, both loops closed around a pose or not, through every
 //! entry point.
 
-use crate::common::SixBar;
 use crate::harness::{Tally, Truth, check, length, number, report, runner};
+use crate::models::SixBar;
 use linkage::prelude::*;
 use proptest::prelude::*;
 use std::cell::RefCell;

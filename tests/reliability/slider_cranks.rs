@@ -1,8 +1,8 @@
 //! Random slider-cranks, at random poses and guesses, through every entry
 //! point.
 
-use crate::common::SliderCrank;
 use crate::harness::{Tally, Truth, check, length, moderate, number, report, runner, slider_truth};
+use crate::models::SliderCrank;
 use linkage::prelude::*;
 use proptest::prelude::*;
 use std::cell::RefCell;

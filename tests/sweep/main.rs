@@ -5,6 +5,8 @@
 
 #[path = "../common/mod.rs"]
 mod common;
+#[path = "../models/mod.rs"]
+mod models;
 /// Grids of step sizes through branch points and limit positions.
 mod singular_grid;
 /// Near singular poses, each method against the 50-digit reference.

@@ -3,7 +3,8 @@
 //! silent branch flip (every pose checked against the closed form on the
 //! branch it must be on), every singular pose located and classified.
 
-use crate::common::{FourBar, SIX_BAR, SLIDER_CRANK, SLIDER_DRIVEN, SixBar, SliderDriven};
+use crate::common::FourBar;
+use crate::models::{SIX_BAR, SLIDER_CRANK, SLIDER_DRIVEN, SixBar, SliderDriven};
 use linkage::closed_form::{self, Grashof, circle_intersection};
 use linkage::prelude::*;
 use std::f64::consts::{PI, TAU};
@@ -370,7 +371,7 @@ fn six_bar_full_cycle_never_flips() {
 /// space (both turning, at different rates), against its closed form.
 #[test]
 fn five_bar_along_a_path_of_both_drivers() {
-    let bar = crate::common::FIVE_BAR;
+    let bar = crate::models::FIVE_BAR;
     let closed = |t2: f64, t5: f64| {
         let b = Vector2::new(bar.l2 * t2.cos(), bar.l2 * t2.sin());
         let d = Vector2::new(bar.l1 + bar.l5 * t5.cos(), bar.l5 * t5.sin());

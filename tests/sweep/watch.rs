@@ -4,7 +4,8 @@
 //! extrema of the Maple worksheet's four-bar over a revolution
 //! (`tests/data/fourbar_extrema.csv`).
 
-use crate::common::{FIVE_BAR, FourBar, OMEGA2, SLIDER_CRANK, rel};
+use crate::common::{FourBar, OMEGA2, rel};
+use crate::models::{FIVE_BAR, SLIDER_CRANK};
 use linkage::prelude::*;
 use linkage::watch::{Axis, Found, FoundKind, Of, Watch, WatchError, locate};
 use std::f64::consts::{PI, TAU};

@@ -10,7 +10,7 @@
 //! conditioning (see [`ROUNDING`] and [`FOUR`]).
 
 use crate::Freed;
-use crate::coupler::Coupler;
+use crate::models::Coupler;
 use linkage::prelude::*;
 use linkage::synthesis::{
     Candidate, Defect, Problem, Range, Requirements, Search, Synthesis, Timing, certify, synthesize,

@@ -2,14 +2,15 @@
 //! three-precision-point function generation, path generation through
 //! points of a known coupler curve, and the typed errors of bad problems.
 
+#[path = "../models/mod.rs"]
+mod models;
+
 /// Burmester's four- and five-position motion generation against a
 /// 50-digit reference.
 mod burmester;
-#[path = "../common/coupler.rs"]
-mod coupler;
 /// The designer's terms, curves and functions over a range.
 mod objectives;
-use coupler::Coupler;
+use crate::models::Coupler;
 use linkage::closed_form::{self, Grashof};
 use linkage::mechanisms::{CouplerFourBar, FourBar};
 use linkage::nalgebra::{Matrix3, Vector3};

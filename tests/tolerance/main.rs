@@ -4,6 +4,9 @@
 //! theorem and the implicit place of an extremum or a zero), and the
 //! linear σ against Monte Carlo runs.
 
+#[path = "../models/mod.rs"]
+mod models;
+
 #[path = "../../examples/shaper/machine.rs"]
 mod machine;
 

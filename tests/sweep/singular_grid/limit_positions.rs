@@ -4,7 +4,7 @@
 
 use super::grids::{OFFSETS, line_grid, line_through, miss, off, rocking_through};
 use super::harness::{Run, Tally, campaign, report, step_counts};
-use crate::common::{SLIDER_DRIVEN, SliderDriven};
+use crate::models::{SLIDER_DRIVEN, SliderDriven};
 use linkage::closed_form::circle_intersection;
 use linkage::mechanisms::BareFourBar;
 use linkage::prelude::*;

@@ -1,54 +1,13 @@
-//! Branch points beyond the four-bar: a slider-crank with r = l, and a Watt
-//! six-bar whose second loop is a change-point four-bar.
+//! Branch points beyond the four-bar: a centred slider-crank with r = l,
+//! and a Watt six-bar whose second loop is a change-point four-bar.
 
 use super::harness::{Tally, campaign, full_turns, report, step_counts};
 use crate::common::FourBar;
+use crate::models::{SliderCrank, WattSixBar};
 use linkage::closed_form::{self, circle_intersection};
 use linkage::prelude::*;
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::time::Instant;
-
-/// A centred slider-crank (crank r, rod l, slider s on the x axis).
-#[linkage::linkage(
-    u = [theta3, s],
-    v = [theta2],
-    closure = [
-        r * theta2.cos() + l * theta3.cos() - s,
-        r * theta2.sin() + l * theta3.sin(),
-    ],
-)]
-#[derive(Clone, Copy, Debug)]
-struct SliderCrank {
-    r: f64,
-    l: f64,
-}
-
-/// A Watt six-bar: the four-bar A-B-C-D, and a second loop from E, rigid
-/// with the rocker CD (|DE| = le at the angle θ4 + β), through F to the
-/// ground pivot G.
-#[linkage::linkage(
-    u = [theta3, theta4, theta5, theta6],
-    v = [theta2],
-    closure = [
-        l2 * theta2.cos() + l3 * theta3.cos() + l4 * theta4.cos() - l1,
-        l2 * theta2.sin() + l3 * theta3.sin() + l4 * theta4.sin(),
-        l1 + le * (theta4 + beta).cos() + l5 * theta5.cos() + l6 * theta6.cos() - gx,
-        le * (theta4 + beta).sin() + l5 * theta5.sin() + l6 * theta6.sin() - gy,
-    ],
-)]
-#[derive(Clone, Copy, Debug)]
-struct WattSixBar {
-    l1: f64,
-    l2: f64,
-    l3: f64,
-    l4: f64,
-    le: f64,
-    beta: f64,
-    l5: f64,
-    l6: f64,
-    gx: f64,
-    gy: f64,
-}
 
 /// r = l: the ordinary branch (θ3 = −θ2, s = 2r cos θ2) and the folded one
 /// (θ3 = π + θ2, s = 0) cross at θ2 = ±π/2; each continues smoothly as
@@ -56,7 +15,11 @@ struct WattSixBar {
 #[test]
 fn slider_crank_with_rod_equal_to_crank() {
     let began = Instant::now();
-    let model = SliderCrank { r: 50.0, l: 50.0 };
+    let model = SliderCrank {
+        r: 50.0,
+        l: 50.0,
+        e: 0.0,
+    };
     let counts = step_counts();
     let mut tally = Tally::default();
     for folded in [false, true] {

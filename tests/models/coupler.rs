@@ -1,5 +1,5 @@
-//! A four-bar for motion generation, shared by the synthesis tests and
-//! their Burmester module (included by path, so that only they compile it).
+//! A four-bar for motion generation: its coupler a body carrying the point
+//! P, the ground pivots anywhere.
 
 /// A four-bar whose coupler is a body carrying the point P (its position is
 /// u's x_p, y_p, its angle θ3) with the moving pivots B and C at (bx, by)
