@@ -3,7 +3,7 @@
 //! lives.
 
 use crate::error::{Error, Stage};
-use crate::linalg::pow2;
+use crate::powers_of_two::pow2;
 
 /// Checks that every entry of `values` is finite.
 #[inline]

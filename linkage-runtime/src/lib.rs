@@ -32,6 +32,7 @@ mod linalg;
 mod linkage;
 mod newton;
 mod options;
+mod powers_of_two;
 mod results;
 mod sensitivities;
 mod solve;

@@ -136,7 +136,7 @@ impl Options {
     #[inline]
     pub fn keeps_accuracy(&self, stage: Stage, rcond: f64) -> bool {
         // Below 2⁻³⁰⁰ a cube would leave the normal range: the root decides.
-        const SMALL: f64 = crate::linalg::pow2(-300);
+        const SMALL: f64 = crate::powers_of_two::pow2(-300);
         let ordinary = rcond >= SMALL; // false for NaN too
         if !ordinary {
             return rcond > 0.0 && rcond >= self.min_rcond(stage);

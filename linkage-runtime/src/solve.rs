@@ -5,9 +5,10 @@
 
 use crate::checks::{check_input, check_result, check_scale, check_value};
 use crate::error::{Error, Stage};
-use crate::linalg::{augmented_condition, factor, invert, power_of_two_near};
+use crate::linalg::{augmented_condition, factor, invert};
 use crate::linkage::Linkage;
 use crate::options::{AccelerationMethod, JacobianSource, Options};
+use crate::powers_of_two::power_of_two_near;
 use crate::results::{Analysis, Kinematics, Velocity};
 use crate::{newton, sources};
 use nalgebra::{SMatrix, SVector};

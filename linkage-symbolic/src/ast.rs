@@ -50,8 +50,8 @@ impl List<Ident> {
     /// written, a name already in `earlier` or earlier in the list counted
     /// once.
     pub fn meant(&self, earlier: &[Ident]) -> usize {
-        let mut seen: Vec<String> = earlier.iter().map(crate::lower::unraw).collect();
-        let repeated = (self.items.iter().map(crate::lower::unraw))
+        let mut seen: Vec<String> = earlier.iter().map(unraw).collect();
+        let repeated = (self.items.iter().map(unraw))
             .filter(|name| {
                 let repeated = seen.contains(name);
                 seen.push(name.clone());
@@ -409,4 +409,10 @@ fn parse_point(chunk: TokenStream, errors: &mut Errors) -> Option<PointDef> {
         name,
         coords: x.zip(y),
     })
+}
+
+/// The name of an identifier without a raw prefix (`r#type` is `type`).
+pub fn unraw(ident: &Ident) -> String {
+    let s = ident.to_string();
+    s.strip_prefix("r#").map(str::to_owned).unwrap_or(s)
 }

@@ -166,7 +166,7 @@ impl Derivatives {
             let by_u = levels.map(|e| Matrix::from_fn(2, m, |c, j| dag.diff(e[c], coord(j))));
             let by_p = levels.map(|e| Matrix::from_fn(2, k, |c, j| dag.diff(e[c], by_param[j])));
             points.push(PointKinematics {
-                name: crate::lower::unraw(name),
+                name: crate::ast::unraw(name),
                 position,
                 velocity,
                 acceleration,

@@ -10,7 +10,7 @@
 //! lowering of every expression form Rust allows in an equation belong
 //! together, as each form's errors speak of the names around it.
 
-use crate::ast::Input;
+use crate::ast::{Input, unraw};
 use crate::dag::{Constant, Dag, Func, Func2, Id, Symbol};
 use crate::errors::Errors;
 use std::collections::HashMap;
@@ -201,12 +201,6 @@ pub fn lower(input: &Input, errors: &mut Errors) -> Option<Lowered> {
         points,
         closure,
     })
-}
-
-/// The name of an identifier without a raw prefix (`r#type` is `type`).
-pub fn unraw(ident: &Ident) -> String {
-    let s = ident.to_string();
-    s.strip_prefix("r#").map(str::to_owned).unwrap_or(s)
 }
 
 impl Lowerer<'_> {

@@ -3,9 +3,10 @@
 //! default every `f64` field the closure equations or the points use.
 
 use crate::ast::Input;
+use crate::ast::unraw;
 use crate::dag::{Dag, Symbol};
 use crate::errors::Errors;
-use crate::lower::{Lowered, unraw};
+use crate::lower::Lowered;
 
 /// Sets `lowered.params`; every mistake of `params` is recorded in
 /// `errors` with the span of the name.

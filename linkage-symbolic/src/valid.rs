@@ -2,9 +2,10 @@
 //! dependent coordinate) and the structural rank of Ψ_u.
 
 use crate::ast::Input;
+use crate::ast::unraw;
 use crate::dag::{Dag, Symbol};
 use crate::errors::Errors;
-use crate::lower::{Lowered, unraw};
+use crate::lower::Lowered;
 
 /// Checks that do not need the equations' meaning. Returns whether the
 /// shape is right (the structural check needs it).

@@ -4,10 +4,11 @@
 //! target prescribed or free.
 
 use super::SynthesisError;
-use super::terms::Term;
+use super::terms::Terms;
 use crate::quantity::{self, Names};
 use linkage_runtime::{Linkage, Sensitivities};
 use nalgebra::{SVector, Vector2};
+use num_dual::DualSVec64;
 
 /// When the mechanism reaches each target.
 #[derive(Clone, Debug, PartialEq)]
@@ -98,7 +99,7 @@ pub struct Problem<L, const M: usize, const K: usize> {
     /// Whether every target must be met exactly (precision points).
     pub(crate) exact: bool,
     /// The designer's own terms, after the targets' residuals.
-    pub(crate) terms: Vec<Term<K>>,
+    pub(crate) terms: Terms<K>,
 }
 
 impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K> {
@@ -274,7 +275,7 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
             range: None,
             guess: SVector::zeros(),
             exact: false,
-            terms: Vec::new(),
+            terms: Terms::default(),
         })
     }
 
@@ -358,6 +359,20 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
     /// closest miss.
     pub fn precision_points(mut self) -> Self {
         self.exact = true;
+        self
+    }
+
+    /// Adds the designer's term `name` to the objective: the residual
+    /// `residual(p)` (driven towards zero with the targets' residuals, in
+    /// their units), p the model's parameters in `PARAM_NAMES` order as dual
+    /// numbers, so that its exact gradient comes with it. With precision
+    /// points each term is one more equation to meet.
+    pub fn term(
+        mut self,
+        name: &str,
+        residual: impl Fn(&SVector<DualSVec64<K>, K>) -> DualSVec64<K> + Send + Sync + 'static,
+    ) -> Self {
+        self.terms.push(name, residual);
         self
     }
 

@@ -119,7 +119,13 @@ where
         poses.u.push(analysis.u);
         poses.branch.push(branch);
     }
-    problem.add_terms(x.as_slice(), &mut residuals, &mut jacobian);
+    problem.terms.write(
+        &model.params(),
+        problem.free.iter().map(|free| free.index),
+        problem.target_residuals(),
+        &mut residuals,
+        &mut jacobian,
+    );
     let finite = residuals
         .iter()
         .chain(jacobian.iter())

@@ -247,8 +247,8 @@ impl<'a> Generator<'a> {
             .filter(|q| q.function)
             .map(|q| self.inherent(q, &context));
         let (u_names, v_names) = (&self.input.u.items, &self.input.v.items);
-        let u_names: Vec<String> = u_names.iter().map(linkage_symbolic::lower::unraw).collect();
-        let v_names: Vec<String> = v_names.iter().map(linkage_symbolic::lower::unraw).collect();
+        let u_names: Vec<String> = u_names.iter().map(linkage_symbolic::ast::unraw).collect();
+        let v_names: Vec<String> = v_names.iter().map(linkage_symbolic::ast::unraw).collect();
         let point_names: Vec<&str> = self.model.points.iter().map(|p| p.name.as_str()).collect();
         let param_names = self.names.params_code();
         let dims = self.dims();

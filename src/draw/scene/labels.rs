@@ -6,10 +6,10 @@
 //! names the right one. Where no spot near the point is clear, the one
 //! that overlaps least.
 
-use super::animation::Motion;
 use super::arrows::PointArrow;
 use super::geometry::{Capsule, Rect, point_to_segment};
 use super::layout::{Layout, Placed};
+use super::motion::Motion;
 use super::style;
 use super::symbols::{Guide, ground_extent};
 use super::{Scene, Shape, Slideway};

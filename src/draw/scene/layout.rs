@@ -1,7 +1,7 @@
 //! The layout of a scene: the scale fitted to everything drawn, the
 //! arrows' scales, and the screen positions of the points.
 
-use super::arrows::Kind;
+use super::arrow_kind::Kind;
 use super::style;
 use super::{Frame, Scene, SceneError, finite, resolve};
 use crate::draw::svg::{Writer, fmt, nice_below};

@@ -7,7 +7,8 @@
 //! the id of the traced path (`trace-A`).
 
 use super::Scene;
-use super::arrows::{Arrow, Kind};
+use super::arrow_kind::Kind;
+use super::arrows::Arrow;
 use super::layout::{Layout, number};
 use super::style;
 use crate::draw::svg::{Writer, fmt, nice_below, scale_bar};

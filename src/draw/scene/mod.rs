@@ -60,11 +60,13 @@
 //! legend (`legend.rs`) and the animation (`animation.rs`).
 
 mod animation;
+mod arrow_kind;
 mod arrows;
 mod geometry;
 mod labels;
 mod layout;
 mod legend;
+mod motion;
 mod style;
 mod symbols;
 

@@ -2,9 +2,9 @@
 //! plates, slider blocks, joints and points, ground pivots. (Arrows are in
 //! `arrows.rs`, labels in `labels.rs`, the legend in `legend.rs`.)
 
-use super::animation::Motion;
 use super::geometry::{Capsule, Rect};
 use super::layout::{Layout, Placed};
+use super::motion::Motion;
 use super::style;
 use super::{Frame, Scene, SceneError, Shape, Slideway, resolve};
 use crate::draw::svg::{Writer, fmt};
