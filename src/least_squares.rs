@@ -68,6 +68,8 @@ pub(crate) struct Evaluation<S> {
 
 /// When to stop. Every test but `cost` is free of the problem's scale: a
 /// problem and the same problem in other units stop at the same point.
+/// [`Stopping::default`]: `cost` 0, `gradient` 1e-13, `step` 1e-15, at
+/// most 400 evaluations.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Stopping {
     /// Stop when ½‖r‖² falls to this (absolute: 0, the default, stops

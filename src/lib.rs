@@ -66,6 +66,14 @@
 //!   named by `params = [...]`), at a pose or along a sweep.
 //! - [`watch`]: the dead centres, strokes and extremes along a sweep,
 //!   located in the driver to rounding.
+//! - [`tolerance`]: how the dimensions' tolerances spread into any
+//!   quantity over the cycle — linear (worst case and RSS, exact
+//!   gradients), the range of a quantity in one call, the distance to a
+//!   limit position, and Monte Carlo beside it.
+//! - [`synthesis`]: dimensions from a task — path, function or motion
+//!   generation through precision points or by least squares — each design
+//!   returned with a certificate over the task's whole range (assembly,
+//!   branch, order, transmission angle, Grashof type).
 //! - [`batch`]: many designs or drives at once, in parallel.
 //! - [`quantity`]: a model's names and the quantities of a pose (a
 //!   coordinate, a point's x or y, their rates, a function of the pose)

@@ -17,6 +17,11 @@ use nalgebra::{DVector, SVector};
 use std::f64::consts::TAU;
 
 /// How to search.
+///
+/// [`Search::default`]: 64 starts from random state 1; Levenberg–Marquardt
+/// with [`Stopping::default`]; the solves and sweeps of
+/// [`SweepOptions::default`]; every start solved (`enough: None`) and any
+/// certified design kept (`within: None`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Search {
     /// Random starts, solved in parallel.
@@ -25,6 +30,7 @@ pub struct Search {
     /// is a function of it and the start's index alone (the same state,
     /// the same starts).
     pub random_state: u64,
+    /// When each start's Levenberg–Marquardt stops.
     pub stopping: Stopping,
     /// The solves of the poses and the sweeps of the certificate.
     pub options: SweepOptions,
