@@ -47,7 +47,7 @@
 //! }
 //! ```
 
-use linkage_runtime::{
+use crate::runtime::{
     Analysis, Drive, Error, Linkage, Options, Sensitivities, Sensitivity, SweepOptions, SweepPose,
     SweepSummary,
 };

@@ -83,7 +83,7 @@ impl std::error::Error for UnknownName {}
 ///         Self::Stalls { phi } => ("the machine stalls at φ = {phi}"),
 ///         Self::Kinematics(inner) => ("kinematics: {inner}"),
 ///     }
-///     wraps { Kinematics(linkage_runtime::Error) }
+///     wraps { Kinematics(crate::runtime::Error) }
 /// }
 /// ```
 ///

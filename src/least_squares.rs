@@ -19,7 +19,7 @@
 //! λ shrinks by max(1/3, 1 − (2ρ − 1)³) after a success and doubles
 //! (doubling its factor) after a failure. A trial the model cannot be
 //! evaluated at (a design that does not assemble) is a failure. After
-//! [`STALLED`] failures in a row the solver stops: no step, however short,
+//! twenty failures in a row the solver stops: no step, however short,
 //! reduces the cost (a minimum at rounding level, or a fold of the
 //! assembly the start cannot get past).
 

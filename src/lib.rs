@@ -131,13 +131,10 @@ pub mod watch;
 #[doc(inline)]
 #[doc = include_str!("../docs/attribute.md")]
 pub use linkage_macros::linkage;
-// Not inlined: rustdoc shows an inlined item from another crate with its
-// type aliases expanded (`Matrix<f64, Const<M>, …>` for `SVector<f64, M>`);
-// linked, the runtime's pages show the signatures as written.
-#[doc(no_inline)]
-pub use linkage_runtime::*;
+mod runtime;
 pub use nalgebra;
 pub use num_dual;
+pub use runtime::*;
 
 /// The code blocks of the README and of the pages in docs/, compiled and
 /// run with the doctests, so that what they show cannot rot.
@@ -165,12 +162,12 @@ mod documentation {
 pub mod prelude {
     #[doc(no_inline)]
     pub use crate::linkage;
-    pub use crate::{matrix, vector};
     #[doc(no_inline)]
-    pub use linkage_runtime::{
+    pub use crate::runtime::{
         AccelerationMethod, Analysis, Drive, Error, Event, EventKind, Iterate, JacobianSource,
         Kinematics, Linkage, Motion, Options, Position, Sensitivities, Sensitivity, Stage, Sweep,
         SweepOptions, SweepPose, SweepSummary, SymbolicMatrix, SymbolicTable, Velocity,
     };
+    pub use crate::{matrix, vector};
     pub use nalgebra::{Matrix2, SMatrix, SVector, Vector1, Vector2, Vector3, Vector4};
 }

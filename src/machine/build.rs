@@ -6,7 +6,7 @@ use super::cycle::GridPose;
 use super::load::{LoadKind, ResolvedLoad, unit_direction};
 use super::{Body, Load, Machine, MachineError};
 use crate::quantity::Names;
-use linkage_runtime::{Drive, Linkage, Options, SweepOptions};
+use crate::runtime::{Drive, Linkage, Options, SweepOptions};
 use nalgebra::{SVector, Vector2};
 use std::f64::consts::TAU;
 
@@ -212,8 +212,8 @@ fn follow_cycle<L: Linkage<M, 1>, const M: usize>(
         return Err(MachineError::Incomplete {
             phi: event.v[0],
             why: match event.kind {
-                linkage_runtime::EventKind::LimitPosition => "a limit position",
-                linkage_runtime::EventKind::BranchPoint => {
+                crate::runtime::EventKind::LimitPosition => "a limit position",
+                crate::runtime::EventKind::BranchPoint => {
                     "a branch point, where the motion is not determined"
                 }
             },

@@ -8,7 +8,7 @@ use super::load::{LoadKind, ResolvedLoad};
 use super::steady::{Motor, SteadyMotion};
 use super::{Applied, MachineError, Pose};
 use crate::numerics;
-use linkage_runtime::{Analysis, Error, Linkage, Options};
+use crate::runtime::{Analysis, Error, Linkage, Options};
 use nalgebra::{SVector, Vector2};
 use std::f64::consts::TAU;
 

@@ -23,7 +23,7 @@
 use super::load::LoadKind;
 use super::{Applied, EnergyMethod, Machine, MachineError, Pose};
 use crate::numerics;
-use linkage_runtime::{Linkage, Sensitivities, Sensitivity};
+use crate::runtime::{Linkage, Sensitivities, Sensitivity};
 use std::f64::consts::TAU;
 
 /// A machine ready to be differentiated by its design: the model's

@@ -3,7 +3,7 @@
 
 use super::{Machine, MachineError};
 use crate::numerics;
-use linkage_runtime::Linkage;
+use crate::runtime::Linkage;
 use std::f64::consts::TAU;
 
 /// The flywheel by the energy method (Merkalov's, as in the course

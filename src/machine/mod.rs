@@ -57,7 +57,7 @@ pub use steady::{Motor, SteadyMotion};
 pub use table::Table;
 
 use crate::error::UnknownName;
-use linkage_runtime::Error;
+use crate::runtime::Error;
 
 /// What went wrong setting up or analysing a machine.
 #[derive(Clone, Debug, PartialEq)]

@@ -3,7 +3,7 @@
 
 use super::{Extremum, Machine, MachineError, Reduced};
 use crate::numerics;
-use linkage_runtime::Linkage;
+use crate::runtime::Linkage;
 use std::f64::consts::TAU;
 
 /// How the machine is driven.

@@ -3,7 +3,7 @@
 //! could have meant.
 
 use crate::error::{NameKind, UnknownName};
-use linkage_runtime::Linkage;
+use crate::runtime::Linkage;
 
 /// The index of `name` among `known`; if it is not there, the error of
 /// `owner` naming the `kind` `name`.

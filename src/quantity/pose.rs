@@ -1,7 +1,7 @@
 //! A pose in motion, its numbers of any kind: plain, dual numbers that
 //! carry a rate, dual vectors that carry a gradient.
 
-use linkage_runtime::{Linkage, Motion};
+use crate::runtime::{Linkage, Motion};
 use nalgebra::{SVector, Scalar, Vector2};
 
 /// A pose of a model with its velocities and accelerations, every number

@@ -10,8 +10,8 @@
 
 use super::continuation;
 use crate::closed_form::Grashof;
+use crate::runtime::{Error, EventKind, Linkage, SweepOptions, SweepPose};
 use crate::transmission::{acute_from_cosine, equivalent_angle};
-use linkage_runtime::{Error, EventKind, Linkage, SweepOptions, SweepPose};
 use nalgebra::SVector;
 use std::f64::consts::TAU;
 use std::fmt;

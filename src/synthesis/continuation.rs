@@ -5,7 +5,7 @@
 //! whole turns of the coordinates that are angles (those under a sine or
 //! cosine, `TRIG_U`), a slider's length compared as it is.
 
-use linkage_runtime::{Drive, Error, Linkage, SweepOptions, SweepPose, SweepSummary};
+use crate::runtime::{Drive, Error, Linkage, SweepOptions, SweepPose, SweepSummary};
 use nalgebra::SVector;
 use std::f64::consts::TAU;
 

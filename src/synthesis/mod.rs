@@ -43,7 +43,7 @@ pub use residuals::Evaluated;
 pub use search::{Candidate, Closest, Search, Synthesis, synthesize};
 
 use crate::error::UnknownName;
-use linkage_runtime::Error;
+use crate::runtime::Error;
 
 /// A synthesis problem that cannot be posed or solved.
 #[derive(Clone, Debug, PartialEq)]

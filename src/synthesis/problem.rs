@@ -6,7 +6,7 @@
 use super::SynthesisError;
 use super::terms::Terms;
 use crate::quantity::{self, Names};
-use linkage_runtime::{Linkage, Sensitivities};
+use crate::runtime::{Linkage, Sensitivities};
 use nalgebra::{SVector, Vector2};
 use num_dual::DualSVec64;
 

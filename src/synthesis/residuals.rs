@@ -6,7 +6,7 @@
 
 use super::problem::{Problem, Task};
 use crate::least_squares::Evaluation;
-use linkage_runtime::{Linkage, Options, Sensitivities, invert};
+use crate::runtime::{Linkage, Options, Sensitivities, invert};
 use nalgebra::{DMatrix, DVector, SVector};
 use std::f64::consts::TAU;
 

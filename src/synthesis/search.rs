@@ -12,7 +12,7 @@ use super::residuals::{Poses, branch, evaluate};
 use crate::batch;
 use crate::least_squares::{Stopping, minimize};
 use crate::random::SplitMix64;
-use linkage_runtime::{Options, Sensitivities, SweepOptions};
+use crate::runtime::{Options, Sensitivities, SweepOptions};
 use nalgebra::{DVector, SVector};
 use std::f64::consts::TAU;
 

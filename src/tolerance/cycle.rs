@@ -4,7 +4,7 @@
 use super::limit::{LimitMargin, WorstPose};
 use super::output::TolerancePose;
 use super::{Output, Spread, ToleranceError, Tolerances, gradient};
-use linkage_runtime::{Drive, Motion, Sensitivities, SweepOptions, SweepSummary};
+use crate::runtime::{Drive, Motion, Sensitivities, SweepOptions, SweepSummary};
 use nalgebra::SVector;
 
 /// One output over the cycle, pose by pose.

@@ -27,7 +27,7 @@
 
 use super::{Spread, Tolerances, distance, gradient, with_gradient};
 use crate::numerics::minimize;
-use linkage_runtime::{Options, Sensitivities, Sweep, determinant, invert};
+use crate::runtime::{Options, Sensitivities, Sweep, determinant, invert};
 use nalgebra::{ComplexField, DMatrix, SMatrix, SVector};
 use num_dual::{Dual, DualNum, DualSVec64};
 

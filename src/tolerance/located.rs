@@ -11,8 +11,8 @@
 
 use super::output::TolerancePose;
 use super::{Output, ToleranceError, gradient, with_gradient};
+use crate::runtime::{Motion, Options, Sensitivities, Sweep};
 use crate::watch::{Found, FoundKind, Watch, locate};
-use linkage_runtime::{Motion, Options, Sensitivities, Sweep};
 use nalgebra::SVector;
 use num_dual::DualSVec64;
 

@@ -83,8 +83,8 @@ pub use statistics::Statistics;
 
 use crate::error::UnknownName;
 use crate::quantity;
+use crate::runtime::Error;
 use crate::watch::WatchError;
-use linkage_runtime::Error;
 use nalgebra::SVector;
 use num_dual::{Derivative, DualSVec64};
 

@@ -4,7 +4,7 @@
 use super::output::{Resolved, TolerancePose};
 use super::{Design, Output, Statistics, ToleranceError, Tolerances};
 use crate::batch;
-use linkage_runtime::{Drive, Error, Event, Motion, Sensitivities, SweepOptions};
+use crate::runtime::{Drive, Error, Event, Motion, Sensitivities, SweepOptions};
 use nalgebra::SVector;
 
 /// A Monte Carlo run: how many samples, and the state their random numbers

@@ -4,8 +4,8 @@
 
 use super::{ToleranceError, with_gradient};
 use crate::quantity::{self, Axis, Names, Of, Pose, Quantity};
+use crate::runtime::{Motion, Sensitivities, Sensitivity};
 use crate::watch::Watch;
-use linkage_runtime::{Motion, Sensitivities, Sensitivity};
 use nalgebra::Vector2;
 use num_dual::DualSVec64;
 

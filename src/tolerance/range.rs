@@ -21,8 +21,8 @@ use super::monte_carlo::{Failure, MonteCarlo, failed_fraction, monte_carlo};
 use super::output::Resolved;
 use super::{Design, Output, Spread, Statistics, ToleranceError, Tolerances, gradient};
 use crate::quantity::Resolved as Named;
+use crate::runtime::{Drive, Sensitivities, SweepOptions};
 use crate::watch::{Axis, Found, FoundKind, Of};
-use linkage_runtime::{Drive, Sensitivities, SweepOptions};
 use nalgebra::SVector;
 use num_dual::DualSVec64;
 

@@ -49,7 +49,7 @@ pub use path::PathPose;
 use crate::error::UnknownName;
 use crate::numerics::root;
 use crate::quantity::{Names, Quantity, Resolved};
-use linkage_runtime::{Error, Linkage, Options, Stage, Sweep, invert};
+use crate::runtime::{Error, Linkage, Options, Stage, Sweep, invert};
 use nalgebra::SVector;
 use num_dual::Dual64;
 

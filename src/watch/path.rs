@@ -10,7 +10,7 @@
 //! `psi_generic` give u′, u″, u‴, exact to rounding for any mechanism.
 
 use crate::quantity::Pose;
-use linkage_runtime::Linkage;
+use crate::runtime::Linkage;
 use nalgebra::{SMatrix, SVector, Vector2};
 use num_dual::{Dual3_64, Dual64};
 

@@ -179,7 +179,7 @@ fn the_terms_with_the_poses_sines_and_cosines_given_are_the_same_numbers() {
 /// given and gives the very numbers (==) of `sensitivities` at its motion,
 /// at the pose the analysis found and at one its caller moved. That the
 /// first reads the sines and cosines the analysis kept, and the second
-/// computes them, is shown inside linkage-runtime (`sensitivities::tests`),
+/// computes them, is shown inside the runtime (`src/runtime/sensitivities/tests.rs`),
 /// where the kept ones are visible: here both paths give the same numbers.
 #[test]
 fn at_an_analysis_the_sensitivities_are_those_of_its_motion() {

@@ -1,7 +1,7 @@
 //! The vocabulary of the DAG: node handles, symbols, the named constants,
 //! the functions of one and two arguments, exact numbers, and the nodes.
 
-/// The handle of a node in the [`Dag`].
+/// The handle of a node in the [`Dag`](super::Dag).
 #[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Debug)]
 pub struct Id(pub(super) u32);
 
@@ -260,7 +260,7 @@ impl Num {
 pub enum Node {
     Const(Num),
     Sym(Symbol),
-    /// `Σ cᵢ·tᵢ`; the constant term is the coefficient of [`Dag::ONE`].
+    /// `Σ cᵢ·tᵢ`; the constant term is the coefficient of [`Dag::ONE`](super::Dag::ONE).
     Sum(Vec<(Num, Id)>),
     /// `Π fᵢ^eᵢ`, no factor constant, coefficient 1.
     Prod(Vec<(Id, i32)>),

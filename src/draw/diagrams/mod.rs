@@ -51,7 +51,7 @@ mod plot;
 pub use chart::{Chart, Panel, Series};
 pub use hodographs::Hodographs;
 
-use linkage_runtime::{EventKind, Linkage, Sweep};
+use crate::runtime::{EventKind, Linkage, Sweep};
 use linkage_symbolic::names::textbook;
 use plot::*;
 use plotters::prelude::*;

@@ -72,7 +72,7 @@ mod symbols;
 
 use crate::error::{NameKind, UnknownName};
 use crate::ground::Ground;
-use linkage_runtime::{Analysis, Linkage, SweepPose};
+use crate::runtime::{Analysis, Linkage, SweepPose};
 use nalgebra::{SVector, Vector2};
 use symbols::{ground_symbol, guide_symbol};
 

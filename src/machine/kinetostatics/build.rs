@@ -10,7 +10,7 @@ use crate::ground::Ground;
 use crate::machine::Machine;
 use crate::machine::load::LoadKind;
 use crate::quantity::{self, Names};
-use linkage_runtime::Linkage;
+use crate::runtime::Linkage;
 use nalgebra::Vector2;
 
 /// How a prismatic joint's guide is directed.

@@ -31,7 +31,7 @@ pub use build::{Guide, KinetostaticsBuilder};
 
 use super::{Applied, Machine, MachineError, Pose};
 use crate::error::UnknownName;
-use linkage_runtime::Linkage;
+use crate::runtime::Linkage;
 use nalgebra::{DMatrix, DVector, Vector2};
 
 /// What went wrong building or solving the force analysis.
@@ -63,7 +63,7 @@ pub enum KinetostaticsError {
         rcond: f64,
     },
     Machine(MachineError),
-    Kinematics(linkage_runtime::Error),
+    Kinematics(crate::runtime::Error),
     /// A joint, rotor, driver or load names a body, point or coordinate that
     /// neither the table nor the model defines.
     UnknownName(UnknownName),
@@ -81,7 +81,7 @@ crate::error::error_impls! {
         Self::Kinematics(inner) => ("kinematics: {inner}"),
             Self::UnknownName(inner) => ("{inner}"),
     }
-    wraps { Machine(MachineError), Kinematics(linkage_runtime::Error), UnknownName(UnknownName) }
+    wraps { Machine(MachineError), Kinematics(crate::runtime::Error), UnknownName(UnknownName) }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -340,12 +340,12 @@ impl<'m, L: Linkage<M, 1>, const M: usize> Kinetostatics<'m, L, M> {
             b[2 * n + r] = -m;
         }
         let not_finite = || {
-            KinetostaticsError::Kinematics(linkage_runtime::Error::NonFiniteValue {
-                stage: linkage_runtime::Stage::Points,
+            KinetostaticsError::Kinematics(crate::runtime::Error::NonFiniteValue {
+                stage: crate::runtime::Stage::Points,
                 quantity: "the joint table",
             })
         };
-        let svd = linkage_runtime::scaled_svd(&a, true).ok_or_else(not_finite)?;
+        let svd = crate::runtime::scaled_svd(&a, true).ok_or_else(not_finite)?;
         let (smax, smin) = svd
             .singular_values
             .iter()

@@ -1,7 +1,7 @@
 //! The solvers' settings: tolerances, the accuracy a result must keep, and
 //! where the derivatives come from.
 
-use crate::error::{Error, Stage};
+use crate::runtime::error::{Error, Stage};
 
 /// Which of the two equivalent forms of γ an acceleration solve uses; all
 /// three give the same ü (the tests show they differ by rounding only).
@@ -50,7 +50,7 @@ pub struct Options {
     /// The relative accuracy a result must keep, or the solve fails with
     /// [`Error::Singular`] instead of returning it. Near a singular pose
     /// rounding is amplified by the condition number κ of Ψ_u (equilibrated,
-    /// see [`crate::Inverse::rcond`]) once in the positions, twice in the
+    /// see [`crate::runtime::Inverse::rcond`]) once in the positions, twice in the
     /// velocities and three times in the accelerations; so positions are
     /// refused where ε·κ exceeds `accuracy`, velocities where ε·κ² does and
     /// accelerations where ε·κ³ does ([`Options::min_rcond`]). The default
@@ -136,7 +136,7 @@ impl Options {
     #[inline]
     pub fn keeps_accuracy(&self, stage: Stage, rcond: f64) -> bool {
         // Below 2⁻³⁰⁰ a cube would leave the normal range: the root decides.
-        const SMALL: f64 = crate::powers_of_two::pow2(-300);
+        const SMALL: f64 = crate::runtime::powers_of_two::pow2(-300);
         let ordinary = rcond >= SMALL; // false for NaN too
         if !ordinary {
             return rcond > 0.0 && rcond >= self.min_rcond(stage);

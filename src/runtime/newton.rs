@@ -10,14 +10,14 @@
 //! vector of Ψ_u; at a minimum the mechanism cannot be assembled, and the
 //! error says how far it is from closing.
 
-use crate::checks::{check_input, check_value};
-use crate::error::{Error, Stage};
-use crate::linalg::{factor, invert};
-use crate::linkage::Linkage;
-use crate::options::Options;
-use crate::results::{Iterate, Kinematics, Position};
-use crate::sources::psi_and_psi_u;
-use crate::trig::{PoseTrig, TrigCarrier};
+use crate::runtime::checks::{check_input, check_value};
+use crate::runtime::error::{Error, Stage};
+use crate::runtime::linalg::{factor, invert};
+use crate::runtime::linkage::Linkage;
+use crate::runtime::options::Options;
+use crate::runtime::results::{Iterate, Kinematics, Position};
+use crate::runtime::sources::psi_and_psi_u;
+use crate::runtime::trig::{PoseTrig, TrigCarrier};
 use nalgebra::{SMatrix, SVector};
 
 /// Ψ_uᵀΨ below this fraction of ‖Ψ_u‖·‖Ψ‖ is a stationary point of ‖Ψ‖².

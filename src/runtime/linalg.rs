@@ -1,9 +1,9 @@
 //! Small dense linear algebra without allocation: the inverse of Ψ_u with its
 //! reciprocal condition number, in closed form for m ≤ 3.
 
-use crate::error::{Error, Stage};
-use crate::options::Options;
-use crate::powers_of_two::{pow2, power_of_two_near};
+use crate::runtime::error::{Error, Stage};
+use crate::runtime::options::Options;
+use crate::runtime::powers_of_two::{pow2, power_of_two_near};
 use nalgebra::{SMatrix, SVector};
 
 /// An inverted square matrix, its determinant and its conditioning.

@@ -1,7 +1,7 @@
 //! What the analyses return: a pose, a Newton iterate, velocities, the
 //! one-pass kinematics, and the whole analysis of a pose.
 
-use crate::trig::PoseTrig;
+use crate::runtime::trig::PoseTrig;
 use nalgebra::{SMatrix, SVector};
 
 /// An assembled pose found by Newton–Raphson.
@@ -41,7 +41,7 @@ pub struct Velocity<const M: usize, const F: usize> {
 }
 
 /// Everything at one pose, from one pass of generated code
-/// ([`Linkage::kinematics`](crate::Linkage::kinematics)).
+/// ([`Linkage::kinematics`](crate::runtime::Linkage::kinematics)).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Kinematics<const M: usize, const F: usize> {
     /// Ψ (the residual of the pose).
@@ -64,8 +64,8 @@ pub struct Kinematics<const M: usize, const F: usize> {
 /// and of the points.
 ///
 /// Two analyses are equal when their public fields are and they were given
-/// the same drivers (which [`crate::Motion::of_analysis`] reads); the sines
-/// and cosines one may keep for [`crate::Sensitivities::sensitivities_of`]
+/// the same drivers (which [`crate::runtime::Motion::of_analysis`] reads); the sines
+/// and cosines one may keep for [`crate::runtime::Sensitivities::sensitivities_of`]
 /// change none of its numbers, and are not compared.
 #[derive(Clone, Copy, Debug)]
 pub struct Analysis<const M: usize, const F: usize, P> {
@@ -84,14 +84,14 @@ pub struct Analysis<const M: usize, const F: usize, P> {
     /// The reciprocal condition number of Ψ_u at the solution.
     pub rcond: f64,
     /// The drivers v, v̇, v̈ the analysis was given (read by
-    /// [`crate::Motion::of_analysis`]), kept so that the sensitivities at
+    /// [`crate::runtime::Motion::of_analysis`]), kept so that the sensitivities at
     /// the analysis need not be given them again.
     pub(crate) v: SVector<f64, F>,
     pub(crate) vdot: SVector<f64, F>,
     pub(crate) vddot: SVector<f64, F>,
     /// The sines and cosines the fused kernel computed at the pose (the
     /// default options' path; `None` on the others), which
-    /// [`crate::Sensitivities::sensitivities_of`] uses.
+    /// [`crate::runtime::Sensitivities::sensitivities_of`] uses.
     pub(crate) trig: Option<PoseTrig<M, F>>,
 }
 

@@ -57,7 +57,7 @@ pub enum Error {
         stage: Stage,
         /// 1/(‖Ψ_u‖₁‖Ψ_u⁻¹‖₁), 0 for an exactly singular matrix.
         rcond: f64,
-        /// The threshold in force for this stage ([`crate::Options::min_rcond`]).
+        /// The threshold in force for this stage ([`crate::runtime::Options::min_rcond`]).
         min_rcond: f64,
     },
     /// The equations have no solution at this driver value: damped Newton
@@ -88,14 +88,14 @@ pub enum Error {
         scale: f64,
     },
     /// A sweep's step needed more sub-steps than
-    /// [`crate::SweepOptions::max_substeps`]: the drive moves too far per
+    /// [`crate::runtime::SweepOptions::max_substeps`]: the drive moves too far per
     /// step for the predictor's largest move (a crank turned through many
     /// revolutions between two recorded poses). Take more steps, or a
     /// shorter drive.
     SubstepLimit {
         /// The poses recorded before the step.
         step: usize,
-        /// [`crate::SweepOptions::max_substeps`].
+        /// [`crate::runtime::SweepOptions::max_substeps`].
         limit: usize,
     },
     /// A setting or an argument is out of its range (other than not being

@@ -10,12 +10,12 @@ mod solve;
 
 pub use results::{Motion, Sensitivity, SensitivityTerms};
 
-use crate::error::Error;
-use crate::linkage::Linkage;
-use crate::options::Options;
-use crate::results::Analysis;
-use crate::sweep::{Drive, SweepOptions, SweepPose, SweepSummary};
-use crate::trig::{PoseTrig, SinCos, TrigCarrier, carry_pays};
+use crate::runtime::error::Error;
+use crate::runtime::linkage::Linkage;
+use crate::runtime::options::Options;
+use crate::runtime::results::Analysis;
+use crate::runtime::sweep::{Drive, SweepOptions, SweepPose, SweepSummary};
+use crate::runtime::trig::{PoseTrig, SinCos, TrigCarrier, carry_pays};
 use nalgebra::{SMatrix, SVector, Vector2};
 use num_dual::DualNum;
 

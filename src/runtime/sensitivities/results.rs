@@ -1,8 +1,8 @@
 //! What the sensitivities take and return: a pose in motion, the generated
 //! terms at it, and the derivatives of every result by the parameters.
 
-use crate::results::Analysis;
-use crate::sweep::SweepPose;
+use crate::runtime::results::Analysis;
+use crate::runtime::sweep::SweepPose;
 use nalgebra::{SMatrix, SVector, Vector2};
 
 /// A pose in motion: every coordinate with its velocity and acceleration.

@@ -4,11 +4,11 @@
 //! positions, `solve.rs` for velocities and accelerations,
 //! `sweep/` for continuation).
 
-use crate::error::Error;
-use crate::options::{AccelerationMethod, Options};
-use crate::results::{Analysis, Iterate, Kinematics, Position, Velocity};
-use crate::symbolic::SymbolicTable;
-use crate::{newton, solve, sources};
+use crate::runtime::error::Error;
+use crate::runtime::options::{AccelerationMethod, Options};
+use crate::runtime::results::{Analysis, Iterate, Kinematics, Position, Velocity};
+use crate::runtime::symbolic::SymbolicTable;
+use crate::runtime::{newton, solve, sources};
 use nalgebra::{SMatrix, SVector, Vector2};
 use num_dual::DualNum;
 
@@ -226,16 +226,17 @@ pub trait Linkage<const M: usize, const F: usize> {
     /// Drives the mechanism along `drive` from the pose near `u0`, by
     /// continuation: every pose with its velocities and accelerations, and
     /// every singular pose met, located and classified (see
-    /// [`crate::Drive`]).
+    /// [`crate::runtime::Drive`]).
     fn sweep(
         &self,
         u0: &SVector<f64, M>,
-        drive: &crate::sweep::Drive<F>,
-        options: &crate::sweep::SweepOptions,
-    ) -> Result<crate::sweep::Sweep<M, F>, Error> {
+        drive: &crate::runtime::sweep::Drive<F>,
+        options: &crate::runtime::sweep::SweepOptions,
+    ) -> Result<crate::runtime::sweep::Sweep<M, F>, Error> {
         let mut poses = Vec::new();
-        let summary = crate::sweep::sweep(self, u0, drive, options, &mut |p| poses.push(*p))?;
-        Ok(crate::sweep::Sweep {
+        let summary =
+            crate::runtime::sweep::sweep(self, u0, drive, options, &mut |p| poses.push(*p))?;
+        Ok(crate::runtime::sweep::Sweep {
             poses,
             events: summary.events,
             complete: summary.complete,
@@ -247,11 +248,11 @@ pub trait Linkage<const M: usize, const F: usize> {
     fn sweep_each(
         &self,
         u0: &SVector<f64, M>,
-        drive: &crate::sweep::Drive<F>,
-        options: &crate::sweep::SweepOptions,
-        mut on_pose: impl FnMut(&crate::sweep::SweepPose<M, F>),
-    ) -> Result<crate::sweep::SweepSummary<M, F>, Error> {
-        crate::sweep::sweep(self, u0, drive, options, &mut on_pose)
+        drive: &crate::runtime::sweep::Drive<F>,
+        options: &crate::runtime::sweep::SweepOptions,
+        mut on_pose: impl FnMut(&crate::runtime::sweep::SweepPose<M, F>),
+    ) -> Result<crate::runtime::sweep::SweepSummary<M, F>, Error> {
+        crate::runtime::sweep::sweep(self, u0, drive, options, &mut on_pose)
     }
 
     /// The whole analysis of one pose: Newton–Raphson from `u_guess`, then

@@ -3,8 +3,8 @@
 use super::Event;
 use super::state::{Passage, REGULAR_RCOND, State, Track};
 use super::tracker::{Rejection, Tracker};
-use crate::error::Error;
-use crate::linkage::Linkage;
+use crate::runtime::error::Error;
+use crate::runtime::linkage::Linkage;
 use nalgebra::SVector;
 
 /// Whether the analogs at b continue those at a, h further along the path:

@@ -7,12 +7,12 @@ use super::state::{Progress, Track};
 use super::substep::Advance;
 use super::tracker::Tracker;
 use super::{Drive, Event, EventKind, SweepOptions, SweepPose, SweepSummary};
-use crate::checks::check_input;
-use crate::error::{Error, Stage};
-use crate::linalg::scaled_norm;
-use crate::linkage::Linkage;
-use crate::newton;
-use crate::trig::TrigCarrier;
+use crate::runtime::checks::check_input;
+use crate::runtime::error::{Error, Stage};
+use crate::runtime::linalg::scaled_norm;
+use crate::runtime::linkage::Linkage;
+use crate::runtime::newton;
+use crate::runtime::trig::TrigCarrier;
 use nalgebra::SVector;
 
 /// Runs a sweep (see [`Linkage::sweep`]).

@@ -4,10 +4,10 @@ use super::SweepPose;
 use super::state::{Progress, REGULAR_RCOND, State, Track};
 use super::substep::tangent_continues;
 use super::tracker::{FAST_ACCEPT, Tracker};
-use crate::error::Error;
-use crate::linkage::Linkage;
-use crate::results::Kinematics;
-use crate::trig::TrigCarrier;
+use crate::runtime::error::Error;
+use crate::runtime::linkage::Linkage;
+use crate::runtime::results::Kinematics;
+use crate::runtime::trig::TrigCarrier;
 use nalgebra::{SMatrix, SVector};
 
 /// The most Newton iterations a step of the fast run may take before the

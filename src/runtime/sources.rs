@@ -3,8 +3,8 @@
 //! differences of `psi`. The generated code is the fast and exact one; the
 //! other two are for cross-checks and for the speed-against-accuracy chart.
 
-use crate::linkage::Linkage;
-use crate::options::{AccelerationMethod, JacobianSource};
+use crate::runtime::linkage::Linkage;
+use crate::runtime::options::{AccelerationMethod, JacobianSource};
 use nalgebra::{SMatrix, SVector};
 use num_dual::{Dual2_64, DualSVec64, DualVec, jacobian};
 

@@ -3,11 +3,11 @@
 use super::SweepPose;
 use super::state::State;
 use super::tracker::Tracker;
-use crate::checks::check_result;
-use crate::error::{Error, Stage};
-use crate::linkage::Linkage;
-use crate::solve::acceleration_conditioning_with;
-use crate::sources;
+use crate::runtime::checks::check_result;
+use crate::runtime::error::{Error, Stage};
+use crate::runtime::linkage::Linkage;
+use crate::runtime::solve::acceleration_conditioning_with;
+use crate::runtime::sources;
 
 impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
     /// Whether the pose's velocities and accelerations keep the requested

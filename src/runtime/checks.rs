@@ -2,8 +2,8 @@
 //! finite, and numbers in the normal range of f64 where relative precision
 //! lives.
 
-use crate::error::{Error, Stage};
-use crate::powers_of_two::pow2;
+use crate::runtime::error::{Error, Stage};
+use crate::runtime::powers_of_two::pow2;
 
 /// Checks that every entry of `values` is finite.
 #[inline]

@@ -1,8 +1,8 @@
 //! Derivatives along the path (Ψ_u, Ψ_t) and the bordered Newton system on them, for (u, t).
 
 use super::tracker::Tracker;
-use crate::linkage::Linkage;
-use crate::sources;
+use crate::runtime::linkage::Linkage;
+use crate::runtime::sources;
 use nalgebra::{DMatrix, DVector, SVector};
 
 /// One row of a bordered system, g's: ∂g/∂u, ∂g/∂t, and the right-hand

@@ -30,8 +30,8 @@
 use super::state::{Passage, REGULAR_RCOND, State};
 use super::tracker::Tracker;
 use super::{Event, EventKind};
-use crate::linalg::scaled_svd;
-use crate::linkage::Linkage;
+use crate::runtime::linalg::scaled_svd;
+use crate::runtime::linkage::Linkage;
 use nalgebra::{DMatrix, DVector, SVector};
 use num_dual::HyperDual64;
 

@@ -3,14 +3,14 @@
 //! or overflows), the fused one-pass kernel where it serves, and the
 //! conditioning each needs to keep [`Options::accuracy`].
 
-use crate::checks::{check_input, check_result, check_scale, check_value};
-use crate::error::{Error, Stage};
-use crate::linalg::{augmented_condition, factor, invert};
-use crate::linkage::Linkage;
-use crate::options::{AccelerationMethod, JacobianSource, Options};
-use crate::powers_of_two::power_of_two_near;
-use crate::results::{Analysis, Kinematics, Velocity};
-use crate::{newton, sources};
+use crate::runtime::checks::{check_input, check_result, check_scale, check_value};
+use crate::runtime::error::{Error, Stage};
+use crate::runtime::linalg::{augmented_condition, factor, invert};
+use crate::runtime::linkage::Linkage;
+use crate::runtime::options::{AccelerationMethod, JacobianSource, Options};
+use crate::runtime::powers_of_two::power_of_two_near;
+use crate::runtime::results::{Analysis, Kinematics, Velocity};
+use crate::runtime::{newton, sources};
 use nalgebra::{SMatrix, SVector};
 
 /// [`Linkage::analyze`]: Newton–Raphson, then the velocities and the

@@ -58,8 +58,8 @@ mod tracker;
 
 pub(crate) use driver::sweep;
 
-use crate::error::Error;
-use crate::options::Options;
+use crate::runtime::error::Error;
+use crate::runtime::options::Options;
 use nalgebra::SVector;
 
 /// How the driver moves.
@@ -228,7 +228,7 @@ pub struct Sweep<const M: usize, const F: usize> {
     pub complete: bool,
 }
 
-/// The outcome of a streamed sweep ([`crate::Linkage::sweep_each`]).
+/// The outcome of a streamed sweep ([`crate::runtime::Linkage::sweep_each`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct SweepSummary<const M: usize, const F: usize> {
     pub events: Vec<Event<M, F>>,

@@ -35,10 +35,10 @@
 //! "Measurements behind the code").
 
 use super::results::{Motion, Sensitivity, SensitivityTerms};
-use crate::checks::{all_finite, all_finite_in, check_input, check_value};
-use crate::error::{Error, Stage};
-use crate::linalg::factor;
-use crate::options::Options;
+use crate::runtime::checks::{all_finite, all_finite_in, check_input, check_value};
+use crate::runtime::error::{Error, Stage};
+use crate::runtime::linalg::factor;
+use crate::runtime::options::Options;
 use nalgebra::{SMatrix, Vector2};
 
 /// [`Sensitivities::sensitivities`] and its `_with_trig`: the inputs
@@ -319,7 +319,7 @@ mod tests {
     /// The formulas written plainly (in the module's X₀, A, B form):
     /// nalgebra's products, every term of every point added.
     fn plainly(t: &SensitivityTerms<2, 2, Points>) -> Sensitivity<2, 2, Points> {
-        let inv = crate::linalg::invert(&t.psi_u);
+        let inv = crate::runtime::linalg::invert(&t.psi_u);
         let inverse = inv.inverse;
         let (a, b) = (inverse * t.psi_u_dot, inverse * t.psi_u_ddot);
         let x0 = inverse * t.psi_p;
@@ -366,7 +366,7 @@ mod tests {
     #[test]
     fn in_sequence_gives_the_formulas_numbers() {
         let t = terms();
-        let inverse = crate::linalg::invert(&t.psi_u).inverse;
+        let inverse = crate::runtime::linalg::invert(&t.psi_u).inverse;
         let u = -(inverse * t.psi_p);
         let udot = -(inverse * (t.psi_u_dot * u + t.psi_p_dot));
         let uddot = -(inverse * (t.psi_u_ddot * u + t.psi_u_dot * udot * 2.0 + t.psi_p_ddot));

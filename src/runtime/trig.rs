@@ -31,8 +31,8 @@ pub(crate) struct TrigCarrier<const M: usize, const F: usize> {
 pub(crate) type SinCos<const N: usize> = [(f64, f64); N];
 
 /// The sines and cosines an analysis computed at its pose, handed on to the
-/// sensitivities there ([`crate::Sensitivities::sensitivities_of`]): `sin_cos_u[k]` =
-/// `u[k].sin_cos()` for the coordinates of [`crate::Linkage::TRIG_U`], and
+/// sensitivities there ([`crate::runtime::Sensitivities::sensitivities_of`]): `sin_cos_u[k]` =
+/// `u[k].sin_cos()` for the coordinates of [`crate::runtime::Linkage::TRIG_U`], and
 /// likewise of the analysis's drivers v (the other entries unspecified).
 /// They are used only at exactly this `u`: the analysis's own `u` may be
 /// changed by its caller, its drivers may not.

@@ -2,12 +2,12 @@
 
 use super::SweepOptions;
 use super::state::State;
-use crate::error::{Error, Stage};
-use crate::linalg::invert;
-use crate::linkage::Linkage;
-use crate::options::{AccelerationMethod, JacobianSource, Options};
-use crate::results::Kinematics;
-use crate::{newton, sources};
+use crate::runtime::error::{Error, Stage};
+use crate::runtime::linalg::invert;
+use crate::runtime::linkage::Linkage;
+use crate::runtime::options::{AccelerationMethod, JacobianSource, Options};
+use crate::runtime::results::Kinematics;
+use crate::runtime::{newton, sources};
 use nalgebra::SVector;
 
 /// u̇ and ü.

@@ -5,9 +5,9 @@
 //! was called and with what.
 
 use super::*;
-use crate::options::{AccelerationMethod, JacobianSource};
-use crate::results::Kinematics;
-use crate::symbolic::SymbolicTable;
+use crate::runtime::options::{AccelerationMethod, JacobianSource};
+use crate::runtime::results::Kinematics;
+use crate::runtime::symbolic::SymbolicTable;
 use core::cell::Cell;
 use nalgebra::{Matrix1, vector};
 
@@ -51,11 +51,11 @@ impl Tips {
         let psi = vector![r * s - s_phi];
         let psi_u = Matrix1::new(r * c);
         let psi_v = Matrix1::new(-c_phi);
-        let crate::linalg::Inverse {
+        let crate::runtime::linalg::Inverse {
             inverse,
             rcond,
             det,
-        } = crate::linalg::invert(&psi_u);
+        } = crate::runtime::linalg::invert(&psi_u);
         let udot = -(inverse * (psi_v * vdot));
         let gamma = vector![-r * s * udot[0].powi(2) + s_phi * vdot[0].powi(2)];
         let uddot = -(inverse * (psi_v * vddot + gamma));

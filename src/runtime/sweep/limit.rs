@@ -5,9 +5,9 @@
 use super::bordered::Border;
 use super::state::State;
 use super::tracker::Tracker;
-use crate::linalg::determinant;
-use crate::linkage::Linkage;
-use crate::sources;
+use crate::runtime::linalg::determinant;
+use crate::runtime::linkage::Linkage;
+use crate::runtime::sources;
 use nalgebra::{DMatrix, SVector};
 
 impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
@@ -67,7 +67,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         let psi_u =
             sources::psi_and_psi_u(self.model, self.options.options.jacobian, limit_u, &v).1;
         let dyn_u = DMatrix::<f64>::from_fn(M, M, |i, j| psi_u[(i, j)]);
-        let svd = crate::linalg::scaled_svd(&dyn_u, true)?;
+        let svd = crate::runtime::linalg::scaled_svd(&dyn_u, true)?;
         let v_t = svd.v_t?;
         let k = svd
             .singular_values

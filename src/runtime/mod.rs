@@ -8,12 +8,12 @@
 //!
 //! Every entry point checks its inputs and outputs: it returns a typed
 //! [`Error`] rather than panic, and never a NaN or an infinity inside `Ok`.
-#![forbid(unsafe_code)]
 
 // The modules in layers, each using only those before it, but for the
 // trait: its provided methods delegate to sources, newton, solve and sweep,
 // which take their model through it (its methods, never helpers in its file).
 //   error     the typed errors
+//   powers_of_two  exact scale factors
 //   linalg    small matrices: inversion, factorisation, conditioning
 //   checks    finite inputs and outputs, numbers in the normal range
 //   options   the solvers' settings; results: what the analyses return
