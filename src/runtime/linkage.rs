@@ -99,16 +99,21 @@ pub trait Linkage<const M: usize, const F: usize> {
         vdot: &SVector<f64, F>,
         vddot: &SVector<f64, F>,
     ) -> Kinematics<M, F>;
+    // The speed machinery of a sweep (generated; hidden from the API): the
+    // sines and cosines of the coordinates carried from pose to pose.
     /// Which coordinates of u have their sine and cosine read from `trig_u`
     /// by [`Linkage::kinematics_with_trig`] (none by default).
+    #[doc(hidden)]
     const TRIG_U: [bool; M] = [false; M];
     /// Which coordinates of v have their sine and cosine read from `trig_v`.
+    #[doc(hidden)]
     const TRIG_V: [bool; F] = [false; F];
     /// [`Linkage::kinematics`] with the sines and cosines of the coordinates
     /// supplied: `trig_u[k]` = (sin uₖ, cos uₖ), likewise `trig_v`. A sweep
     /// carries them from pose to pose by the angle-addition formulas. The
     /// generated code reads only the entries of coordinates that appear under
     /// `sin`/`cos`; the default ignores them and calls `kinematics`.
+    #[doc(hidden)]
     #[allow(clippy::too_many_arguments)]
     fn kinematics_with_trig(
         &self,

@@ -86,7 +86,7 @@ pub const TRIG: [Constant; 2] = [
             " [`Self::kinematics_with_trig`], which reads their sine and",
             " cosine from `trig_u` (the others' entries are not read).",
         ],
-        hidden: false,
+        hidden: true,
     },
     Constant {
         name: "TRIG_V",
@@ -96,7 +96,7 @@ pub const TRIG: [Constant; 2] = [
             " Which coordinates of v appear under `sin`/`cos`, read from",
             " `trig_v`.",
         ],
-        hidden: false,
+        hidden: true,
     },
 ];
 

@@ -164,6 +164,7 @@ impl Generator<'_> {
             return quote! {
                 #(#masks)*
                 #doc
+                #[doc(hidden)]
                 #[must_use]
                 #[inline(always)]
                 #[allow(unused_variables, clippy::too_many_arguments)]

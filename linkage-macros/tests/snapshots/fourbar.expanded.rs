@@ -543,14 +543,17 @@ const _: () = {
         /// Which coordinates of u appear under `sin`/`cos` in
         /// [`Self::kinematics_with_trig`], which reads their sine and
         /// cosine from `trig_u` (the others' entries are not read).
+        #[doc(hidden)]
         pub const TRIG_U: [bool; 2] = [true, true];
         /// Which coordinates of v appear under `sin`/`cos`, read from
         /// `trig_v`.
+        #[doc(hidden)]
         pub const TRIG_V: [bool; 1] = [true];
         /// [`Self::kinematics`] with the sines and cosines of the coordinates given (`trig_u[k]` =
         /// (sin uₖ, cos uₖ), likewise `trig_v`) instead of computed: a sweep carries them from pose
         /// to pose by the angle-addition formulas, which costs a few multiplications instead of a
         /// transcendental call.
+        #[doc(hidden)]
         #[must_use]
         #[inline(always)]
         #[allow(unused_variables, clippy::too_many_arguments)]
