@@ -60,6 +60,11 @@ impl Verdict {
                 Defect::Singular { v, kind } => {
                     format!("singular pose {kind:?} at θ2 = {:.1}°", v.to_degrees())
                 }
+                Defect::Transmission { v, angle } => format!(
+                    "transmission angle {:.1}° at θ2 = {:.1}°",
+                    angle.to_degrees(),
+                    v.to_degrees().rem_euclid(360.0)
+                ),
                 other => format!("{other:?}"),
             },
             Verdict::DoesNotAssemble(why) => format!("does not assemble: {why}"),

@@ -9,9 +9,9 @@ use linkage::{Options, Sensitivities};
 use std::time::Instant;
 
 /// Random starts of a path run: chosen when 64 left stream 1 without a
-/// design for either path task; since the starts whose crank cannot turn
-/// begin on the arc they reach (commit 26bf2b8) every stream certifies one
-/// within 40 starts (the first-design runs), so 64 would now do.
+/// design for either path task; with the certificate's 40° transmission
+/// angle the first-design runs take up to 72 starts through 5 points
+/// (stream 4), so 64 would not do for every stream.
 pub const PATH_STARTS: usize = 128;
 /// The random streams of the path runs (one run each).
 pub const STREAMS: u64 = 5;
