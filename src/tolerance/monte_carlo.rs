@@ -88,17 +88,42 @@ pub struct CycleSamples<const M: usize, const F: usize> {
     pub failures: Vec<(usize, Failure<M, F>)>,
 }
 
+impl<const M: usize, const F: usize> Failure<M, F> {
+    /// Whether the sample cannot run the cycle: it cannot be assembled, or
+    /// its drive ends at a limit position or a singular pose the nominal
+    /// design does not meet (not: it runs the cycle, and only its extremes
+    /// could not be located).
+    pub fn cannot_run(&self) -> bool {
+        matches!(self, Failure::Kinematics(_) | Failure::Singular(_))
+    }
+}
+
 impl<const M: usize, const F: usize> CycleSamples<M, F> {
     /// The fraction of the samples left out: those that cannot be
     /// assembled, or do not run the cycle as the nominal design does.
     pub fn failed_fraction(&self) -> f64 {
         failed_fraction(&self.failures, self.samples)
     }
+
+    /// The fraction of the samples that cannot run the cycle
+    /// ([`Failure::cannot_run`]).
+    pub fn cannot_run_fraction(&self) -> f64 {
+        cannot_run_fraction(&self.failures, self.samples)
+    }
 }
 
 /// The fraction of `samples` that `failures` lists.
 pub(super) fn failed_fraction<T>(failures: &[T], samples: usize) -> f64 {
     failures.len() as f64 / samples as f64
+}
+
+/// The fraction of `samples` that `failures` lists as unable to run the
+/// cycle.
+pub(super) fn cannot_run_fraction<const M: usize, const F: usize>(
+    failures: &[(usize, Failure<M, F>)],
+    samples: usize,
+) -> f64 {
+    failures.iter().filter(|(_, why)| why.cannot_run()).count() as f64 / samples as f64
 }
 
 /// The samples analysed together (their values held before they are

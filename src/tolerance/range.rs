@@ -17,7 +17,7 @@
 
 use super::limit::{moving_with_params, position_sensitivity};
 use super::located::{Located, at_found, extreme_values, watch_of};
-use super::monte_carlo::{Failure, MonteCarlo, failed_fraction, monte_carlo};
+use super::monte_carlo::{Failure, MonteCarlo, cannot_run_fraction, failed_fraction, monte_carlo};
 use super::output::Resolved;
 use super::{Design, Output, Spread, Statistics, ToleranceError, Tolerances, gradient};
 use crate::quantity::Resolved as Named;
@@ -178,6 +178,14 @@ impl<const M: usize> RangeSamples<M> {
     /// whose extremes cannot be located.
     pub fn failed_fraction(&self) -> f64 {
         failed_fraction(&self.failures, self.samples)
+    }
+
+    /// The fraction of the samples that cannot run the cycle
+    /// ([`Failure::cannot_run`]): [`RangeSamples::failed_fraction`] less
+    /// those that run it but pass so close to a limit position that their
+    /// extremes are not located.
+    pub fn cannot_run_fraction(&self) -> f64 {
+        cannot_run_fraction(&self.failures, self.samples)
     }
 }
 

@@ -266,6 +266,11 @@ fn the_fraction_of_designs_that_do_not_run_the_cycle_is_reported() {
         );
         let fraction = sampled.failed_fraction();
         assert_eq!(fraction, failed.len() as f64 / n as f64);
+        // Those that cannot run the cycle are exactly those that must fail.
+        assert_eq!(sampled.cannot_run_fraction(), must_share);
+        assert!(
+            (sampled.failures.iter()).all(|(i, why)| why.cannot_run() == must_fail.contains(i))
+        );
         assert!(
             (fraction - failed_guide).abs() <= three_sigma(failed_guide, n),
             "l = {l}: {fraction} against the guide's {failed_guide}"
