@@ -65,7 +65,7 @@ impl Verdict {
                     angle.to_degrees(),
                     v.to_degrees().rem_euclid(360.0)
                 ),
-                other => format!("{other:?}"),
+                other => other.to_string(),
             },
             Verdict::DoesNotAssemble(why) => format!("does not assemble: {why}"),
         };

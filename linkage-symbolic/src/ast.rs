@@ -389,22 +389,20 @@ fn parse_point(chunk: TokenStream, errors: &mut Errors) -> Option<PointDef> {
             return malformed(name);
         }
     };
-    let parts = split_commas(coords.stream());
-    if parts.len() != 2 {
-        errors.push(syn::Error::new(
-            coords.span(),
-            format!(
-                "point `{name}` needs two coordinates `(x, y)`, found {}",
-                parts.len()
-            ),
-        ));
-        return malformed(name);
-    }
-    let mut parts = parts.into_iter();
-    let (x, y) = match (parts.next(), parts.next()) {
-        (Some(x), Some(y)) => (parse_expr(x, errors), parse_expr(y, errors)),
-        _ => (None, None),
+    let parts: [TokenStream; 2] = match split_commas(coords.stream()).try_into() {
+        Ok(parts) => parts,
+        Err(parts) => {
+            errors.push(syn::Error::new(
+                coords.span(),
+                format!(
+                    "point `{name}` needs two coordinates `(x, y)`, found {}",
+                    parts.len()
+                ),
+            ));
+            return malformed(name);
+        }
     };
+    let [x, y] = parts.map(|part| parse_expr(part, errors));
     Some(PointDef {
         name,
         coords: x.zip(y),

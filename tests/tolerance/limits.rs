@@ -335,6 +335,8 @@ fn the_cycles_statistics_leave_out_the_designs_that_must_fail() {
     let must: Vec<usize> = (0..run.samples).filter(|&i| excess(i) < 0.0).collect();
     assert_eq!(failed, must);
     assert_eq!(sampled.failed_fraction(), 15.0 / 600.0);
+    // Each of them cannot run the cycle.
+    assert_eq!(sampled.cannot_run_fraction(), 15.0 / 600.0);
 }
 
 #[test]
