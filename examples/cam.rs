@@ -321,7 +321,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "The follower's program over φ = 0…100° (the rest of the turn a dwell)",
         "φ [°]",
     )
-    .size(900, 200)
+    .size(900, 230)
     .panel(Panel::new("S_B [mm]").line("S_B", curve(&|p| Ok(1000.0 * program.at(p)?.0[0]))?))
     .panel(Panel::new("v_q [mm/rad]").line("v_q", curve(&|p| Ok(1000.0 * program.at(p)?.0[1]))?))
     .panel(Panel::new("a_q [mm/rad²]").line("a_q", curve(&|p| Ok(1000.0 * program.at(p)?.0[2]))?));

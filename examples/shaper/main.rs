@@ -309,7 +309,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "φ [°]",
     )
     .columns(2)
-    .size(1180, 250)
+    .size(1000, 300)
     .panel(
         Panel::new("J_II [kg·m²]")
             .line("J_II(φ)", curve(&|k| reduced[k].inertia))
@@ -479,7 +479,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "F_34: block 4 on rocker, at D",
     ];
     let mut chart = linkage::draw::diagrams::Hodographs::new(
-        "Hodographs of the joint reactions over a cycle (the red vector: at f)",
+        "Hodographs of the joint reactions over a cycle; the arrow: the reaction at the course project's position f (crank at 60°)",
         "N",
     );
     for (k, points) in hodographs.into_iter().enumerate() {

@@ -17,8 +17,8 @@ mod output;
 mod workloads;
 
 use linkage::closed_form;
+use linkage::draw::chart::{Chart, Colour, Dash, Marker, Panel};
 use linkage::prelude::*;
-use plotters::prelude::*;
 use std::path::Path;
 use std::time::Instant;
 use workloads::{FOUR_BAR, N, OMEGA2, Reference, SIX_BAR, SLIDER_CRANK, STRIDE, errors, theta2};
@@ -410,36 +410,13 @@ fn print_table(results: &[Result]) {
 }
 
 /// The chart: ns per sample against the worst relative error, for the
-/// four-bar, one panel per kind of quantity.
+/// four-bar, one panel per kind of quantity. Every method an open marker
+/// of its own shape and colour, so that markers on one another both show.
 fn chart(results: &[Result], path: &Path) -> std::result::Result<(), Box<dyn std::error::Error>> {
     let four: Vec<&Result> = results
         .iter()
         .filter(|r| r.workload == "four-bar")
         .collect();
-    let root = SVGBackend::new(path, (1260, 640)).into_drawing_area();
-    root.fill(&WHITE)?;
-    let (top, body) = root.split_vertically(34);
-    top.draw(&Text::new(
-        "The worksheet's four-bar over a revolution (1 008 000 samples): time per sample against worst relative error",
-        (14, 9),
-        ("sans-serif", 17).into_font(),
-    ))?;
-    let (plots, legend) = body.split_vertically(470);
-    let panels = plots.split_evenly((1, 3));
-    // One colour per method (the Newton curve is grey).
-    let palette = [
-        RGBColor(20, 20, 20),
-        RGBColor(40, 110, 200),
-        RGBColor(230, 140, 20),
-        RGBColor(40, 150, 70),
-        RGBColor(200, 40, 40),
-        RGBColor(140, 60, 170),
-        RGBColor(140, 90, 40),
-        RGBColor(0, 150, 160),
-        RGBColor(220, 90, 170),
-        RGBColor(130, 140, 30),
-    ];
-    let grey = RGBColor(120, 120, 120);
     let methods: Vec<&Result> = four
         .iter()
         .copied()
@@ -447,61 +424,46 @@ fn chart(results: &[Result], path: &Path) -> std::result::Result<(), Box<dyn std
         .collect();
     let x_min = four.iter().map(|r| r.ns).fold(f64::INFINITY, f64::min) / 2.0;
     let x_max = four.iter().map(|r| r.ns).fold(0.0, f64::max) * 2.0;
-    for (kind, panel) in panels.iter().enumerate() {
-        let title = ["positions", "velocities", "accelerations"][kind];
-        let mut c = ChartBuilder::on(panel)
-            .caption(title, ("sans-serif", 15))
-            .margin(10)
-            .x_label_area_size(42)
-            .y_label_area_size(56)
-            .build_cartesian_2d((x_min..x_max).log_scale(), (1e-17f64..1e-2f64).log_scale())?;
-        c.configure_mesh()
-            .light_line_style(WHITE)
-            .bold_line_style(BLACK.mix(0.1))
-            .x_desc("ns per sample (log)")
-            .y_desc("worst relative error (log)")
-            .x_label_formatter(&|x| format!("{x:.0}"))
-            .y_label_formatter(&|y| format!("{y:.0e}"))
-            .draw()?;
+    let mut chart = Chart::new(
+        "The worksheet's four-bar over a revolution (1 008 000 samples): time per sample against worst relative error",
+        "ns per sample",
+    )
+    .note("exact results are drawn at 10⁻¹⁷")
+    .columns(3)
+    .size(1200, 430)
+    .shared_legend();
+    for (kind, title) in ["positions", "velocities", "accelerations"]
+        .iter()
+        .enumerate()
+    {
         // Newton's tolerance as a curve.
         let curve: Vec<(f64, f64)> = four
             .iter()
             .filter(|r| r.method.starts_with("Newton per sample"))
             .map(|r| (r.ns, r.errors[kind].max(1e-17)))
             .collect();
-        c.draw_series(LineSeries::new(curve.clone(), grey.stroke_width(1)))?;
-        c.draw_series(curve.iter().map(|&p| Circle::new(p, 3, grey.filled())))?;
-        for (i, r) in methods.iter().enumerate() {
-            let col = palette[i % palette.len()];
-            let p = (r.ns, r.errors[kind].max(1e-17));
-            c.draw_series(std::iter::once(TriangleMarker::new(p, 7, col.filled())))?;
+        let mut panel = Panel::new("worst relative error")
+            .caption(title)
+            .x_log()
+            .y_log()
+            .x_range(x_min, x_max)
+            .y_range(1e-17, 1e-2)
+            .line_and_points(
+                "Newton per sample, tolerance swept (10⁻⁴ … to convergence)",
+                curve,
+            )
+            .colour(Colour::GREY)
+            .dash(Dash::Solid)
+            .marker(Marker::Circle)
+            .width(0.8);
+        for r in &methods {
+            panel = panel
+                .points(&r.method, vec![(r.ns, r.errors[kind].max(1e-17))])
+                .open();
         }
+        chart = chart.panel(panel);
     }
-    // The legend under the panels, in two columns.
-    let font = ("sans-serif", 13).into_font();
-    let mut entries: Vec<(String, Option<RGBColor>)> = vec![(
-        "Newton per sample, tolerance swept (1e-4 … to convergence)".into(),
-        None,
-    )];
-    entries.extend(
-        methods
-            .iter()
-            .enumerate()
-            .map(|(i, r)| (r.method.clone(), Some(palette[i % palette.len()]))),
-    );
-    let rows = entries.len().div_ceil(2);
-    for (i, (label, colour)) in entries.iter().enumerate() {
-        let (x, y) = (70 + 600 * (i / rows) as i32, 16 + 22 * (i % rows) as i32);
-        match colour {
-            Some(col) => legend.draw(&TriangleMarker::new((x, y), 6, col.filled()))?,
-            None => {
-                legend.draw(&PathElement::new(vec![(x - 9, y), (x + 9, y)], grey))?;
-                legend.draw(&Circle::new((x, y), 3, grey.filled()))?;
-            }
-        }
-        legend.draw(&Text::new(label.as_str(), (x + 16, y - 7), font.clone()))?;
-    }
-    root.present()?;
+    std::fs::write(path, chart.render()?)?;
     Ok(())
 }
 

@@ -13,8 +13,6 @@
 mod charts;
 #[path = "../support/output.rs"]
 mod output;
-#[path = "../support/page.rs"]
-mod page;
 mod study;
 
 use study::{Case, Row};

@@ -12,10 +12,10 @@ use std::f64::consts::TAU;
 
 use crate::page::{Area, Drawn, page};
 
-const OURS: RGBColor = RGBColor(30, 80, 170);
-const PSO: RGBColor = RGBColor(230, 120, 20);
-const DE: RGBColor = RGBColor(40, 150, 70);
-const BURMESTER: RGBColor = RGBColor(150, 50, 160);
+const OURS: Colour = COLOURS[0];
+const PSO: Colour = COLOURS[1];
+const DE: Colour = COLOURS[2];
+const BURMESTER: Colour = COLOURS[3];
 const TARGET: RGBColor = RGBColor(200, 30, 30);
 const LINK: RGBColor = RGBColor(40, 40, 40);
 
@@ -299,7 +299,7 @@ pub fn designs(
     })
 }
 
-fn colour_of(label: &str) -> RGBColor {
+fn colour_of(label: &str) -> Colour {
     if label.starts_with("linkage") {
         OURS
     } else if label.contains("PSO") {
@@ -314,19 +314,16 @@ fn colour_of(label: &str) -> RGBColor {
 /// Error against wall time, one panel per path task: our runs with growing
 /// budgets, pylinkage's optimisers' best design so far in each run, its
 /// Burmester runs.
-pub fn convergence(series: &[Series]) -> Result<String, Box<dyn std::error::Error>> {
+pub fn convergence(series: &[Series]) -> Result<String, DiagramError> {
     let tasks: Vec<&str> = {
         let mut t: Vec<&str> = series.iter().map(|s| s.task.as_str()).collect();
         t.dedup();
         t
     };
-    let all = || series.iter().flat_map(|s| &s.points);
+    let all = || series.iter().flat_map(|s| &s.points).filter(|p| p.1 > 0.0);
     let t0 = all().map(|p| p.0).fold(f64::INFINITY, f64::min);
     let t1 = all().map(|p| p.0).fold(0.0, f64::max);
-    let e0 = all()
-        .map(|p| p.1)
-        .filter(|e| *e > 0.0)
-        .fold(f64::INFINITY, f64::min);
+    let e0 = all().map(|p| p.1).fold(f64::INFINITY, f64::min);
     let e1 = all().map(|p| p.1).fold(0.0, f64::max);
     let (t0, t1) = (
         10f64.powf(t0.log10().floor()),
@@ -334,100 +331,78 @@ pub fn convergence(series: &[Series]) -> Result<String, Box<dyn std::error::Erro
     );
     let (e0, e1) = (
         10f64.powf(e0.log10().floor()),
-        10f64.powf(e1.log10().ceil() + 4.0),
+        10f64.powf(e1.log10().ceil() + 1.0),
     );
-    page((1200, 640), |root| {
-        let (top, body) = root.split_vertically(64);
-        heading(
-            &top,
-            "Convergence: the error of the best design so far against wall time",
-            "linkage: one run per budget of random starts (each a separate run, timed whole); pylinkage: each optimiser run's best design so far; error judged the same way for both",
-        )?;
-        let panels = body.split_evenly((1, tasks.len()));
-        for (area, task) in panels.iter().zip(&tasks) {
-            let mut chart = ChartBuilder::on(area)
-                .caption(format!("{} targets", &task[4..]), ("sans-serif", 15))
-                .margin(12)
-                .x_label_area_size(40)
-                .y_label_area_size(64)
-                .build_cartesian_2d((t0..t1).log_scale(), (e0..e1).log_scale())?;
-            chart
-                .configure_mesh()
-                .light_line_style(WHITE)
-                .bold_line_style(BLACK.mix(0.08))
-                .x_desc("wall time [s]")
-                .y_desc("largest distance of a target from the curve [mm]")
-                .x_label_formatter(&|x| format!("{x:.0e}"))
-                .y_label_formatter(&|y| format!("{y:.0e}"))
-                .draw()?;
-            let mut labelled: Vec<String> = Vec::new();
-            // Methods without a design: a note, not a legend entry.
-            let notes: Vec<&str> = series
-                .iter()
-                .filter(|s| s.task == *task && s.points.is_empty())
-                .map(|s| s.label.as_str())
-                .collect();
-            let (_, height) = area.dim_in_pixel();
-            for (i, note) in notes.iter().enumerate() {
-                area.draw(&Text::new(
-                    note.to_string(),
-                    (90, (height / 2) as i32 + 18 * i as i32),
-                    ("sans-serif", 12).into_font().color(&BURMESTER),
-                ))?;
-            }
-            for s in series
-                .iter()
-                .filter(|s| s.task == *task && !s.points.is_empty())
-            {
-                let colour = colour_of(&s.label);
-                let key = s.label.split(", run").next().unwrap_or(&s.label).to_owned();
-                let first = !labelled.contains(&key);
-                let points: Vec<(f64, f64)> =
-                    s.points.iter().copied().filter(|p| p.1 > 0.0).collect();
-                if s.line && s.label.starts_with("linkage") {
-                    chart
-                        .draw_series(points.iter().map(|p| Circle::new(*p, 4, colour.filled())))?;
-                }
-                let drawn = if s.line {
-                    let width = if s.label.starts_with("linkage") { 2 } else { 1 };
-                    chart.draw_series(LineSeries::new(
-                        points.clone(),
-                        colour.mix(0.8).stroke_width(width),
-                    ))?
-                } else {
-                    let style = if s.label.contains("max_solutions 1)") {
-                        colour.filled()
-                    } else {
-                        colour.stroke_width(2)
-                    };
-                    chart.draw_series(points.iter().map(|p| TriangleMarker::new(*p, 7, style)))?
-                };
-                if first {
-                    labelled.push(key.clone());
-                    let line = s.line;
-                    let style = if s.label.contains("max_solutions 1)") {
-                        colour.filled()
-                    } else {
-                        colour.stroke_width(2)
-                    };
-                    drawn.label(key).legend(move |(x, y)| {
-                        if line {
-                            PathElement::new([(x, y), (x + 20, y)], colour.stroke_width(2))
-                                .into_dyn()
-                        } else {
-                            TriangleMarker::new((x + 10, y), 6, style).into_dyn()
-                        }
-                    });
-                }
-            }
-            chart
-                .configure_series_labels()
-                .position(SeriesLabelPosition::UpperRight)
-                .background_style(WHITE.mix(0.9))
-                .border_style(BLACK.mix(0.3))
-                .label_font(("sans-serif", 12))
-                .draw()?;
+    let mut chart = Chart::new(
+        "Convergence: the error of the best design so far against wall time",
+        "wall time [s]",
+    )
+    .note("linkage: one run per budget of random starts (each a separate run, timed whole); pylinkage: each optimiser run's best design so far; error judged the same way for both")
+    .columns(tasks.len())
+    .size(1000, 460)
+    .shared_legend();
+    for task in &tasks {
+        let mut panel = Panel::new("largest distance of a target from the curve [mm]")
+            .caption(&format!("{} targets", &task[4..]))
+            .x_log()
+            .y_log()
+            .x_range(t0, t1)
+            .y_range(e0, e1);
+        // Methods without a design: a note, not a legend entry.
+        let notes = series
+            .iter()
+            .filter(|s| s.task == *task && s.points.is_empty());
+        for (i, s) in notes.enumerate() {
+            let y = (e0.log10() + (0.55 - 0.07 * i as f64) * (e1.log10() - e0.log10())).exp10();
+            panel = panel.note((t0 * 1.5, y), &format!("{}: no design", s.label));
         }
-        Ok(())
-    })
+        // The runs of one method under one name (a line each, one entry).
+        let mut keys: Vec<(String, bool)> = Vec::new();
+        for s in series
+            .iter()
+            .filter(|s| s.task == *task && !s.points.is_empty())
+        {
+            let key = s.label.split(", run").next().unwrap_or(&s.label).to_owned();
+            if !keys.iter().any(|k| k.0 == key) {
+                keys.push((key, s.line));
+            }
+        }
+        for (key, line) in keys {
+            let runs: Vec<Vec<(f64, f64)>> = series
+                .iter()
+                .filter(|s| s.task == *task && s.label.split(", run").next() == Some(key.as_str()))
+                .map(|s| s.points.iter().copied().filter(|p| p.1 > 0.0).collect())
+                .collect();
+            let colour = colour_of(&key);
+            panel = if !line {
+                let points = runs.into_iter().flatten().collect();
+                let shaped = panel
+                    .points(&key, points)
+                    .colour(colour)
+                    .marker(Marker::Triangle);
+                if key.contains("max_solutions 1)") {
+                    shaped
+                } else {
+                    shaped.open()
+                }
+            } else if key.starts_with("linkage") {
+                let points = runs.into_iter().flatten().collect();
+                panel
+                    .line_and_points(&key, points)
+                    .colour(colour)
+                    .dash(Dash::Solid)
+                    .marker(Marker::Circle)
+                    .width(1.4)
+            } else {
+                let dash = if key.contains("PSO") {
+                    Dash::Solid
+                } else {
+                    Dash::Dashed
+                };
+                panel.lines(&key, runs).colour(colour).dash(dash).width(0.7)
+            };
+        }
+        chart = chart.panel(panel);
+    }
+    chart.render()
 }

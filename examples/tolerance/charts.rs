@@ -1,16 +1,13 @@
-//! The example's pictures, as SVG: the coupler curve with its tolerance
-//! band, which dimension matters most, and the linear σ against the Monte
-//! Carlo σ over the cycle.
+//! The example's pictures, drawn with the library's `Chart`: the coupler
+//! curve with its tolerance band, which dimension matters most, and the
+//! linear σ against the Monte Carlo σ over the cycle.
 
 use crate::studies::{CycleStudy, RUN, ShaperStudy};
+use linkage::draw::chart::look::COLOURS;
+use linkage::draw::chart::{Chart, Colour, Dash, DiagramError, Marker, Panel};
 use linkage::mechanisms::FourBar;
 use linkage::prelude::*;
 use linkage::tolerance::Band;
-use plotters::coord::ranged1d::ValueFormatter;
-use plotters::coord::types::RangedCoordf64;
-use plotters::prelude::*;
-
-use crate::page::{Area, Drawn, page};
 
 /// The deviations in the band picture are drawn this many times larger.
 const MAGNIFY: f64 = 8.0;
@@ -18,10 +15,9 @@ const MAGNIFY: f64 = 8.0;
 /// The Monte Carlo designs drawn as curves in the band picture.
 const CURVES: usize = 40;
 
-const WORST: RGBColor = RGBColor(250, 205, 140);
-const RSS: RGBColor = RGBColor(230, 140, 20);
-const NOMINAL: RGBColor = RGBColor(20, 20, 20);
-const SAMPLE: RGBColor = RGBColor(40, 110, 200);
+const WORST: Colour = COLOURS[4];
+const RSS: Colour = COLOURS[1];
+const SAMPLE: Colour = COLOURS[0];
 
 fn band<'s>(study: &'s CycleStudy, name: &str) -> &'s Band<1, 4> {
     study
@@ -33,7 +29,7 @@ fn band<'s>(study: &'s CycleStudy, name: &str) -> &'s Band<1, 4> {
 /// The coupler curve of G3 with its band, normal to the curve: the linear
 /// worst case and RSS, the Monte Carlo extremes of 100 000 designs, and
 /// some of those designs' curves, every deviation magnified.
-pub fn coupler_band(study: &CycleStudy) -> Result<String, Box<dyn std::error::Error>> {
+pub fn coupler_band(study: &CycleStudy) -> Result<String, DiagramError> {
     let (x, y) = (band(study, "G3.x"), band(study, "G3.y"));
     let (vx, vy) = (
         band(study, "velocity of G3.x"),
@@ -89,195 +85,146 @@ pub fn coupler_band(study: &CycleStudy) -> Result<String, Box<dyn std::error::Er
             summary.complete.then_some(curve)
         })
         .collect();
-    let (xs, ys): (Vec<f64>, Vec<f64>) = ring(&|k| spread(k).worst_case).into_iter().unzip();
-    let (x0, x1) = bounds(&xs);
-    let (y0, y1) = bounds(&ys);
-    // Equal scales on both axes: the plot area is about 826 × 626 px.
-    let (width, height) = (826.0, 626.0);
-    let scale = ((x1 - x0) / width).max((y1 - y0) / height) * 1.1;
-    let (xm, ym) = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
-    let (x0, x1) = (xm - 0.5 * scale * width, xm + 0.5 * scale * width);
-    let (y0, y1) = (ym - 0.5 * scale * height, ym + 0.5 * scale * height);
-    page((900, 760), |root| {
-        let (top, body) = root.split_vertically(70);
-        top.draw(&Text::new(
-            format!(
-                "{}: the coupler curve of G3 and its tolerance band (ISO 2768-f), deviations ×{MAGNIFY}",
-                study.name
-            ),
-            (14, 10),
-            ("sans-serif", 17).into_font(),
-        ))?;
-        let mut chart = ChartBuilder::on(&body)
-            .margin(12)
-            .x_label_area_size(40)
-            .y_label_area_size(50)
-            .build_cartesian_2d(x0..x1, y0..y1)?;
-        chart
-            .configure_mesh()
-            .light_line_style(WHITE)
-            .bold_line_style(BLACK.mix(0.08))
-            .x_desc("x [mm]")
-            .y_desc("y [mm]")
-            .draw()?;
-        chart
-            .draw_series(std::iter::once(Polygon::new(
-                ring(&|k| spread(k).worst_case),
-                WORST.filled(),
-            )))?
-            .label("linear worst case Σ|∂n/∂lᵢ| tᵢ")
-            .legend(|(x, y)| Rectangle::new([(x, y - 6), (x + 20, y + 6)], WORST.filled()));
-        chart
-            .draw_series(std::iter::once(Polygon::new(
-                ring(&|k| spread(k).rss),
-                RSS.mix(0.55).filled(),
-            )))?
-            .label("linear RSS √Σ(∂n/∂lᵢ tᵢ)²")
-            .legend(|(x, y)| Rectangle::new([(x, y - 6), (x + 20, y + 6)], RSS.mix(0.55).filled()));
-        for (i, curve) in curves.iter().enumerate() {
-            let series = chart.draw_series(LineSeries::new(curve.clone(), SAMPLE.mix(0.35)))?;
-            if i == 0 {
-                series
-                    .label(format!("{} of the Monte Carlo designs", curves.len()))
-                    .legend(|(x, y)| PathElement::new([(x, y), (x + 20, y)], SAMPLE.mix(0.6)));
-            }
-        }
-        for (side, label) in [(1.0, true), (-1.0, false)] {
-            let edge: Vec<(f64, f64)> = (0..x.value.len())
-                .filter(|&k| statistics[k].count > 0)
-                .map(|k| {
-                    let s = &statistics[k];
-                    offset(k, if side > 0.0 { s.max } else { s.min })
-                })
-                .collect();
-            let series =
-                chart.draw_series(DashedLineSeries::new(edge, 6, 4, BLACK.stroke_width(1)))?;
-            if label {
-                series
-                    .label(format!(
-                        "dashed: the Monte Carlo extremes of {} designs",
-                        RUN.samples
-                    ))
-                    .legend(|(x, y)| PathElement::new([(x, y), (x + 6, y)], BLACK));
-            }
-        }
-        chart
-            .draw_series(LineSeries::new(
-                (0..x.value.len()).map(|k| (x.value[k], y.value[k])),
-                NOMINAL.stroke_width(2),
-            ))?
-            .label("nominal")
-            .legend(|(x, y)| PathElement::new([(x, y), (x + 20, y)], NOMINAL.stroke_width(2)));
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperLeft)
-            .background_style(WHITE.mix(0.9))
-            .border_style(BLACK.mix(0.3))
-            .label_font(("sans-serif", 13))
-            .draw()?;
-        Ok(())
-    })
+    let extreme = |side: f64| -> Vec<(f64, f64)> {
+        (0..x.value.len())
+            .filter(|&k| statistics[k].count > 0)
+            .map(|k| {
+                let s = &statistics[k];
+                offset(k, if side > 0.0 { s.max } else { s.min })
+            })
+            .collect()
+    };
+    let extremes_name = format!("the Monte Carlo extremes of {} designs", RUN.samples);
+    let panel = Panel::new("y [mm]")
+        .x_label("x [mm]")
+        .equal_scales()
+        .fill(
+            "linear worst case Σ|∂n/∂l_i| t_i",
+            ring(&|k| spread(k).worst_case),
+        )
+        .colour(WORST)
+        .fill("linear RSS √Σ(∂n/∂l_i t_i)²", ring(&|k| spread(k).rss))
+        .colour(RSS)
+        .lines(
+            &format!("{} of the Monte Carlo designs", curves.len()),
+            curves,
+        )
+        .colour(SAMPLE)
+        .dash(Dash::Solid)
+        .faint()
+        .lines(&extremes_name, vec![extreme(1.0), extreme(-1.0)])
+        .colour(Colour::BLACK)
+        .dash(Dash::Dashed)
+        .width(0.8)
+        .line(
+            "nominal",
+            (0..x.value.len())
+                .map(|k| (x.value[k], y.value[k]))
+                .collect(),
+        )
+        .colour(Colour::BLACK)
+        .dash(Dash::Solid)
+        .width(1.4);
+    Chart::new(
+        &format!(
+            "{}: the coupler curve of G_3 and its tolerance band (ISO 2768-f), deviations ×{MAGNIFY}",
+            study.name
+        ),
+        "",
+    )
+    .size(760, 660)
+    .panel(panel)
+    .render()
 }
 
-fn bounds(values: &[f64]) -> (f64, f64) {
-    values
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
-            (a.min(v), b.max(v))
-        })
+/// A parameter's name as the example's text writes it (`l_OA`).
+fn shown(name: &str) -> String {
+    match name.split_once('_') {
+        Some((letter, index)) => format!("{letter}_{}", index.to_uppercase()),
+        None => name.to_string(),
+    }
 }
 
-/// Which dimension matters most: each dimension's share of the worst case,
-/// one panel per quantity.
-pub fn importance(
-    four_bar: &CycleStudy,
-    shaper: &ShaperStudy,
-) -> Result<String, Box<dyn std::error::Error>> {
-    let mut panels: Vec<(String, Vec<(&'static str, f64)>)> = Vec::new();
+/// Which dimension matters most: each dimension's share of the worst case
+/// of each quantity, one panel per mechanism, a group of bars per quantity.
+pub fn importance(four_bar: &CycleStudy, shaper: &ShaperStudy) -> Result<String, DiagramError> {
+    let share = |contributions: &[(&str, f64)]| -> Vec<f64> {
+        let total: f64 = contributions.iter().map(|c| c.1).sum();
+        contributions
+            .iter()
+            .map(|c| {
+                if total > 0.0 {
+                    100.0 * c.1 / total
+                } else {
+                    0.0
+                }
+            })
+            .collect()
+    };
+    let names: Vec<String> = FourBar::PARAM_NAMES.iter().map(|n| shown(n)).collect();
+    let names: Vec<&str> = names.iter().map(String::as_str).collect();
+    let mut four = Panel::bars("share of the worst case [%]", &names)
+        .caption("the Maple worksheet's four-bar")
+        .y_range(0.0, 100.0);
     for name in ["path of G3", "theta4", "transmission angle"] {
         let b = band(four_bar, name);
         let c = b.contributions(&four_bar.tolerances);
-        let shown = if name == "theta4" { "θ4" } else { name };
-        panels.push((
-            format!("four-bar: {shown} (at its worst over the cycle)"),
-            FourBar::PARAM_NAMES
-                .iter()
-                .copied()
-                .zip(c.iter().copied())
-                .collect(),
-        ));
-    }
-    for located in four_bar.located.iter().chain(&shaper.located) {
-        let owner = if four_bar.located.iter().any(|l| std::ptr::eq(l, located)) {
-            "four-bar"
-        } else {
-            "shaper"
+        let shown_name = match name {
+            "theta4" => "θ_4 at its worst",
+            "path of G3" => "path of G_3 at its worst",
+            _ => "transmission angle at its worst",
         };
-        let shown: Vec<_> = located
-            .contributions
+        let pairs: Vec<(&str, f64)> = FourBar::PARAM_NAMES
             .iter()
             .copied()
-            .filter(|(name, _)| {
-                owner == "four-bar" || ["l_oa", "l_cd", "y_c", "y_f"].contains(name)
+            .zip(c.iter().copied())
+            .collect();
+        four = four.group(shown_name, &share(&pairs));
+    }
+    for located in &four_bar.located {
+        let pairs: Vec<(&str, f64)> = FourBar::PARAM_NAMES
+            .iter()
+            .map(|n| {
+                let value = located
+                    .contributions
+                    .iter()
+                    .find(|c| c.0 == *n)
+                    .map_or(0.0, |c| c.1);
+                (*n, value)
             })
             .collect();
-        panels.push((format!("{owner}: {}", located.name), shown));
+        four = four.group(&located.name, &share(&pairs));
     }
-    let columns = 4;
-    let rows = panels.len().div_ceil(columns);
-    page((1200, 90 + 260 * rows as u32), |root| {
-        let (top, body) = root.split_vertically(60);
-        top.draw(&Text::new(
-            "Which dimension matters most: each one's share of the linear worst case Σ|∂y/∂pᵢ| tᵢ, %",
-            (14, 10),
-            ("sans-serif", 17).into_font(),
-        ))?;
-        top.draw(&Text::new(
-            "four-bar: ISO 2768-f on l1…l4; shaper: ±0.1 mm on l_OA and l_OC (y_c), ±0.2 mm on l_CD and the guide height y_F",
-            (14, 36),
-            ("sans-serif", 13).into_font(),
-        ))?;
-        let areas = body.split_evenly((rows, columns));
-        for (area, (title, bars)) in areas.iter().zip(&panels) {
-            let total: f64 = bars.iter().map(|b| b.1).sum();
-            let mut chart = ChartBuilder::on(area)
-                .caption(title, ("sans-serif", 13))
-                .margin(10)
-                .x_label_area_size(28)
-                .y_label_area_size(40)
-                .build_cartesian_2d((0..bars.len() - 1).into_segmented(), 0.0..100.0)?;
-            chart
-                .configure_mesh()
-                .light_line_style(WHITE)
-                .bold_line_style(BLACK.mix(0.08))
-                .disable_x_mesh()
-                .x_label_formatter(&|x| match x {
-                    SegmentValue::CenterOf(i) => {
-                        bars.get(*i).map(|b| b.0.to_owned()).unwrap_or_default()
-                    }
-                    _ => String::new(),
-                })
-                .y_labels(6)
-                .draw()?;
-            chart.draw_series(bars.iter().enumerate().map(|(i, b)| {
-                let share = if total > 0.0 {
-                    100.0 * b.1 / total
-                } else {
-                    0.0
-                };
-                let mut bar = Rectangle::new(
-                    [
-                        (SegmentValue::Exact(i), 0.0),
-                        (SegmentValue::Exact(i + 1), share),
-                    ],
-                    RSS.filled(),
-                );
-                bar.set_margin(0, 0, 8, 8);
-                bar
-            }))?;
-        }
-        Ok(())
-    })
+    const SHAPER: [&str; 4] = ["l_oa", "l_cd", "y_c", "y_f"];
+    let shaper_names: Vec<String> = SHAPER.iter().map(|n| shown(n)).collect();
+    let shaper_names: Vec<&str> = shaper_names.iter().map(String::as_str).collect();
+    let mut machine = Panel::bars("share of the worst case [%]", &shaper_names)
+        .caption("the Mathcad course project's shaper")
+        .y_range(0.0, 100.0);
+    for located in &shaper.located {
+        let kept: Vec<(&str, f64)> = SHAPER
+            .iter()
+            .map(|n| {
+                let value = located
+                    .contributions
+                    .iter()
+                    .find(|c| c.0 == *n)
+                    .map_or(0.0, |c| c.1);
+                (*n, value)
+            })
+            .collect();
+        machine = machine.group(&located.name, &share(&kept));
+    }
+    Chart::new(
+        "Which dimension matters most: each one's share of the linear worst case Σ|∂y/∂p_i| t_i",
+        "",
+    )
+    .note("four-bar: ISO 2768-f on l_1…l_4; shaper: ±0.1 mm on l_OA and l_OC (y_C), ±0.2 mm on l_CD and the guide height y_F")
+    .size(900, 420)
+    .columns(1)
+    .panel(four)
+    .panel(machine)
+    .render()
 }
 
 /// σ of the rocker's angle and acceleration over the cycle, linear against
@@ -286,39 +233,31 @@ pub fn importance(
 pub fn linear_vs_monte_carlo(
     worksheet: &CycleStudy,
     near_limit: &CycleStudy,
-) -> Result<String, Box<dyn std::error::Error>> {
-    page((1200, 860), |root| {
-        let (top, body) = root.split_vertically(60);
-        top.draw(&Text::new(
-            format!(
-                "Standard deviations over the cycle: linear (exact sensitivities) against {} Monte Carlo designs",
-                RUN.samples
-            ),
-            (14, 10),
-            ("sans-serif", 17).into_font(),
-        ))?;
-        top.draw(&Text::new(
-            "ISO 2768-f on l1…l4, 400 rpm; the Monte Carlo σ over the designs that run the whole cycle (those that lock up are left out)",
-            (14, 36),
-            ("sans-serif", 13).into_font(),
-        ))?;
-        let panels = body.split_evenly((2, 2));
-        let quantities = [
-            ("theta4", "σ of θ4 [°]", 180.0 / std::f64::consts::PI),
-            ("acceleration of theta4", "σ of α4 [rad/s²]", 1.0),
-        ];
-        let cells = quantities
-            .iter()
-            .flat_map(|q| [(q, worksheet), (q, near_limit)]);
-        for (area, (&(name, label, scale), study)) in panels.iter().zip(cells) {
-            sigma_panel(area, study, name, label, scale)?;
+) -> Result<String, DiagramError> {
+    let quantities = [
+        ("theta4", "σ of θ_4 [°]", 180.0 / std::f64::consts::PI),
+        ("acceleration of theta4", "σ of α_4 [rad/s²]", 1.0),
+    ];
+    let mut chart = Chart::new(
+        &format!(
+            "Standard deviations over the cycle: linear (exact sensitivities) against {} Monte Carlo designs",
+            RUN.samples
+        ),
+        "crank angle θ_2 [°]",
+    )
+    .note("ISO 2768-f on l_1…l_4, 400 rpm; the Monte Carlo σ over the designs that run the whole cycle (those that lock up are left out)")
+    .columns(2)
+    .size(1000, 400);
+    for &(name, label, scale) in &quantities {
+        for study in [worksheet, near_limit] {
+            chart = chart.panel(sigma_panel(study, name, label, scale));
         }
-        Ok(())
-    })
+    }
+    chart.render()
 }
 
 /// One output's linear and Monte Carlo σ against the crank angle.
-fn sigma_panel(area: &Area<'_>, study: &CycleStudy, name: &str, label: &str, scale: f64) -> Drawn {
+fn sigma_panel(study: &CycleStudy, name: &str, label: &str, scale: f64) -> Panel {
     let b = band(study, name);
     let o = study
         .cycle
@@ -339,70 +278,24 @@ fn sigma_panel(area: &Area<'_>, study: &CycleStudy, name: &str, label: &str, sca
     let top = values().fold(0.0, f64::max);
     let bottom = values().fold(f64::INFINITY, f64::min);
     let failed = study.samples.failures.len();
-    let mut builder = ChartBuilder::on(area);
-    builder
-        .caption(
-            format!(
-                "{} ({failed} of {} designs lock up)",
-                study.name, study.samples.samples
-            ),
-            ("sans-serif", 14),
-        )
-        .margin(12)
-        .x_label_area_size(40)
-        .y_label_area_size(64);
-    // A log axis where σ spans a decade or more, else a linear one (whose
-    // ticks can be read).
+    let panel = Panel::new(label)
+        .caption(&format!(
+            "{} ({failed} of {} designs lock up)",
+            study.name, study.samples.samples
+        ))
+        .x_range(0.0, 360.0)
+        .line("linear σ", linear)
+        .colour(RSS)
+        .dash(Dash::Solid)
+        .points("Monte Carlo σ", sampled)
+        .colour(SAMPLE)
+        .marker(Marker::Circle)
+        .open();
+    // A log axis where σ spans a decade or more, else a linear one from
+    // zero (whose ticks can be read).
     if top / bottom > 10.0 {
-        let chart =
-            builder.build_cartesian_2d(0.0..360.0, (bottom * 0.7..top * 1.6).log_scale())?;
-        sigma_series(chart, label, linear, sampled)
+        panel.y_log()
     } else {
-        let chart = builder.build_cartesian_2d(0.0..360.0, 0.0..top * 1.25)?;
-        sigma_series(chart, label, linear, sampled)
+        panel.y_range(0.0, top * 1.15)
     }
-}
-
-/// The linear σ as a line and the Monte Carlo σ as circles, on `chart`.
-fn sigma_series<'a, Y>(
-    mut chart: ChartContext<'a, SVGBackend<'a>, Cartesian2d<RangedCoordf64, Y>>,
-    label: &str,
-    linear: Vec<(f64, f64)>,
-    sampled: Vec<(f64, f64)>,
-) -> Drawn
-where
-    Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
-{
-    chart
-        .configure_mesh()
-        .light_line_style(WHITE)
-        .bold_line_style(BLACK.mix(0.08))
-        .x_desc("crank angle θ2 [°]")
-        .y_desc(label)
-        .x_labels(9)
-        .y_labels(8)
-        .x_label_formatter(&|x| format!("{x:.0}"))
-        .y_label_formatter(&|y| format!("{y:.2}"))
-        .draw()?;
-    chart
-        .draw_series(LineSeries::new(linear, RSS.stroke_width(2)))?
-        .label("linear σ")
-        .legend(|(x, y)| PathElement::new([(x, y), (x + 20, y)], RSS.stroke_width(2)));
-    chart
-        .draw_series(PointSeries::of_element(
-            sampled,
-            3,
-            SAMPLE.stroke_width(1),
-            &|c, s, st| Circle::new(c, s, st),
-        ))?
-        .label("Monte Carlo σ")
-        .legend(|(x, y)| Circle::new((x + 10, y), 3, SAMPLE.stroke_width(1)));
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
-        .background_style(WHITE.mix(0.9))
-        .border_style(BLACK.mix(0.3))
-        .label_font(("sans-serif", 13))
-        .draw()?;
-    Ok(())
 }

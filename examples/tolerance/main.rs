@@ -30,8 +30,6 @@ mod studies;
 mod machine;
 #[path = "../support/output.rs"]
 mod output;
-#[path = "../support/page.rs"]
-mod page;
 
 use std::fmt::Write as _;
 use studies::{CycleStudy, Located};

@@ -17,7 +17,8 @@
 #[path = "../src/expand/mod.rs"]
 mod expand;
 
-use plotters::prelude::*;
+use linkage::draw::chart::look::{COLOURS, MARKERS};
+use linkage::draw::chart::{Chart, Colour, Dash, Panel};
 use proc_macro2::{TokenStream, TokenTree};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -292,23 +293,23 @@ fn main() {
     println!("wrote {}", figures.join("expansion_cost.svg").display());
 }
 
-/// A labelled, coloured curve.
-type Series = (&'static str, RGBColor, Vec<(f64, f64)>);
+/// A labelled curve.
+type Series = (&'static str, Vec<(f64, f64)>);
 
 /// Log–log chart of the chain's cost against N, each quantity relative to
 /// N = 1, with the slopes of N and N² for reference.
 fn chart(rows: &[Row], path: &Path) {
     let chain: Vec<&Row> = rows.iter().filter(|r| r.n.is_some()).collect();
     let base = chain[0];
-    let series: Vec<Series> = vec![
+    let n = |r: &Row| r.n.unwrap_or(1) as f64;
+    let mut series: Vec<Series> = vec![
         (
             "expansion time",
-            RGBColor(200, 30, 30),
             chain
                 .iter()
                 .map(|r| {
                     (
-                        r.n.unwrap_or(1) as f64,
+                        n(r),
                         r.expansion.as_secs_f64() / base.expansion.as_secs_f64(),
                     )
                 })
@@ -316,99 +317,61 @@ fn chart(rows: &[Row], path: &Path) {
         ),
         (
             "emitted tokens",
-            RGBColor(30, 90, 200),
             chain
                 .iter()
-                .map(|r| {
-                    (
-                        r.n.unwrap_or(1) as f64,
-                        r.tokens as f64 / base.tokens as f64,
-                    )
-                })
+                .map(|r| (n(r), r.tokens as f64 / base.tokens as f64))
                 .collect(),
         ),
         (
             "emitted lines",
-            RGBColor(30, 150, 60),
             chain
                 .iter()
-                .map(|r| (r.n.unwrap_or(1) as f64, r.lines as f64 / base.lines as f64))
+                .map(|r| (n(r), r.lines as f64 / base.lines as f64))
                 .collect(),
         ),
     ];
-    let mut series = series;
     if chain.iter().all(|r| r.compile.is_some()) {
         let c0 = base.compile.map_or(1.0, |d| d.as_secs_f64());
         series.push((
             "release compile time",
-            RGBColor(140, 60, 170),
             chain
                 .iter()
-                .map(|r| {
-                    (
-                        r.n.unwrap_or(1) as f64,
-                        r.compile.map_or(0.0, |d| d.as_secs_f64()) / c0,
-                    )
-                })
+                .map(|r| (n(r), r.compile.map_or(0.0, |d| d.as_secs_f64()) / c0))
                 .collect(),
         ));
     }
-    let root = SVGBackend::new(path, (760, 520)).into_drawing_area();
-    root.fill(&WHITE).expect("draw");
-    let mut c = ChartBuilder::on(&root)
-        .caption(
-            "Cost of the macro for a chain of N four-bar loops (relative to N = 1)",
-            ("sans-serif", 18),
-        )
-        .margin(16)
-        .x_label_area_size(44)
-        .y_label_area_size(56)
-        .build_cartesian_2d(
-            (1f64..40f64)
-                .log_scale()
-                .with_key_points(vec![1.0, 2.0, 4.0, 8.0, 16.0, 32.0]),
-            (0.5f64..2000f64).log_scale(),
-        )
-        .expect("chart");
-    c.configure_mesh()
-        .light_line_style(WHITE)
-        .bold_line_style(BLACK.mix(0.12))
-        .x_desc("N (loops; m = 2N dependent coordinates)")
-        .y_desc("cost / cost at N = 1")
-        .x_label_formatter(&|x| format!("{x:.0}"))
-        .y_label_formatter(&|y| format!("{y}"))
-        .draw()
-        .expect("mesh");
-    for (label, slope, style) in [
-        ("∝ N", 1.0, BLACK.mix(0.45)),
-        ("∝ N²", 2.0, BLACK.mix(0.25)),
-    ] {
-        c.draw_series(LineSeries::new(
-            (0..=40).map(|i| {
+    let mut panel = Panel::new("cost / cost at N = 1")
+        .x_log()
+        .y_log()
+        .x_range(1.0, 40.0)
+        .y_range(0.5, 2000.0);
+    for (label, slope, dash) in [("∝ N", 1.0, Dash::Dotted), ("∝ N²", 2.0, Dash::LongDash)] {
+        let reference = (0..=40)
+            .map(|i| {
                 let n = 1.0 + 39.0 * f64::from(i) / 40.0;
                 (n, n.powf(slope))
-            }),
-            style.stroke_width(1),
-        ))
-        .expect("reference")
-        .label(label)
-        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], style));
+            })
+            .collect();
+        panel = panel
+            .line(label, reference)
+            .colour(Colour::GREY)
+            .dash(dash)
+            .width(0.7);
     }
-    for (label, color, points) in series {
-        c.draw_series(LineSeries::new(points.clone(), color.stroke_width(2)))
-            .expect("series")
-            .label(label)
-            .legend(move |(x, y)| {
-                PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2))
-            });
-        c.draw_series(points.iter().map(|&p| Circle::new(p, 3, color.filled())))
-            .expect("points");
+    for (k, (label, points)) in series.into_iter().enumerate() {
+        panel = panel
+            .line_and_points(label, points)
+            .colour(COLOURS[k])
+            .dash(Dash::Solid)
+            .marker(MARKERS[k]);
     }
-    c.configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
-        .background_style(WHITE.mix(0.9))
-        .border_style(BLACK.mix(0.3))
-        .draw()
-        .expect("legend");
-    root.present().expect("write the SVG");
+    let svg = Chart::new(
+        "Cost of the macro for a chain of N four-bar loops (relative to N = 1)",
+        "N (loops; m = 2N dependent coordinates)",
+    )
+    .size(760, 480)
+    .panel(panel)
+    .render()
+    .expect("the chart's values are finite");
+    std::fs::write(path, svg).expect("write the SVG");
 }

@@ -8,6 +8,7 @@
 mod labels;
 
 use super::{Cam, CamError, Follower, ProfilePoint, perp, rotate};
+use crate::draw::palette::FONT;
 use crate::draw::palette::{
     ACCELERATION as NORMAL, BAR as FOLLOWER, INK, PLATE_FILL as CAM_FILL, VELOCITY as MOTION,
 };
@@ -16,7 +17,6 @@ use labels::Labels;
 use nalgebra::Vector2;
 
 const PITCH: &str = "#7b8794";
-const SERIF: &str = "DejaVu Serif, Georgia, serif";
 
 /// How a line of the legend is drawn, in the picture and in its swatch
 /// alike.
@@ -78,7 +78,7 @@ fn legend_text(w: &mut Writer, x: f64, y: f64, id: Option<&str>, text: &str) {
     let mut attributes = vec![
         ("x", x.as_str()),
         ("y", y.as_str()),
-        ("font-family", SERIF),
+        ("font-family", FONT),
         ("font-size", "13"),
         ("fill", INK),
     ];
@@ -206,7 +206,7 @@ impl Cam {
                 ("x", &fmt(width / 2.0)),
                 ("y", "26"),
                 ("text-anchor", "middle"),
-                ("font-family", SERIF),
+                ("font-family", FONT),
                 ("font-size", "17"),
                 ("fill", INK),
             ],

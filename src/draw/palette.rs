@@ -11,3 +11,6 @@ pub const PLATE_FILL: &str = "#dbe4ee";
 pub const VELOCITY: &str = "#2e7d32";
 /// Accelerations, and the cam's common normal.
 pub const ACCELERATION: &str = "#c62828";
+/// The font of every picture's text: one family for scenes, charts and
+/// drawings.
+pub const FONT: &str = "DejaVu Sans, Helvetica, Arial, sans-serif";

@@ -51,6 +51,29 @@ impl Writer {
         self.out.push('\n');
     }
 
+    /// `<text …>` with its runs on one line (so that no space comes
+    /// between them): each run's text escaped, in a `tspan` when it moves
+    /// the baseline by `dy` or has its own font size.
+    pub(crate) fn text_runs(&mut self, attributes: &[(&str, &str)], runs: &[Run]) {
+        self.start("text", attributes);
+        self.out.push('>');
+        for run in runs {
+            if run.dy == 0.0 && run.size.is_none() {
+                self.out.push_str(&escape(&run.text));
+                continue;
+            }
+            self.out.push_str("<tspan");
+            if run.dy != 0.0 {
+                let _ = write!(self.out, r#" dy="{}""#, fmt(run.dy));
+            }
+            if let Some(size) = run.size {
+                let _ = write!(self.out, r#" font-size="{}""#, fmt(size));
+            }
+            let _ = write!(self.out, ">{}</tspan>", escape(&run.text));
+        }
+        self.out.push_str("</text>\n");
+    }
+
     pub(crate) fn close(&mut self, name: &str) {
         self.depth = self.depth.saturating_sub(1);
         self.out.push_str(&"  ".repeat(self.depth));
@@ -61,6 +84,15 @@ impl Writer {
         self.out.push_str("</svg>\n");
         self.out
     }
+}
+
+/// A piece of a text: its characters, how far it moves the baseline down
+/// from the previous run's, and its own font size if it has one.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Run {
+    pub(crate) text: String,
+    pub(crate) dy: f64,
+    pub(crate) size: Option<f64>,
 }
 
 /// A coordinate to 0.01 px, without trailing zeros ("12.5", "-3", "0").

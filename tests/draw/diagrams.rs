@@ -8,6 +8,8 @@
 use crate::charts;
 use crate::study;
 
+use linkage::draw::chart::Dash;
+use linkage::draw::chart::look::COLOURS;
 use linkage::draw::diagrams::{Chart, Diagrams, Panel};
 use linkage::mechanisms::FourBar;
 use linkage::prelude::*;
@@ -150,12 +152,12 @@ impl<'a> Picture<'a> {
     }
 
     /// The plotting areas of the panels: each between a long vertical axis
-    /// (black) and the long horizontal axis from its foot.
+    /// (the axes' dark grey) and the long horizontal axis from its foot.
     fn panels(&self) -> Vec<[f64; 4]> {
         let axes: Vec<&Line> = self
             .lines
             .iter()
-            .filter(|l| l.colour() == ("#000000", "1") && l.points.len() == 2)
+            .filter(|l| l.colour() == ("#262626", "1") && l.points.len() == 2)
             .collect();
         let mut panels = Vec::new();
         for y_axis in &axes {
@@ -247,6 +249,18 @@ fn check_legends(svg: &str) -> Result<usize, String> {
     Ok(entries.len())
 }
 
+/// An element's text without its `stroke-dasharray`.
+fn without_dashes(element: &str) -> String {
+    match element.find(" stroke-dasharray=\"") {
+        Some(at) => {
+            let value = at + " stroke-dasharray=\"".len();
+            let end = value + element[value..].find('"').unwrap_or(0) + 1;
+            format!("{}{}", &element[..at], &element[end..])
+        }
+        None => element.to_string(),
+    }
+}
+
 /// `svg` with the element `node` (of `svg`) rewritten by `change`.
 fn edited(svg: &str, node: Node, change: impl Fn(&str) -> String) -> String {
     let range = node.range();
@@ -281,7 +295,9 @@ fn two_panels() -> String {
         .panel(
             Panel::new("z [mm]")
                 .dashed("c", wave(0.0, 2.0))
-                .line("d", wave(2.0, 1.0)),
+                .colour(COLOURS[0])
+                .line("d", wave(2.0, 1.0))
+                .dash(Dash::Solid),
         )
         .render()
         .unwrap()
@@ -331,19 +347,17 @@ fn the_legend_check_fails_on_a_swatch_unlike_its_curve() {
             .unwrap_or_else(|| panic!("no legend entry {name}"))
     };
     // The fault reported: a dashed curve with a solid swatch.
-    let solid = edited(&svg, swatch("b"), |e| {
-        e.replace(" stroke-dasharray=\"7 4\"", "")
-    });
+    let solid = edited(&svg, swatch("b"), without_dashes);
     assert_ne!(solid, svg);
     assert!(check_legends(&solid).unwrap_err().contains("`b`"));
     // A dashed swatch for a solid curve.
     let dashed = edited(&svg, swatch("d"), |e| {
-        e.replace("stroke-width", "stroke-dasharray=\"7 4\" stroke-width")
+        without_dashes(e).replace("stroke-width", "stroke-dasharray=\"7 4\" stroke-width")
     });
     assert!(check_legends(&dashed).unwrap_err().contains("`d`"));
     // A swatch thinner than its curve.
     let thin = edited(&svg, swatch("a"), |e| {
-        e.replace("stroke-width=\"2\"", "stroke-width=\"1\"")
+        e.replace("stroke-width=\"", "stroke-width=\"0")
     });
     assert!(check_legends(&thin).unwrap_err().contains("`a`"));
     // A swatch in a colour no curve has.
@@ -359,7 +373,7 @@ fn the_legend_check_fails_on_a_swatch_unlike_its_curve() {
         .map(|l| l.node)
         .find(|&n| n != limit && paint(n, "stroke") == paint(limit, "stroke"))
         .unwrap();
-    let two_styles = edited(&svg, level, |e| e.replace(" stroke-dasharray=\"7 4\"", ""));
+    let two_styles = edited(&svg, level, without_dashes);
     assert!(check_legends(&two_styles).unwrap_err().contains("`limit`"));
 }
 
@@ -417,7 +431,7 @@ fn a_revolution_is_drawn_over_one_period() {
     let curve = picture
         .lines
         .iter()
-        .find(|l| l.colour().0 == "#1F60AC" && l.points.len() > 100)
+        .find(|l| l.colour().0 == "#0072B2" && l.points.len() > 100)
         .unwrap();
     let first = curve.points[0].0;
     let last = curve.points[curve.points.len() - 1].0;

@@ -7,10 +7,10 @@ mod charts;
 mod common;
 #[path = "../models/mod.rs"]
 mod models;
-#[path = "../../examples/support/page.rs"]
-mod page;
 #[path = "../../examples/stability/study.rs"]
 mod study;
 
+mod chart;
 mod diagrams;
+mod print;
 mod scenes;

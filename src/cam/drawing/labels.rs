@@ -7,7 +7,7 @@
 //! (any room over [`GAP`] − 1 px counting as clear), the first such
 //! direction winning a tie. A label placed is avoided by the ones after it.
 
-use super::{INK, SERIF};
+use super::{FONT, INK};
 use crate::draw::svg::{Writer, fmt};
 use nalgebra::Vector2;
 use std::f64::consts::PI;
@@ -158,7 +158,7 @@ impl Labels {
                 ("id", &id),
                 ("x", &fmt(rect.min.x)),
                 ("y", &fmt(rect.max.y - 0.22 * FONT_SIZE)),
-                ("font-family", SERIF),
+                ("font-family", FONT),
                 ("font-size", &fmt(FONT_SIZE)),
                 ("fill", INK),
             ],

@@ -1,6 +1,6 @@
 //! Motion diagrams: every coordinate, its velocity and its acceleration
-//! against the driver over a sweep, as SVG (plotters' SVG backend, no
-//! system libraries), with the sweep's singular poses marked.
+//! against the driver over a sweep, as SVG drawn with the library's
+//! [`Chart`], with the sweep's singular poses marked.
 //!
 //! Rows: positions, velocities, accelerations. Columns: angles and lengths
 //! (each with its units), as the mechanism has them. A coordinate is taken
@@ -35,66 +35,28 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 //!
-//! In every title, label and name of the diagrams, charts and hodographs
-//! `_` starts a subscript: `J_II`, `ω_1` are drawn J with II below the
-//! line, ω₁. Every legend's swatch is drawn in the style of its curve.
+//! In every title, label and name `_` starts a subscript: `J_II`, `ω_1`
+//! are drawn J with II below the line, ω₁. Every legend's swatch is drawn
+//! in the look of its curve.
 //!
-//! The area's files: the motion diagrams of a sweep (here), [`Chart`]s of
-//! panels (`chart.rs`), [`Hodographs`] (`hodographs.rs`), and what they
-//! share (`plot.rs`: the checks of sizes and values, the page with its
-//! dashes and subscripts, the legends, the axes' ranges and ticks).
+//! The area's files: the motion diagrams of a sweep (here) and the
+//! [`Hodographs`] (`hodographs.rs`), both drawn as [`Chart`]s
+//! ([`crate::draw::chart`], re-exported here).
 
-mod chart;
 mod hodographs;
-mod plot;
 
-pub use chart::{Chart, Panel, Series};
+pub use crate::draw::chart::{Chart, DiagramError, Panel};
 pub use hodographs::Hodographs;
 
+use crate::draw::chart::{check_plottable, height, plottable};
 use crate::runtime::{EventKind, Linkage, Sweep};
 use linkage_symbolic::names::textbook;
-use plot::*;
-use plotters::prelude::*;
-use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 /// Whether a coordinate is an angle (radians) or a length.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Kind {
     Angle,
     Length,
-}
-
-/// What went wrong drawing the diagrams.
-#[derive(Clone, Debug, PartialEq)]
-#[non_exhaustive]
-pub enum DiagramError {
-    /// A size or a number of columns is out of its range.
-    BadSetting {
-        what: &'static str,
-        must: &'static str,
-        value: f64,
-    },
-    /// The sweep has fewer than two poses.
-    TooFewPoses { poses: usize },
-    /// A value to plot is NaN, infinite, or beyond ±1e300 (where the
-    /// axes' arithmetic would overflow).
-    NonFinite {
-        what: &'static str,
-        name: String,
-        pose: usize,
-    },
-    /// plotters could not draw.
-    Drawing(String),
-}
-
-crate::error::error_impls! {
-    DiagramError {
-        Self::BadSetting { what, must, value } => ("{what} must be {must}, got {value}"),
-        Self::TooFewPoses { poses } => ("motion diagrams need a sweep of at least two poses, got {poses}"),
-        Self::NonFinite { name, pose, what } => ("the {what} of `{name}` at pose {pose} is not finite, or beyond ±1e300"),
-        Self::Drawing(inner) => ("drawing failed: {inner}"),
-    }
-    wraps {  }
 }
 
 /// How to draw the motion diagrams of a sweep.
@@ -122,24 +84,15 @@ struct Curve {
     values: Vec<[f64; 3]>,
 }
 
-pub(super) const PALETTE: [RGBColor; 6] = [
-    RGBColor(31, 96, 172),
-    RGBColor(200, 64, 40),
-    RGBColor(46, 125, 50),
-    RGBColor(142, 68, 173),
-    RGBColor(224, 130, 20),
-    RGBColor(0, 131, 143),
-];
-
 impl Diagrams {
-    /// Units mm and s, 900 pixels wide, 230 per row.
+    /// Units mm and s, 900 pixels wide, 260 per row.
     pub fn new() -> Diagrams {
         Diagrams {
             title: None,
             length_unit: "mm".into(),
             time_unit: "s".into(),
             width: 900,
-            row_height: 230,
+            row_height: 260,
             kinds: Vec::new(),
         }
     }
@@ -272,50 +225,14 @@ impl Diagrams {
             .into_iter()
             .filter(|k| curves.iter().any(|c| c.kind == *k))
             .collect();
-        let title_height = 36;
-        let (_, rows_height) = grid(1, 3, height(self.row_height, 120)?)?;
-        let height = title_height + rows_height + 10;
-        page((width(self.width)?, height), |root| {
-            self.draw(root, title_height, &columns, &curves, &xs, &x_desc, &events)
-        })
-    }
-
-    #[allow(clippy::too_many_arguments)]
-    fn draw(
-        &self,
-        root: &Page<'_>,
-        title_height: u32,
-        columns: &[Kind],
-        curves: &[Curve],
-        xs: &[f64],
-        x_desc: &str,
-        events: &[(f64, &'static str)],
-    ) -> Result<(), Box<dyn std::error::Error>> {
-        let (top, body) = root.split_vertically(title_height);
-        if let Some(title) = &self.title {
-            top.draw(&title_text(title.clone(), 10))?;
-        }
-        // One legend for every panel, at the top right.
-        let legend = Legend(
-            curves
-                .iter()
-                .enumerate()
-                .map(|(i, c)| (c.name.clone(), curve_style(i)))
-                .collect(),
-        );
-        let right = self.width as i32 - 16;
-        legend.row(
-            &top,
-            right - legend.row_width(),
-            (title_height as i32 / 2).max(12),
-        )?;
-        let panels = body.split_evenly((3, columns.len()));
+        let each = height(self.row_height, 120)?;
         let (l, t) = (&self.length_unit, &self.time_unit);
-        let x_range = span(xs.iter().copied());
+        let mut chart = Chart::new(self.title.as_deref().unwrap_or(""), &x_desc)
+            .columns(columns.len())
+            .size(self.width, each)
+            .shared_legend();
         for row in 0..3 {
-            for (col, kind) in columns.iter().enumerate() {
-                let panel = &panels[row * columns.len() + col];
-                let mine: Vec<&Curve> = curves.iter().filter(|c| c.kind == *kind).collect();
+            for kind in &columns {
                 let y_desc = match (kind, row) {
                     (Kind::Angle, 0) => "angle [°]".to_string(),
                     (Kind::Angle, 1) => "angular velocity [rad/s]".to_string(),
@@ -324,80 +241,19 @@ impl Diagrams {
                     (Kind::Length, 1) => format!("velocity [{l}/{t}]"),
                     (Kind::Length, _) => format!("acceleration [{l}/{t}²]"),
                 };
-                let y_range = pad(span(
-                    mine.iter()
-                        .flat_map(|c| c.values.iter().map(move |v| v[row])),
-                ));
-                let mut chart = ChartBuilder::on(panel)
-                    .margin_left(8)
-                    .margin_right(16)
-                    .margin_top(10)
-                    .x_label_area_size(if row == 2 { 40 } else { 22 })
-                    .y_label_area_size(74)
-                    .build_cartesian_2d(x_range.0..x_range.1, y_range.0..y_range.1)?;
-                let mut mesh = chart.configure_mesh();
-                mesh.light_line_style(WHITE)
-                    .bold_line_style(BLACK.mix(0.08))
-                    .axis_desc_style(("sans-serif", 13))
-                    .label_style(("sans-serif", 12))
-                    .y_desc(y_desc)
-                    .y_label_formatter(&|y| trim(*y))
-                    .x_label_formatter(&|x| trim(*x));
-                if row == 2 {
-                    mesh.x_desc(x_desc);
+                let mut panel = Panel::new(&y_desc);
+                for &(x, what) in &events {
+                    panel = panel.mark(x, if row == 0 { what } else { "" });
                 }
-                mesh.draw()?;
-                // Zero, where it is in range.
-                if y_range.0 < 0.0 && y_range.1 > 0.0 {
-                    chart.draw_series(std::iter::once(PathElement::new(
-                        vec![(x_range.0, 0.0), (x_range.1, 0.0)],
-                        BLACK.mix(0.35).stroke_width(1),
-                    )))?;
+                for curve in curves.iter().filter(|c| c.kind == *kind) {
+                    let points = xs.iter().zip(&curve.values).map(|(&x, v)| (x, v[row]));
+                    panel = panel.line(&curve.name, points.collect());
                 }
-                for &(x, what) in events {
-                    chart.draw_series(std::iter::once(PathElement::new(
-                        vec![(x, y_range.0), (x, y_range.1)],
-                        stroke(MARK, 1, true),
-                    )))?;
-                    if row == 0 {
-                        // Written towards the middle, so as not to leave the
-                        // panel at its edges.
-                        let right_half = x > 0.5 * (x_range.0 + x_range.1);
-                        let (h, nudge) = if right_half {
-                            (HPos::Right, -0.006)
-                        } else {
-                            (HPos::Left, 0.006)
-                        };
-                        let style = ("sans-serif", 13)
-                            .into_font()
-                            .color(&RGBColor(90, 90, 90))
-                            .pos(Pos::new(h, VPos::Top));
-                        chart.draw_series(std::iter::once(Text::new(
-                            what,
-                            (x + nudge * (x_range.1 - x_range.0), y_range.1),
-                            style,
-                        )))?;
-                    }
-                }
-                for curve in &mine {
-                    let index = curves
-                        .iter()
-                        .position(|c| c.name == curve.name)
-                        .unwrap_or(0);
-                    chart.draw_series(LineSeries::new(
-                        xs.iter().zip(&curve.values).map(|(&x, v)| (x, v[row])),
-                        curve_style(index),
-                    ))?;
-                }
+                chart = chart.panel(panel);
             }
         }
-        Ok(())
+        chart.render()
     }
-}
-
-/// The style of the `i`th coordinate's curves, and of its legend swatch.
-fn curve_style(i: usize) -> ShapeStyle {
-    stroke(PALETTE[i % PALETTE.len()], 2, false)
 }
 
 /// The abscissae, curves and events of a sweep of an angular driver (in
