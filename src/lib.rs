@@ -79,7 +79,7 @@
 //!   coordinate, a point's x or y, their rates, a function of the pose)
 //!   that every analysis names and reads.
 //! - `draw` (feature, default): pictures of poses, animations, motion
-//!   diagrams; [`machine`] and [`cam`]: reduced dynamics, flywheel, joint
+//!   diagrams, and charts fit to print (`draw::chart`); [`machine`] and [`cam`]: reduced dynamics, flywheel, joint
 //!   reactions, cam design; [`mechanisms`]: the worksheet's four-bar and a
 //!   four-bar for path generation, ready.
 //!

@@ -130,6 +130,20 @@ fn log_ticks((lo, hi): (f64, f64), room: usize) -> Vec<(f64, String)> {
         // Less than a decade: the linear ticks, on the log scale.
         return linear_ticks((lo, hi), room.min(5));
     }
+    if b - a < 2.5 {
+        // Two decades or so: 1, 2 and 5 of each, labelled.
+        let mut ticks = Vec::new();
+        for e in (a.floor() as i32)..=(b.ceil() as i32) {
+            for m in [1.0, 2.0, 5.0] {
+                let x = m * 10f64.powi(e);
+                if (lo..=hi).contains(&x) {
+                    let step = 10f64.powi(e);
+                    ticks.push((x, text::tick(x, step)));
+                }
+            }
+        }
+        return ticks;
+    }
     let first = a.ceil() as i32;
     let last = b.floor() as i32;
     let decades = (last - first + 1).max(1) as usize;
@@ -172,13 +186,17 @@ mod tests {
             .filter(|t| !t.1.is_empty())
             .map(|t| t.1.as_str())
             .collect();
-        assert_eq!(
-            labelled,
-            ["10⁻¹³", "10⁻¹¹", "10⁻⁹", "10⁻⁷", "10⁻⁵", "10⁻³", "10⁻¹"]
-        );
+        assert_eq!(labelled, ["10⁻¹³", "10⁻¹⁰", "10⁻⁷", "10⁻⁴", "10⁻¹"]);
         let place = axis.place(1e-6, 0.0, 100.0);
         let expected = (-6.0 + 13.0) / (0.2f64.log10() + 13.0) * 100.0;
         assert!((place - expected).abs() < 1e-12);
+    }
+
+    #[test]
+    fn short_log_axes_have_ones_twos_and_fives() {
+        let axis = Axis::new(Scale::Log, (1.0, 40.0), 6);
+        let labels: Vec<&str> = axis.ticks.iter().map(|t| t.1.as_str()).collect();
+        assert_eq!(labels, ["1", "2", "5", "10", "20"]);
     }
 
     #[test]

@@ -174,7 +174,7 @@ pub(crate) fn tick(x: f64, step: f64) -> String {
         };
         return minus(format!("{m}×10{}", superscript(exponent)));
     }
-    let decimals = (-(step.log10() - 1e-9).floor()).clamp(0.0, 10.0) as usize;
+    let decimals = (-(step.log10() + 1e-9).floor()).clamp(0.0, 10.0) as usize;
     minus(format!("{x:.decimals$}"))
 }
 
@@ -233,6 +233,8 @@ mod tests {
         assert_eq!(tick(-0.5, 0.5), "−0.5");
         assert_eq!(tick(150.0, 50.0), "150");
         assert_eq!(tick(0.25, 0.05), "0.25");
+        assert_eq!(tick(3.0, 1.0), "3");
+        assert_eq!(tick(0.3, 0.1), "0.3");
         assert_eq!(tick(2e6, 1e6), "2×10⁶");
         assert_eq!(tick(-2.5e-5, 5e-6), "−2.5×10⁻⁵");
         assert_eq!(decade(-12, false), "10⁻¹²");
