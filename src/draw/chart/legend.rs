@@ -2,8 +2,10 @@
 //! (colour, dashes, width, marker), and its name; laid out in rows under a
 //! title or boxed in a panel's emptiest corner.
 
+use super::look::{BAR_OPACITY, SHADE, level_look};
 use super::look::{Colour, FONT, Look, points};
 use super::marks::marker;
+use super::panel::{Panel, Series, Shape};
 use super::text;
 use crate::draw::svg::{Writer, fmt};
 
@@ -170,6 +172,61 @@ impl Legend<'_> {
             &runs,
         );
     }
+}
+
+/// The legend entries of `panel`, each series in its look (`look`).
+pub(crate) fn entries(panel: &Panel, look: &dyn Fn(&Series) -> Look) -> Vec<Entry> {
+    let mut entries: Vec<Entry> = Vec::new();
+    for series in panel
+        .series
+        .iter()
+        .filter(|s| s.listed && !s.name.is_empty())
+    {
+        if entries.iter().any(|e| e.name == series.name) {
+            continue;
+        }
+        let l = look(series);
+        let swatch = match series.shape {
+            Shape::Fill(_) => Swatch::Fill {
+                colour: l.colour,
+                opacity: l.opacity,
+            },
+            _ => Swatch::Series(l),
+        };
+        entries.push(Entry {
+            name: series.name.clone(),
+            swatch,
+        });
+    }
+    for (k, (label, _)) in panel.levels.iter().enumerate() {
+        entries.push(Entry {
+            name: label.clone(),
+            swatch: Swatch::Series(level_look(k)),
+        });
+    }
+    for (label, _, _) in &panel.shades {
+        if !entries.iter().any(|e| &e.name == label) {
+            entries.push(Entry {
+                name: label.clone(),
+                swatch: Swatch::Fill {
+                    colour: SHADE.0,
+                    opacity: SHADE.1,
+                },
+            });
+        }
+    }
+    if panel.groups.len() > 1 {
+        for (g, (name, _)) in panel.groups.iter().enumerate() {
+            entries.push(Entry {
+                name: name.clone(),
+                swatch: Swatch::Fill {
+                    colour: super::look::COLOURS[g % super::look::COLOURS.len()],
+                    opacity: BAR_OPACITY,
+                },
+            });
+        }
+    }
+    entries
 }
 
 /// A line's stroke attributes in `look`, at `px` pixels a point.

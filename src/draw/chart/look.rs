@@ -125,3 +125,25 @@ pub struct Look {
     /// 1 opaque … 0 invisible.
     pub opacity: f64,
 }
+
+/// The look of reference levels: dark grey, the `k`th in its own dashes.
+pub(crate) fn level_look(k: usize) -> Look {
+    const DASHES: [Dash; 3] = [Dash::Dashed, Dash::Dotted, Dash::DashDot];
+    Look {
+        colour: Colour(70, 70, 70),
+        dash: Some(DASHES[k % DASHES.len()]),
+        marker: None,
+        width: 0.9,
+        opacity: 1.0,
+    }
+}
+
+/// The colour of the axes and their ticks (not black, which a series may
+/// have).
+pub(crate) const AXIS: &str = "#262626";
+
+/// The shading of a range of the abscissa.
+pub(crate) const SHADE: (Colour, f64) = (Colour(0, 0, 0), 0.08);
+
+/// The fill of bars: a group's colour, nearly opaque.
+pub(crate) const BAR_OPACITY: f64 = 0.85;

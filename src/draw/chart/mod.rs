@@ -29,13 +29,14 @@
 //!
 //! The area's files: the chart (here: the page, its title and shared
 //! legend, the grid of panels), a panel as a builder (`panel.rs`), its
-//! drawing (`render.rs`), the axes (`axis.rs`), the legends (`legend.rs`),
+//! layout (`layout.rs`) and drawing (`render.rs`), the axes (`axis.rs`), the legends (`legend.rs`),
 //! markers and arrows (`marks.rs`), the looks and printed sizes
 //! (`look.rs`), the words and numbers (`text.rs`), and the checks
 //! (`error.rs`).
 
 mod axis;
 mod error;
+mod layout;
 mod legend;
 pub mod look;
 mod marks;
@@ -50,10 +51,10 @@ pub use panel::{Panel, Scale};
 pub(crate) use error::{MAX_PIXELS, check_plottable, grid, height, plottable, width, within};
 
 use crate::draw::svg::{Writer, fmt};
+use layout::Cell;
 use legend::{Entry, Legend};
 use look::{FONT, Look, points};
 use panel::{Series, Shape};
-use render::Cell;
 
 /// Where a chart's legends go.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -303,7 +304,7 @@ impl Chart {
             .panels
             .iter()
             .zip(&cells)
-            .map(|(panel, cell)| render::caption_lines(panel, cell).len())
+            .map(|(panel, cell)| layout::caption_lines(panel, cell).len())
             .collect();
         for (i, cell) in cells.iter_mut().enumerate() {
             let row = i / self.columns * self.columns;
@@ -315,7 +316,7 @@ impl Chart {
             .panels
             .iter()
             .zip(&cells)
-            .map(|(panel, cell)| render::plot_left(panel, cell, &look) - cell.area[0])
+            .map(|(panel, cell)| layout::plot_left(panel, cell, &look) - cell.area[0])
             .collect();
         for (i, cell) in cells.iter_mut().enumerate() {
             let column = (i % self.columns..lefts.len()).step_by(self.columns);
@@ -379,7 +380,7 @@ impl Chart {
         let each: Vec<Vec<Entry>> = self
             .panels
             .iter()
-            .map(|p| render::entries(p, look))
+            .map(|p| legend::entries(p, look))
             .collect();
         match self.legends {
             Legends::Shared => {
