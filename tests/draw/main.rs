@@ -12,5 +12,6 @@ mod study;
 
 mod chart;
 mod diagrams;
+mod overlays;
 mod print;
 mod scenes;

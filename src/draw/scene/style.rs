@@ -47,3 +47,46 @@ pub fn trace(k: usize) -> TraceStyle {
         dashes: DASHES[k % DASHES.len()],
     }
 }
+
+/// The width of a given curve ([`super::Curve`]): a little heavier than a
+/// traced path, as a given line is what the picture is about.
+pub const CURVE_WIDTH: f64 = 2.0;
+
+/// The stroke of a given curve, chosen when none is given.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CurveStyle {
+    pub colour: &'static str,
+    pub dashes: &'static str,
+}
+
+/// The style of the `k`-th given curve: colours none of the traced paths,
+/// arrows or bars use, the first curve solid (no traced path is) and the
+/// others in dash patterns no traced path has.
+pub fn curve(k: usize) -> CurveStyle {
+    const COLOURS: [&str; 4] = ["#0072b2", "#e69f00", "#009e73", "#8c564b"];
+    const DASHES: [&str; 3] = ["", "8 2 2 2", "2 2"];
+    CurveStyle {
+        colour: COLOURS[k % COLOURS.len()],
+        dashes: DASHES[k % DASHES.len()],
+    }
+}
+
+/// The colour of the `k`-th set of markers, chosen when none is given:
+/// none a curve, a traced path, an arrow or a bar has.
+pub fn marker_colour(k: usize) -> &'static str {
+    const COLOURS: [&str; 4] = ["#d55e00", "#1b1b1b", "#cc79a7", "#56b4e9"];
+    COLOURS[k % COLOURS.len()]
+}
+
+/// Half the size of a marker, when none is given.
+pub const MARKER_SIZE: f64 = 5.5;
+/// The font size of markers' labels and of notes.
+pub const NOTE_SIZE: f64 = 13.0;
+
+/// A pose drawn faint behind the main one: its bars, plate outlines and
+/// joints.
+pub const GHOST: &str = "#c4ccd6";
+/// A faint pose's plates.
+pub const GHOST_FILL: &str = "#f4f6f9";
+pub const GHOST_BAR_WIDTH: f64 = 3.0;
+pub const GHOST_JOINT_RADIUS: f64 = 2.6;
