@@ -15,3 +15,4 @@ mod diagrams;
 mod overlays;
 mod print;
 mod scenes;
+mod sheets;

@@ -60,6 +60,11 @@ impl Heading {
         self.lines.last().map(|line| line.baseline)
     }
 
+    /// The smallest font size of the heading, if it has a line.
+    pub(super) fn smallest_font(&self) -> Option<f64> {
+        self.lines.iter().map(|line| line.size).reduce(f64::min)
+    }
+
     /// Every line, centred in a picture `width` pixels wide.
     pub(super) fn draw(&self, w: &mut Writer, width: f64) {
         for line in &self.lines {

@@ -56,10 +56,11 @@
 //! the mechanism's plane: [`Markers`] at fixed points (a synthesis's
 //! targets, numbered), [`Curve`]s through given points (a second design's
 //! coupler curve, a desired path), other poses of the mechanism drawn
-//! faint behind it ([`Scene::ghosts`]), and notes ([`Scene::note`]):
+//! faint behind it ([`Scene::ghosts`]), and notes ([`Scene::note`]); a
+//! [`Sheet`] sets several pictures side by side under one title:
 //!
 //! ```
-//! use linkage::draw::scene::{Curve, Frame, Markers, Scene};
+//! use linkage::draw::scene::{Curve, Frame, Markers, Scene, Sheet};
 //! use linkage::mechanisms::CouplerFourBar;
 //! use linkage::prelude::*;
 //! use std::f64::consts::TAU;
@@ -84,7 +85,11 @@
 //!     .subtitle("its coupler's midpoint against three targets")
 //!     .width(400.0);
 //! let picture = scene.render(&turn[0], &turn)?;
-//! assert!(picture.contains("targets"));
+//! let sheet = Sheet::new("Two poses")
+//!     .picture(picture)
+//!     .picture(scene.render(&turn[45], &turn)?)
+//!     .render()?;
+//! assert_eq!(sheet.matches("<svg").count(), 3);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 //!
@@ -95,8 +100,8 @@
 //! guides, links, sliders, points, ground), the arrows (`arrows.rs`), what
 //! is drawn in the plane besides the pose (`overlay.rs`: `markers.rs`,
 //! `curves.rs`, `ghosts.rs`, `notes.rs`), the labels (`labels.rs`, on
-//! `geometry.rs`), the legend (`legend.rs`) and the animation
-//! (`animation.rs`).
+//! `geometry.rs`), the legend (`legend.rs`), the animation
+//! (`animation.rs`) and the sheet of pictures (`sheet.rs`).
 
 mod animation;
 mod arrow_kind;
@@ -113,11 +118,13 @@ mod markers;
 mod motion;
 mod notes;
 mod overlay;
+mod sheet;
 mod style;
 mod symbols;
 
 pub use curves::Curve;
 pub use markers::{MarkerShape, Markers};
+pub use sheet::Sheet;
 
 use crate::error::{NameKind, UnknownName};
 use crate::ground::Ground;
@@ -171,6 +178,20 @@ pub enum SceneError {
     },
     /// A colour given is not one SVG understands.
     BadColour { what: &'static str, colour: String },
+    /// A sheet was asked for without pictures.
+    EmptySheet,
+    /// The picture at `index` (counted from 0) of a sheet is not an SVG
+    /// document with its width and height in pixels.
+    NotAPicture { index: usize },
+    /// Text of `font` px on a sheet `width` px wide would print smaller
+    /// than 7 pt with the sheet printed 16 cm wide: the picture at
+    /// `picture` (counted from 0), or the sheet's own heading if `None`.
+    TextTooSmall {
+        picture: Option<usize>,
+        font: f64,
+        width: f64,
+        printed: f64,
+    },
 }
 
 crate::error::error_impls! {
@@ -184,6 +205,9 @@ crate::error::error_impls! {
         Self::TooFewPoints { what, name, points, least } => ("the {what} `{name}` has {points} points, fewer than {least}"),
         Self::LabelCount { name, markers, labels } => ("the set of markers `{name}` has {markers} markers but {labels} labels"),
         Self::BadColour { what, colour } => ("the colour of {what} must be one SVG understands (#rrggbb, a name, rgb(…)), got `{colour}`"),
+        Self::EmptySheet => ("a sheet needs at least one picture"),
+        Self::NotAPicture { index } => ("picture {index} (from 0) of the sheet is not an SVG document with its width and height in pixels"),
+        Self::TextTooSmall { picture, font, width, printed } => ("{} has text of {font} px, which on a sheet {width} px wide printed 16 cm wide is {printed:.1} pt, below 7 pt: draw the pictures narrower", match picture { Some(k) => format!("picture {k} (from 0)"), None => "the sheet's heading".to_string() }),
     }
     wraps { UnknownName(UnknownName) }
 }
