@@ -535,7 +535,7 @@ impl Scene {
     /// The picture's width in pixels, 200 to 20 000 (the height follows
     /// the mechanism). Its smallest text is 13 px, so on a [`Sheet`]
     /// printed 16 cm wide two pictures side by side keep it at 7 pt up to
-    /// 404 px each.
+    /// 409 px each.
     pub fn width(mut self, pixels: f64) -> Scene {
         self.width = pixels;
         self

@@ -13,7 +13,7 @@
 //! prints at `f` × 453.5 / `W` pt. [`Sheet::render`] refuses a sheet that
 //! would print smaller ([`SceneError::TextTooSmall`]): draw its pictures
 //! narrower (a scene of [`Scene::width`] 400 has 13-px text, so two of
-//! them side by side print at 7.1 pt).
+//! them side by side print at 7.2 pt).
 //!
 //! [`Scene::width`]: super::Scene::width
 
