@@ -133,6 +133,26 @@ fn a_sheet_keeps_its_text_at_7_pt_printed_16_cm_wide() {
     };
     assert_eq!((picture, font, width), (Some(0), 13.0, 1464.0));
     assert!((printed - 13.0 * 453.54 / 1464.0).abs() < 0.01);
+    // Two side by side: up to 409 px each (a sheet 842 px wide, 7.003
+    // pt), not 410 (844 px, 6.99 pt).
+    let side_by_side = |width: f64| {
+        let svg = design_scene(&cycle)
+            .width(width)
+            .render(&cycle[0], &cycle)
+            .unwrap();
+        Sheet::new("Side by side")
+            .picture(svg.as_str())
+            .picture(svg.as_str())
+            .render()
+    };
+    assert!(side_by_side(409.0).is_ok());
+    assert!(matches!(
+        side_by_side(410.0),
+        Err(SceneError::TextTooSmall {
+            picture: Some(0),
+            ..
+        })
+    ));
     // One alone prints at 8 pt.
     assert!(Sheet::new("One").picture(wide.as_str()).render().is_ok());
     // A sheet with no title has none.
