@@ -72,9 +72,10 @@ pub fn curve(k: usize) -> CurveStyle {
 }
 
 /// The colour of the `k`-th set of markers, chosen when none is given:
-/// none a curve, a traced path, an arrow or a bar has.
+/// none a curve, a traced path, an arrow or a bar has, one for each of
+/// the five shapes the sets take in turn.
 pub fn marker_colour(k: usize) -> &'static str {
-    const COLOURS: [&str; 4] = ["#d55e00", "#1b1b1b", "#cc79a7", "#56b4e9"];
+    const COLOURS: [&str; 5] = ["#d55e00", "#1b1b1b", "#cc79a7", "#56b4e9", "#882255"];
     COLOURS[k % COLOURS.len()]
 }
 
