@@ -221,24 +221,31 @@ fn markers_are_drawn_at_their_points_numbered_and_in_the_legend() {
             .unwrap();
         assert_eq!(swatch.attribute("stroke"), Some(colour));
     }
-    // Distinct colours for the two sets chosen automatically.
-    let two = Scene::new()
-        .markers(Markers::new("one", [[0.0, 0.0]]))
-        .markers(Markers::new("two", [[1.0, 1.0]]))
+    // Five sets, their shapes and colours chosen: all told apart by both.
+    let five = (0..5)
+        .fold(Scene::new(), |scene, k| {
+            scene.markers(Markers::new(&format!("set {k}"), [[k as f64, 0.0]]))
+        })
         .render(&cycle[0], &[])
         .unwrap();
-    let doc = parse(&two);
-    let colours: Vec<&str> = ["markers-0", "markers-1"]
-        .map(|id| {
-            by_id(&doc, id)
+    let doc = parse(&five);
+    let looks: Vec<(&str, &str)> = (0..5)
+        .map(|k| {
+            let shape = by_id(&doc, &format!("markers-{k}"))
                 .descendants()
                 .find(|n| n.has_tag_name("path") && n.attribute("class") != Some("halo"))
-                .unwrap()
-                .attribute("stroke")
-                .unwrap()
+                .unwrap();
+            (
+                shape.attribute("stroke").unwrap(),
+                shape.attribute("d").unwrap(),
+            )
         })
-        .to_vec();
-    assert_ne!(colours[0], colours[1]);
+        .collect();
+    for (i, a) in looks.iter().enumerate() {
+        for b in &looks[i + 1..] {
+            assert!(a.0 != b.0 && a.1 != b.1, "{a:?} and {b:?}");
+        }
+    }
 }
 
 /// The points of a path written `M x y L x y … [Z]`.
