@@ -1,21 +1,5 @@
-//! A sheet: several pictures — scenes, and any other SVG the library
-//! writes — side by side in a grid under one title, as one SVG document.
-//!
-//! Each picture is nested whole as an `<svg>` element at its own size,
-//! with its own `viewBox`: nothing in it is scaled, so its text keeps the
-//! size it was drawn at. A column is as wide as its widest picture and a
-//! row as tall as its tallest; a picture narrower than its column is
-//! centred in it. The ids of each picture are prefixed (`p0-`, `p1-`, …)
-//! so that the sheet's stay unique.
-//!
-//! The sheet is meant to be printed at most 16 cm wide, so it keeps every
-//! text at 7 pt or more there: a text of `f` px on a sheet `W` px wide
-//! prints at `f` × 453.5 / `W` pt. [`Sheet::render`] refuses a sheet that
-//! would print smaller ([`SceneError::TextTooSmall`]): draw its pictures
-//! narrower (a scene of [`Scene::width`] 400 has 13-px text, so two of
-//! them side by side print at 7.2 pt).
-//!
-//! [`Scene::width`]: super::Scene::width
+//! A sheet: several pictures side by side in a grid under one title, as
+//! one SVG document (the rules it keeps are on [`Sheet`]).
 
 use super::SceneError;
 use super::heading::Heading;
@@ -30,8 +14,24 @@ const PRINTED_POINTS: f64 = 16.0 / 2.54 * 72.0;
 /// The smallest text the sheet prints, in points.
 const LEAST_POINTS: f64 = 7.0;
 
-/// Pictures in a grid under a title (see the [module](self) for the
-/// rules it keeps).
+/// Several pictures — scenes, and any other SVG the library writes — side
+/// by side in a grid under one title, as one SVG document.
+///
+/// Each picture is nested whole as an `<svg>` element at its own size,
+/// with its own `viewBox`: nothing in it is scaled, so its text keeps the
+/// size it was drawn at. A column is as wide as its widest picture and a
+/// row as tall as its tallest; a picture narrower than its column is
+/// centred in it. The ids of each picture are prefixed (`p0-`, `p1-`, …)
+/// so that the sheet's stay unique.
+///
+/// The sheet is meant to be printed at most 16 cm wide, so it keeps every
+/// text at 7 pt or more there: a text of `f` px on a sheet `W` px wide
+/// prints at `f` × 453.5 / `W` pt. [`Sheet::render`] refuses a sheet that
+/// would print smaller ([`SceneError::TextTooSmall`]): draw its pictures
+/// narrower (a scene of [`Scene::width`] 400 has 13-px text, so two of
+/// them side by side print at 7.2 pt).
+///
+/// [`Scene::width`]: super::Scene::width
 ///
 /// ```
 /// use linkage::draw::scene::Sheet;
