@@ -3,8 +3,11 @@
 
 use crate::overlays::{DESIGN, design_scene, keep_for_a_look, turn};
 use crate::scenes::{by_id, number, parse};
+use linkage::draw::diagrams::Diagrams;
 use linkage::draw::scene::{Scene, SceneError, Sheet};
 use linkage::mechanisms::CouplerFourBar;
+use linkage::prelude::*;
+use std::f64::consts::TAU;
 
 /// Four designs, each drawn 400 px wide: two to a row print legibly.
 fn four_designs() -> Vec<String> {
@@ -207,5 +210,52 @@ fn bad_sheets_are_typed_errors() {
             SceneError::NotAPicture { index: 1 },
             "{bad}"
         );
+    }
+}
+
+#[test]
+fn a_chart_the_library_draws_is_a_picture_a_sheet_can_hold() {
+    let sweep = DESIGN
+        .sweep(
+            &vector![1.3, -0.8],
+            &Drive::Line {
+                from: vector![0.0],
+                to: vector![TAU],
+                steps: 90,
+            },
+            &SweepOptions::default(),
+        )
+        .unwrap();
+    let chart = Diagrams::new().render(&DESIGN, &sweep).unwrap();
+    // Read as a picture: nested if its text is large enough for the
+    // sheet, else refused for its text alone.
+    match Sheet::new("A chart")
+        .columns(1)
+        .picture(chart.as_str())
+        .render()
+    {
+        Ok(sheet) => {
+            let doc = parse(&sheet);
+            let nested = doc
+                .root_element()
+                .children()
+                .find(|n| n.has_tag_name("svg"))
+                .unwrap();
+            let alone = parse(&chart);
+            assert_eq!(
+                nested.attribute("width"),
+                alone.root_element().attribute("width")
+            );
+        }
+        Err(err) => assert!(
+            matches!(
+                err,
+                SceneError::TextTooSmall {
+                    picture: Some(0),
+                    ..
+                }
+            ),
+            "{err}"
+        ),
     }
 }
