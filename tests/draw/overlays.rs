@@ -478,7 +478,7 @@ fn the_heading_wraps_and_the_subtitle_sits_under_the_title() {
     let joined: Vec<&str> = title.iter().map(|(t, _)| t.as_str()).collect();
     assert_eq!(joined.join(" "), long);
     for (text, _) in &title {
-        // 17-px serif, at half an em a letter on average: within the
+        // 17-px text, at half an em a letter on average: within the
         // 400 px less a margin.
         assert!(0.5 * 17.0 * text.chars().count() as f64 <= 376.0, "{text}");
     }

@@ -86,16 +86,20 @@ impl Heading {
     }
 }
 
-/// About how wide `text` is set upright in the scenes' serif at `size`
-/// px (a little wider than most fonts set it: capitals 0.72 em, spaces
-/// 0.32 em, the rest 0.56 em).
+/// About how wide `text` is set upright in `style::FONT` at `size` px, on
+/// the wide side (the font's advances rounded up: capitals 0.7 em, digits
+/// 0.64 em, narrow letters and punctuation 0.3 to 0.38 em, m and w 0.9 em,
+/// the rest 0.6 em).
 pub(super) fn text_width(text: &str, size: f64) -> f64 {
     let ems: f64 = text
         .chars()
         .map(|c| match c {
-            'A'..='Z' | 'm' | 'w' | '—' => 0.72,
-            ' ' => 0.32,
-            _ => 0.56,
+            'i' | 'j' | 'l' | '.' | ',' | ':' | ';' | '\'' | '|' | '!' => 0.3,
+            ' ' | 'f' | 't' | 'r' | '(' | ')' | '[' | ']' | '/' | '-' => 0.38,
+            'm' | 'w' | 'M' | 'W' | '%' | '—' => 0.9,
+            '0'..='9' => 0.64,
+            c if c.is_uppercase() => 0.7,
+            _ => 0.6,
         })
         .sum();
     ems * size

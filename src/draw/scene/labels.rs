@@ -42,17 +42,18 @@ const NEARER: f64 = 3.0;
 /// Where the text's baseline lies below its box's centre, in em.
 const BASELINE: f64 = 0.25;
 
-/// Half a label's box (serif, `size` px): the text's width by the font's
-/// usual advances (capitals about 0.75 em, subscript digits 0.42 em, the
-/// rest 0.58 em), from the cap height (0.72 em above the baseline) to
-/// below the subscripts (0.22 em).
+/// Half a label's box (`style::FONT`, `size` px): the text's width by the
+/// font's usual advances, on the wide side (capitals about 0.75 em, digits
+/// 0.64 em, subscript digits 0.42 em, the rest 0.6 em), from the cap
+/// height (0.72 em above the baseline) to below the subscripts (0.22 em).
 fn label_half_size(text: &str, size: f64) -> Vector2<f64> {
     let ems: f64 = text
         .chars()
         .map(|c| match c {
             'A'..='Z' => 0.75,
+            '0'..='9' => 0.64,
             '\u{2080}'..='\u{2089}' => 0.42,
-            _ => 0.58,
+            _ => 0.6,
         })
         .sum();
     Vector2::new(ems * size / 2.0, 0.47 * size)

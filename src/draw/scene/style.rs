@@ -1,7 +1,8 @@
-//! The look of a scene: colours, stroke widths, sizes, the font, and the
-//! styles of the traced paths, shared by the drawing and its legend.
+//! The look of a scene: colours, stroke widths, sizes, the font (every
+//! picture's), and the styles of the traced paths, shared by the drawing
+//! and its legend.
 
-pub use crate::draw::palette::{ACCELERATION, BAR, INK, PLATE_FILL, VELOCITY};
+pub use crate::draw::palette::{ACCELERATION, BAR, FONT, INK, PLATE_FILL, VELOCITY};
 /// The outline that keeps an arrow visible over a bar or another arrow.
 pub const HALO: &str = "white";
 pub const BAR_WIDTH: f64 = 5.0;
@@ -22,7 +23,6 @@ pub const GUIDE_OFFSET: f64 = 10.0;
 pub const GUIDE_HATCH: f64 = 7.0;
 pub const MARGIN: f64 = 46.0;
 pub const LEGEND_LINE: f64 = 18.0;
-pub const FONT: &str = "DejaVu Serif, Georgia, 'Times New Roman', serif";
 pub const LABEL_SIZE: f64 = 15.0;
 pub const TRACE_WIDTH: f64 = 1.4;
 /// The longest arrow of each kind, when its scale is chosen
