@@ -130,11 +130,12 @@ fn a_sheet_keeps_its_text_at_7_pt_printed_16_cm_wide() {
         font,
         width,
         printed,
+        least,
     } = err
     else {
         panic!("{err}");
     };
-    assert_eq!((picture, font, width), (Some(0), 13.0, 1464.0));
+    assert_eq!((picture, font, width, least), (Some(0), 13.0, 1464.0, 7.0));
     assert!((printed - 13.0 * 453.54 / 1464.0).abs() < 0.01);
     // Two side by side: up to 409 px each (a sheet 842 px wide, 7.003
     // pt), not 410 (844 px, 6.99 pt).
@@ -153,6 +154,23 @@ fn a_sheet_keeps_its_text_at_7_pt_printed_16_cm_wide() {
         side_by_side(410.0),
         Err(SceneError::TextTooSmall {
             picture: Some(0),
+            ..
+        })
+    ));
+    // Subscripts (a tspan of its own size) may print down to 5.5 pt: on a
+    // sheet 916 px wide, 11 px prints at 5.45 pt, 12 px at 5.94 pt.
+    let subscripted = |size: f64| {
+        let chart = format!(
+            r#"<svg xmlns="http://www.w3.org/2000/svg" width="900" height="300"><text font-size="15">θ<tspan dy="3" font-size="{size}">2</tspan></text></svg>"#
+        );
+        Sheet::new("").picture(chart).render()
+    };
+    assert!(subscripted(12.0).is_ok());
+    assert!(matches!(
+        subscripted(11.0),
+        Err(SceneError::TextTooSmall {
+            picture: Some(0),
+            least: 5.5,
             ..
         })
     ));
@@ -214,7 +232,7 @@ fn bad_sheets_are_typed_errors() {
 }
 
 #[test]
-fn a_chart_the_library_draws_is_a_picture_a_sheet_can_hold() {
+fn a_chart_the_library_draws_nests_whole_in_a_sheet() {
     let sweep = DESIGN
         .sweep(
             &vector![1.3, -0.8],
@@ -227,35 +245,39 @@ fn a_chart_the_library_draws_is_a_picture_a_sheet_can_hold() {
         )
         .unwrap();
     let chart = Diagrams::new().render(&DESIGN, &sweep).unwrap();
-    // Read as a picture: nested if its text is large enough for the
-    // sheet, else refused for its text alone.
-    match Sheet::new("A chart")
+    // The library's charts are fit to print, so one nests whole.
+    let sheet = Sheet::new("A chart")
         .columns(1)
         .picture(chart.as_str())
         .render()
-    {
-        Ok(sheet) => {
-            let doc = parse(&sheet);
-            let nested = doc
-                .root_element()
-                .children()
-                .find(|n| n.has_tag_name("svg"))
-                .unwrap();
-            let alone = parse(&chart);
-            assert_eq!(
-                nested.attribute("width"),
-                alone.root_element().attribute("width")
-            );
-        }
-        Err(err) => assert!(
-            matches!(
-                err,
-                SceneError::TextTooSmall {
-                    picture: Some(0),
-                    ..
-                }
-            ),
-            "{err}"
-        ),
+        .unwrap();
+    let doc = parse(&sheet);
+    let nested = doc
+        .root_element()
+        .children()
+        .find(|n| n.has_tag_name("svg"))
+        .unwrap();
+    let alone = parse(&chart);
+    assert_eq!(
+        nested.attribute("width"),
+        alone.root_element().attribute("width")
+    );
+    // Its references (clip paths) lead to its own elements, under
+    // their prefixed ids.
+    let ids: Vec<&str> = doc
+        .descendants()
+        .filter_map(|n| n.attribute("id"))
+        .collect();
+    let references: Vec<&str> = sheet
+        .match_indices("url(#")
+        .map(|(at, _)| {
+            let rest = &sheet[at + 5..];
+            &rest[..rest.find(')').unwrap()]
+        })
+        .collect();
+    assert_eq!(references.len(), chart.matches("url(#").count());
+    for reference in references {
+        assert!(reference.starts_with("p0-"), "{reference}");
+        assert!(ids.contains(&reference), "{reference} leads nowhere");
     }
 }

@@ -183,14 +183,16 @@ pub enum SceneError {
     /// The picture at `index` (counted from 0) of a sheet is not an SVG
     /// document with its width and height in pixels.
     NotAPicture { index: usize },
-    /// Text of `font` px on a sheet `width` px wide would print smaller
-    /// than 7 pt with the sheet printed 16 cm wide: the picture at
-    /// `picture` (counted from 0), or the sheet's own heading if `None`.
+    /// Text of `font` px on a sheet `width` px wide would print at
+    /// `printed` pt with the sheet printed 16 cm wide, smaller than `least`
+    /// (7 pt, 5.5 pt for subscripts and superscripts): in the picture at
+    /// `picture` (counted from 0), or in the sheet's own heading if `None`.
     TextTooSmall {
         picture: Option<usize>,
         font: f64,
         width: f64,
         printed: f64,
+        least: f64,
     },
 }
 
@@ -207,7 +209,7 @@ crate::error::error_impls! {
         Self::BadColour { what, colour } => ("the colour of {what} must be one SVG understands (#rrggbb, a name, rgb(…)), got `{colour}`"),
         Self::EmptySheet => ("a sheet needs at least one picture"),
         Self::NotAPicture { index } => ("picture {index} (from 0) of the sheet is not an SVG document with its width and height in pixels"),
-        Self::TextTooSmall { picture, font, width, printed } => ("{} has text of {font} px, which on a sheet {width} px wide printed 16 cm wide is {printed:.1} pt, below 7 pt: draw the pictures narrower", match picture { Some(k) => format!("picture {k} (from 0)"), None => "the sheet's heading".to_string() }),
+        Self::TextTooSmall { picture, font, width, printed, least } => ("{} has text of {font} px, which on a sheet {width} px wide printed 16 cm wide is {printed:.1} pt, below {least} pt: draw the pictures narrower", match picture { Some(k) => format!("picture {k} (from 0)"), None => "the sheet's heading".to_string() }),
     }
     wraps { UnknownName(UnknownName) }
 }

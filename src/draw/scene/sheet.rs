@@ -13,6 +13,8 @@ const UNDER_HEADING: f64 = 14.0;
 const PRINTED_POINTS: f64 = 16.0 / 2.54 * 72.0;
 /// The smallest text the sheet prints, in points.
 const LEAST_POINTS: f64 = 7.0;
+/// The smallest subscript or superscript (a `tspan` of its own size).
+const LEAST_SCRIPT_POINTS: f64 = 5.5;
 
 /// Several pictures — scenes, and any other SVG the library writes — side
 /// by side in a grid under one title, as one SVG document.
@@ -26,8 +28,10 @@ const LEAST_POINTS: f64 = 7.0;
 ///
 /// The sheet is meant to be printed at most 16 cm wide, so it keeps every
 /// text at 7 pt or more there: a text of `f` px on a sheet `W` px wide
-/// prints at `f` × 453.5 / `W` pt. [`Sheet::render`] refuses a sheet that
-/// would print smaller ([`SceneError::TextTooSmall`]): draw its pictures
+/// prints at `f` × 453.5 / `W` pt (subscripts and superscripts, set in
+/// `tspan`s of their own size, at 5.5 pt or more). [`Sheet::render`]
+/// refuses a sheet that would print smaller
+/// ([`SceneError::TextTooSmall`]): draw its pictures
 /// narrower (a scene of [`Scene::width`] 400 has 13-px text, so two of
 /// them side by side print at 7.2 pt).
 ///
@@ -69,7 +73,15 @@ struct Nested {
     attributes: Vec<(String, String)>,
     /// Everything inside the root, ids prefixed.
     body: String,
-    smallest_font: Option<f64>,
+    fonts: Fonts,
+}
+
+/// The smallest font sizes a picture sets, in px: of its text, and of its
+/// subscripts and superscripts (`tspan`s of their own size).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+struct Fonts {
+    text: Option<f64>,
+    script: Option<f64>,
 }
 
 impl Sheet {
@@ -138,16 +150,30 @@ impl Sheet {
         let fonts = nested
             .iter()
             .enumerate()
-            .filter_map(|(k, picture)| picture.smallest_font.map(|font| (Some(k), font)))
-            .chain(heading.smallest_font().map(|font| (None, font)));
-        for (picture, font) in fonts {
+            .flat_map(|(k, picture)| {
+                [
+                    picture.fonts.text.map(|font| (Some(k), font, LEAST_POINTS)),
+                    picture
+                        .fonts
+                        .script
+                        .map(|font| (Some(k), font, LEAST_SCRIPT_POINTS)),
+                ]
+            })
+            .flatten()
+            .chain(
+                heading
+                    .smallest_font()
+                    .map(|font| (None, font, LEAST_POINTS)),
+            );
+        for (picture, font, least) in fonts {
             let printed = font * PRINTED_POINTS / width;
-            if printed < LEAST_POINTS {
+            if printed < least {
                 return Err(SceneError::TextTooSmall {
                     picture,
                     font,
                     width,
                     printed,
+                    least,
                 });
             }
         }
@@ -249,7 +275,7 @@ fn nest(svg: &str, index: usize) -> Result<Nested, SceneError> {
     };
     let prefix = format!("p{index}-");
     let body = prefix_ids(&svg[open_end + 1..close], &prefix);
-    let smallest_font = smallest_font(svg);
+    let fonts = smallest_fonts(svg);
     let attributes = attributes
         .into_iter()
         .filter(|(k, _)| !matches!(k.as_str(), "x" | "y" | "width" | "height" | "viewBox"))
@@ -264,7 +290,7 @@ fn nest(svg: &str, index: usize) -> Result<Nested, SceneError> {
         view_box,
         attributes,
         body,
-        smallest_font,
+        fonts,
     })
 }
 
@@ -302,23 +328,38 @@ fn prefix_ids(markup: &str, prefix: &str) -> String {
         .replace("href=\"#", &format!("href=\"#{prefix}"))
 }
 
-/// The smallest font size the picture sets, in px (`font-size="…"`
-/// attributes and `font-size:` in styles).
-fn smallest_font(svg: &str) -> Option<f64> {
-    svg.match_indices("font-size")
-        .filter_map(|(at, key)| {
-            let rest = svg[at + key.len()..].trim_start();
-            let rest = rest
-                .strip_prefix('=')
-                .map(|r| r.trim_start().trim_start_matches(['"', '\'']))
-                .or_else(|| rest.strip_prefix(':').map(str::trim_start))?;
-            let number: String = rest
-                .chars()
-                .take_while(|c| c.is_ascii_digit() || *c == '.')
-                .collect();
-            number.parse::<f64>().ok().filter(|f| *f > 0.0)
-        })
-        .reduce(f64::min)
+/// The smallest font sizes the picture sets (`font-size="…"` attributes
+/// and `font-size:` in styles, in px), those of `tspan`s apart.
+fn smallest_fonts(svg: &str) -> Fonts {
+    let mut fonts = Fonts::default();
+    for (at, key) in svg.match_indices("font-size") {
+        let rest = svg[at + key.len()..].trim_start();
+        let Some(rest) = rest
+            .strip_prefix('=')
+            .map(|r| r.trim_start().trim_start_matches(['"', '\'']))
+            .or_else(|| rest.strip_prefix(':').map(str::trim_start))
+        else {
+            continue;
+        };
+        let number: String = rest
+            .chars()
+            .take_while(|c| c.is_ascii_digit() || *c == '.')
+            .collect();
+        let Some(size) = number.parse::<f64>().ok().filter(|f| *f > 0.0) else {
+            continue;
+        };
+        // The element it belongs to: the last tag opened before it.
+        let in_tspan = svg[..at]
+            .rfind('<')
+            .is_some_and(|open| svg[open + 1..].starts_with("tspan"));
+        let least = if in_tspan {
+            &mut fonts.script
+        } else {
+            &mut fonts.text
+        };
+        *least = Some(least.map_or(size, |l: f64| l.min(size)));
+    }
+    fonts
 }
 
 #[cfg(test)]
@@ -329,7 +370,7 @@ mod tests {
     fn a_picture_taken_apart() {
         let svg = r##"<?xml version="1.0"?>
 <svg xmlns="http://www.w3.org/2000/svg" width="300px" height="200" viewBox="0, 0, 600, 400">
-<text id="t" font-size="13">a</text><g style="font-size: 9.5px"/><use href="#t"/>
+<text id="t" font-size="13">a<tspan dy="2" font-size="7">2</tspan></text><g style="font-size: 9.5px"/><use href="#t"/>
 </svg>
 "##;
         let nested = nest(svg, 3).unwrap();
@@ -344,7 +385,13 @@ mod tests {
         );
         assert!(nested.body.contains(r#"<text id="p3-t""#));
         assert!(nested.body.contains(r##"href="#p3-t""##));
-        assert_eq!(nested.smallest_font, Some(9.5));
+        assert_eq!(
+            nested.fonts,
+            Fonts {
+                text: Some(9.5),
+                script: Some(7.0)
+            }
+        );
         for bad in [
             "no picture",
             r#"<svg width="10" height="10"/>"#,
