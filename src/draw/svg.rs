@@ -74,6 +74,15 @@ impl Writer {
         self.out.push_str("</text>\n");
     }
 
+    /// Markup written as it is given: a whole element of another document
+    /// (such as a picture nested in a sheet), already well-formed.
+    pub(crate) fn verbatim(&mut self, markup: &str) {
+        self.out.push_str(markup);
+        if !markup.ends_with('\n') {
+            self.out.push('\n');
+        }
+    }
+
     pub(crate) fn close(&mut self, name: &str) {
         self.depth = self.depth.saturating_sub(1);
         self.out.push_str(&"  ".repeat(self.depth));

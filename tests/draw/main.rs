@@ -12,5 +12,7 @@ mod study;
 
 mod chart;
 mod diagrams;
+mod overlays;
 mod print;
 mod scenes;
+mod sheets;

@@ -63,17 +63,17 @@ fn revolution(steps: usize) -> (Sweep<2, 1>, Vec<Frame>) {
     (sweep, frames)
 }
 
-fn parse(svg: &str) -> roxmltree::Document<'_> {
+pub(crate) fn parse(svg: &str) -> roxmltree::Document<'_> {
     roxmltree::Document::parse(svg).unwrap_or_else(|e| panic!("not well-formed XML: {e}"))
 }
 
-fn by_id<'a>(doc: &'a roxmltree::Document<'a>, id: &str) -> roxmltree::Node<'a, 'a> {
+pub(crate) fn by_id<'a>(doc: &'a roxmltree::Document<'a>, id: &str) -> roxmltree::Node<'a, 'a> {
     doc.descendants()
         .find(|n| n.attribute("id") == Some(id))
         .unwrap_or_else(|| panic!("no element #{id}"))
 }
 
-fn number(node: roxmltree::Node, attribute: &str) -> f64 {
+pub(crate) fn number(node: roxmltree::Node, attribute: &str) -> f64 {
     node.attribute(attribute)
         .unwrap_or_else(|| panic!("no {attribute}"))
         .parse()
@@ -81,7 +81,7 @@ fn number(node: roxmltree::Node, attribute: &str) -> f64 {
 }
 
 /// "x1,y1 x2,y2 …" → the points.
-fn points(text: &str) -> Vec<Vector2<f64>> {
+pub(crate) fn points(text: &str) -> Vec<Vector2<f64>> {
     text.split_whitespace()
         .map(|pair| {
             let (x, y) = pair.split_once(',').unwrap();
@@ -115,13 +115,13 @@ fn arrow_ends(
 
 /// The drawing's map back to model coordinates, recovered from the two
 /// ground pivots A (0, 0) and D (l1, 0) alone: the scale, and y up.
-struct Readback {
-    a: Vector2<f64>,
-    scale: f64,
+pub(crate) struct Readback {
+    pub(crate) a: Vector2<f64>,
+    pub(crate) scale: f64,
 }
 
 impl Readback {
-    fn new(doc: &roxmltree::Document) -> Readback {
+    pub(crate) fn new(doc: &roxmltree::Document) -> Readback {
         let circle = |id| {
             let n = by_id(doc, id);
             Vector2::new(number(n, "cx"), number(n, "cy"))
@@ -134,13 +134,13 @@ impl Readback {
         }
     }
 
-    fn model(&self, p: Vector2<f64>) -> Vector2<f64> {
+    pub(crate) fn model(&self, p: Vector2<f64>) -> Vector2<f64> {
         Vector2::new((p.x - self.a.x) / self.scale, (self.a.y - p.y) / self.scale)
     }
 
     /// What a coordinate written to 0.01 px can be off by, in model units
     /// (the point's rounding and A's and D's).
-    fn tolerance(&self) -> f64 {
+    pub(crate) fn tolerance(&self) -> f64 {
         0.02 / self.scale
     }
 }
@@ -637,22 +637,22 @@ fn slider_crank() -> (Scene, Frame, Vec<Frame>) {
 
 /// A box on the screen.
 #[derive(Clone, Copy, Debug)]
-struct Box2 {
-    min: Vector2<f64>,
-    max: Vector2<f64>,
+pub(crate) struct Box2 {
+    pub(crate) min: Vector2<f64>,
+    pub(crate) max: Vector2<f64>,
 }
 
 /// A stroke on the screen: a segment and half its width.
 #[derive(Clone, Copy, Debug)]
-struct Stroke {
-    a: Vector2<f64>,
-    b: Vector2<f64>,
-    half: f64,
+pub(crate) struct Stroke {
+    pub(crate) a: Vector2<f64>,
+    pub(crate) b: Vector2<f64>,
+    pub(crate) half: f64,
 }
 
 /// Whether a stroke covers part of a box: its segment comes within half
 /// its width of the box.
-fn overlaps(s: &Stroke, r: &Box2) -> bool {
+pub(crate) fn overlaps(s: &Stroke, r: &Box2) -> bool {
     let to_box = |p: Vector2<f64>| (r.min - p).sup(&(p - r.max)).sup(&Vector2::zeros()).norm();
     let to_segment = |p: Vector2<f64>| {
         let ab = s.b - s.a;
@@ -699,25 +699,30 @@ fn overlaps(s: &Stroke, r: &Box2) -> bool {
     distance < s.half
 }
 
-/// The width of a label's text: DejaVu Serif italic's advances, about —
-/// capitals 0.75 em, subscript digits 0.42 em, the rest 0.58 em.
+/// The width of a label's text: DejaVu Sans oblique's advances, about —
+/// capitals 0.75 em, digits 0.64 em, subscript digits 0.42 em, the rest
+/// 0.6 em.
 fn text_width(text: &str, size: f64) -> f64 {
     text.chars()
         .map(|c| match c {
             'A'..='Z' => 0.75,
+            '0'..='9' => 0.64,
             '\u{2080}'..='\u{2089}' => 0.42,
-            _ => 0.58,
+            _ => 0.6,
         })
         .sum::<f64>()
         * size
 }
 
-/// Each label's name and box: anchored in its middle at (x, y), y the
-/// baseline; from the cap height (0.72 em above) to below the subscripts
-/// (0.22 em).
-fn label_boxes(doc: &roxmltree::Document) -> Vec<(String, Box2)> {
+/// Each label's name and box (the points' labels and the markers'):
+/// anchored in its middle at (x, y), y the baseline; from the cap height
+/// (0.72 em above) to below the subscripts (0.22 em).
+pub(crate) fn label_boxes(doc: &roxmltree::Document) -> Vec<(String, Box2)> {
     doc.descendants()
-        .filter(|n| n.has_tag_name("text") && n.attribute("class") == Some("label"))
+        .filter(|n| {
+            n.has_tag_name("text")
+                && matches!(n.attribute("class"), Some("label") | Some("marker-label"))
+        })
         .map(|n| {
             let text: String = n
                 .children()
@@ -741,7 +746,7 @@ fn label_boxes(doc: &roxmltree::Document) -> Vec<(String, Box2)> {
 
 /// The straight pieces of an SVG path (commands M, L, H, V, Z and their
 /// relative forms, as the scenes write them).
-fn path_segments(d: &str) -> Vec<(Vector2<f64>, Vector2<f64>)> {
+pub(crate) fn path_segments(d: &str) -> Vec<(Vector2<f64>, Vector2<f64>)> {
     let mut tokens = Vec::new();
     let mut word = String::new();
     for c in d.chars() {
@@ -828,7 +833,7 @@ fn half_width(n: roxmltree::Node) -> f64 {
 }
 
 /// The strokes of the links: bars and the edges of plates.
-fn link_strokes(doc: &roxmltree::Document) -> Vec<Stroke> {
+pub(crate) fn link_strokes(doc: &roxmltree::Document) -> Vec<Stroke> {
     let mut out = Vec::new();
     for n in doc
         .descendants()
@@ -895,7 +900,7 @@ fn arrow_strokes(doc: &roxmltree::Document) -> Vec<Stroke> {
 }
 
 /// Every label overlapping a link, hatching, an arrow or another label.
-fn label_collisions(svg: &str) -> Vec<String> {
+pub(crate) fn label_collisions(svg: &str) -> Vec<String> {
     let doc = parse(svg);
     let labels = label_boxes(&doc);
     let mut found = Vec::new();
@@ -947,7 +952,7 @@ fn labels_keep_clear_of_links_hatching_arrows_and_one_another() {
 
 /// Whether the element `later` comes after `earlier` in the document (is
 /// painted over it).
-fn painted_after(later: roxmltree::Node, earlier: roxmltree::Node) -> bool {
+pub(crate) fn painted_after(later: roxmltree::Node, earlier: roxmltree::Node) -> bool {
     later.range().start > earlier.range().start
 }
 

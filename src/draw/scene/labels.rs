@@ -1,15 +1,17 @@
-//! The points' names: each beside its point, at the nearest spot where its
-//! box keeps clear of everything drawn — bars and plates, slider blocks,
-//! ground symbols and hatched guides, arrows, traced paths, the points,
-//! the labels already placed — and inside the drawing's area (not on the
-//! title or the legend), nearer its own point than any other, so that it
-//! names the right one. Where no spot near the point is clear, the one
-//! that overlaps least.
+//! The points' names and the markers' labels: each beside its point, at
+//! the nearest spot where its box keeps clear of everything drawn — bars
+//! and plates, slider blocks, ground symbols and hatched guides, arrows,
+//! traced paths and curves, the joints of ghost poses, markers, notes,
+//! the points, the labels already placed — and inside the drawing's area
+//! (not on the heading or the legend), nearer its own point than any
+//! other, so that it names the right one. Where no spot near the point is
+//! clear, the one that overlaps least.
 
 use super::arrows::PointArrow;
 use super::geometry::{Capsule, Rect, point_to_segment};
 use super::layout::{Layout, Placed};
 use super::motion::Motion;
+use super::overlay::Overlay;
 use super::style;
 use super::symbols::{Guide, ground_extent};
 use super::{Scene, Shape, Slideway};
@@ -40,18 +42,18 @@ const NEARER: f64 = 3.0;
 /// Where the text's baseline lies below its box's centre, in em.
 const BASELINE: f64 = 0.25;
 
-/// Half a label's box (italic serif, `style::LABEL_SIZE` px): the text's
-/// width by the font's usual advances (capitals about 0.75 em, subscript
-/// digits 0.42 em, the rest 0.58 em), from the cap height (0.72 em above
-/// the baseline) to below the subscripts (0.22 em).
-fn label_half_size(text: &str) -> Vector2<f64> {
-    let size = style::LABEL_SIZE;
+/// Half a label's box (`style::FONT`, `size` px): the text's width by the
+/// font's usual advances, on the wide side (capitals about 0.75 em, digits
+/// 0.64 em, subscript digits 0.42 em, the rest 0.6 em), from the cap
+/// height (0.72 em above the baseline) to below the subscripts (0.22 em).
+fn label_half_size(text: &str, size: f64) -> Vector2<f64> {
     let ems: f64 = text
         .chars()
         .map(|c| match c {
             'A'..='Z' => 0.75,
+            '0'..='9' => 0.64,
             '\u{2080}'..='\u{2089}' => 0.42,
-            _ => 0.58,
+            _ => 0.6,
         })
         .sum();
     Vector2::new(ems * size / 2.0, 0.47 * size)
@@ -109,6 +111,7 @@ impl Scene {
         arrows: &[PointArrow],
         guides: &[Guide],
         traces: &[Vec<Vector2<f64>>],
+        overlay: &Overlay,
     ) -> Obstacles {
         let mut strokes = Vec::new();
         let mut polygons = Vec::new();
@@ -154,19 +157,38 @@ impl Scene {
                 strokes.push(stroke(pair[0], pair[1], style::TRACE_WIDTH / 2.0 + 0.5));
             }
         }
+        for (curve, points) in self.curves.iter().zip(&overlay.curves) {
+            for (a, b) in curve.segments(points) {
+                strokes.push(stroke(a, b, style::CURVE_WIDTH / 2.0 + 0.5));
+            }
+        }
+        // Of the ghost poses, only the joints: a label's white outline
+        // reads well over their faint bars, and keeping clear of those
+        // too would push labels far from their points.
+        for ghost in &overlay.ghosts {
+            for (_, p) in &ghost.points {
+                strokes.push(stroke(*p, *p, style::GHOST_JOINT_RADIUS + 1.0));
+            }
+        }
+        for (k, (set, points)) in self.markers.iter().zip(&overlay.markers).enumerate() {
+            let radius = marker_radius(set.look(k).size);
+            strokes.extend(points.iter().map(|p| stroke(*p, *p, radius)));
+        }
         for (_, p) in &at.points {
             strokes.push(stroke(*p, *p, style::JOINT_RADIUS + 1.0));
         }
-        let boxes = self
+        let mut boxes: Vec<Rect> = self
             .ground
             .iter()
             .map(|(name, _)| ground_extent(at.get(name)))
             .collect();
-        let top = if layout.title.is_some() {
-            style::MARGIN
-        } else {
-            4.0
-        };
+        boxes.extend(
+            self.notes
+                .iter()
+                .zip(&overlay.notes)
+                .map(|(note, p)| note.extent(*p)),
+        );
+        let top = layout.heading.bottom().map_or(4.0, |b| b + 8.0);
         Obstacles {
             strokes,
             boxes,
@@ -179,19 +201,28 @@ impl Scene {
     }
 
     /// Names beside the points (placed on the first frame; an animated
-    /// label keeps its offset from its point).
+    /// label keeps its offset from its point), then the markers' labels
+    /// beside their markers, each in its set's colour.
     pub(super) fn draw_labels(
         &self,
         w: &mut Writer,
         at: &Placed,
         motion: Option<&Motion>,
         obstacles: &Obstacles,
+        overlay: &Overlay,
     ) {
         let mut taken: Vec<Rect> = Vec::new();
+        // Every point a label might be taken to name.
+        let anchors: Vec<Vector2<f64>> = at
+            .points
+            .iter()
+            .map(|(_, p)| *p)
+            .chain(overlay.markers.iter().flatten().copied())
+            .collect();
         for (name, p) in &at.points {
             let text = textbook(name);
-            let half = label_half_size(&text);
-            let offset = best_offset(*p, half, &at.points, obstacles, &taken);
+            let half = label_half_size(&text, style::LABEL_SIZE);
+            let offset = best_offset(*p, style::JOINT_RADIUS, half, &anchors, obstacles, &taken);
             taken.push(Rect::centred(p + offset, half));
             let spot =
                 |q: Vector2<f64>| q + offset + Vector2::new(0.0, BASELINE * style::LABEL_SIZE);
@@ -222,28 +253,65 @@ impl Scene {
             w.text(&text);
             w.close("text");
         }
+        for (k, (set, points)) in self.markers.iter().zip(&overlay.markers).enumerate() {
+            let look = set.look(k);
+            for (i, p) in points.iter().enumerate() {
+                let Some(text) = set.label(i) else { continue };
+                let half = label_half_size(&text, style::NOTE_SIZE);
+                let radius = marker_radius(look.size);
+                let offset = best_offset(*p, radius, half, &anchors, obstacles, &taken);
+                taken.push(Rect::centred(p + offset, half));
+                let q = p + offset + Vector2::new(0.0, BASELINE * style::NOTE_SIZE);
+                w.open(
+                    "text",
+                    &[
+                        ("class", "marker-label"),
+                        ("data-set", &k.to_string()),
+                        ("x", &fmt(q.x)),
+                        ("y", &fmt(q.y)),
+                        ("text-anchor", "middle"),
+                        ("font-family", style::FONT),
+                        ("font-size", &fmt(style::NOTE_SIZE)),
+                        ("fill", &look.colour),
+                        ("stroke", "white"),
+                        ("stroke-width", "3"),
+                        ("stroke-linejoin", "round"),
+                        ("paint-order", "stroke"),
+                    ],
+                );
+                w.text(&text);
+                w.close("text");
+            }
+        }
     }
 }
 
-/// The offset from the point `p` of the centre of its label's box (of
-/// half size `half`): the nearest spot clear of the obstacles and the
-/// labels `taken`, and nearer `p` than the other `points`; else the
-/// clearest.
+/// How far from its centre a marker of half size `size` reaches (a
+/// diamond's corners, a cross's arms, with the outline).
+fn marker_radius(size: f64) -> f64 {
+    1.25 * size + 1.5
+}
+
+/// The offset from the point `p` (drawn `radius` round) of the centre of
+/// its label's box (of half size `half`): the nearest spot clear of the
+/// obstacles and the labels `taken`, and nearer `p` than the other
+/// `points`; else the clearest.
 fn best_offset(
     p: Vector2<f64>,
+    radius: f64,
     half: Vector2<f64>,
-    points: &[(String, Vector2<f64>)],
+    points: &[Vector2<f64>],
     obstacles: &Obstacles,
     taken: &[Rect],
 ) -> Vector2<f64> {
     // Every box tried lies within `reach` of `p`: what lies farther
     // cannot make a difference.
-    let reach = style::JOINT_RADIUS + GAPS[GAPS.len() - 1] + 2.0 * half.norm();
+    let reach = radius + GAPS[GAPS.len() - 1] + 2.0 * half.norm();
     let obstacles = obstacles.near(p, reach);
     // Points drawn on top of `p` cannot be told apart from it anyway.
     let others: Vec<Vector2<f64>> = points
         .iter()
-        .map(|(_, q)| *q)
+        .copied()
         .filter(|q| (2.0..2.0 * reach + NEARER + ENOUGH).contains(&(q - p).norm()))
         .collect();
     let mut best = (f64::NEG_INFINITY, Vector2::new(half.x + 6.0, -half.y - 6.0));
@@ -259,7 +327,7 @@ fn best_offset(
             let dir = Vector2::new(angle.cos(), -angle.sin());
             // From the box's centre to its edge along `dir`.
             let to_edge = (half.x / dir.x.abs()).min(half.y / dir.y.abs());
-            let offset = dir * (style::JOINT_RADIUS + gap + to_edge);
+            let offset = dir * (radius + gap + to_edge);
             let r = Rect::centred(p + offset, half);
             // Less clear than this, the spot cannot beat the best.
             let floor = best.0 + FARTHER * gap;

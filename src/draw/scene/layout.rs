@@ -2,9 +2,10 @@
 //! arrows' scales, and the screen positions of the points.
 
 use super::arrow_kind::Kind;
+use super::heading::Heading;
 use super::style;
 use super::{Frame, Scene, SceneError, finite, resolve};
-use crate::draw::svg::{Writer, fmt, nice_below};
+use crate::draw::svg::{Writer, nice_below};
 use nalgebra::Vector2;
 
 impl Scene {
@@ -14,6 +15,7 @@ impl Scene {
         frames: &[Frame],
         cycle: &[Frame],
         title: Option<&str>,
+        subtitle: Option<&str>,
     ) -> Result<Layout, SceneError> {
         if !(200.0..=20_000.0).contains(&self.width) {
             return Err(SceneError::BadSetting {
@@ -44,12 +46,13 @@ impl Scene {
                 });
             }
         }
+        self.check_overlay()?;
         let lookup = |frame: &Frame, name: &str| -> Result<Vector2<f64>, SceneError> {
             resolve(frame, name, &self.ground)
         };
-        // The mechanism (arrows excluded) as drawn.
+        // The mechanism (arrows excluded) as drawn, its ghost poses too.
         let mut bounds = Bounds::default();
-        for frame in frames {
+        for frame in frames.iter().chain(&self.ghosts) {
             for name in self.names() {
                 bounds.add(lookup(frame, name)?);
             }
@@ -67,6 +70,10 @@ impl Scene {
             {
                 bounds.add(lookup(frame, name)?);
             }
+        }
+        // The markers, the curves, the notes.
+        for p in self.overlay_points() {
+            bounds.add(p);
         }
         if bounds.is_empty() {
             for frame in frames {
@@ -118,11 +125,13 @@ impl Scene {
             } else {
                 self.traces.len()
             }
+            + self.curves.iter().filter(|c| !c.name().is_empty()).count()
+            + self.markers.iter().filter(|m| !m.name().is_empty()).count()
             + 1;
         Ok(Layout::fit(
             &bounds,
             self.width,
-            title,
+            Heading::new(title, subtitle, self.width),
             legend_lines,
             velocity_scale,
             acceleration_scale,
@@ -280,7 +289,7 @@ pub(super) struct Layout {
     pub(super) width: f64,
     pub(super) height: f64,
     pub(super) legend_top: f64,
-    pub(super) title: Option<String>,
+    pub(super) heading: Heading,
     pub(super) velocity_scale: f64,
     pub(super) acceleration_scale: f64,
 }
@@ -289,7 +298,7 @@ impl Layout {
     fn fit(
         bounds: &Bounds,
         width: f64,
-        title: Option<&str>,
+        heading: Heading,
         legend_lines: usize,
         velocity_scale: f64,
         acceleration_scale: f64,
@@ -303,7 +312,8 @@ impl Layout {
         // Not taller than wide by more than 1.4: a tall mechanism is drawn
         // smaller.
         let scale = (inner / size.x).min(1.4 * inner / size.y);
-        let top = style::MARGIN + if title.is_some() { 34.0 } else { 0.0 };
+        // Under the heading's last line as under a title of one line.
+        let top = heading.bottom().map_or(style::MARGIN, |b| b + 42.0);
         let drawing = size.y * scale;
         // Room under the drawing for the ground symbols, then the legend.
         let legend_top = top + drawing + style::GROUND_HEIGHT + 50.0;
@@ -317,7 +327,7 @@ impl Layout {
             width,
             height,
             legend_top,
-            title: title.map(String::from),
+            heading,
             velocity_scale,
             acceleration_scale,
         }
@@ -332,28 +342,14 @@ impl Layout {
         )
     }
 
-    /// The document, its background and its title, if any.
+    /// The document, its background and its heading, if any.
     pub(super) fn open(&self) -> Writer {
         let mut w = Writer::svg(self.width, self.height);
         w.element(
             "rect",
             &[("width", "100%"), ("height", "100%"), ("fill", "white")],
         );
-        if let Some(title) = &self.title {
-            w.open(
-                "text",
-                &[
-                    ("x", &fmt(self.width / 2.0)),
-                    ("y", &fmt(style::MARGIN - 8.0)),
-                    ("text-anchor", "middle"),
-                    ("font-family", style::FONT),
-                    ("font-size", "17"),
-                    ("fill", style::INK),
-                ],
-            );
-            w.text(title);
-            w.close("text");
-        }
+        self.heading.draw(&mut w, self.width);
         w
     }
 }

@@ -1,15 +1,18 @@
 //! The legend under the drawing: an entry per kind of arrow (with its
-//! scale) and per traced path, each with a swatch drawn exactly as what it
-//! describes, then a scale bar.
+//! scale), per traced path, per named curve and per named set of markers,
+//! each with a swatch drawn exactly as what it describes, then a scale
+//! bar.
 //!
 //! Each entry is a group `class="legend-entry"` whose `data-for` names what
 //! it describes: the class of the arrows (`velocity`, `acceleration`) or
-//! the id of the traced path (`trace-A`).
+//! the id of the traced path (`trace-A`), the curve (`curve-0`) or the set
+//! of markers (`markers-0`).
 
 use super::Scene;
 use super::arrow_kind::Kind;
 use super::arrows::Arrow;
 use super::layout::{Layout, number};
+use super::markers::marker_symbol;
 use super::style;
 use crate::draw::svg::{Writer, fmt, nice_below, scale_bar};
 use linkage_symbolic::names::textbook;
@@ -101,6 +104,53 @@ impl Scene {
                 y,
                 &format!("path of {} over the cycle", textbook(name)),
             );
+            w.close("g");
+            y += style::LEGEND_LINE;
+        }
+        for (k, curve) in self.curves.iter().enumerate() {
+            if curve.name().is_empty() {
+                continue;
+            }
+            let look = curve.look(k);
+            w.open(
+                "g",
+                &[
+                    ("class", "legend-entry"),
+                    ("data-for", &format!("curve-{k}")),
+                ],
+            );
+            let (x1, x2, level) = (fmt(x), fmt(x + SWATCH), fmt(y - 4.0));
+            let width = fmt(style::CURVE_WIDTH);
+            let mut swatch = vec![
+                ("class", "swatch"),
+                ("x1", x1.as_str()),
+                ("y1", level.as_str()),
+                ("x2", x2.as_str()),
+                ("y2", level.as_str()),
+                ("stroke", look.colour.as_str()),
+                ("stroke-width", width.as_str()),
+            ];
+            if !look.dashes.is_empty() {
+                swatch.push(("stroke-dasharray", look.dashes.as_str()));
+            }
+            w.element("line", &swatch);
+            legend_text(w, x + SWATCH + 10.0, y, curve.name());
+            w.close("g");
+            y += style::LEGEND_LINE;
+        }
+        for (k, set) in self.markers.iter().enumerate() {
+            if set.name().is_empty() {
+                continue;
+            }
+            w.open(
+                "g",
+                &[
+                    ("class", "legend-entry"),
+                    ("data-for", &format!("markers-{k}")),
+                ],
+            );
+            marker_symbol(w, Vector2::new(x + SWATCH / 2.0, y - 4.0), &set.look(k));
+            legend_text(w, x + SWATCH + 10.0, y, set.name());
             w.close("g");
             y += style::LEGEND_LINE;
         }

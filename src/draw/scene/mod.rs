@@ -52,23 +52,79 @@
 //! one another moved apart sideways; each traced path in its own colour
 //! and dash pattern; labels where they overlap nothing drawn.
 //!
+//! Besides the pose, a scene draws what a design is judged against, in
+//! the mechanism's plane: [`Markers`] at fixed points (a synthesis's
+//! targets, numbered), [`Curve`]s through given points (a second design's
+//! coupler curve, a desired path), other poses of the mechanism drawn
+//! faint behind it ([`Scene::ghosts`]), and notes ([`Scene::note`]); a
+//! [`Sheet`] sets several pictures side by side under one title:
+//!
+//! ```
+//! use linkage::draw::scene::{Curve, Frame, Markers, Scene, Sheet};
+//! use linkage::mechanisms::CouplerFourBar;
+//! use linkage::prelude::*;
+//! use std::f64::consts::TAU;
+//!
+//! let design = CouplerFourBar::WORKSHEET;
+//! let drive = Drive::Line { from: vector![0.0], to: vector![TAU], steps: 60 };
+//! let sweep = design.sweep(&vector![1.3, -0.8], &drive, &SweepOptions::default())?;
+//! let turn: Vec<Frame> = sweep.poses.iter().map(|p| Frame::from_sweep_pose(&design, p)).collect();
+//! let targets = [[25.0, 12.0], [10.0, 35.0], [-5.0, 20.0]];
+//! let scene = Scene::new()
+//!     .ground("A", [0.0, 0.0])
+//!     .ground("D", [80.0, 0.0])
+//!     .link(["A", "B"])
+//!     .plate(["B", "C", "P"])
+//!     .link(["C", "D"])
+//!     .trace(["P"])
+//!     .markers(Markers::new("targets", targets).numbered())
+//!     .curve(Curve::new("desired path", [[-10.0, 10.0], [30.0, 40.0]]))
+//!     .ghosts(&[turn[15].clone(), turn[30].clone()])
+//!     .note([40.0, -10.0], "ground link")
+//!     .title("The worksheet's four-bar")
+//!     .subtitle("its coupler's midpoint against three targets")
+//!     .width(400.0);
+//! let picture = scene.render(&turn[0], &turn)?;
+//! let sheet = Sheet::new("Two poses")
+//!     .picture(picture)
+//!     .picture(scene.render(&turn[45], &turn)?)
+//!     .render()?;
+//! assert_eq!(sheet.matches("<svg").count(), 3);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
 //! The area's files: the description (here: [`Scene`], [`Frame`], the
 //! checks), the layout (`layout.rs`: the scale, the arrows' scales, the
-//! screen positions), the look (`style.rs`), the drawing symbols
-//! (`symbols.rs`: traces, guides, links, sliders, points, ground), the
-//! arrows (`arrows.rs`), the labels (`labels.rs`, on `geometry.rs`), the
-//! legend (`legend.rs`) and the animation (`animation.rs`).
+//! screen positions; `heading.rs`: the title and subtitle), the look
+//! (`style.rs`, `colour.rs`), the drawing symbols (`symbols.rs`: traces,
+//! guides, links, sliders, points, ground), the arrows (`arrows.rs`), what
+//! is drawn in the plane besides the pose (`overlay.rs`: `markers.rs`,
+//! `curves.rs`, `ghosts.rs`, `notes.rs`), the labels (`labels.rs`, on
+//! `geometry.rs`), the legend (`legend.rs`), the animation
+//! (`animation.rs`) and the sheet of pictures (`sheet.rs`).
 
 mod animation;
 mod arrow_kind;
 mod arrows;
+mod colour;
+mod curves;
 mod geometry;
+mod ghosts;
+mod heading;
 mod labels;
 mod layout;
 mod legend;
+mod markers;
 mod motion;
+mod notes;
+mod overlay;
+mod sheet;
 mod style;
 mod symbols;
+
+pub use curves::Curve;
+pub use markers::{MarkerShape, Markers};
+pub use sheet::Sheet;
 
 use crate::error::{NameKind, UnknownName};
 use crate::ground::Ground;
@@ -97,6 +153,47 @@ pub enum SceneError {
     /// The scene names a point that neither the frame nor the scene's
     /// ground pivots define.
     UnknownName(UnknownName),
+    /// A point of a set of markers or of a curve (`what`), named `name`,
+    /// is NaN or infinite: the point at `index` (counted from 0) of those
+    /// given.
+    NonFinitePoint {
+        what: &'static str,
+        name: String,
+        index: usize,
+    },
+    /// A set of markers without markers, or a curve of fewer than two
+    /// points.
+    TooFewPoints {
+        what: &'static str,
+        name: String,
+        points: usize,
+        least: usize,
+    },
+    /// A set of markers given a number of labels other than its number
+    /// of markers.
+    LabelCount {
+        name: String,
+        markers: usize,
+        labels: usize,
+    },
+    /// A colour given is not one SVG understands.
+    BadColour { what: &'static str, colour: String },
+    /// A sheet was asked for without pictures.
+    EmptySheet,
+    /// The picture at `index` (counted from 0) of a sheet is not an SVG
+    /// document with its width and height in pixels.
+    NotAPicture { index: usize },
+    /// Text of `font` px on a sheet `width` px wide would print at
+    /// `printed` pt with the sheet printed 16 cm wide, smaller than `least`
+    /// (7 pt, 5.5 pt for subscripts and superscripts): in the picture at
+    /// `picture` (counted from 0), or in the sheet's own heading if `None`.
+    TextTooSmall {
+        picture: Option<usize>,
+        font: f64,
+        width: f64,
+        printed: f64,
+        least: f64,
+    },
 }
 
 crate::error::error_impls! {
@@ -105,7 +202,14 @@ crate::error::error_impls! {
         Self::NonFinite { name, what } => ("the {what} of `{name}` is not finite"),
         Self::TooFewFrames { frames } => ("an animation needs at least two frames, got {frames}"),
         Self::BadSetting { value, what, must } => ("{what} must be {must}, got {value}"),
-            Self::UnknownName(inner) => ("{inner}"),
+        Self::UnknownName(inner) => ("{inner}"),
+        Self::NonFinitePoint { what, name, index } => ("point {index} (from 0) of the {what} `{name}` is not finite"),
+        Self::TooFewPoints { what, name, points, least } => ("the {what} `{name}` has {points} points, fewer than {least}"),
+        Self::LabelCount { name, markers, labels } => ("the set of markers `{name}` has {markers} markers but {labels} labels"),
+        Self::BadColour { what, colour } => ("the colour of {what} must be one SVG understands (#rrggbb, a name, rgb(…)), got `{colour}`"),
+        Self::EmptySheet => ("a sheet needs at least one picture"),
+        Self::NotAPicture { index } => ("picture {index} (from 0) of the sheet is not an SVG document with its width and height in pixels"),
+        Self::TextTooSmall { picture, font, width, printed, least } => ("{} has text of {font} px, which on a sheet {width} px wide printed 16 cm wide is {printed:.1} pt, below {least} pt: draw the pictures narrower", match picture { Some(k) => format!("picture {k} (from 0)"), None => "the sheet's heading".to_string() }),
     }
     wraps { UnknownName(UnknownName) }
 }
@@ -114,9 +218,13 @@ crate::error::error_impls! {
 /// and accelerations (in the model's length and time units).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Frame {
+    /// The points' names, in the model's order.
     pub names: Vec<String>,
+    /// Each point's position.
     pub positions: Vec<Vector2<f64>>,
+    /// Each point's velocity, if known.
     pub velocities: Option<Vec<Vector2<f64>>>,
+    /// Each point's acceleration, if known.
     pub accelerations: Option<Vec<Vector2<f64>>>,
 }
 
@@ -207,7 +315,7 @@ impl Frame {
 }
 
 /// A body of the mechanism: a bar between two points or a plate over three
-
+/// or more.
 #[derive(Clone, Debug, PartialEq)]
 enum Shape {
     Bar([String; 2]),
@@ -235,6 +343,9 @@ enum Slideway {
     Slot,
 }
 
+/// What a picture of a mechanism shows (see the [module](self)): built
+/// up by its methods, then drawn from a [`Frame`] by [`Scene::render`] or
+/// through a cycle of frames by [`Scene::animate`].
 #[derive(Clone, Debug, PartialEq)]
 pub struct Scene {
     ground: Vec<(String, Vector2<f64>)>,
@@ -245,8 +356,13 @@ pub struct Scene {
     velocity_scale: Option<f64>,
     acceleration_scale: Option<f64>,
     traces: Vec<String>,
+    markers: Vec<Markers>,
+    curves: Vec<Curve>,
+    ghosts: Vec<Frame>,
+    notes: Vec<notes::Note>,
     labels: bool,
     title: Option<String>,
+    subtitle: Option<String>,
     animation_title: Option<String>,
     length_unit: String,
     time_unit: String,
@@ -271,8 +387,13 @@ impl Scene {
             velocity_scale: None,
             acceleration_scale: None,
             traces: Vec::new(),
+            markers: Vec::new(),
+            curves: Vec::new(),
+            ghosts: Vec::new(),
+            notes: Vec::new(),
             labels: true,
             title: None,
+            subtitle: None,
             animation_title: None,
             length_unit: "mm".into(),
             time_unit: "s".into(),
@@ -391,6 +512,14 @@ impl Scene {
         self
     }
 
+    /// A line under the still picture's title ([`Scene::title`]), in
+    /// smaller type: what the reader should look at, the design's
+    /// numbers. (Each of the two is wrapped to the picture's width.)
+    pub fn subtitle(mut self, subtitle: &str) -> Scene {
+        self.subtitle = Some(subtitle.into());
+        self
+    }
+
     /// A title above the animation ([`Scene::animate`]), which shows a
     /// whole cycle (so it should not name a pose); none if not set.
     pub fn animation_title(mut self, title: &str) -> Scene {
@@ -406,7 +535,9 @@ impl Scene {
     }
 
     /// The picture's width in pixels, 200 to 20 000 (the height follows
-    /// the mechanism).
+    /// the mechanism). Its smallest text is 13 px, so on a [`Sheet`]
+    /// printed 16 cm wide two pictures side by side keep it at 7 pt up to
+    /// 409 px each.
     pub fn width(mut self, pixels: f64) -> Scene {
         self.width = pixels;
         self
@@ -419,10 +550,18 @@ impl Scene {
     /// animation share their scales.
     pub fn render(&self, frame: &Frame, cycle: &[Frame]) -> Result<String, SceneError> {
         let frames = std::slice::from_ref(frame);
-        let layout = self.layout(frames, cycle, self.title.as_deref())?;
+        let layout = self.layout(
+            frames,
+            cycle,
+            self.title.as_deref(),
+            self.subtitle.as_deref(),
+        )?;
         let mut w = layout.open();
+        let overlay = self.overlay(&layout)?;
+        self.draw_ghosts(&mut w, &overlay.ghosts);
         let traces = self.trace_paths(&layout, cycle)?;
         self.draw_traces(&mut w, &traces);
+        self.draw_curves(&mut w, &overlay.curves);
         let guides = self.guides(&layout, frames, cycle)?;
         for guide in &guides {
             guide_symbol(&mut w, guide);
@@ -435,11 +574,13 @@ impl Scene {
         self.draw_links(&mut w, &placed, None);
         self.draw_sliders(&mut w, &placed, None);
         self.draw_points(&mut w, &placed, None);
+        self.draw_markers(&mut w, &overlay.markers);
         self.draw_arrows(&mut w, &layout, frame, None)?;
+        self.draw_notes(&mut w, &overlay.notes);
         if self.labels {
             let arrows = self.arrows(&layout, frame)?;
-            let obstacles = self.obstacles(&layout, &placed, &arrows, &guides, &traces);
-            self.draw_labels(&mut w, &placed, None, &obstacles);
+            let obstacles = self.obstacles(&layout, &placed, &arrows, &guides, &traces, &overlay);
+            self.draw_labels(&mut w, &placed, None, &obstacles, &overlay);
         }
         self.draw_legend(&mut w, &layout, !cycle.is_empty());
         Ok(w.finish())

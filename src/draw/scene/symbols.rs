@@ -6,7 +6,7 @@ use super::geometry::{Capsule, Rect};
 use super::layout::{Layout, Placed};
 use super::motion::Motion;
 use super::style;
-use super::{Frame, Scene, SceneError, Shape, Slideway, resolve};
+use super::{Frame, Scene, SceneError, Shape, Slider, Slideway, resolve};
 use crate::draw::svg::{Writer, fmt};
 use nalgebra::Vector2;
 use std::fmt::Write as _;
@@ -215,14 +215,7 @@ impl Scene {
                     ],
                 );
             }
-            // The block's angle on the screen (y points down there).
-            let degrees = |f: &Placed| match &slider.guide {
-                Slideway::Link([a, b]) => {
-                    let d = f.get(b) - f.get(a);
-                    d.y.atan2(d.x).to_degrees()
-                }
-                _ => -slider.angle.rem_euclid(std::f64::consts::TAU).to_degrees(),
-            };
+            let degrees = |f: &Placed| block_degrees(slider, f);
             w.open(
                 "g",
                 &[("transform", &format!("rotate({})", fmt(degrees(at))))],
@@ -314,6 +307,18 @@ impl Scene {
             }
             w.close("circle");
         }
+    }
+}
+
+/// A slider block's angle on the screen, in degrees (y points down
+/// there): its guide's, or that of the link it slides on.
+pub(super) fn block_degrees(slider: &Slider, at: &Placed) -> f64 {
+    match &slider.guide {
+        Slideway::Link([a, b]) => {
+            let d = at.get(b) - at.get(a);
+            d.y.atan2(d.x).to_degrees()
+        }
+        _ => -slider.angle.rem_euclid(std::f64::consts::TAU).to_degrees(),
     }
 }
 
