@@ -34,8 +34,6 @@ mod tasks;
 
 #[path = "../support/output.rs"]
 mod output;
-#[path = "../support/page.rs"]
-mod page;
 
 use linkage::mechanisms::{CouplerFourBar, FourBar};
 use linkage::prelude::*;

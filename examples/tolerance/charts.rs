@@ -193,7 +193,7 @@ pub fn importance(four_bar: &CycleStudy, shaper: &ShaperStudy) -> Result<String,
                 (*n, value)
             })
             .collect();
-        four = four.group(&located.name, &share(&pairs));
+        four = four.group(located.name, &share(&pairs));
     }
     const SHAPER: [&str; 4] = ["l_oa", "l_cd", "y_c", "y_f"];
     let shaper_names: Vec<String> = SHAPER.iter().map(|n| shown(n)).collect();
@@ -213,7 +213,7 @@ pub fn importance(four_bar: &CycleStudy, shaper: &ShaperStudy) -> Result<String,
                 (*n, value)
             })
             .collect();
-        machine = machine.group(&located.name, &share(&kept));
+        machine = machine.group(located.name, &share(&kept));
     }
     Chart::new(
         "Which dimension matters most: each one's share of the linear worst case Σ|∂y/∂p_i| t_i",

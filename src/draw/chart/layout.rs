@@ -295,9 +295,23 @@ fn ink_of(panel: &Panel, frame: &Frame, look: &dyn Fn(&Series) -> Look) -> Vec<V
         drawn.push(vec![(x, t), (x, b)]);
     }
     for ((x, y), note) in &panel.notes {
+        // Its box, wrapped as it is drawn.
         let p = frame.to_page((*x, *y));
         let size = points::TICK * frame.px;
-        drawn.push(vec![p, (p.0 + text::width(note, size), p.1)]);
+        let room = (r - p.0 - 2.0 * frame.px).max(4.0 * size);
+        let lines = text::wrap(note, size, room);
+        let wide = lines
+            .iter()
+            .map(|l| text::width(l, size))
+            .fold(0.0, f64::max);
+        let low = p.1 + 1.25 * size * (lines.len() as f64 - 1.0);
+        drawn.push(vec![
+            (p.0, p.1 - size),
+            (p.0 + wide, p.1 - size),
+            (p.0 + wide, low),
+            (p.0, low),
+            (p.0, p.1 - size),
+        ]);
     }
     for series in &panel.series {
         let page = |points: &[(f64, f64)]| -> Vec<(f64, f64)> {

@@ -221,15 +221,20 @@ pub(crate) fn draw(w: &mut Writer, panel: &Panel, cell: &Cell, look: &dyn Fn(&Se
         );
     }
     for ((x, y), note) in &panel.notes {
+        // Wrapped to the room right of where it starts.
         let p = frame.to_page((*x, *y));
-        write_text(
-            w,
-            p,
-            note,
-            tick_font,
-            "start",
-            &[("fill", "#333333"), ("class", "note")],
-        );
+        let room = (r - p.0 - 2.0 * px).max(4.0 * tick_font);
+        for (k, line) in text::wrap(note, tick_font, room).iter().enumerate() {
+            let at = (p.0, p.1 + 1.25 * tick_font * k as f64);
+            write_text(
+                w,
+                at,
+                line,
+                tick_font,
+                "start",
+                &[("fill", "#333333"), ("class", "note")],
+            );
+        }
     }
     // The axes, their ticks and labels.
     let axis_width = fmt(points::AXIS * px);

@@ -9,8 +9,21 @@ use crate::draw::svg::Run;
 /// "J_II(φ)", "dJ_II/dφ", "ω_1". Digits and the letters that Unicode has
 /// subscripts of become those (ω₁), as in the scenes' G₂; any other, a
 /// smaller run lowered by a third of the font (which every SVG viewer
-/// draws). A `_` with nothing after it is the text's own.
+/// draws). A `_` with nothing after it, or written `\\_`, is the text's
+/// own (`max\\_solutions`).
 pub(crate) fn runs(text: &str, size: f64) -> Vec<Run> {
+    let mut runs = subscripted(&text.replace("\\_", LITERAL), size);
+    for run in &mut runs {
+        run.text = run.text.replace(LITERAL, "_");
+    }
+    runs
+}
+
+/// What stands for an escaped `_` while the subscripts are found (a
+/// private-use character).
+const LITERAL: &str = "\u{E000}";
+
+fn subscripted(text: &str, size: f64) -> Vec<Run> {
     let mut parts = text.split('_');
     let mut runs = vec![plain(parts.next().unwrap_or(""))];
     let drop = 0.3 * size;
@@ -215,6 +228,7 @@ mod tests {
         assert_eq!(shown("a_b_c"), "abc");
         assert_eq!(text(&runs("x_ y", 10.0)), [("x_ y", 0.0, None)]);
         assert_eq!(shown("θ_4"), "θ₄");
+        assert_eq!(shown("max\\_solutions 1"), "max_solutions 1");
         assert_eq!(
             text(&runs("F_y [N]", 10.0)),
             [

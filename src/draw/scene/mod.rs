@@ -229,6 +229,12 @@ pub struct Frame {
 }
 
 impl Frame {
+    /// The position of the point `name`, if the frame has it.
+    pub fn position(&self, name: &str) -> Option<Vector2<f64>> {
+        let k = self.names.iter().position(|n| n == name)?;
+        self.positions.get(k).copied()
+    }
+
     /// The points of a whole analysis ([`Linkage::analyze`]) of `model`
     /// (which names the points).
     pub fn from_analysis<L: Linkage<M, F>, const M: usize, const F: usize>(
