@@ -109,6 +109,7 @@
 
 extern crate self as linkage;
 
+pub mod assembly;
 pub mod batch;
 pub mod cam;
 pub mod closed_form;

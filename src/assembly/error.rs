@@ -1,0 +1,61 @@
+//! Why a search for the assemblies, or the pick of one, failed.
+
+use crate::error::UnknownName;
+use crate::runtime::Error;
+
+/// Why the assemblies could not be found, or no single one picked.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum AssemblyError {
+    /// An argument is not finite, or a setting of the [`Search`](super::Search)
+    /// is out of its range.
+    Input(Error),
+    /// The search met no real solution of Ψ(u, v) = 0: the mechanism
+    /// cannot be assembled at this driver value (its links cannot close).
+    /// The angles were searched over a whole turn, the lengths between
+    /// `lower` and `upper` (the angles' entries there are −π and π);
+    /// `least_residual` is the smallest scale-free residual
+    /// max |Ψᵢ|/sᵢ that Newton's runs reached (sᵢ the size of equation i,
+    /// [`Modes::equation_sizes`](super::Modes::equation_sizes)): how far
+    /// from closing the mechanism came.
+    NoAssembly {
+        v: Vec<f64>,
+        lower: Vec<f64>,
+        upper: Vec<f64>,
+        least_residual: f64,
+    },
+    /// A pick among assemblies none of which is regular: the mechanism is
+    /// at a dead centre (Ψ_u singular), where two assemblies meet and
+    /// cannot be told apart.
+    AtDeadCentre { dead_centres: usize },
+    /// [`Pick::Index`](super::Pick::Index) beyond the modes found.
+    IndexOutOfRange { index: usize, modes: usize },
+    /// No mode satisfies the pick (`pick` says which, in words).
+    NoMatch { pick: String },
+    /// More than one mode satisfies the pick, or two are equally near the
+    /// sketch: `modes` are their indices.
+    Ambiguous { pick: String, modes: Vec<usize> },
+    /// A point the model does not have.
+    UnknownName(UnknownName),
+}
+
+crate::error::error_impls! {
+    AssemblyError {
+        Self::Input(inner) => ("{inner}"),
+        Self::NoAssembly { v, lower, upper, least_residual } => (
+            "the mechanism cannot be assembled at v = {v:?}: no real solution of Ψ(u, v) = 0 \
+             with the angles over a whole turn and the lengths in [{lower:?}, {upper:?}] \
+             (the closest it came leaves a scale-free residual of {least_residual:.3e})"
+        ),
+        Self::AtDeadCentre { dead_centres } => (
+            "the mechanism is at a dead centre: {dead_centres} singular assemblies (Ψ_u singular) \
+             and no regular one, so no mode can be picked"
+        ),
+        Self::IndexOutOfRange { index, modes } => ("mode {index} asked for, but there are {modes} modes"),
+        Self::NoMatch { pick } => ("no mode is {pick}"),
+        Self::Ambiguous { pick, modes } => ("the modes {modes:?} are all {pick}: say which"),
+        Self::UnknownName(inner) => ("{inner}"),
+    }
+    wraps { UnknownName(UnknownName) }
+    sources { Input(Error) }
+}
