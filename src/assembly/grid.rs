@@ -7,8 +7,8 @@
 
 use super::newton::{BlockSystem, Run};
 use super::settings::Search;
-use crate::runtime::Linkage;
-use nalgebra::{DMatrix, SVector};
+use crate::runtime::{Linkage, invert};
+use nalgebra::SVector;
 use std::f64::consts::{PI, TAU};
 
 /// Two roots are one if their coordinates differ by less than this (in
@@ -17,9 +17,9 @@ const SAME_ROOT: f64 = 1e-8;
 /// ... or by less than this where either is singular: a double root is
 /// located only to about √ε, from either side.
 const SAME_SINGULAR_ROOT: f64 = 1e-5;
-/// A root of a block whose Jacobian (scale-free) has a reciprocal condition
-/// number below this is singular: a dead centre, or within about this of
-/// one.
+/// A root of a block whose Jacobian (scale-free, its columns equilibrated)
+/// has a reciprocal condition number below this is singular: a dead
+/// centre, or within about this of one.
 pub(crate) const SINGULAR_RCOND: f64 = 1e-6;
 
 /// The roots of a block, and how the search for them went.
@@ -39,20 +39,6 @@ pub(crate) struct BlockRoots<const M: usize> {
 struct Found<const M: usize> {
     u: SVector<f64, M>,
     singular: bool,
-}
-
-/// The reciprocal condition number of a square matrix in the 1-norm,
-/// 0 if singular.
-pub(crate) fn rcond(a: &DMatrix<f64>) -> f64 {
-    let norm = |m: &DMatrix<f64>| {
-        m.column_iter()
-            .map(|c| c.iter().map(|x| x.abs()).sum::<f64>())
-            .fold(0.0, f64::max)
-    };
-    match a.clone().try_inverse() {
-        Some(inverse) if inverse.iter().all(|x| x.is_finite()) => 1.0 / (norm(a) * norm(&inverse)),
-        _ => 0.0,
-    }
 }
 
 impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> BlockSystem<'_, L, M, F> {
@@ -153,7 +139,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> BlockSystem<'_, 
     fn record(&self, found: &mut Vec<Found<M>>, run: Run<M>) -> Option<usize> {
         let u = run.root?;
         let (_, j) = self.evaluate(&u)?;
-        let singular = rcond(&j) < SINGULAR_RCOND;
+        let singular = invert(&j).rcond < SINGULAR_RCOND;
         let close = |f: &Found<M>| {
             let tolerance = if singular || f.singular {
                 SAME_SINGULAR_ROOT

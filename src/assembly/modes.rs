@@ -1,11 +1,11 @@
 //! What the search found: the assembly modes, each with its branch signs,
 //! the singular assemblies apart, and how the search went.
 
-use super::grid::{SINGULAR_RCOND, rcond};
+use super::grid::SINGULAR_RCOND;
 use super::scale::Scale;
 use super::structure::Block;
-use crate::runtime::{Linkage, determinant};
-use nalgebra::{DMatrix, SVector, Vector2};
+use crate::runtime::{Linkage, determinant, invert};
+use nalgebra::{DMatrix, SMatrix, SVector, Vector2};
 use std::cmp::Ordering;
 
 /// The sign of a determinant.
@@ -61,8 +61,8 @@ pub struct Mode<const M: usize> {
     /// The sign of det Ψ_u.
     pub determinant: Sign,
     /// The reciprocal condition number of Ψ_u, its rows divided by the
-    /// equations' sizes and its columns by the coordinates' units (see
-    /// [`Modes::unit`]).
+    /// equations' sizes and its columns equilibrated
+    /// ([`Inverse::rcond`](crate::Inverse::rcond)).
     pub rcond: f64,
     /// The scale-free residual max |Ψᵢ|/sᵢ (sᵢ: [`Modes::equation_sizes`]).
     pub residual: f64,
@@ -150,10 +150,8 @@ pub(crate) fn classify<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize
 ) -> Classified<M> {
     let u = scale.wrapped(&u);
     let (psi, psi_u) = model.psi_and_psi_u(&u, v);
-    let scaled = DMatrix::from_fn(M, M, |i, j| {
-        psi_u[(i, j)] * scale.unit(j) / scale.equations[i]
-    });
-    let rcond = rcond(&scaled);
+    let scaled = SMatrix::<f64, M, M>::from_fn(|i, j| psi_u[(i, j)] / scale.equations[i]);
+    let rcond = invert(&scaled).rcond;
     let residual = scale.residual(&psi);
     let points = model.point_positions(&u, v).as_ref().to_vec();
     if rcond < SINGULAR_RCOND {

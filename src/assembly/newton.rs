@@ -5,7 +5,9 @@
 //!
 //! Everything is scale-free: equation i is divided by its size sᵢ, and
 //! coordinate j measured in its unit (radians for an angle, the box's
-//! half-width for a length).
+//! half-width for a length). A block of d equations is carried in the
+//! first d entries of m-vectors, its Jacobian padded with the identity to
+//! m × m: no allocation, and the padding's steps are zero.
 //!
 //! Deflation (Farrell, Birkisson and Funke, 2015): Newton's method on
 //! G(x) = m(x)·Ψ(x), m(x) = Πₖ (1/‖x − xₖ‖² + 1) over the known roots xₖ,
@@ -16,15 +18,18 @@
 use super::scale::{Scale, wrap};
 use super::structure::Block;
 use crate::runtime::Linkage;
-use nalgebra::{DMatrix, DVector, SVector};
+use nalgebra::{SMatrix, SVector};
 
-/// Damped steps before a run is given up.
+/// Damped steps before a run is given up...
 const MAX_STEPS: usize = 50;
+/// ... or, with roots deflated, this many: a root deflation leads to is
+/// near, and once every root is known the run only wanders.
+const MAX_DEFLATED_STEPS: usize = 20;
 /// The scale-free residual at which the damped iteration hands over to
 /// the polish.
 const CLOSE: f64 = 1e-10;
 /// The scale-free residual a root must have once polished.
-pub(crate) const ROOT_RESIDUAL: f64 = 1e-12;
+const ROOT_RESIDUAL: f64 = 1e-12;
 /// Plain Newton steps of the polish, at most: a regular root takes two or
 /// three; a double root (a dead centre) halves its error each step.
 const MAX_POLISH: usize = 64;
@@ -41,6 +46,17 @@ pub(crate) struct BlockSystem<'a, L: ?Sized, const M: usize, const F: usize> {
     pub scale: &'a Scale<M>,
 }
 
+/// A pose of a run, the block evaluated there.
+struct Point<const M: usize> {
+    u: SVector<f64, M>,
+    /// The scale-free residuals (the block's first, zeros after).
+    r: SVector<f64, M>,
+    /// Their Jacobian, padded with the identity.
+    j: SMatrix<f64, M, M>,
+    /// ln of the deflated merit.
+    log_merit: f64,
+}
+
 /// What a run ended with.
 pub(crate) struct Run<const M: usize> {
     /// The root, polished, its angles in [−π, π).
@@ -49,21 +65,58 @@ pub(crate) struct Run<const M: usize> {
     pub least_residual: f64,
 }
 
+/// x solving a·x = b (LU with partial pivoting), if `a` is not singular
+/// and x is finite.
+fn solve<const M: usize>(a: &SMatrix<f64, M, M>, b: &SVector<f64, M>) -> Option<SVector<f64, M>> {
+    let (mut a, mut x) = (*a, *b);
+    for col in 0..M {
+        let pivot = (col..M).max_by(|&i, &k| a[(i, col)].abs().total_cmp(&a[(k, col)].abs()))?;
+        if a[(pivot, col)] == 0.0 {
+            return None;
+        }
+        a.swap_rows(col, pivot);
+        x.swap_rows(col, pivot);
+        for i in col + 1..M {
+            let factor = a[(i, col)] / a[(col, col)];
+            if factor != 0.0 {
+                for k in col..M {
+                    a[(i, k)] -= factor * a[(col, k)];
+                }
+                x[i] -= factor * x[col];
+            }
+        }
+    }
+    for col in (0..M).rev() {
+        let known: f64 = (col + 1..M).map(|k| a[(col, k)] * x[k]).sum();
+        x[col] = (x[col] - known) / a[(col, col)];
+    }
+    x.iter().all(|x| x.is_finite()).then_some(x)
+}
+
 impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> BlockSystem<'_, L, M, F> {
     fn size(&self) -> usize {
         self.block.coordinates.len()
     }
 
     /// The block's scale-free residuals Ψᵢ/sᵢ and their Jacobian by its
-    /// coordinates in their units; `None` if not finite.
-    pub fn evaluate(&self, u: &SVector<f64, M>) -> Option<(DVector<f64>, DMatrix<f64>)> {
+    /// coordinates in their units (padded); `None` if not finite.
+    pub fn evaluate(&self, u: &SVector<f64, M>) -> Option<(SVector<f64, M>, SMatrix<f64, M, M>)> {
         let (psi, psi_u) = self.model.psi_and_psi_u(u, self.v);
         let (rows, columns) = (&self.block.equations, &self.block.coordinates);
         let sizes = &self.scale.equations;
         let d = self.size();
-        let r = DVector::from_fn(d, |a, _| psi[rows[a]] / sizes[rows[a]]);
-        let j = DMatrix::from_fn(d, d, |a, b| {
-            psi_u[(rows[a], columns[b])] * self.scale.unit(columns[b]) / sizes[rows[a]]
+        let r = SVector::<f64, M>::from_fn(|a, _| {
+            if a < d {
+                psi[rows[a]] / sizes[rows[a]]
+            } else {
+                0.0
+            }
+        });
+        let j = SMatrix::<f64, M, M>::from_fn(|a, b| match (a < d, b < d) {
+            (true, true) => {
+                psi_u[(rows[a], columns[b])] * self.scale.unit(columns[b]) / sizes[rows[a]]
+            }
+            _ => f64::from(u8::from(a == b)),
         });
         let finite = r.iter().chain(j.iter()).all(|x| x.is_finite());
         finite.then_some((r, j))
@@ -71,7 +124,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> BlockSystem<'_, 
 
     /// `u` moved by the step `d` (in the block's coordinates and units),
     /// its angles wrapped; `None` if a length leaves its box far behind.
-    fn moved(&self, u: &SVector<f64, M>, d: &DVector<f64>) -> Option<SVector<f64, M>> {
+    fn moved(&self, u: &SVector<f64, M>, d: &SVector<f64, M>) -> Option<SVector<f64, M>> {
         let mut next = *u;
         for (b, &j) in self.block.coordinates.iter().enumerate() {
             let unit = self.scale.unit(j);
@@ -91,14 +144,22 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> BlockSystem<'_, 
 
     /// ∇ln m at `u` (in the block's units) and ln m, m the deflation of
     /// the known roots `deflated`.
-    fn deflation(&self, u: &SVector<f64, M>, deflated: &[SVector<f64, M>]) -> (DVector<f64>, f64) {
+    fn deflation(
+        &self,
+        u: &SVector<f64, M>,
+        deflated: &[SVector<f64, M>],
+    ) -> (SVector<f64, M>, f64) {
         let d = self.size();
-        let mut gradient = DVector::zeros(d);
+        let mut gradient = SVector::<f64, M>::zeros();
         let mut log = 0.0;
         for root in deflated {
-            let offset = DVector::from_fn(d, |b, _| {
-                let j = self.block.coordinates[b];
-                self.scale.difference(j, u[j], root[j])
+            let offset = SVector::<f64, M>::from_fn(|b, _| {
+                if b < d {
+                    let j = self.block.coordinates[b];
+                    self.scale.difference(j, u[j], root[j])
+                } else {
+                    0.0
+                }
             });
             let squared = offset.norm_squared();
             // ln(1/‖Δ‖² + 1) and its gradient −2Δ/(‖Δ‖²(1 + ‖Δ‖²)).
@@ -108,43 +169,48 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> BlockSystem<'_, 
         (gradient, log)
     }
 
-    /// ln of the merit ½‖m·Ψ‖² (up to a constant): 2 ln m + ln ‖Ψ‖².
-    fn log_merit(&self, u: &SVector<f64, M>, deflated: &[SVector<f64, M>]) -> Option<f64> {
-        let (r, _) = self.evaluate(u)?;
+    /// The block evaluated at `u`, with the merit of the deflated system:
+    /// `None` where it is not finite.
+    fn point(&self, u: SVector<f64, M>, deflated: &[SVector<f64, M>]) -> Option<Point<M>> {
+        let (r, j) = self.evaluate(&u)?;
         let log_m = if deflated.is_empty() {
             0.0
         } else {
-            self.deflation(u, deflated).1
+            self.deflation(&u, deflated).1
         };
-        let value = 2.0 * log_m + r.norm_squared().ln();
-        (!value.is_nan()).then_some(value)
+        // ln of the merit ½‖m·Ψ‖² (up to a constant): 2 ln m + ln ‖Ψ‖².
+        let log_merit = 2.0 * log_m + r.norm_squared().ln();
+        (!log_merit.is_nan()).then_some(Point { u, r, j, log_merit })
     }
 
     /// Newton's method from `start` on the block, the roots `deflated`
     /// deflated; a root it reaches is polished.
     pub fn solve(&self, start: &SVector<f64, M>, deflated: &[SVector<f64, M>]) -> Run<M> {
         let mut least = f64::INFINITY;
-        let mut u = *start;
+        let mut here = self.point(*start, deflated);
         let mut mu = 1e-6;
-        for _ in 0..MAX_STEPS {
-            let Some((r, j)) = self.evaluate(&u) else {
+        let steps = if deflated.is_empty() {
+            MAX_STEPS
+        } else {
+            MAX_DEFLATED_STEPS
+        };
+        for _ in 0..steps {
+            let Some(point) = here else {
                 break;
             };
-            let residual = r.amax();
+            let residual = point.r.amax();
             least = least.min(residual);
             if residual <= CLOSE {
-                return self.polish(u, least);
+                return self.polish(point, least);
             }
-            let Some(here) = self.log_merit(&u, deflated) else {
-                break;
-            };
-            let step = self
-                .newton_step(&u, &r, &j, deflated, here)
-                .or_else(|| self.levenberg_marquardt_step(&u, &r, &j, deflated, here, &mut mu));
-            match step {
-                Some(next) => u = next,
-                None => break,
-            }
+            // With roots deflated, no fallback: where the deflated Newton
+            // step fails the run only wanders.
+            here = self.newton_step(&point, deflated).or_else(|| {
+                deflated
+                    .is_empty()
+                    .then(|| self.levenberg_marquardt_step(&point, deflated, &mut mu))
+                    .flatten()
+            });
         }
         Run {
             root: None,
@@ -153,17 +219,10 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> BlockSystem<'_, 
     }
 
     /// The (deflated) Newton step, shortened until the merit decreases.
-    fn newton_step(
-        &self,
-        u: &SVector<f64, M>,
-        r: &DVector<f64>,
-        j: &DMatrix<f64>,
-        deflated: &[SVector<f64, M>],
-        here: f64,
-    ) -> Option<SVector<f64, M>> {
-        let mut d = -j.clone().lu().solve(r)?;
+    fn newton_step(&self, here: &Point<M>, deflated: &[SVector<f64, M>]) -> Option<Point<M>> {
+        let mut d = -solve(&here.j, &here.r)?;
         if !deflated.is_empty() {
-            let (gradient, _) = self.deflation(u, deflated);
+            let (gradient, _) = self.deflation(&here.u, deflated);
             let denominator = 1.0 - gradient.dot(&d);
             let pushed = denominator.abs() > 1e-12; // false for NaN
             if !pushed {
@@ -171,16 +230,13 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> BlockSystem<'_, 
             }
             d /= denominator;
         }
-        if !d.iter().all(|x| x.is_finite()) {
-            return None;
-        }
         let mut lambda = 1.0;
         while lambda >= 1.0 / 1024.0 {
-            if let Some(next) = self.moved(u, &(&d * lambda)) {
-                if self
-                    .log_merit(&next, deflated)
-                    .is_some_and(|there| there <= here + (1.0 - 1e-4 * lambda).ln())
-                {
+            let next = self
+                .moved(&here.u, &(d * lambda))
+                .and_then(|u| self.point(u, deflated));
+            if let Some(next) = next {
+                if next.log_merit <= here.log_merit + (1.0 - 1e-4 * lambda).ln() {
                     return Some(next);
                 }
             }
@@ -193,28 +249,22 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> BlockSystem<'_, 
     /// merit decreases (and lowered after a success).
     fn levenberg_marquardt_step(
         &self,
-        u: &SVector<f64, M>,
-        r: &DVector<f64>,
-        j: &DMatrix<f64>,
+        here: &Point<M>,
         deflated: &[SVector<f64, M>],
-        here: f64,
         mu: &mut f64,
-    ) -> Option<SVector<f64, M>> {
-        let jtj = j.transpose() * j;
-        let gradient = j.transpose() * r;
+    ) -> Option<Point<M>> {
+        let jtj = here.j.transpose() * here.j;
+        let gradient = here.j.transpose() * here.r;
         let s = jtj.amax().max(f64::MIN_POSITIVE);
-        let n = self.size();
         while *mu <= 1e6 {
-            let a = &jtj + DMatrix::identity(n, n) * (*mu * s);
-            if let Some(d) = a.lu().solve(&gradient) {
-                if let Some(next) = self.moved(u, &(-d)) {
-                    if self
-                        .log_merit(&next, deflated)
-                        .is_some_and(|there| there < here)
-                    {
-                        *mu = (*mu / 10.0).max(1e-12);
-                        return Some(next);
-                    }
+            let a = jtj + SMatrix::<f64, M, M>::identity() * (*mu * s);
+            let next = solve(&a, &gradient)
+                .and_then(|d| self.moved(&here.u, &(-d)))
+                .and_then(|u| self.point(u, deflated));
+            if let Some(next) = next {
+                if next.log_merit < here.log_merit {
+                    *mu = (*mu / 10.0).max(1e-12);
+                    return Some(next);
                 }
             }
             *mu *= 10.0;
@@ -225,24 +275,24 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> BlockSystem<'_, 
     /// Plain Newton steps from a pose close to a root, while they shrink
     /// the residual: the root to full precision, if its residual is small
     /// enough then.
-    fn polish(&self, mut u: SVector<f64, M>, least: f64) -> Run<M> {
+    fn polish(&self, close: Point<M>, least: f64) -> Run<M> {
         let mut least = least;
-        let Some((mut r, mut j)) = self.evaluate(&u) else {
-            return Run {
-                root: None,
-                least_residual: least,
-            };
-        };
+        let Point {
+            mut u,
+            mut r,
+            mut j,
+            ..
+        } = close;
         for _ in 0..MAX_POLISH {
             let residual = r.amax();
             least = least.min(residual);
             if residual == 0.0 {
                 break;
             }
-            let Some(d) = j.clone().lu().solve(&r) else {
+            let Some(d) = solve(&j, &r) else {
                 break;
             };
-            let Some(next) = self.moved(&u, &(-&d)) else {
+            let Some(next) = self.moved(&u, &(-d)) else {
                 break;
             };
             let Some((r_next, j_next)) = self.evaluate(&next) else {
