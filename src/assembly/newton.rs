@@ -33,6 +33,9 @@ const ROOT_RESIDUAL: f64 = 1e-12;
 /// Plain Newton steps of the polish, at most: a regular root takes two or
 /// three; a double root (a dead centre) halves its error each step.
 const MAX_POLISH: usize = 64;
+/// The relative gradient of ‖Ψ‖² below which a pose that is not a root
+/// is a least-squares minimum (or another stationary point) of it.
+const STATIONARY: f64 = 1e-6;
 /// A run whose length coordinate leaves its box by this many half-widths
 /// is given up: it is diverging.
 const FAR: f64 = 16.0;
@@ -91,6 +94,27 @@ fn solve<const M: usize>(a: &SMatrix<f64, M, M>, b: &SVector<f64, M>) -> Option<
         x[col] = (x[col] - known) / a[(col, col)];
     }
     x.iter().all(|x| x.is_finite()).then_some(x)
+}
+
+/// Whether a pose that is not a root is a stationary point of ‖Ψ‖²
+/// (JᵀΨ ≈ 0): the largest |cos| of the angle between Ψ and a column of J
+/// below [`STATIONARY`]. There the mechanism comes closest to closing
+/// without closing, and the run ends.
+fn stationary<const M: usize>(point: &Point<M>) -> bool {
+    let r = point.r / point.r.amax();
+    let worst = point
+        .j
+        .column_iter()
+        .map(|c| {
+            let norm = c.norm();
+            if norm > 0.0 {
+                c.dot(&r).abs() / norm
+            } else {
+                0.0
+            }
+        })
+        .fold(0.0, f64::max);
+    worst <= STATIONARY * r.norm()
 }
 
 impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> BlockSystem<'_, L, M, F> {
@@ -202,6 +226,9 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> BlockSystem<'_, 
             least = least.min(residual);
             if residual <= CLOSE {
                 return self.polish(point, least);
+            }
+            if stationary(&point) {
+                break;
             }
             // With roots deflated, no fallback: where the deflated Newton
             // step fails the run only wanders.
