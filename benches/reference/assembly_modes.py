@@ -38,8 +38,9 @@ root in closed form.
   and sine are the exact rationals 3/5 and 4/5.
 
 The driver values are f64 numbers, taken exactly (their shortest repr is
-written beside them), but for the Stephenson six-bar's (atan2(4, 3), whose
-f64 cosine differs from 3/5 by less than 1e-16).
+written beside them), but for the Stephenson six-bar's (atan2(4, 3) and
+atan2(5, 12), whose f64 cosines differ from 3/5 and 12/13 by less than
+1e-16).
 """
 import math
 import os
@@ -388,6 +389,13 @@ def main():
             - (dy + gx * mp.sin(t4) + gy * mp.cos(t4))]
     check("stephenson_three", modes, stephenson_closure)
     cases.append(("stephenson_three", repr(math.atan2(4.0, 3.0)), modes))
+
+    # The same at the crank angle atan2(5, 12): four.
+    count, modes = stephenson_three(st, sp.Rational(12, 13), sp.Rational(5, 13))
+    assert count == len(modes)
+    c2, s2 = mp.mpf(12) / 13, mp.mpf(5) / 13
+    check("stephenson_three_four", modes, stephenson_closure)
+    cases.append(("stephenson_three", repr(math.atan2(5.0, 12.0)), modes))
 
     for name, driver, modes in cases:
         print(f"{name:20} at {driver:24}: {len(modes)} real assemblies")

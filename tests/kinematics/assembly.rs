@@ -379,6 +379,45 @@ fn the_stephenson_three_six_bar_has_six_modes_in_one_block() {
 }
 
 #[test]
+fn the_stephenson_three_six_bar_has_four_modes_at_another_crank_angle() {
+    // (θ3, θ4, θ5, θ6) at θ2 = atan2(5, 12).
+    let reference = [
+        [
+            -1.3369731493182233983,
+            2.7250363005515211177,
+            2.0487046845695050207,
+            -1.9006751686518309950,
+        ],
+        [
+            -0.14983946298595432555,
+            2.2874957776072330205,
+            2.5921869165725337252,
+            -1.4393442775651966491,
+        ],
+        [
+            1.6138638326791011673,
+            1.1325665398292784532,
+            -0.29083252720167064237,
+            0.34991223213504407791,
+        ],
+        [
+            1.8459590470751868728,
+            3.0628565524887071664,
+            -1.6906333778518701463,
+            -0.62758274613839479408,
+        ],
+    ];
+    let v = vector![5f64.atan2(12.0)];
+    let found = modes(&STEPHENSON_THREE, &v, &Search::default()).unwrap();
+    assert_modes(
+        "Stephenson III (four)",
+        &STEPHENSON_THREE,
+        &found,
+        &reference,
+    );
+}
+
+#[test]
 fn the_search_is_deterministic_and_its_order_is_by_sign_then_coordinates() {
     let v = vector![4f64.atan2(3.0)];
     let a = modes(&STEPHENSON_THREE, &v, &Search::default()).unwrap();
