@@ -4,6 +4,18 @@ use crate::error::UnknownName;
 use crate::runtime::Error;
 
 /// Why the assemblies could not be found, or no single one picked.
+///
+/// ```
+/// use linkage::assembly::{AssemblyError, Search, modes};
+/// use linkage::mechanisms::FourBar;
+/// use linkage::prelude::*;
+///
+/// // Coupler and rocker together reach 30; B is at least 60 from D.
+/// let short = FourBar { l1: 80.0, l2: 20.0, l3: 10.0, l4: 20.0 };
+/// let error = modes(&short, &vector![0.3], &Search::default()).unwrap_err();
+/// assert!(matches!(error, AssemblyError::NoAssembly { .. }));
+/// assert!(error.to_string().starts_with("the mechanism cannot be assembled"));
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum AssemblyError {

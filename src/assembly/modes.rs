@@ -9,6 +9,13 @@ use nalgebra::{DMatrix, SMatrix, SVector, Vector2};
 use std::cmp::Ordering;
 
 /// The sign of a determinant.
+///
+/// ```
+/// use linkage::assembly::Sign;
+/// assert_eq!(Sign::of(-2.0), Sign::Negative);
+/// assert_eq!(Sign::of(3.0).to_string(), "+");
+/// assert!(Sign::Positive < Sign::Negative); // the modes' order
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Sign {
     Positive,
@@ -49,6 +56,22 @@ impl std::fmt::Display for Sign {
 /// III six-bar: one block of four) up to six modes share two signs, and a
 /// mode is told by its index, a point's side of a line or a sketch
 /// ([`Pick`](super::Pick)).
+///
+/// ```
+/// use linkage::assembly::{Search, Sign, modes};
+/// use linkage::mechanisms::FourBar;
+/// use linkage::prelude::*;
+///
+/// let found = modes(&FourBar::WORKSHEET, &vector![20f64.to_radians()], &Search::default())?;
+/// for mode in &found.modes {
+///     let (theta3, theta4) = (mode.u[0], mode.u[1]);
+///     assert_eq!(mode.signs, [Sign::of((theta4 - theta3).sin())]);
+///     assert!(mode.residual < 1e-12 && mode.rcond > 0.1);
+///     let c = mode.points[FourBar::C];
+///     assert!(((c - vector![80.0, 0.0]).norm() - 70.0).abs() < 1e-12); // the rocker's length
+/// }
+/// # Ok::<(), linkage::assembly::AssemblyError>(())
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct Mode<const M: usize> {
     /// The dependent coordinates, angles in [−π, π).
@@ -72,6 +95,20 @@ pub struct Mode<const M: usize> {
 /// reciprocal condition number below 1e-6), the mechanism at (or within
 /// about 1e-6 of) a dead centre, where two modes meet. Reported once, not
 /// as two modes: the modes meeting there cannot be told apart in f64.
+///
+/// ```
+/// use linkage::assembly::{Search, modes};
+/// use linkage::mechanisms::FourBar;
+/// use linkage::prelude::*;
+///
+/// // At θ2 = 0, |BD| = 60 = l3 + l4: coupler and rocker in line.
+/// let folded = FourBar { l1: 80.0, l2: 20.0, l3: 25.0, l4: 35.0 };
+/// let found = modes(&folded, &vector![0.0], &Search::default())?;
+/// assert!(found.modes.is_empty());
+/// assert_eq!(found.dead_centres.len(), 1);
+/// assert!(found.dead_centres[0].u.amax() < 1e-6); // θ3 = θ4 = 0
+/// # Ok::<(), linkage::assembly::AssemblyError>(())
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct DeadCentre<const M: usize> {
     /// The dependent coordinates, angles in [−π, π) (located to about
@@ -89,6 +126,21 @@ pub struct DeadCentre<const M: usize> {
 /// ([`modes`](super::modes)): the regular modes in a fixed order —
 /// by their signs (`+` before `−`, block by block), then by their
 /// coordinates — and the dead centres apart.
+///
+/// ```
+/// use linkage::assembly::{Search, modes};
+/// use linkage::mechanisms::OffsetSliderCrank;
+/// use linkage::prelude::*;
+///
+/// let crank = OffsetSliderCrank { r: 0.05, l: 0.2, e: 0.01 };
+/// let found = modes(&crank, &vector![1.0], &Search::default())?;
+/// assert_eq!(found.modes.len(), 2); // the slider either side of the crank
+/// assert_eq!(found.angle, [true, false]); // θ3 an angle, s a length
+/// assert!(found.stable && found.runs > 0);
+/// // The box of s holds every assembly: |s| ≤ r + l.
+/// assert!(found.upper[1] >= 0.25);
+/// # Ok::<(), linkage::assembly::AssemblyError>(())
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct Modes<const M: usize, const F: usize> {
     /// The driver.
@@ -125,6 +177,18 @@ pub struct Modes<const M: usize, const F: usize> {
 impl<const M: usize, const F: usize> Modes<M, F> {
     /// The unit of coordinate `j` in the search: 1 (a radian) for an
     /// angle, the half-width of its box for a length.
+    ///
+    /// ```
+    /// use linkage::assembly::{Lengths, Search, modes};
+    /// use linkage::mechanisms::OffsetSliderCrank;
+    /// use linkage::prelude::*;
+    ///
+    /// let crank = OffsetSliderCrank { r: 0.05, l: 0.2, e: 0.01 };
+    /// let search = Search { lengths: Lengths::Within(0.5), ..Search::default() };
+    /// let found = modes(&crank, &vector![1.0], &search)?;
+    /// assert_eq!((found.unit(0), found.unit(1)), (1.0, 0.5));
+    /// # Ok::<(), linkage::assembly::AssemblyError>(())
+    /// ```
     pub fn unit(&self, j: usize) -> f64 {
         if self.angle[j] {
             1.0

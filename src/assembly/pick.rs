@@ -14,6 +14,17 @@ const OWNER: &str = "the pick of an assembly mode";
 const TIE: f64 = 1e-9;
 
 /// A side of a directed line.
+///
+/// ```
+/// use linkage::assembly::{Pick, Side, Spot};
+/// use linkage::prelude::*;
+///
+/// let pick: Pick<2> = Pick::right_of("C", "B", vector![80.0, 0.0]);
+/// let Pick::Side { side, to, .. } = &pick else { unreachable!() };
+/// assert_eq!(*side, Side::Right);
+/// assert_eq!(*to, Spot::At(vector![80.0, 0.0]));
+/// assert_eq!(pick.to_string(), "C right of B → (80, 0)");
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Side {
     /// To the left, looking from the line's first point to its second
@@ -25,6 +36,14 @@ pub enum Side {
 /// A place in the plane: a named point of the mechanism (where the mode
 /// puts it), or a fixed position (a ground pivot that is not a named
 /// point).
+///
+/// ```
+/// use linkage::assembly::Spot;
+/// use linkage::prelude::*;
+///
+/// assert_eq!(Spot::from("B"), Spot::Point("B".to_owned()));
+/// assert_eq!(Spot::from(vector![80.0, 0.0]).to_string(), "(80, 0)");
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub enum Spot {
     Point(String),
@@ -160,6 +179,18 @@ impl<const M: usize> fmt::Display for Pick<M> {
 impl<const M: usize, const F: usize> Modes<M, F> {
     /// The mode `pick` chooses.
     ///
+    /// ```
+    /// use linkage::assembly::{AssemblyError, Pick, Search, modes};
+    /// use linkage::mechanisms::FourBar;
+    /// use linkage::prelude::*;
+    ///
+    /// let found = modes(&FourBar::WORKSHEET, &vector![0.35], &Search::default())?;
+    /// assert_eq!(found.pick(&Pick::Index(0))?, &found.modes[0]);
+    /// let unknown = found.pick(&Pick::left_of("Q", "B", "C")).unwrap_err();
+    /// assert!(matches!(unknown, AssemblyError::UnknownName(_)));
+    /// # Ok::<(), AssemblyError>(())
+    /// ```
+    ///
     /// Errors: no regular mode but dead centres
     /// ([`AssemblyError::AtDeadCentre`]); an index beyond the modes; no
     /// mode on the side asked ([`AssemblyError::NoMatch`]: a point on the
@@ -172,6 +203,19 @@ impl<const M: usize, const F: usize> Modes<M, F> {
 
     /// The index in [`Modes::modes`] of the mode `pick` chooses (errors as
     /// [`Modes::pick`]).
+    ///
+    /// ```
+    /// use linkage::assembly::{Pick, Search, modes};
+    /// use linkage::mechanisms::FourBar;
+    /// use linkage::prelude::*;
+    /// use std::f64::consts::TAU;
+    ///
+    /// let found = modes(&FourBar::WORKSHEET, &vector![0.35], &Search::default())?;
+    /// // Rough angles, up to whole turns: the worksheet's pose.
+    /// let rough = Pick::nearest(vector![1.2 + TAU, -0.9]);
+    /// assert_eq!(found.index_of(&rough)?, 1);
+    /// # Ok::<(), linkage::assembly::AssemblyError>(())
+    /// ```
     pub fn index_of(&self, pick: &Pick<M>) -> Result<usize, AssemblyError> {
         if self.modes.is_empty() {
             return Err(AssemblyError::AtDeadCentre {

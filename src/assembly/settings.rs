@@ -4,6 +4,19 @@ use super::error::AssemblyError;
 use crate::runtime::Error;
 
 /// Where the coordinates that are lengths (not angles) are searched.
+///
+/// ```
+/// use linkage::assembly::{Lengths, Search, modes};
+/// use linkage::mechanisms::OffsetSliderCrank;
+/// use linkage::prelude::*;
+///
+/// let crank = OffsetSliderCrank { r: 0.05, l: 0.2, e: 0.01 };
+/// // u = (θ3, s): the slider between 0 and 0.3 (θ3's entry is not read).
+/// let right = Search { lengths: Lengths::Bounds(vec![(0.0, 0.0), (0.0, 0.3)]), ..Search::default() };
+/// let found = modes(&crank, &vector![1.0], &right)?;
+/// assert_eq!((found.lower[1], found.upper[1]), (0.0, 0.3));
+/// # Ok::<(), linkage::assembly::AssemblyError>(())
+/// ```
 #[derive(Clone, Debug, Default, PartialEq)]
 pub enum Lengths {
     /// From the mechanism's own size (the default): each length within

@@ -9,6 +9,31 @@
 
 /// A block of the decomposition: equations solved together for the
 /// coordinates they introduce.
+///
+/// ```
+/// use linkage::assembly::{Search, modes};
+/// use linkage::prelude::*;
+///
+/// /// A four-bar (θ3, θ4) and a dyad (θ5, θ6) hanging from its rocker.
+/// #[linkage::linkage(
+///     u = [theta3, theta4, theta5, theta6],
+///     v = [theta2],
+///     closure = [
+///         20.0 * theta2.cos() + 50.0 * theta3.cos() + 70.0 * theta4.cos() - 80.0,
+///         20.0 * theta2.sin() + 50.0 * theta3.sin() + 70.0 * theta4.sin(),
+///         80.0 + 40.0 * theta4.cos() + 60.0 * theta5.cos() + 50.0 * theta6.cos() - gx,
+///         40.0 * theta4.sin() + 60.0 * theta5.sin() + 50.0 * theta6.sin() - gy,
+///     ],
+/// )]
+/// struct Watt { gx: f64, gy: f64 }
+///
+/// let found = modes(&Watt { gx: 100.0, gy: 60.0 }, &vector![0.35], &Search::default())?;
+/// assert_eq!(found.blocks.len(), 2);
+/// assert_eq!(found.blocks[1].equations, [2, 3]);
+/// assert_eq!(found.blocks[1].coordinates, [2, 3]);
+/// assert_eq!(found.modes.len(), 4); // two signs, one per loop
+/// # Ok::<(), linkage::assembly::AssemblyError>(())
+/// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Block {
     /// The equations' indices in Ψ, ascending.
