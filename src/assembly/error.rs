@@ -35,6 +35,11 @@ pub enum AssemblyError {
         lower: Vec<f64>,
         upper: Vec<f64>,
         least_residual: f64,
+        /// Whether every grid's (empty) set of roots stood its refinements;
+        /// false if the search stopped at
+        /// [`Search::max_cells`](super::Search::max_cells) first, when an
+        /// assembly may have been missed.
+        stable: bool,
     },
     /// A pick among assemblies none of which is regular: the mechanism is
     /// at a dead centre (Ψ_u singular), where two assemblies meet and
@@ -54,10 +59,16 @@ pub enum AssemblyError {
 crate::error::error_impls! {
     AssemblyError {
         Self::Input(inner) => ("{inner}"),
-        Self::NoAssembly { v, lower, upper, least_residual } => (
+        Self::NoAssembly { v, lower, upper, least_residual, stable: true } => (
             "the mechanism cannot be assembled at v = {v:?}: no real solution of Ψ(u, v) = 0 \
              with the angles over a whole turn and the lengths in [{lower:?}, {upper:?}] \
              (the closest it came leaves a scale-free residual of {least_residual:.3e})"
+        ),
+        Self::NoAssembly { v, lower, upper, least_residual, stable: false } => (
+            "no assembly found at v = {v:?} with the angles over a whole turn and the lengths \
+             in [{lower:?}, {upper:?}] (the closest it came leaves a scale-free residual of \
+             {least_residual:.3e}), but the search stopped at Search::max_cells before its \
+             grids stabilised: raise it to search further"
         ),
         Self::AtDeadCentre { dead_centres } => (
             "the mechanism is at a dead centre: {dead_centres} singular assemblies (Ψ_u singular) \

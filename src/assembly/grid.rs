@@ -55,7 +55,8 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> BlockSystem<'_, 
             let Some(count) = u32::try_from(d)
                 .ok()
                 .and_then(|d| cells.checked_pow(d))
-                .filter(|&count| count <= search.max_cells)
+                // The first grid runs whatever its size.
+                .filter(|&count| cells == search.first_cells || count <= search.max_cells)
             else {
                 break false;
             };

@@ -73,6 +73,7 @@ pub fn modes<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
                 lower: scale.lower.as_slice().to_vec(),
                 upper: scale.upper.as_slice().to_vec(),
                 least_residual: least,
+                stable,
             });
         }
     }

@@ -55,9 +55,10 @@ pub struct Search {
     /// Refinements in a row that must find no new assembly before the set
     /// found is taken as complete (at least 1).
     pub confirmations: usize,
-    /// The most cells (Newton starts) of one grid: a search that would
-    /// need a larger grid stops, and says it is not
-    /// [`stable`](super::Modes::stable).
+    /// The most cells (Newton starts) of a refined grid: a search that
+    /// would need a larger one stops, and says it is not
+    /// [`stable`](super::Modes::stable). (The first grid runs whatever its
+    /// size: 3ᵈ cells for a block of d coordinates.)
     pub max_cells: usize,
 }
 

@@ -577,6 +577,32 @@ fn the_lengths_box_is_the_mechanisms_scale_or_the_users() {
 }
 
 #[test]
+fn a_search_cut_short_says_so() {
+    // The first grid (3 × 3) runs; its refinements (16 cells) may not.
+    let short = Search {
+        max_cells: 9,
+        ..Search::default()
+    };
+    let found = modes(&FourBar::WORKSHEET, &vector![DEG20], &short).unwrap();
+    assert!(!found.stable);
+    assert_eq!(found.modes.len(), 2);
+    let too_short = FourBar {
+        l1: 80.0,
+        l2: 20.0,
+        l3: 10.0,
+        l4: 20.0,
+    };
+    let error = modes(&too_short, &vector![DEG20], &short).unwrap_err();
+    assert!(matches!(
+        error,
+        AssemblyError::NoAssembly { stable: false, .. }
+    ));
+    let message = error.to_string();
+    assert!(message.contains("Search::max_cells"), "{message}");
+    assert!(!message.contains("cannot be assembled"), "{message}");
+}
+
+#[test]
 fn newton_from_a_bad_guess_points_to_the_search() {
     // From zeros the four-bar's Ψ_u is singular (every link along x): the
     // message says the guess may be what is wrong.
