@@ -121,9 +121,8 @@ pub enum Error {
 }
 
 /// What a position solve's failure may also mean.
-const FAR_GUESS: &str = "; in a position solve, Newton's start may be what is wrong: a guess \
-    far from every assembly gives this too, and `linkage::assembly` finds the assemblies \
-    without one";
+const FAR_GUESS: &str = "; a guess far from every assembly fails so too \
+    (`linkage::assembly` finds the assemblies without one)";
 
 impl std::fmt::Display for Error {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
