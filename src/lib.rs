@@ -64,6 +64,11 @@
 //!   every position, velocity and acceleration, of the coordinates and of
 //!   the points, by each parameter (the struct's `f64` fields, or those
 //!   named by `params = [...]`), at a pose or along a sweep.
+//! - [`assembly`]: every assembly mode at a driver value without a guess
+//!   (a deterministic grid search with deflation, each mode with its
+//!   branch signs, dead centres apart), and one picked by index, by a
+//!   point's side of a line or as the one nearest a sketch; a mechanism
+//!   that cannot close is a typed error.
 //! - [`watch`]: the dead centres, strokes and extremes along a sweep,
 //!   located in the driver to rounding.
 //! - [`tolerance`]: how the dimensions' tolerances spread into any
@@ -73,7 +78,8 @@
 //! - [`synthesis`]: dimensions from a task — path, function or motion
 //!   generation through precision points or by least squares — each design
 //!   returned with a certificate over the task's whole range (assembly,
-//!   branch, order, transmission angle, Grashof type).
+//!   branch, order, transmission angle, Grashof type); without a guess of
+//!   the first pose, each start is assembled by [`assembly`].
 //! - [`batch`]: many designs or drives at once, in parallel.
 //! - [`quantity`]: a model's names and the quantities of a pose (a
 //!   coordinate, a point's x or y, their rates, a function of the pose)
@@ -109,6 +115,7 @@
 
 extern crate self as linkage;
 
+pub mod assembly;
 pub mod batch;
 pub mod cam;
 pub mod closed_form;
@@ -156,10 +163,13 @@ mod documentation {
 }
 
 /// Everything a user of the attribute needs: the runtime's types, the
-/// `Linkage` trait (for the analyses), nalgebra's vector and matrix types,
+/// `Linkage` trait (for the analyses) and `Assemble` (every assembly mode
+/// without a guess), nalgebra's vector and matrix types,
 /// and [`vector!`](crate::vector) and [`matrix!`](crate::matrix), which
 /// resolve through linkage (no direct nalgebra dependency needed).
 pub mod prelude {
+    #[doc(no_inline)]
+    pub use crate::assembly::Assemble;
     #[doc(no_inline)]
     pub use crate::linkage;
     #[doc(no_inline)]

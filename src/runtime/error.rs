@@ -42,7 +42,9 @@ pub enum Error {
         index: usize,
         value: f64,
     },
-    /// Newton–Raphson used its iterations without meeting the tolerances.
+    /// Newton–Raphson used its iterations without meeting the tolerances
+    /// (from a guess far from every assembly, too: [`crate::assembly`]
+    /// needs none).
     NotConverged {
         iterations: usize,
         /// ‖Ψ‖∞ at the last iterate.
@@ -52,7 +54,10 @@ pub enum Error {
     },
     /// Ψ_u is singular or so ill-conditioned that a solve with it would be
     /// garbage: the mechanism is at (or next to) a dead-centre, limit or
-    /// change-point pose, or the equations do not determine u.
+    /// change-point pose, or the equations do not determine u. In a
+    /// position solve the singular pose may be Newton's start or one of
+    /// its iterates instead: a guess far from every assembly (all zeros,
+    /// say) fails so; [`crate::assembly`] finds the assemblies without one.
     Singular {
         stage: Stage,
         /// 1/(‖Ψ_u‖₁‖Ψ_u⁻¹‖₁), 0 for an exactly singular matrix.
@@ -115,6 +120,10 @@ pub enum Error {
     },
 }
 
+/// What a position solve's failure may also mean.
+const FAR_GUESS: &str = "; a guess far from every assembly fails so too \
+    (`linkage::assembly` finds the assemblies without one)";
+
 impl std::fmt::Display for Error {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
@@ -130,18 +139,24 @@ impl std::fmt::Display for Error {
             } => write!(
                 f,
                 "Newton–Raphson did not converge in {iterations} iterations: \
-         ‖Ψ‖∞ = {residual:.3e}, last step ‖Δu‖∞ = {step:.3e}"
+         ‖Ψ‖∞ = {residual:.3e}, last step ‖Δu‖∞ = {step:.3e}{FAR_GUESS}"
             ),
             Self::Singular {
                 min_rcond,
                 rcond,
                 stage,
-            } => write!(
-                f,
-                "Ψ_u is singular in the {stage} solve: reciprocal condition number {rcond:.3e} \
+            } => {
+                write!(
+                    f,
+                    "Ψ_u is singular in the {stage} solve: reciprocal condition number {rcond:.3e} \
          is below {min_rcond:.3e}, the least that keeps the requested accuracy (the pose \
          is at or near a singular configuration: dead centre, limit position or branch point)"
-            ),
+                )?;
+                if *stage == Stage::Position {
+                    f.write_str(FAR_GUESS)?;
+                }
+                Ok(())
+            }
             Self::CannotAssemble {
                 gradient, residual, ..
             } => write!(

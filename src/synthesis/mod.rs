@@ -15,7 +15,10 @@
 //! driver.
 //!
 //! [`synthesize`] solves it from many random starts in parallel (through
-//! [`batch`](crate::batch)) with a bounded Levenberg–Marquardt solver, and
+//! [`batch`](crate::batch)) with a bounded Levenberg–Marquardt solver —
+//! each start's design assembled from the problem's guess
+//! ([`Problem::guess`]) or, without one, by the search for its assembly
+//! modes ([`crate::assembly`]) — and
 //! returns only **certified** designs: a continuation sweep over the whole
 //! driver range ([`Requirements`]: a revolution, or the task's range
 //! stated in the problem) must assemble everywhere, meet no singular pose,

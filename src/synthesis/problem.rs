@@ -94,8 +94,9 @@ pub struct Problem<L, const M: usize, const K: usize> {
     pub(crate) timing: Timing,
     /// The task's driver range, from one end to the other, if stated.
     pub(crate) range: Option<(f64, f64)>,
-    /// A guess of the pose at the first target.
-    pub(crate) guess: SVector<f64, M>,
+    /// A guess of the pose at the first target, if given; without one
+    /// each start assembles its design with [`crate::assembly`].
+    pub(crate) guess: Option<SVector<f64, M>>,
     /// Whether every target must be met exactly (precision points).
     pub(crate) exact: bool,
     /// The designer's own terms, after the targets' residuals.
@@ -273,7 +274,7 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
             targets,
             timing,
             range: None,
-            guess: SVector::zeros(),
+            guess: None,
             exact: false,
             terms: Terms::default(),
         })
@@ -344,9 +345,15 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
     }
 
     /// A guess of the pose at the first target (the other targets' poses
-    /// follow from it by continuation).
+    /// follow from it by continuation): every start's design is solved
+    /// there by Newton from it. Without a guess, each start finds its
+    /// design's assemblies at the first target's driver
+    /// ([`crate::assembly::modes`]) and follows the first of them that
+    /// reaches every target, trying them in their order turned by the
+    /// start's index (start k begins with mode k mod n), so that the
+    /// starts spread over the branches.
     pub fn guess(mut self, u: SVector<f64, M>) -> Self {
-        self.guess = u;
+        self.guess = Some(u);
         self
     }
 

@@ -1,6 +1,7 @@
 //! Many starts in parallel: each a random design within the bounds (and a
-//! random phase of the free drivers), followed by continuation to the
-//! poses at every target, solved by Levenberg–Marquardt on the exact
+//! random phase of the free drivers), assembled at the first target's
+//! driver (from the problem's guess, or by the assembly search without
+//! one) and followed by continuation to the poses at every target, solved by Levenberg–Marquardt on the exact
 //! Jacobian, then certified; the certified designs kept once each and
 //! ranked by their error at the targets.
 
@@ -9,6 +10,7 @@ use super::certify::{Certificate, Defect, Range, Requirements, certify};
 use super::continuation;
 use super::problem::{Problem, Timing, extent};
 use super::residuals::{Poses, branch, evaluate};
+use crate::assembly;
 use crate::batch;
 use crate::least_squares::{Stopping, minimize};
 use crate::random::SplitMix64;
@@ -332,16 +334,51 @@ where
     (lower, upper)
 }
 
+/// The poses of `model` to begin from at the driver `v`: the one Newton
+/// reaches from the problem's guess, or, without a guess, its assembly
+/// modes there ([`assembly::modes`]) in their order turned by the start's
+/// index (start k first tries mode k mod n). None if it cannot be
+/// assembled at `v`.
+fn assemblies<L, const M: usize, const K: usize>(
+    problem: &Problem<L, M, K>,
+    model: &L,
+    v: f64,
+    start: usize,
+    options: &SweepOptions,
+) -> Vec<SVector<f64, M>>
+where
+    L: Sensitivities<M, 1, K>,
+{
+    let v = SVector::from([v]);
+    match &problem.guess {
+        Some(guess) => model
+            .solve_position(guess, &v, &options.options)
+            .ok()
+            .map(|s| s.u)
+            .into_iter()
+            .collect(),
+        None => match assembly::modes(model, &v, &assembly::Search::default()) {
+            Ok(found) => {
+                let n = found.modes.len();
+                (0..n).map(|k| found.modes[(start + k) % n].u).collect()
+            }
+            Err(_) => Vec::new(),
+        },
+    }
+}
+
 /// The poses at the targets for the unknowns `x`: the first solved from
-/// the problem's guess, each next one followed from it by continuation
-/// (so that all lie on one branch); `None` if the start cannot be
-/// assembled or followed. With free timing, a start that cannot be
+/// the problem's guess, or from the design's assemblies without one
+/// ([`assemblies`]: the first that reaches every target), each next one
+/// followed from it by continuation (so that all lie on one branch);
+/// `None` if the start cannot be assembled or followed. With free timing, a start that cannot be
 /// followed through drivers spread over a whole revolution (its driver
 /// cannot turn one: a rocker) has them spread over the arc it can reach
 /// instead, and `x`'s drivers are moved there.
 fn first_poses<L, const M: usize, const K: usize>(
     problem: &Problem<L, M, K>,
     x: &mut DVector<f64>,
+    start: usize,
     steps_per_radian: f64,
     options: &SweepOptions,
 ) -> Option<Poses<M>>
@@ -351,25 +388,19 @@ where
     let model = problem.model_at(x.as_slice());
     let n = problem.targets.len();
     let mut drivers: Vec<f64> = (0..n).map(|i| problem.driver(x.as_slice(), i)).collect();
-    let first = model
-        .solve_position(
-            &problem.guess,
-            &SVector::from([drivers[0]]),
-            &options.options,
-        )
-        .ok()
-        .map(|s| s.u);
-    let mut u = first.and_then(|first| {
-        continuation::through(&model, first, &drivers, steps_per_radian, options)
-    });
+    let mut u = assemblies(problem, &model, drivers[0], start, options)
+        .into_iter()
+        .find_map(|first| {
+            continuation::through(&model, first, &drivers, steps_per_radian, options)
+        });
     if u.is_none() && problem.timing == Timing::Free && problem.range.is_none() {
         // The arc the driver reaches from the first target's driver (or,
         // if it does not assemble there, from the first of eight around
         // the turn where it does), the drivers spread over it.
         let (v0, u0) = (0..8).find_map(|k| {
             let v = drivers[0] + TAU * k as f64 / 8.0;
-            let at = model.solve_position(&problem.guess, &SVector::from([v]), &options.options);
-            at.ok().map(|s| (v, s.u))
+            let at = assemblies(problem, &model, v, start, options);
+            at.first().map(|u| (v, *u))
         })?;
         let reach = |to: f64| {
             let followed =
@@ -417,7 +448,7 @@ where
     let mut stream = SplitMix64::of_sample(search.random_state, start as u64);
     let (x0, first) = (0..Search::DRAWS).find_map(|_| {
         let mut x0 = start_point(problem, &mut stream);
-        let poses = first_poses(problem, &mut x0, steps_per_radian, &search.options)?;
+        let poses = first_poses(problem, &mut x0, start, steps_per_radian, &search.options)?;
         let first = evaluate(problem, &x0, &poses, options)?;
         Some((x0, first))
     })?;

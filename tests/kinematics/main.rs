@@ -1,6 +1,7 @@
 //! Positions, velocities, accelerations and sensitivities: the Maple
 //! worksheet's four-bar number by number, both acceleration methods, five
-//! more mechanisms, the typed errors of bad input, and batches.
+//! more mechanisms, the typed errors of bad input, batches, and assembly
+//! without a guess.
 
 #[path = "../common/mod.rs"]
 mod common;
@@ -8,6 +9,7 @@ mod common;
 mod models;
 
 mod acceleration_methods;
+mod assembly;
 mod batch;
 mod errors;
 mod fourbar_worksheet;

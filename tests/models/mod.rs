@@ -9,6 +9,7 @@ mod five_bar;
 mod six_bar;
 mod slider_crank;
 mod slider_driven;
+mod stephenson_three;
 mod watt_six_bar;
 
 pub use boom::{BOOM, Boom};
@@ -17,4 +18,5 @@ pub use five_bar::{FIVE_BAR, FiveBar};
 pub use six_bar::{SIX_BAR, SixBar};
 pub use slider_crank::{SLIDER_CRANK, SliderCrank};
 pub use slider_driven::{SLIDER_DRIVEN, SliderDriven};
-pub use watt_six_bar::WattSixBar;
+pub use stephenson_three::{STEPHENSON_THREE, StephensonThree};
+pub use watt_six_bar::{WATT_SIX_BAR, WattSixBar};

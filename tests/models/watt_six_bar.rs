@@ -26,3 +26,19 @@ pub struct WattSixBar {
     pub gx: f64,
     pub gy: f64,
 }
+
+/// The one the assembly tests use: the worksheet's four-bar, E 40 from D
+/// at 0.5 rad from the rocker, links 60 and 50 to G = (100, 60); four
+/// assemblies at θ2 = 20°.
+pub const WATT_SIX_BAR: WattSixBar = WattSixBar {
+    l1: 80.0,
+    l2: 20.0,
+    l3: 50.0,
+    l4: 70.0,
+    le: 40.0,
+    beta: 0.5,
+    l5: 60.0,
+    l6: 50.0,
+    gx: 100.0,
+    gy: 60.0,
+};

@@ -31,6 +31,8 @@ mod common;
 #[path = "../models/mod.rs"]
 mod models;
 
+/// Assembly without a guess on random four-bars and Watt six-bars.
+mod assembly;
 mod bit_patterns;
 /// The same through the machine, the cam, the diagrams and the scenes.
 #[cfg(feature = "draw")]

@@ -10,6 +10,8 @@ mod models;
 mod burmester;
 /// The designer's terms, curves and functions over a range.
 mod objectives;
+/// Synthesis without a guess of the first pose.
+mod without_guess;
 use crate::models::Coupler;
 use linkage::closed_form::{self, Grashof};
 use linkage::mechanisms::{CouplerFourBar, FourBar};

@@ -1,0 +1,103 @@
+//! The search itself: the mechanism's scale and blocks read from its
+//! equations, each block's roots found for every root of the blocks
+//! before it, each whole root classified and the modes ordered.
+
+use super::error::AssemblyError;
+use super::modes::{Classified, Modes, classify, coordinate_order, mode_order};
+use super::newton::BlockSystem;
+use super::scale::{pattern, scale};
+use super::settings::Search;
+use super::structure::blocks;
+use crate::runtime::{Error, Linkage};
+use nalgebra::SVector;
+
+/// Every real assembly of `model` at the driver `v` the search finds, each
+/// regular one a [`Mode`](super::Mode) with its branch signs, the singular
+/// ones apart ([`DeadCentre`](super::DeadCentre)); no guess needed.
+///
+/// Errors: [`AssemblyError::NoAssembly`] if there is none (the mechanism
+/// cannot be assembled at `v`); [`AssemblyError::Input`] for a `v` not
+/// finite, settings out of range, or equations not finite at every pose
+/// tried.
+///
+/// ```
+/// use linkage::assembly::{Search, Sign, modes};
+/// use linkage::mechanisms::FourBar;
+/// use linkage::prelude::*;
+///
+/// let found = modes(&FourBar::WORKSHEET, &vector![20f64.to_radians()], &Search::default())?;
+/// assert_eq!(found.modes.len(), 2); // open and crossed
+/// assert_eq!(found.modes[1].signs, [Sign::Negative]);
+/// // The worksheet's pose, θ3 = 70.55°, found without its guess.
+/// assert!((found.modes[1].u[0].to_degrees() - 70.550_765_47).abs() < 1e-8);
+/// # Ok::<(), linkage::assembly::AssemblyError>(())
+/// ```
+pub fn modes<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
+    model: &L,
+    v: &SVector<f64, F>,
+    search: &Search,
+) -> Result<Modes<M, F>, AssemblyError> {
+    if let Some((index, &value)) = v.iter().enumerate().find(|(_, x)| !x.is_finite()) {
+        return Err(AssemblyError::Input(Error::NonFiniteInput {
+            argument: "v",
+            index,
+            value,
+        }));
+    }
+    search.check::<M>()?;
+    let scale = scale(model, v, &search.lengths)?;
+    let blocks = blocks(&pattern(model, v, &scale));
+    // The poses solved so far: the blocks before, the others at the box's
+    // centre (no earlier block's equation involves them).
+    let mut poses = vec![(scale.lower + scale.upper) * 0.5];
+    let (mut stable, mut runs, mut least) = (true, 0, f64::INFINITY);
+    for block in &blocks {
+        let system = BlockSystem {
+            model,
+            v,
+            block,
+            scale: &scale,
+        };
+        let mut next = Vec::new();
+        for held in &poses {
+            let found = system.roots(held, search);
+            stable &= found.stable;
+            runs += found.runs;
+            least = least.min(found.least_residual);
+            next.extend(found.roots);
+        }
+        poses = next;
+        if poses.is_empty() {
+            return Err(AssemblyError::NoAssembly {
+                v: v.as_slice().to_vec(),
+                lower: scale.lower.as_slice().to_vec(),
+                upper: scale.upper.as_slice().to_vec(),
+                least_residual: least,
+                stable,
+            });
+        }
+    }
+    let mut modes = Vec::new();
+    let mut dead_centres = Vec::new();
+    for u in poses {
+        match classify(model, v, u, &scale, &blocks) {
+            Classified::Mode(mode) => modes.push(mode),
+            Classified::DeadCentre(dead_centre) => dead_centres.push(dead_centre),
+        }
+    }
+    modes.sort_by(mode_order);
+    dead_centres.sort_by(|a, b| coordinate_order(&a.u, &b.u));
+    Ok(Modes {
+        v: *v,
+        modes,
+        dead_centres,
+        blocks,
+        angle: scale.angle,
+        lower: scale.lower,
+        upper: scale.upper,
+        equation_sizes: scale.equations,
+        stable,
+        runs,
+        point_names: L::POINT_NAMES,
+    })
+}
