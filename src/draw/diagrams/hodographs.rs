@@ -2,7 +2,7 @@
 //! with equal scales on both axes.
 
 use crate::draw::chart::{
-    Chart, Colour, DiagramError, MAX_PIXELS, Panel, check_plottable, height, within,
+    Chart, Colour, DiagramError, MAX_PIXELS, Panel, check_plottable, grid, height, within,
 };
 
 /// A hodograph's name, its points, and the vector marked with its label.
@@ -65,10 +65,12 @@ impl Hodographs {
             }
         }
         let side = height(self.size, 160)?;
+        // The columns (1 to 20) and the rows' height checked first.
+        grid(self.columns, self.panels.len(), side)?;
         let total_width = within(
             "the picture's width",
             "at most 20 000 pixels (columns × their side)",
-            self.columns as u64 * u64::from(side),
+            (self.columns as u64).saturating_mul(u64::from(side)),
             0..=MAX_PIXELS.into(),
         )?;
         let unit = &self.unit;
