@@ -54,9 +54,10 @@
 //!
 //! - On the struct: the generated functions (`psi`, `psi_u`, `gamma`,
 //!   `point_positions`, …, each documented with its formula), one
-//!   constant per named point (its index: `pose.points[FourBar::C]`) and an
-//!   implementation of [`Linkage`], whose provided methods are the
-//!   analyses: [`Linkage::solve_position`], [`Linkage::velocity`],
+//!   constant per named point (its index: `pose.points[FourBar::C]`), an
+//!   implementation of [`Kernels`] (those functions, for the runtime) and
+//!   one of [`Linkage`], whose provided methods are the analyses:
+//!   [`Linkage::solve_position`], [`Linkage::velocity`],
 //!   [`Linkage::acceleration`], [`Linkage::analyze`] (all of one pose),
 //!   [`Linkage::sweep`] and [`Linkage::sweep_each`] (continuation along a
 //!   drive, through singular poses).
@@ -163,8 +164,9 @@ mod documentation {
 }
 
 /// Everything a user of the attribute needs: the runtime's types, the
-/// `Linkage` trait (for the analyses) and `Assemble` (every assembly mode
-/// without a guess), nalgebra's vector and matrix types,
+/// `Linkage` trait (for the analyses), the `Kernels` trait under it (the
+/// generated functions) and `Assemble` (every assembly mode without a
+/// guess), nalgebra's vector and matrix types,
 /// and [`vector!`](crate::vector) and [`matrix!`](crate::matrix), which
 /// resolve through linkage (no direct nalgebra dependency needed).
 pub mod prelude {
@@ -175,8 +177,8 @@ pub mod prelude {
     #[doc(no_inline)]
     pub use crate::runtime::{
         AccelerationMethod, Analysis, Drive, Error, Event, EventKind, Iterate, JacobianSource,
-        Kinematics, Linkage, Motion, Options, Position, Sensitivities, Sensitivity, Stage, Sweep,
-        SweepOptions, SweepPose, SweepSummary, SymbolicMatrix, SymbolicTable, Velocity,
+        Kernels, Kinematics, Linkage, Motion, Options, Position, Sensitivities, Sensitivity, Stage,
+        Sweep, SweepOptions, SweepPose, SweepSummary, SymbolicMatrix, SymbolicTable, Velocity,
     };
     pub use crate::{matrix, vector};
     pub use nalgebra::{Matrix2, SMatrix, SVector, Vector1, Vector2, Vector3, Vector4};

@@ -21,7 +21,7 @@ pub struct Pose<N: Scalar, const M: usize, const F: usize> {
     pub points: Vec<Vector2<N>>,
     pub point_velocities: Vec<Vector2<N>>,
     pub point_accelerations: Vec<Vector2<N>>,
-    /// The points' names ([`Linkage::POINT_NAMES`]).
+    /// The points' names ([`Kernels::POINT_NAMES`](crate::Kernels::POINT_NAMES)).
     pub names: &'static [&'static str],
 }
 

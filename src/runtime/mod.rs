@@ -9,25 +9,29 @@
 //! Every entry point checks its inputs and outputs: it returns a typed
 //! [`Error`] rather than panic, and never a NaN or an infinity inside `Ok`.
 
-// The modules in layers, each using only those before it, but for the
-// trait: its provided methods delegate to sources, newton, solve and sweep,
-// which take their model through it (its methods, never helpers in its file).
+// The modules in layers, each using only those before it.
 //   error     the typed errors
 //   powers_of_two  exact scale factors
+//   options   the solvers' settings
 //   linalg    small matrices: inversion, factorisation, conditioning
 //   checks    finite inputs and outputs, numbers in the normal range
-//   options   the solvers' settings; results: what the analyses return
+//   trig      sines and cosines carried from pose to pose
+//   results   what the analyses return
 //   symbolic  the generated formulas as text
-//   linkage   the trait: the generated methods, and the analyses' entry
-//             points, which delegate to the modules below
+//   kernels   the trait of what the macro generates: names, Ψ, Jacobians,
+//             second-order terms, points (the modules below take their
+//             model through it)
 //   sources   where Ψ_u, Ψ_v and γ come from
 //   newton    positions: Newton–Raphson
 //   solve     velocities and accelerations
 //   sweep     continuation along a drive
+//   linkage   the trait of the analyses, on top of Kernels: its provided
+//             methods are the entry points, delegating to the modules above
 //   sensitivities  the derivatives by the parameters: a trait on top of
 //             Linkage, its provided methods delegating to its own solve
 mod checks;
 mod error;
+mod kernels;
 mod linalg;
 mod linkage;
 mod newton;
@@ -42,6 +46,7 @@ mod symbolic;
 mod trig;
 
 pub use error::{Error, Stage};
+pub use kernels::Kernels;
 pub use linalg::{Inverse, determinant, invert, scaled_svd};
 pub use linkage::Linkage;
 pub use options::{AccelerationMethod, JacobianSource, Options};

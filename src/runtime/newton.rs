@@ -12,8 +12,8 @@
 
 use crate::runtime::checks::{check_input, check_value};
 use crate::runtime::error::{Error, Stage};
+use crate::runtime::kernels::Kernels;
 use crate::runtime::linalg::{factor, invert};
-use crate::runtime::linkage::Linkage;
 use crate::runtime::options::Options;
 use crate::runtime::results::{Iterate, Kinematics, Position};
 use crate::runtime::sources::psi_and_psi_u;
@@ -35,7 +35,7 @@ const ARMIJO: f64 = 1e-4;
 /// Ψ and Ψ_u at a pose.
 type Evaluation<const M: usize> = (SVector<f64, M>, SMatrix<f64, M, M>);
 
-pub(crate) fn solve<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
+pub(crate) fn solve<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
     model: &L,
     u0: &SVector<f64, M>,
     v: &SVector<f64, F>,
@@ -141,14 +141,14 @@ pub(crate) type Converged<const M: usize, const F: usize> =
     (Position<M>, Kinematics<M, F>, PoseTrig<M, F>);
 
 /// Plain Newton–Raphson whose every evaluation is the fused kernel
-/// ([`Linkage::kinematics_with_trig`]): Ψ, Ψ_u and Ψ_u⁻¹ for the steps and,
+/// ([`Kernels::kinematics_with_trig`]): Ψ, Ψ_u and Ψ_u⁻¹ for the steps and,
 /// at the iterate that converges, the velocities and accelerations too. So
 /// an analysis evaluates the mechanism once more than it takes steps (the
 /// evaluation that confirms convergence is the one that gives the
 /// kinematics), and the drivers' sines and cosines once. The same iterates,
 /// tests and errors as [`solve`] without damping, bit for bit.
 #[inline]
-pub(crate) fn solve_fused<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
+pub(crate) fn solve_fused<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
     model: &L,
     u0: &SVector<f64, M>,
     v: &SVector<f64, F>,

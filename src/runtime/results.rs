@@ -41,7 +41,7 @@ pub struct Velocity<const M: usize, const F: usize> {
 }
 
 /// Everything at one pose, from one pass of generated code
-/// ([`Linkage::kinematics`](crate::runtime::Linkage::kinematics)).
+/// ([`Kernels::kinematics`](crate::runtime::Kernels::kinematics)).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Kinematics<const M: usize, const F: usize> {
     /// Ψ (the residual of the pose).

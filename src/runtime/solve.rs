@@ -5,21 +5,21 @@
 
 use crate::runtime::checks::{check_input, check_result, check_scale, check_value};
 use crate::runtime::error::{Error, Stage};
+use crate::runtime::kernels::Kernels;
 use crate::runtime::linalg::{augmented_condition, factor, invert};
-use crate::runtime::linkage::Linkage;
 use crate::runtime::options::{AccelerationMethod, JacobianSource, Options};
 use crate::runtime::powers_of_two::power_of_two_near;
 use crate::runtime::results::{Analysis, Kinematics, Velocity};
 use crate::runtime::{newton, sources};
 use nalgebra::{SMatrix, SVector};
 
-/// [`Linkage::analyze`]: Newton–Raphson, then the velocities and the
+/// `Linkage::analyze`: Newton–Raphson, then the velocities and the
 /// accelerations (by the fused kernel where it serves, else by the separate
 /// solves), then the points. With the generated code, the fused γ and
 /// plain Newton (the defaults), every Newton evaluation is the fused kernel
 /// and the one that confirms convergence gives the kinematics
 /// ([`newton::solve_fused`]).
-pub(crate) fn analyze<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
+pub(crate) fn analyze<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
     model: &L,
     u_guess: &SVector<f64, M>,
     v: &SVector<f64, F>,
@@ -99,9 +99,9 @@ pub(crate) fn analyze<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>
     })
 }
 
-/// [`Linkage::velocity`]: the inputs checked, Ψ_u evaluated, then
+/// `Linkage::velocity`: the inputs checked, Ψ_u evaluated, then
 /// [`velocity_with`].
-pub(crate) fn velocity<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
+pub(crate) fn velocity<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
     model: &L,
     u: &SVector<f64, M>,
     v: &SVector<f64, F>,
@@ -116,10 +116,10 @@ pub(crate) fn velocity<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize
     velocity_with(model, &psi_u, u, v, vdot, options)
 }
 
-/// [`Linkage::acceleration`]: the inputs checked, Ψ_u evaluated, then
+/// `Linkage::acceleration`: the inputs checked, Ψ_u evaluated, then
 /// [`acceleration_with`].
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn acceleration<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
+pub(crate) fn acceleration<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
     model: &L,
     u: &SVector<f64, M>,
     v: &SVector<f64, F>,
@@ -143,7 +143,7 @@ pub(crate) fn acceleration<L: Linkage<M, F> + ?Sized, const M: usize, const F: u
     acceleration_with(model, &psi_u, u, v, udot, vdot, vddot, options)
 }
 
-fn velocity_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
+fn velocity_with<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
     model: &L,
     psi_u: &SMatrix<f64, M, M>,
     u: &SVector<f64, M>,
@@ -218,7 +218,7 @@ fn fused_kinematics<const M: usize, const F: usize>(
 }
 
 #[allow(clippy::too_many_arguments)]
-fn acceleration_with<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
+fn acceleration_with<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
     model: &L,
     psi_u: &SMatrix<f64, M, M>,
     u: &SVector<f64, M>,

@@ -3,13 +3,13 @@
 //! differences of `psi`. The generated code is the fast and exact one; the
 //! other two are for cross-checks and for the speed-against-accuracy chart.
 
-use crate::runtime::linkage::Linkage;
+use crate::runtime::kernels::Kernels;
 use crate::runtime::options::{AccelerationMethod, JacobianSource};
 use nalgebra::{SMatrix, SVector};
 use num_dual::{Dual2_64, DualSVec64, DualVec, jacobian};
 
 /// Ψ and Ψ_u at (u, v).
-pub(crate) fn psi_and_psi_u<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
+pub(crate) fn psi_and_psi_u<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
     model: &L,
     source: JacobianSource,
     u: &SVector<f64, M>,
@@ -41,8 +41,8 @@ pub(crate) fn psi_and_psi_u<L: Linkage<M, F> + ?Sized, const M: usize, const F: 
 }
 
 /// γ from the generated code by `method` (see [`AccelerationMethod`]); the
-/// body of [`Linkage::gamma_by`].
-pub(crate) fn generated_gamma<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
+/// body of `Linkage::gamma_by`.
+pub(crate) fn generated_gamma<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
     model: &L,
     method: AccelerationMethod,
     u: &SVector<f64, M>,
@@ -65,7 +65,7 @@ pub(crate) fn generated_gamma<L: Linkage<M, F> + ?Sized, const M: usize, const F
 }
 
 /// Ψ_v at (u, v).
-pub(crate) fn psi_v<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
+pub(crate) fn psi_v<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
     model: &L,
     source: JacobianSource,
     u: &SVector<f64, M>,
@@ -98,7 +98,7 @@ pub(crate) fn psi_v<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
 
 /// γ = (Ψ_q q̇)_q q̇ at (u, v) with velocities (u̇, v̇); `generated` is the
 /// generated code's choice of form (methods A, B or fused).
-pub(crate) fn gamma<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
+pub(crate) fn gamma<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
     model: &L,
     source: JacobianSource,
     generated: impl FnOnce() -> SVector<f64, M>,

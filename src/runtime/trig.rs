@@ -4,7 +4,7 @@
 use nalgebra::SVector;
 
 /// The sines and cosines of the coordinates a model reads from its caller
-/// ([`Linkage::kinematics_with_trig`]), carried from an anchor angle a by
+/// ([`Kernels::kinematics_with_trig`](crate::runtime::Kernels::kinematics_with_trig)), carried from an anchor angle a by
 /// the angle-addition formulas
 ///
 /// ```text
@@ -32,7 +32,7 @@ pub(crate) type SinCos<const N: usize> = [(f64, f64); N];
 
 /// The sines and cosines an analysis computed at its pose, handed on to the
 /// sensitivities there ([`crate::runtime::Sensitivities::sensitivities_of`]): `sin_cos_u[k]` =
-/// `u[k].sin_cos()` for the coordinates of [`crate::runtime::Linkage::TRIG_U`], and
+/// `u[k].sin_cos()` for the coordinates of [`crate::runtime::Kernels::TRIG_U`], and
 /// likewise of the analysis's drivers v (the other entries unspecified).
 /// They are used only at exactly this `u`: the analysis's own `u` may be
 /// changed by its caller, its drivers may not.

@@ -113,7 +113,7 @@ pub fn fallback(input: &Input, unbuilt: &Unbuilt) -> TokenStream {
             .collect::<Vec<_>>()
     };
     let (kinematics, kernel, sensitivities) = (
-        in_trait(Trait::Linkage),
+        in_trait(Trait::Kernels),
         in_trait(Trait::SensitivityKernel),
         in_trait(Trait::Sensitivities),
     );
@@ -131,6 +131,7 @@ pub fn fallback(input: &Input, unbuilt: &Unbuilt) -> TokenStream {
         }
         generics
     };
+    let kernels = quote!(::linkage::Kernels<#m, #f>);
     let linkage = quote!(::linkage::Linkage<#m, #f>);
     let sensitivities_trait = quote!(::linkage::Sensitivities<#m, #f, #k>);
     let kernel_trait = quote!(::linkage::SensitivityKernel<#m, #f, #k>);
@@ -156,7 +157,7 @@ pub fn fallback(input: &Input, unbuilt: &Unbuilt) -> TokenStream {
                 #(#inherent)*
             }
             #[allow(unused_variables)]
-            impl #linkage_generics #linkage for #ty #ty_generics #where_clause {
+            impl #linkage_generics #kernels for #ty #ty_generics #where_clause {
                 type Points = [Vector2<f64>; #np];
                 #u_names
                 #v_names
@@ -164,6 +165,7 @@ pub fn fallback(input: &Input, unbuilt: &Unbuilt) -> TokenStream {
                 const SYMBOLIC: ::linkage::SymbolicTable = Self::SYMBOLIC;
                 #(#kinematics)*
             }
+            impl #linkage_generics #linkage for #ty #ty_generics #where_clause {}
             #[allow(unused_variables)]
             impl #sensitivity_generics #kernel_trait for #ty #ty_generics #where_clause {
                 #(#kernel)*

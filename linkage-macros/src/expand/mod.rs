@@ -1,9 +1,9 @@
 //! The items the attribute emits, assembled with `quote!` from the table of
 //! quantities (`quantities.rs`): the inherent functions (`function.rs`,
-//! `kinematics.rs`, `generic.rs`), the `Linkage` impl (`trait_impl.rs`),
-//! the symbolic table (`symbolic_table.rs`), the associated constants
-//! (`constants.rs`) and, when the attribute has mistakes, the fallback
-//! (`fallback.rs`).
+//! `kinematics.rs`, `generic.rs`), the `Kernels` and `Linkage` impls
+//! (`trait_impl.rs`), the symbolic table (`symbolic_table.rs`), the
+//! associated constants (`constants.rs`) and, when the attribute has
+//! mistakes, the fallback (`fallback.rs`).
 
 mod constants;
 mod docs;
@@ -404,7 +404,8 @@ mod tests {
         let mut sensitivities = of(Trait::Sensitivities);
         sensitivities.extend(["params".to_owned(), "set_params".to_owned()]);
         let in_trait = BTreeMap::from([
-            ("Linkage".to_owned(), of(Trait::Linkage)),
+            ("Kernels".to_owned(), of(Trait::Kernels)),
+            ("Linkage".to_owned(), BTreeSet::new()),
             ("SensitivityKernel".to_owned(), of(Trait::SensitivityKernel)),
             ("Sensitivities".to_owned(), sensitivities),
         ]);

@@ -1,6 +1,6 @@
 //! The one table of generated quantities. Each entry says what a generated
 //! function is called, what it takes and returns, where its value comes
-//! from and where it appears: the inherent items, the `Linkage` impl, the
+//! from and where it appears: the inherent items, the `Kernels` impl, the
 //! error-path fallback and the symbolic table are all generated from this
 //! table, so adding a quantity is one entry here (plus its formula in
 //! `linkage_symbolic::derivatives`).
@@ -86,8 +86,10 @@ pub enum Shape {
 /// The trait a generated function belongs to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Trait {
-    /// `linkage::Linkage<m, f>`: the kinematics.
-    Linkage,
+    /// `linkage::Kernels<m, f>`: the kinematics (the trait under
+    /// `linkage::Linkage<m, f>`, whose impl the macro emits empty: its
+    /// methods, the analyses, are all provided).
+    Kernels,
     /// `linkage::Sensitivities<m, f, k>`: the derivatives by the parameters.
     Sensitivities,
     /// `linkage::SensitivityKernel<m, f, k>`: the generated terms the
@@ -205,7 +207,7 @@ const fn formula(
         scalar: Scalar::F64,
         source: Source::Formula(matrix),
         function: true,
-        in_trait: Some(Trait::Linkage),
+        in_trait: Some(Trait::Kernels),
         key: Some(name),
         doc,
     }
@@ -274,7 +276,7 @@ pub const QUANTITIES: &[Quantity] = &[
         scalar: Scalar::F64,
         source: Source::PsiAndPsiU,
         function: true,
-        in_trait: Some(Trait::Linkage),
+        in_trait: Some(Trait::Kernels),
         key: None,
         doc: |_| {
             "Ψ and Ψ_u together, sharing every sine, cosine and common subexpression: \
@@ -418,7 +420,7 @@ pub const QUANTITIES: &[Quantity] = &[
         scalar: Scalar::F64,
         source: Source::Kinematics { with_trig: false },
         function: true,
-        in_trait: Some(Trait::Linkage),
+        in_trait: Some(Trait::Kernels),
         key: None,
         doc: |_| {
             "Everything at one pose in one pass: Ψ, Ψ_u and Ψ_v; the velocity \
@@ -437,7 +439,7 @@ pub const QUANTITIES: &[Quantity] = &[
         scalar: Scalar::F64,
         source: Source::Kinematics { with_trig: true },
         function: true,
-        in_trait: Some(Trait::Linkage),
+        in_trait: Some(Trait::Kernels),
         key: None,
         doc: |_| {
             "[`Self::kinematics`] with the sines and cosines of the coordinates \
@@ -456,7 +458,7 @@ pub const QUANTITIES: &[Quantity] = &[
         scalar: Scalar::Dual,
         source: Source::Formula(|d| &d.psi),
         function: true,
-        in_trait: Some(Trait::Linkage),
+        in_trait: Some(Trait::Kernels),
         key: None,
         doc: |_| {
             "Ψ(u, v) on any dual number of `num_dual`: the same closure equations as \
@@ -473,7 +475,7 @@ pub const QUANTITIES: &[Quantity] = &[
         scalar: Scalar::Dual,
         source: Source::Points(0),
         function: true,
-        in_trait: Some(Trait::Linkage),
+        in_trait: Some(Trait::Kernels),
         key: None,
         doc: |_| {
             "The point positions P(q) on any dual number of `num_dual` (see \
@@ -657,7 +659,7 @@ const fn points(
         scalar: Scalar::F64,
         source: Source::Points(pick),
         function: true,
-        in_trait: Some(Trait::Linkage),
+        in_trait: Some(Trait::Kernels),
         key: Some(key),
         doc,
     }

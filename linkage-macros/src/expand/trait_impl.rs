@@ -1,6 +1,7 @@
-//! The `Linkage`, `SensitivityKernel` and `Sensitivities` impls: every
-//! quantity of the table that the trait has, delegating to the inherent
-//! function of the same name.
+//! The `Kernels`, `Linkage`, `SensitivityKernel` and `Sensitivities` impls:
+//! every quantity of the table that the trait has, delegating to the
+//! inherent function of the same name (`Linkage`'s impl is empty: its
+//! methods, the analyses, are all provided).
 
 use super::Generator;
 use super::quantities::{QUANTITIES, Source, Trait};
@@ -54,7 +55,7 @@ impl Generator<'_> {
                 .collect::<Vec<_>>()
         };
         let (kinematics, kernel, sensitivities) = (
-            functions(Trait::Linkage),
+            functions(Trait::Kernels),
             functions(Trait::SensitivityKernel),
             functions(Trait::Sensitivities),
         );
@@ -67,7 +68,7 @@ impl Generator<'_> {
         let indices = (0..param_idents.len()).map(Literal::usize_unsuffixed);
         quote! {
             #[automatically_derived]
-            impl #impl_generics ::linkage::Linkage<#m, #f> for #ty #ty_generics #where_clause {
+            impl #impl_generics ::linkage::Kernels<#m, #f> for #ty #ty_generics #where_clause {
                 type Points = [Vector2<f64>; #np];
                 const U_NAMES: [&'static str; #m] = Self::U_NAMES;
                 const V_NAMES: [&'static str; #f] = Self::V_NAMES;
@@ -75,6 +76,9 @@ impl Generator<'_> {
                 const SYMBOLIC: ::linkage::SymbolicTable = Self::SYMBOLIC;
                 #(#kinematics)*
             }
+
+            #[automatically_derived]
+            impl #impl_generics ::linkage::Linkage<#m, #f> for #ty #ty_generics #where_clause {}
 
             #[automatically_derived]
             impl #impl_generics ::linkage::SensitivityKernel<#m, #f, #k> for #ty #ty_generics #where_clause {

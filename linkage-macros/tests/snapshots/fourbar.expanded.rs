@@ -1807,7 +1807,7 @@ const _: () = {
         };
     }
     #[automatically_derived]
-    impl ::linkage::Linkage<2, 1> for FourBar {
+    impl ::linkage::Kernels<2, 1> for FourBar {
         type Points = [Vector2<f64>; 5];
         const U_NAMES: [&'static str; 2] = Self::U_NAMES;
         const V_NAMES: [&'static str; 1] = Self::V_NAMES;
@@ -1968,6 +1968,8 @@ const _: () = {
             Self::point_positions_generic(self, u, v)
         }
     }
+    #[automatically_derived]
+    impl ::linkage::Linkage<2, 1> for FourBar {}
     #[automatically_derived]
     impl ::linkage::SensitivityKernel<2, 1, 4> for FourBar {
         #[inline]

@@ -89,7 +89,7 @@ pub const DASHES: [Dash; 5] = [
 ];
 
 /// The printed sizes, in points when the figure is printed 16 cm wide:
-/// no text smaller than [`points::TICK`](TICK) (subscripts, three quarters of their
+/// no text smaller than [`points::TICK`] (subscripts, three quarters of their
 /// text), lines no thinner than a hairline that a printer keeps.
 pub mod points {
     /// The width of the column a figure is printed at, in points (16 cm).

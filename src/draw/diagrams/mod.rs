@@ -5,7 +5,7 @@
 //! Rows: positions, velocities, accelerations. Columns: angles and lengths
 //! (each with its units), as the mechanism has them. A coordinate is taken
 //! for an angle when the closure equations take its sine or cosine
-//! ([`Linkage::TRIG_U`]); [`Diagrams::kind`] overrides that. Angles are
+//! ([`Kernels::TRIG_U`](crate::Kernels::TRIG_U)); [`Diagrams::kind`] overrides that. Angles are
 //! drawn in degrees, their rates in rad/s and rad/s². A sweep of one
 //! revolution of an angular driver back to the pose it started from is a
 //! period of the motion: it is drawn over 0…360° whatever angle it started

@@ -5,6 +5,7 @@
 //! was called and with what.
 
 use super::*;
+use crate::runtime::kernels::Kernels;
 use crate::runtime::options::{AccelerationMethod, JacobianSource};
 use crate::runtime::results::Kinematics;
 use crate::runtime::symbolic::SymbolicTable;
@@ -39,7 +40,7 @@ impl Tips {
         }
     }
 
-    /// [`Linkage::kinematics`] on the given sines and cosines.
+    /// [`Kernels::kinematics`] on the given sines and cosines.
     fn kinematics_on(
         &self,
         (s, c): (f64, f64),
@@ -99,7 +100,7 @@ impl Tips {
     }
 }
 
-impl Linkage<1, 1> for Tips {
+impl Kernels<1, 1> for Tips {
     type Points = Points;
     const U_NAMES: [&'static str; 1] = ["theta"];
     const V_NAMES: [&'static str; 1] = ["phi"];
@@ -256,6 +257,8 @@ impl Linkage<1, 1> for Tips {
         [Vector2::new(r * u[0].cos(), r * u[0].sin())]
     }
 }
+
+impl Linkage<1, 1> for Tips {}
 
 impl SensitivityKernel<1, 1, 1> for Tips {
     const SENSITIVITY_TRIG_U: [bool; 1] = [true];

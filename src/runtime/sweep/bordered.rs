@@ -1,7 +1,7 @@
 //! Derivatives along the path (Ψ_u, Ψ_t) and the bordered Newton system on them, for (u, t).
 
 use super::tracker::Tracker;
-use crate::runtime::linkage::Linkage;
+use crate::runtime::kernels::Kernels;
 use crate::runtime::sources;
 use nalgebra::{DMatrix, DVector, SVector};
 
@@ -9,7 +9,7 @@ use nalgebra::{DMatrix, DVector, SVector};
 /// side (−g, or the target less g).
 pub(super) type Border<const M: usize> = (SVector<f64, M>, f64, f64);
 
-impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
+impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
     /// Ψ_t = Ψ_v · direction
     pub(super) fn psi_t(&self, u: &SVector<f64, M>, t: f64) -> SVector<f64, M> {
         sources::psi_v(self.model, self.options.options.jacobian, u, &self.v(t)) * self.dir

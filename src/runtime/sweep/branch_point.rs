@@ -30,8 +30,8 @@
 use super::state::{Passage, REGULAR_RCOND, State};
 use super::tracker::Tracker;
 use super::{Event, EventKind};
+use crate::runtime::kernels::Kernels;
 use crate::runtime::linalg::scaled_svd;
-use crate::runtime::linkage::Linkage;
 use nalgebra::{DMatrix, DVector, SVector};
 use num_dual::HyperDual64;
 
@@ -54,7 +54,7 @@ pub(super) struct BranchPoint<const M: usize> {
     pub(super) rank_measure: f64,
 }
 
-impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
+impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
     /// σ_min/σ_max of [Ψ_u Ψ_τ]: about 0 at a branch point. A
     /// decomposition that fails (only for extreme numbers) is taken for
     /// rank-deficient: the cautious reading.

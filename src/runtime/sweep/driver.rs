@@ -9,13 +9,13 @@ use super::tracker::Tracker;
 use super::{Drive, Event, EventKind, SweepOptions, SweepPose, SweepSummary};
 use crate::runtime::checks::check_input;
 use crate::runtime::error::{Error, Stage};
+use crate::runtime::kernels::Kernels;
 use crate::runtime::linalg::scaled_norm;
-use crate::runtime::linkage::Linkage;
 use crate::runtime::newton;
 use crate::runtime::trig::TrigCarrier;
 use nalgebra::SVector;
 
-/// Runs a sweep (see [`Linkage::sweep`]).
+/// Runs a sweep (see `Linkage::sweep`).
 pub(crate) fn sweep<L, P, const M: usize, const F: usize>(
     model: &L,
     u0: &SVector<f64, M>,
@@ -24,7 +24,7 @@ pub(crate) fn sweep<L, P, const M: usize, const F: usize>(
     on_pose: &mut P,
 ) -> Result<SweepSummary<M, F>, Error>
 where
-    L: Linkage<M, F> + ?Sized,
+    L: Kernels<M, F> + ?Sized,
     P: FnMut(&SweepPose<M, F>),
 {
     let (base, dir, steps, rocking) = match *drive {

@@ -5,7 +5,7 @@ use super::state::{Progress, REGULAR_RCOND, State, Track};
 use super::substep::tangent_continues;
 use super::tracker::{FAST_ACCEPT, Tracker};
 use crate::runtime::error::Error;
-use crate::runtime::linkage::Linkage;
+use crate::runtime::kernels::Kernels;
 use crate::runtime::results::Kinematics;
 use crate::runtime::trig::TrigCarrier;
 use nalgebra::{SMatrix, SVector};
@@ -20,7 +20,7 @@ fn within<const N: usize>(x: &SVector<f64, N>, bound: f64) -> bool {
     x.iter().fold(true, |ok, xi| ok & (xi.abs() <= bound))
 }
 
-impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
+impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
     /// The fused kernel at (x, v), with the sines and cosines carried by
     /// `trig` when the model reads them.
     #[inline(always)]

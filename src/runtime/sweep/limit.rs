@@ -5,12 +5,12 @@
 use super::bordered::Border;
 use super::state::State;
 use super::tracker::Tracker;
+use crate::runtime::kernels::Kernels;
 use crate::runtime::linalg::determinant;
-use crate::runtime::linkage::Linkage;
 use crate::runtime::sources;
 use nalgebra::{DMatrix, SVector};
 
-impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
+impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
     /// det Ψ_u relative to the product of its column norms (|·| ≤ 1).
     pub(super) fn normalized_det(&self, u: &SVector<f64, M>, t: f64) -> f64 {
         let psi_u =

@@ -5,11 +5,11 @@ use super::state::State;
 use super::tracker::Tracker;
 use crate::runtime::checks::check_result;
 use crate::runtime::error::{Error, Stage};
-use crate::runtime::linkage::Linkage;
+use crate::runtime::kernels::Kernels;
 use crate::runtime::solve::acceleration_conditioning_with;
 use crate::runtime::sources;
 
-impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
+impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
     /// Whether the pose's velocities and accelerations keep the requested
     /// accuracy (see [`Options::accuracy`]).
     pub(super) fn keeps_accuracy(&self, state: &State<M, F>) -> bool {

@@ -4,7 +4,7 @@ use super::Event;
 use super::state::{Passage, REGULAR_RCOND, State, Track};
 use super::tracker::{Rejection, Tracker};
 use crate::runtime::error::Error;
-use crate::runtime::linkage::Linkage;
+use crate::runtime::kernels::Kernels;
 use nalgebra::SVector;
 
 /// Whether the analogs at b continue those at a, h further along the path:
@@ -48,7 +48,7 @@ pub(super) enum Advance<const M: usize, const F: usize> {
     Blocked(Track<M, F>),
 }
 
-impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
+impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
     /// Advances from `from` to the path parameter `target`, sub-stepping as
     /// needed; returns the reached track, or the last one before a limit the
     /// driver cannot pass, with the events met on the way.

@@ -3,8 +3,8 @@
 use super::SweepOptions;
 use super::state::State;
 use crate::runtime::error::{Error, Stage};
+use crate::runtime::kernels::Kernels;
 use crate::runtime::linalg::invert;
-use crate::runtime::linkage::Linkage;
 use crate::runtime::options::{AccelerationMethod, JacobianSource, Options};
 use crate::runtime::results::Kinematics;
 use crate::runtime::{newton, sources};
@@ -41,7 +41,7 @@ pub(super) struct Tracker<'a, L: ?Sized, const M: usize, const F: usize> {
     pub(super) rate: f64,
 }
 
-impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
+impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
     pub(super) fn v(&self, t: f64) -> SVector<f64, F> {
         self.base + self.dir * t
     }
