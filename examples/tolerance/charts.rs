@@ -145,6 +145,21 @@ fn shown(name: &str) -> String {
     }
 }
 
+/// The contributions of `names`, in their order (0 for a name not among
+/// them).
+fn in_order<'a>(contributions: &[(&str, f64)], names: &[&'a str]) -> Vec<(&'a str, f64)> {
+    names
+        .iter()
+        .map(|n| {
+            let value = contributions
+                .iter()
+                .find(|c| c.0 == *n)
+                .map_or(0.0, |c| c.1);
+            (*n, value)
+        })
+        .collect()
+}
+
 /// Which dimension matters most: each dimension's share of the worst case
 /// of each quantity, one panel per mechanism, a group of bars per quantity.
 pub fn importance(four_bar: &CycleStudy, shaper: &ShaperStudy) -> Result<String, DiagramError> {
@@ -182,17 +197,7 @@ pub fn importance(four_bar: &CycleStudy, shaper: &ShaperStudy) -> Result<String,
         four = four.group(shown_name, &share(&pairs));
     }
     for located in &four_bar.located {
-        let pairs: Vec<(&str, f64)> = FourBar::PARAM_NAMES
-            .iter()
-            .map(|n| {
-                let value = located
-                    .contributions
-                    .iter()
-                    .find(|c| c.0 == *n)
-                    .map_or(0.0, |c| c.1);
-                (*n, value)
-            })
-            .collect();
+        let pairs = in_order(&located.contributions, &FourBar::PARAM_NAMES);
         four = four.group(located.name, &share(&pairs));
     }
     const SHAPER: [&str; 4] = ["l_oa", "l_cd", "y_c", "y_f"];
@@ -202,17 +207,7 @@ pub fn importance(four_bar: &CycleStudy, shaper: &ShaperStudy) -> Result<String,
         .caption("the Mathcad course project's shaper")
         .y_range(0.0, 100.0);
     for located in &shaper.located {
-        let kept: Vec<(&str, f64)> = SHAPER
-            .iter()
-            .map(|n| {
-                let value = located
-                    .contributions
-                    .iter()
-                    .find(|c| c.0 == *n)
-                    .map_or(0.0, |c| c.1);
-                (*n, value)
-            })
-            .collect();
+        let kept = in_order(&located.contributions, &SHAPER);
         machine = machine.group(located.name, &share(&kept));
     }
     Chart::new(

@@ -42,17 +42,16 @@ fn write_text(
     anchor: &str,
     extra: &[(&str, &str)],
 ) {
-    let (x, y, size) = (fmt(x), fmt(y), fmt(size));
+    let (x, y, font_size) = (fmt(x), fmt(y), fmt(size));
     let mut attributes = vec![
         ("x", x.as_str()),
         ("y", y.as_str()),
         ("font-family", FONT),
-        ("font-size", size.as_str()),
+        ("font-size", font_size.as_str()),
         ("text-anchor", anchor),
     ];
     attributes.extend_from_slice(extra);
-    let parsed: f64 = attributes[3].1.parse().unwrap_or(10.0);
-    w.text_runs(&attributes, &text::runs(content, parsed));
+    w.text_runs(&attributes, &text::runs(content, size));
 }
 
 /// Draws `panel` in `cell`, each series in its look.
