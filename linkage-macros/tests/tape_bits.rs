@@ -179,6 +179,13 @@ fn sample(m: usize, f: usize, fields: usize) -> impl Strategy<Value = Sample> {
         })
 }
 
+/// 64 cases, and no file of failures written beside the test.
+fn config() -> ProptestConfig {
+    let mut config = ProptestConfig::with_cases(64);
+    config.failure_persistence = None;
+    config
+}
+
 /// The tapes of a mechanism's text, built at run time.
 fn tapes(attr: &str, item: &str) -> Tapes {
     let attr: proc_macro2::TokenStream = attr.parse().expect("the attribute's text");
@@ -422,7 +429,7 @@ macro_rules! mechanism {
             }
 
             proptest! {
-                #![proptest_config(ProptestConfig::with_cases(64))]
+                #![proptest_config(config())]
 
                 #[test]
                 fn every_kernel_gives_the_compiled_bits(
