@@ -49,7 +49,10 @@ pub mod normal;
 #[cfg(feature = "syntax")]
 pub mod params;
 #[cfg(feature = "syntax")]
+pub mod plan;
+#[cfg(feature = "syntax")]
 mod suggest;
+pub mod tape;
 #[cfg(feature = "syntax")]
 pub mod valid;
 

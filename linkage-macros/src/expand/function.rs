@@ -1,25 +1,17 @@
-//! One f64 function of the table from its formulas: the emitted statements,
-//! the result matrices filled, the signature with the arguments it reads.
+//! One f64 function of the table from its kernel's plan: the emitted
+//! statements, the result matrices filled, the signature with the
+//! arguments it reads.
 
 use super::Generator;
 use super::docs::doc_attributes;
 use super::quantities::{Arg, Quantity};
 use super::signature;
-use linkage_symbolic::dag::{Dag, Id, Node, Symbol};
-use linkage_symbolic::derivatives::Matrix;
-use linkage_symbolic::emit::{Body, Mode, Reads, emit};
+use linkage_symbolic::dag::{Id, Node, Symbol};
+use linkage_symbolic::emit::{Mode, Phased, Reads};
+use linkage_symbolic::plan::{Kernel, free_name};
+use linkage_symbolic::tape::{Form, Part};
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
-
-/// What an f64 function returns, with the formulas behind it.
-pub enum Output {
-    /// One matrix (a vector if it has one column), named for the result.
-    Matrix(&'static str, Matrix),
-    /// A tuple of matrices.
-    Tuple(Vec<(&'static str, Matrix)>),
-    /// An array of 2-vectors, one per point, with names for the coordinates.
-    Points(Vec<([Id; 2], [String; 2])>),
-}
 
 /// Whether a function's body reads an argument.
 pub fn reads(r: &Reads, arg: Arg) -> bool {
@@ -35,75 +27,60 @@ pub fn reads(r: &Reads, arg: Arg) -> bool {
     }
 }
 
+/// The statements (the prologue's, then the phase's) and the values of
+/// code in one phase.
+pub fn single_phase(phased: Phased) -> (Vec<TokenStream>, Vec<TokenStream>, Reads) {
+    let mut statements = phased.prologue;
+    let (phase, values) = phased.phases.into_iter().next().unwrap_or_default();
+    statements.extend(phase);
+    (statements, values, phased.reads)
+}
+
 impl Generator<'_> {
-    /// The function of `q` returning `output`, documented by `doc`.
-    pub(super) fn function(&self, q: &Quantity, doc: &[String], output: Output) -> TokenStream {
+    /// The function of `q`, computing its kernel, documented by `doc`.
+    pub(super) fn function(&self, q: &Quantity, doc: &[String], kernel: Kernel) -> TokenStream {
         let name = format_ident!("{}", q.name);
-        let mut roots = Vec::new();
-        let mut hints = Vec::new();
-        let mut reserved: Vec<String> = Vec::new();
-        match &output {
-            Output::Matrix(result, matrix) => {
-                roots.extend(matrix.entries.iter().copied().filter(|&e| e != Dag::ZERO));
-                reserved.push(result.to_string());
-            }
-            Output::Tuple(parts) => {
-                for (result, matrix) in parts {
-                    roots.extend(matrix.entries.iter().copied().filter(|&e| e != Dag::ZERO));
-                    reserved.push(result.to_string());
+        let plan = kernel.plan(self.model);
+        let parts: Vec<&Part> = plan.phases.iter().flatten().map(|p| &p.part).collect();
+        // The result matrices' names, which temporaries avoid.
+        let reserved: Vec<String> = parts
+            .iter()
+            .filter(|p| p.form == Form::Matrix)
+            .map(|p| self.free_name(p.name))
+            .collect();
+        let phased = plan.emit(self.dag(), &self.names, &reserved, Mode::F64);
+        let (statements, values, read) = single_phase(phased);
+        let mut values = values.iter();
+        let mut result_names = reserved.iter();
+        let mut stmts = Vec::new();
+        let mut results = Vec::new();
+        for part in &parts {
+            match part.form {
+                Form::Matrix => {
+                    let name = result_names.next().map(String::as_str).unwrap_or("out");
+                    let (s, value, _) = assemble(part, name, &mut values, quote!(f64));
+                    stmts.extend(s);
+                    results.push(value);
                 }
-            }
-            Output::Points(points) => {
-                for (ids, names) in points {
-                    for c in 0..2 {
-                        roots.push(ids[c]);
-                        hints.push((ids[c], names[c].clone()));
-                    }
+                Form::Points => {
+                    let vectors = (0..part.rows).map(|_| {
+                        let x = values.next();
+                        let y = values.next();
+                        quote!(Vector2::new(#x, #y))
+                    });
+                    results.push(quote!([#(#vectors),*]));
                 }
+                Form::PointColumns => results.push(point_columns(part, &mut values)),
             }
         }
-        let reserved: Vec<String> = reserved.into_iter().map(|r| self.free_name(&r)).collect();
-        let body: Body = emit(
-            self.dag(),
-            &self.names,
-            &roots,
-            &hints,
-            &reserved,
-            Mode::F64,
-        );
-        let mut values = body.values.iter();
-        let mut result_names = reserved.iter();
-        let result = match &output {
-            Output::Matrix(_, matrix) => {
-                let name = result_names.next().map(String::as_str).unwrap_or("out");
-                let (stmts, value, _) = assemble(matrix, name, &mut values, quote!(f64));
-                quote!(#(#stmts)* #value)
-            }
-            Output::Tuple(parts) => {
-                let mut stmts = Vec::new();
-                let mut tuple = Vec::new();
-                for (_, matrix) in parts {
-                    let name = result_names.next().map(String::as_str).unwrap_or("out");
-                    let (s, value, _) = assemble(matrix, name, &mut values, quote!(f64));
-                    stmts.extend(s);
-                    tuple.push(value);
-                }
-                quote!(#(#stmts)* (#(#tuple),*))
-            }
-            Output::Points(points) => {
-                let vectors = points.iter().map(|_| {
-                    let x = values.next();
-                    let y = values.next();
-                    quote!(Vector2::new(#x, #y))
-                });
-                quote!([#(#vectors),*])
-            }
+        let result = match results.as_slice() {
+            [one] => quote!(#(#stmts)* #one),
+            _ => quote!(#(#stmts)* (#(#results),*)),
         };
         let dims = self.dims();
-        let args = signature::args(q, &dims, |a| reads(&body.reads, a));
+        let args = signature::args(q, &dims, |a| reads(&read, a));
         let ret = signature::output_type(q, &dims, false);
         let doc = doc_attributes(doc);
-        let statements = &body.statements;
         // No `#[inline]`: the kernels are compiled in the user's crate, where
         // LLVM chooses; the hint made a Newton step (Ψ and Ψ_u inlined into
         // the caller) slower (docs/performance.md, "Measurements behind the
@@ -120,28 +97,24 @@ impl Generator<'_> {
 
     /// `name`, unless a symbol already has it.
     pub(super) fn free_name(&self, name: &str) -> String {
-        let taken: Vec<String> = self.names.all_code().collect();
-        let mut candidate = name.to_owned();
-        while taken.contains(&candidate) {
-            candidate.push('_');
-        }
-        candidate
+        free_name(&self.names, name)
     }
 }
 
-/// The statements filling a result matrix from the emitted values (zero
-/// entries left out), the expression naming it, and its type.
+/// The statements filling a result matrix from the emitted values (the
+/// part's entries; every other entry zero), the expression naming it, and
+/// its type.
 pub fn assemble<'v>(
-    matrix: &Matrix,
+    part: &Part,
     name: &str,
     values: &mut impl Iterator<Item = &'v TokenStream>,
     scalar: TokenStream,
 ) -> (Vec<TokenStream>, TokenStream, TokenStream) {
     let (r, c) = (
-        Literal::usize_unsuffixed(matrix.rows),
-        Literal::usize_unsuffixed(matrix.cols),
+        Literal::usize_unsuffixed(part.rows),
+        Literal::usize_unsuffixed(part.cols),
     );
-    let is_vector = matrix.cols == 1;
+    let is_vector = part.cols == 1;
     let (ty, constructor) = if is_vector {
         (quote!(SVector<#scalar, #r>), quote!(SVector::<#scalar, #r>))
     } else {
@@ -150,17 +123,13 @@ pub fn assemble<'v>(
             quote!(SMatrix::<#scalar, #r, #c>),
         )
     };
-    let nonzero: Vec<usize> = (0..matrix.entries.len())
-        .filter(|&k| matrix.entries[k] != Dag::ZERO)
-        .collect();
-    if nonzero.is_empty() {
+    if part.entries.is_empty() {
         return (Vec::new(), quote!(#constructor::zeros()), ty);
     }
     let var = format_ident!("{}", name);
     let mut stmts = vec![quote!(let mut #var = #constructor::zeros();)];
-    for k in nonzero {
+    for &(i, j) in &part.entries {
         let value = values.next();
-        let (i, j) = (k / matrix.cols, k % matrix.cols);
         let index = if is_vector {
             let i = Literal::usize_unsuffixed(i);
             quote!(#i)
@@ -173,8 +142,39 @@ pub fn assemble<'v>(
     (stmts, quote!(#var), ty)
 }
 
+/// A part of points by columns, `[[Vector2::new(x, y), …], …]`: one array
+/// of the points per column, its entries from the emitted values and
+/// `0.0` where the part lists none.
+pub fn point_columns<'v>(
+    part: &Part,
+    values: &mut impl Iterator<Item = &'v TokenStream>,
+) -> TokenStream {
+    let mut entries = part.entries.iter().peekable();
+    let mut next = |row: usize, col: usize| {
+        if entries.next_if(|&&e| e == (row, col)).is_some() {
+            let value = values.next();
+            quote!(#value)
+        } else {
+            quote!(0.0)
+        }
+    };
+    let columns: Vec<TokenStream> = (0..part.cols)
+        .map(|j| {
+            let points: Vec<TokenStream> = (0..part.rows / 2)
+                .map(|i| {
+                    let x = next(2 * i, j);
+                    let y = next(2 * i + 1, j);
+                    quote!(Vector2::new(#x, #y))
+                })
+                .collect();
+            quote!([#(#points),*])
+        })
+        .collect();
+    quote!([#(#columns),*])
+}
+
 /// Whether any of `roots` depends on the symbol.
-pub fn reaches(dag: &Dag, roots: &[Id], symbol: Symbol) -> bool {
+pub fn reaches(dag: &linkage_symbolic::dag::Dag, roots: &[Id], symbol: Symbol) -> bool {
     let mut seen = std::collections::HashSet::new();
     let mut stack: Vec<Id> = roots.to_vec();
     while let Some(id) = stack.pop() {

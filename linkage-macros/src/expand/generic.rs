@@ -5,12 +5,11 @@
 
 use super::Generator;
 use super::docs::doc_attributes;
-use super::function::{assemble, reads};
+use super::function::{assemble, reads, single_phase};
 use super::quantities::{Arg, Quantity};
 use super::signature;
-use linkage_symbolic::dag::{Dag, Id};
-use linkage_symbolic::derivatives::Matrix;
-use linkage_symbolic::emit::{Body, Mode, emit};
+use linkage_symbolic::emit::{Mode, Reads};
+use linkage_symbolic::plan::{Formula, Kernel};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
@@ -20,49 +19,39 @@ impl Generator<'_> {
         &self,
         q: &Quantity,
         doc: &[String],
-        matrix: &Matrix,
+        formula: Formula,
     ) -> TokenStream {
         let result = self.free_name(
             q.name
                 .trim_end_matches("_params")
                 .trim_end_matches("_generic"),
         );
-        let roots: Vec<Id> = matrix
-            .entries
-            .iter()
-            .copied()
-            .filter(|&e| e != Dag::ZERO)
-            .collect();
-        let body = emit(
+        let plan = Kernel::Formula(formula).plan(self.model);
+        let phased = plan.emit(
             self.dag(),
             &self.names,
-            &roots,
-            &[],
             std::slice::from_ref(&result),
             mode(q),
         );
-        let mut values = body.values.iter();
-        let (stmts, value, _) = assemble(matrix, &result, &mut values, quote!(D));
+        let body = single_phase(phased);
+        let mut values = body.1.iter();
+        let mut stmts = Vec::new();
+        let mut value = quote!();
+        for part in plan.phases.iter().flatten() {
+            let (s, v, _) = assemble(&part.part, &result, &mut values, quote!(D));
+            stmts.extend(s);
+            value = v;
+        }
         self.generic_function(q, doc, &body, quote!(#(#stmts)* #value))
     }
 
     /// The point positions on dual numbers.
     pub(super) fn generic_points(&self, q: &Quantity, doc: &[String]) -> TokenStream {
-        let points = &self.model.points;
-        let roots: Vec<Id> = points.iter().flat_map(|p| p.position).collect();
-        let hints: Vec<(Id, String)> = points
-            .iter()
-            .flat_map(|p| {
-                let l = p.name.to_lowercase();
-                [
-                    (p.position[0], format!("{l}_x")),
-                    (p.position[1], format!("{l}_y")),
-                ]
-            })
-            .collect();
-        let body = emit(self.dag(), &self.names, &roots, &hints, &[], mode(q));
-        let mut values = body.values.iter();
-        let vectors = points.iter().map(|_| {
+        let plan = Kernel::Points(0).plan(self.model);
+        let phased = plan.emit(self.dag(), &self.names, &[], mode(q));
+        let body = single_phase(phased);
+        let mut values = body.1.iter();
+        let vectors = self.model.points.iter().map(|_| {
             let x = values.next();
             let y = values.next();
             quote!(Vector2::new(#x, #y))
@@ -75,16 +64,16 @@ impl Generator<'_> {
         &self,
         q: &Quantity,
         doc: &[String],
-        body: &Body,
+        body: &(Vec<TokenStream>, Vec<TokenStream>, Reads),
         result: TokenStream,
     ) -> TokenStream {
         let name = format_ident!("{}", q.name);
         let dims = self.dims();
         let generics = signature::generics(q);
-        let args = signature::args(q, &dims, |a| reads(&body.reads, a));
+        let args = signature::args(q, &dims, |a| reads(&body.2, a));
         let ret = signature::output_type(q, &dims, false);
         let doc = doc_attributes(doc);
-        let statements = &body.statements;
+        let statements = &body.0;
         quote! {
             #doc
             #[must_use]

@@ -5,9 +5,9 @@ use super::Generator;
 use super::constants::TRIG;
 use super::docs::doc_attributes;
 use super::function::{assemble, reaches};
-use linkage_symbolic::dag::{Dag, Id, Symbol};
-use linkage_symbolic::derivatives::Matrix;
-use linkage_symbolic::emit::{Mode, TrigSource, emit_phases};
+use linkage_symbolic::dag::Symbol;
+use linkage_symbolic::emit::Mode;
+use linkage_symbolic::plan::{Kernel, Plan, PlannedPart};
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 
@@ -19,57 +19,40 @@ impl Generator<'_> {
         let model = self.model;
         let (m, f) = (self.m, self.f);
         let (ml, fl) = (Literal::usize_unsuffixed(m), Literal::usize_unsuffixed(f));
-        let nonzero = |matrix: &Matrix| -> Vec<Id> {
-            matrix
-                .entries
-                .iter()
-                .copied()
-                .filter(|&e| e != Dag::ZERO)
-                .collect()
-        };
-        let mut first: Vec<Id> = nonzero(&model.psi);
-        first.extend(nonzero(&model.psi_u));
-        first.extend(nonzero(&model.psi_v));
-        let second = nonzero(&model.gamma);
+        let plan = Kernel::Kinematics { with_trig }.plan(model);
         let locals = [
             "psi", "psi_u", "psi_v", "gamma", "inverse", "rcond", "det", "udot", "uddot",
         ];
         let local: Vec<String> = locals.iter().map(|n| self.free_name(n)).collect();
-        let late: Vec<Symbol> = (0..m).map(|k| Symbol::Vel(k as u16)).collect();
-        let trig_names = [self.free_name("trig_u"), self.free_name("trig_v")];
-        let source = TrigSource {
-            u: format_ident!("{}", trig_names[0]),
-            v: format_ident!("{}", trig_names[1]),
-            m,
-        };
+        let trig_names = Plan::trig_names(&self.names);
+        let source = [&trig_names[0], &trig_names[1]].map(|n| format_ident!("{}", n));
         let mut reserved = local.clone();
         reserved.extend(trig_names.iter().cloned());
-        let phased = emit_phases(
-            self.dag(),
-            &self.names,
-            &[&first, &second],
-            &[],
-            &reserved,
-            Mode::F64,
-            &late,
-            with_trig.then_some(&source),
-        );
+        let phased = plan.emit(self.dag(), &self.names, &reserved, Mode::F64);
         let [psi, psi_u, psi_v, gamma, inverse, rcond, det, udot, uddot] = locals.map(|n| {
             let k = locals.iter().position(|x| *x == n).unwrap_or(0);
             format_ident!("{}", local[k])
         });
+        let second = plan.roots().pop().unwrap_or_default();
         let mut phases = phased.phases.into_iter();
         let (first_statements, first_values) = phases.next().unwrap_or_default();
         let (second_statements, second_values) = phases.next().unwrap_or_default();
+        // Each phase's parts filled from its values: Ψ, Ψ_u and Ψ_v, then γ.
+        let phase_parts = |k: usize| plan.phases.get(k).map_or(&[][..], Vec::as_slice);
+        let fill = |parts: &[PlannedPart],
+                    k: usize,
+                    name: &proc_macro2::Ident,
+                    values: &mut std::slice::Iter<'_, TokenStream>| {
+            parts.get(k).map_or_else(Vec::new, |p| {
+                assemble(&p.part, &name.to_string(), values, quote!(f64)).0
+            })
+        };
         let mut values = first_values.iter();
-        let (psi_fill, _, _) = assemble(&model.psi, &psi.to_string(), &mut values, quote!(f64));
-        let (psi_u_fill, _, _) =
-            assemble(&model.psi_u, &psi_u.to_string(), &mut values, quote!(f64));
-        let (psi_v_fill, _, _) =
-            assemble(&model.psi_v, &psi_v.to_string(), &mut values, quote!(f64));
+        let psi_fill = fill(phase_parts(0), 0, &psi, &mut values);
+        let psi_u_fill = fill(phase_parts(0), 1, &psi_u, &mut values);
+        let psi_v_fill = fill(phase_parts(0), 2, &psi_v, &mut values);
         let mut values = second_values.iter();
-        let (gamma_fill, _, _) =
-            assemble(&model.gamma, &gamma.to_string(), &mut values, quote!(f64));
+        let gamma_fill = fill(phase_parts(1), 0, &gamma, &mut values);
         let bind = |name: &proc_macro2::Ident, fill: Vec<TokenStream>, ty: TokenStream| {
             if fill.is_empty() {
                 quote!(let #name = #ty::zeros();)
@@ -150,7 +133,7 @@ impl Generator<'_> {
             ::linkage::Kinematics { #(#fields),* }
         };
         if with_trig {
-            let (trig_u, trig_v) = (&source.u, &source.v);
+            let [trig_u, trig_v] = &source;
             let mask = |range: std::ops::Range<usize>| {
                 let flags = range.map(|k| phased.trig_coords.contains(&k));
                 quote!([#(#flags),*])

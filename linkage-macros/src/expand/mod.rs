@@ -17,14 +17,14 @@ mod signature;
 mod symbolic_table;
 mod trait_impl;
 
-use function::Output;
 use linkage_symbolic::Unbuilt;
 use linkage_symbolic::ast::Input;
-use linkage_symbolic::dag::{Dag, Id};
+use linkage_symbolic::dag::Dag;
 use linkage_symbolic::derivatives::Derivatives;
 use linkage_symbolic::display::Formatter;
 use linkage_symbolic::errors::Errors;
 use linkage_symbolic::names::SymbolNames;
+use linkage_symbolic::plan::Kernel;
 use proc_macro2::TokenStream;
 use quantities::{DocContext, QUANTITIES, Quantity, Scalar, Source};
 use quote::{format_ident, quote};
@@ -178,7 +178,7 @@ impl<'a> Generator<'a> {
         match q.source {
             Source::Formula(matrix) => {
                 lines.push(String::new());
-                lines.push(self.formula_block(matrix(self.model), &fmt));
+                lines.push(self.formula_block(matrix.of(self.model), &fmt));
             }
             Source::Points(pick) if q.scalar == Scalar::F64 => {
                 lines.push(String::new());
@@ -198,42 +198,19 @@ impl<'a> Generator<'a> {
     /// The inherent function of a quantity.
     fn inherent(&self, q: &Quantity, context: &DocContext) -> TokenStream {
         let doc = self.doc(q, context);
+        if let Some(kernel) = q.kernel() {
+            return match kernel {
+                Kernel::Kinematics { with_trig } => self.kinematics_function(with_trig, &doc),
+                Kernel::SensitivityTerms { with_trig } => {
+                    self.sensitivity_terms_function(q, with_trig, &doc)
+                }
+                _ => self.function(q, &doc, kernel),
+            };
+        }
         match (q.scalar, q.source) {
-            (Scalar::F64, Source::Formula(matrix)) => {
-                let output = Output::Matrix(q.name, matrix(self.model).clone());
-                self.function(q, &doc, output)
-            }
-            (Scalar::F64, Source::PsiAndPsiU) => {
-                let output = Output::Tuple(vec![
-                    ("psi", self.model.psi.clone()),
-                    ("psi_u", self.model.psi_u.clone()),
-                ]);
-                self.function(q, &doc, output)
-            }
-            (Scalar::F64, Source::Points(pick)) => {
-                let suffix = ["", "_dot", "_ddot"][pick];
-                let entries: Vec<([Id; 2], [String; 2])> = self
-                    .model
-                    .points
-                    .iter()
-                    .map(|p| {
-                        let l = p.name.to_lowercase();
-                        let ids = [p.position, p.velocity, p.acceleration][pick];
-                        (ids, [format!("{l}_x{suffix}"), format!("{l}_y{suffix}")])
-                    })
-                    .collect();
-                self.function(q, &doc, Output::Points(entries))
-            }
-            (_, Source::Kinematics { with_trig }) => self.kinematics_function(with_trig, &doc),
-            (Scalar::Dual, Source::Formula(matrix)) => {
-                self.generic_formula(q, &doc, matrix(self.model))
-            }
+            (Scalar::Dual, Source::Formula(matrix)) => self.generic_formula(q, &doc, matrix),
             (Scalar::Dual, Source::Points(_)) => self.generic_points(q, &doc),
-            (_, Source::SensitivityTerms { with_trig }) => {
-                self.sensitivity_terms_function(q, with_trig, &doc)
-            }
-            (Scalar::Dual, Source::PsiAndPsiU)
-            | (_, Source::Determinant | Source::PointsByParams(_)) => quote!(),
+            _ => quote!(),
         }
     }
 

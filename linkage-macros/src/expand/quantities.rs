@@ -5,7 +5,7 @@
 //! table, so adding a quantity is one entry here (plus its formula in
 //! `linkage_symbolic::derivatives`).
 
-use linkage_symbolic::derivatives::{Derivatives, Matrix};
+use linkage_symbolic::plan::{Formula, Kernel};
 
 /// An argument of a generated function, after `&self`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -110,7 +110,7 @@ pub enum Scalar {
 #[derive(Clone, Copy)]
 pub enum Source {
     /// One matrix of formulas of the derivatives.
-    Formula(fn(&Derivatives) -> &Matrix),
+    Formula(Formula),
     /// Ψ and Ψ_u in one evaluation.
     PsiAndPsiU,
     /// The points' positions (0), velocities (1) or accelerations (2).
@@ -164,6 +164,25 @@ pub struct Quantity {
     pub doc: fn(&DocContext) -> String,
 }
 
+impl Quantity {
+    /// The kernel of straight-line f64 code behind its function, if it has
+    /// one: what the function computes is the kernel's plan
+    /// (`linkage_symbolic::plan`), which the tapes compile too.
+    pub fn kernel(&self) -> Option<Kernel> {
+        if !self.function || self.scalar != Scalar::F64 {
+            return None;
+        }
+        match self.source {
+            Source::Formula(f) => Some(Kernel::Formula(f)),
+            Source::PsiAndPsiU => Some(Kernel::PsiAndPsiU),
+            Source::Points(level) => Some(Kernel::Points(level)),
+            Source::Kinematics { with_trig } => Some(Kernel::Kinematics { with_trig }),
+            Source::SensitivityTerms { with_trig } => Some(Kernel::SensitivityTerms { with_trig }),
+            Source::Determinant | Source::PointsByParams(_) => None,
+        }
+    }
+}
+
 const U_V: &[Arg] = &[Arg::U, Arg::V];
 const U_V_UDOT: &[Arg] = &[Arg::U, Arg::V, Arg::Udot];
 const U_V_VDOT: &[Arg] = &[Arg::U, Arg::V, Arg::Vdot];
@@ -196,7 +215,7 @@ const fn formula(
     symbol: &'static str,
     args: &'static [Arg],
     shape: Shape,
-    matrix: fn(&Derivatives) -> &Matrix,
+    matrix: Formula,
     doc: fn(&DocContext) -> String,
 ) -> Quantity {
     Quantity {
@@ -215,59 +234,33 @@ const fn formula(
 
 /// Every generated quantity, in the order of the generated items.
 pub const QUANTITIES: &[Quantity] = &[
-    formula(
-        "psi",
-        "Ψ",
-        U_V,
-        Shape::Column,
-        |d| &d.psi,
-        |_| "Ψ(u, v): the closure equations, zero at every assembled pose.".to_owned(),
-    ),
+    formula("psi", "Ψ", U_V, Shape::Column, Formula::Psi, |_| {
+        "Ψ(u, v): the closure equations, zero at every assembled pose.".to_owned()
+    }),
     Quantity {
         in_trait: None,
-        ..formula(
-            "psi_q",
-            "Ψ_q",
-            U_V,
-            Shape::Full,
-            |d| &d.psi_q,
-            |c| {
-                format!(
-                    "Ψ_q = ∂Ψ/∂q, the {}×{} Jacobian with columns q = [{}] (u first, then v).",
-                    c.m,
-                    c.m + c.f,
-                    c.q_list
-                )
-            },
-        )
+        ..formula("psi_q", "Ψ_q", U_V, Shape::Full, Formula::PsiQ, |c| {
+            format!(
+                "Ψ_q = ∂Ψ/∂q, the {}×{} Jacobian with columns q = [{}] (u first, then v).",
+                c.m,
+                c.m + c.f,
+                c.q_list
+            )
+        })
     },
-    formula(
-        "psi_u",
-        "Ψ_u",
-        U_V,
-        Shape::Square,
-        |d| &d.psi_u,
-        |c| {
-            format!(
-                "Ψ_u = ∂Ψ/∂u, the {m}×{m} Jacobian with respect to u = [{}].",
-                c.u_list,
-                m = c.m
-            )
-        },
-    ),
-    formula(
-        "psi_v",
-        "Ψ_v",
-        U_V,
-        Shape::Wide,
-        |d| &d.psi_v,
-        |c| {
-            format!(
-                "Ψ_v = ∂Ψ/∂v, the {}×{} Jacobian with respect to v = [{}].",
-                c.m, c.f, c.v_list
-            )
-        },
-    ),
+    formula("psi_u", "Ψ_u", U_V, Shape::Square, Formula::PsiU, |c| {
+        format!(
+            "Ψ_u = ∂Ψ/∂u, the {m}×{m} Jacobian with respect to u = [{}].",
+            c.u_list,
+            m = c.m
+        )
+    }),
+    formula("psi_v", "Ψ_v", U_V, Shape::Wide, Formula::PsiV, |c| {
+        format!(
+            "Ψ_v = ∂Ψ/∂v, the {}×{} Jacobian with respect to v = [{}].",
+            c.m, c.f, c.v_list
+        )
+    }),
     Quantity {
         name: "psi_and_psi_u",
         symbol: "(Ψ, Ψ_u)",
@@ -301,7 +294,7 @@ pub const QUANTITIES: &[Quantity] = &[
         "([Ψ_u]u̇)_u",
         U_V_UDOT,
         Shape::Square,
-        |d| &d.psi_u_udot_u,
+        Formula::PsiUUdotU,
         |c| {
             format!(
                 "([Ψ_u]u̇)_u, the {m}×{m} Jacobian of Ψ_u u̇ with respect to u: the first block of method B.",
@@ -314,7 +307,7 @@ pub const QUANTITIES: &[Quantity] = &[
         "([Ψ_u]u̇)_v",
         U_V_UDOT,
         Shape::Wide,
-        |d| &d.psi_u_udot_v,
+        Formula::PsiUUdotV,
         |c| {
             format!(
                 "([Ψ_u]u̇)_v, the {}×{} Jacobian of Ψ_u u̇ with respect to v (non-zero when Ψ_u depends on v).",
@@ -327,7 +320,7 @@ pub const QUANTITIES: &[Quantity] = &[
         "([Ψ_v]v̇)_u",
         U_V_VDOT,
         Shape::Square,
-        |d| &d.psi_v_vdot_u,
+        Formula::PsiVVdotU,
         |c| {
             format!(
                 "([Ψ_v]v̇)_u, the {m}×{m} Jacobian of Ψ_v v̇ with respect to u (non-zero when Ψ_v depends on u).",
@@ -340,7 +333,7 @@ pub const QUANTITIES: &[Quantity] = &[
         "([Ψ_v]v̇)_v",
         U_V_VDOT,
         Shape::Wide,
-        |d| &d.psi_v_vdot_v,
+        Formula::PsiVVdotV,
         |c| {
             format!(
                 "([Ψ_v]v̇)_v, the {}×{} Jacobian of Ψ_v v̇ with respect to v.",
@@ -353,7 +346,7 @@ pub const QUANTITIES: &[Quantity] = &[
         "Ψ̇_u",
         U_V_QDOT,
         Shape::Square,
-        |d| &d.psi_u_dot,
+        Formula::PsiUDot,
         |c| {
             format!(
                 "Ψ̇_u = Σₖ ∂Ψ_u/∂qₖ q̇ₖ, the time derivative of Ψ_u ({m}×{m}): method A.",
@@ -366,7 +359,7 @@ pub const QUANTITIES: &[Quantity] = &[
         "Ψ̇_v",
         U_V_QDOT,
         Shape::Wide,
-        |d| &d.psi_v_dot,
+        Formula::PsiVDot,
         |c| {
             format!(
                 "Ψ̇_v = Σₖ ∂Ψ_v/∂qₖ q̇ₖ, the time derivative of Ψ_v ({}×{}): method A.",
@@ -379,7 +372,7 @@ pub const QUANTITIES: &[Quantity] = &[
         "γ = (Ψ_q q̇)_q q̇",
         U_V_QDOT,
         Shape::Column,
-        |d| &d.gamma,
+        Formula::Gamma,
         |c| {
             format!(
                 "γ = (Ψ_q q̇)_q q̇, the convective term of the acceleration equation \
@@ -456,7 +449,7 @@ pub const QUANTITIES: &[Quantity] = &[
         args: U_V,
         shape: Shape::Column,
         scalar: Scalar::Dual,
-        source: Source::Formula(|d| &d.psi),
+        source: Source::Formula(Formula::Psi),
         function: true,
         in_trait: Some(Trait::Kernels),
         key: None,
@@ -485,35 +478,31 @@ pub const QUANTITIES: &[Quantity] = &[
     },
     Quantity {
         in_trait: Some(Trait::Sensitivities),
-        ..formula(
-            "psi_p",
-            "Ψ_p",
-            U_V,
-            Shape::ByParams,
-            |d| &d.psi_p,
-            |c| {
-                format!(
-                    "Ψ_p = ∂Ψ/∂p, the {}×{} Jacobian with respect to the parameters p = [{}]: \
+        ..formula("psi_p", "Ψ_p", U_V, Shape::ByParams, Formula::PsiP, |c| {
+            format!(
+                "Ψ_p = ∂Ψ/∂p, the {}×{} Jacobian with respect to the parameters p = [{}]: \
                      the position sensitivities are u_p = −Ψ_u⁻¹Ψ_p.",
-                    c.m, c.k, c.p_list
-                )
-            },
-        )
+                c.m, c.k, c.p_list
+            )
+        })
     },
-    table_only("psi_p_dot", "Ψ̇_p = (Ψ_q q̇)_p", Shape::ByParams, |d| {
-        &d.psi_p_dot
-    }),
+    table_only(
+        "psi_p_dot",
+        "Ψ̇_p = (Ψ_q q̇)_p",
+        Shape::ByParams,
+        Formula::PsiPDot,
+    ),
     table_only(
         "psi_u_ddot",
         "Ψ̈_u = (Ψ_q q̈ + γ)_u",
         Shape::Square,
-        |d| &d.psi_u_ddot,
+        Formula::PsiUDdot,
     ),
     table_only(
         "psi_p_ddot",
         "Ψ̈_p = (Ψ_q q̈ + γ)_p",
         Shape::ByParams,
-        |d| &d.psi_p_ddot,
+        Formula::PsiPDdot,
     ),
     points_by_params("points_p", "P_p", 0),
     points_by_params("point_velocities_p", "Ṗ_p", 1),
@@ -571,7 +560,7 @@ pub const QUANTITIES: &[Quantity] = &[
         args: P_U_V,
         shape: Shape::Column,
         scalar: Scalar::Dual,
-        source: Source::Formula(|d| &d.psi),
+        source: Source::Formula(Formula::Psi),
         function: true,
         in_trait: Some(Trait::Sensitivities),
         key: None,
@@ -609,7 +598,7 @@ const fn table_only(
     key: &'static str,
     symbol: &'static str,
     shape: Shape,
-    matrix: fn(&Derivatives) -> &Matrix,
+    matrix: Formula,
 ) -> Quantity {
     Quantity {
         name: key,

@@ -34,7 +34,7 @@ impl Generator<'_> {
         for q in QUANTITIES {
             let Some(key) = q.key else { continue };
             let matrix = match q.source {
-                Source::Formula(matrix) => matrix(model).clone(),
+                Source::Formula(matrix) => matrix.of(model).clone(),
                 Source::Points(pick) => self.points_matrix(pick),
                 Source::Determinant => match model.det_psi_u {
                     Some(det) => Matrix::column(vec![det]),

@@ -227,6 +227,23 @@ impl Emitter<'_> {
         }
     }
 
+    /// The node as the receiver of a method call. In f64 code a constant
+    /// receiver carries its type: `2.0.powf(x)` and `(1.0).atan2(x)` do not
+    /// compile (the literal's float type is ambiguous), `2f64.powf(x)` does.
+    pub(super) fn receiver(&self, id: Id) -> TokenStream {
+        match (self.mode, self.bound.get(&id), self.dag.as_const(id)) {
+            (Mode::F64, None, Some(c)) => {
+                let lit = Literal::f64_suffixed(c.abs());
+                if c < 0.0 {
+                    quote!((-#lit))
+                } else {
+                    quote!(#lit)
+                }
+            }
+            _ => self.operand(id, Prec::Atom),
+        }
+    }
+
     /// The expression defining a node (its children by name if bound).
     pub(super) fn definition(&self, id: Id) -> (TokenStream, Prec) {
         match self.dag.node(id) {
@@ -247,12 +264,12 @@ impl Emitter<'_> {
             Node::Sum(terms) => self.sum(terms.iter().map(|&(c, t)| (c.get(), t)).collect()),
             Node::Prod(factors) => (self.product(1.0, factors), Prec::Product),
             Node::Call(f, a) => {
-                let arg = self.operand(*a, Prec::Atom);
+                let arg = self.receiver(*a);
                 let method = format_ident!("{}", f.method());
                 (quote!(#arg.#method()), Prec::Atom)
             }
             Node::Call2(f, a, b) => {
-                let x = self.operand(*a, Prec::Atom);
+                let x = self.receiver(*a);
                 let tokens = match (f, self.mode) {
                     (Func2::Atan2, _) => {
                         let y = self.operand(*b, Prec::Sum);
@@ -373,7 +390,7 @@ impl Emitter<'_> {
             if e == 1 {
                 self.operand(f, Prec::Unary)
             } else {
-                let base = self.operand(f, Prec::Atom);
+                let base = self.receiver(f);
                 let e = Literal::i32_unsuffixed(e as i32);
                 quote!(#base.powi(#e))
             }

@@ -308,7 +308,7 @@ pub fn emit_phases(
                     }
                     continue;
                 }
-                let arg = emitter.operand(*a, Prec::Atom);
+                let arg = emitter.receiver(*a);
                 match (sin, cos) {
                     (Some(s), Some(c)) => {
                         if emitted_pairs.insert(*a) {

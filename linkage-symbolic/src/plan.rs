@@ -1,0 +1,380 @@
+//! What each f64 function of straight-line code computes, in one place
+//! for the attribute's generator (`linkage-macros`) and for the tapes
+//! ([`crate::tape`]) that evaluate the same statements without a compiler:
+//! which matrices' nonzero entries are its outputs and in what order, which
+//! nodes it always names (hints), in how many phases it runs, which symbols
+//! the caller binds between phases, and whether the sines and cosines of
+//! the coordinates come from the caller.
+
+use crate::dag::{Dag, Id, Symbol};
+use crate::derivatives::{Derivatives, Matrix};
+use crate::emit::{Mode, Phased, TrigSource, emit_phases};
+use crate::names::SymbolNames;
+use crate::tape::{Form, Part};
+use quote::format_ident;
+
+/// A matrix of formulas of the derivatives.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Formula {
+    Psi,
+    PsiQ,
+    PsiU,
+    PsiV,
+    PsiUUdotU,
+    PsiUUdotV,
+    PsiVVdotU,
+    PsiVVdotV,
+    PsiUDot,
+    PsiVDot,
+    Gamma,
+    PsiP,
+    PsiPDot,
+    PsiUDdot,
+    PsiPDdot,
+}
+
+impl Formula {
+    /// The matrix of the model.
+    pub fn of(self, d: &Derivatives) -> &Matrix {
+        use Formula::*;
+        match self {
+            Psi => &d.psi,
+            PsiQ => &d.psi_q,
+            PsiU => &d.psi_u,
+            PsiV => &d.psi_v,
+            PsiUUdotU => &d.psi_u_udot_u,
+            PsiUUdotV => &d.psi_u_udot_v,
+            PsiVVdotU => &d.psi_v_vdot_u,
+            PsiVVdotV => &d.psi_v_vdot_v,
+            PsiUDot => &d.psi_u_dot,
+            PsiVDot => &d.psi_v_dot,
+            Gamma => &d.gamma,
+            PsiP => &d.psi_p,
+            PsiPDot => &d.psi_p_dot,
+            PsiUDdot => &d.psi_u_ddot,
+            PsiPDdot => &d.psi_p_ddot,
+        }
+    }
+
+    /// Its name in generated code (the function's, the local's, the
+    /// field's).
+    pub fn name(self) -> &'static str {
+        use Formula::*;
+        match self {
+            Psi => "psi",
+            PsiQ => "psi_q",
+            PsiU => "psi_u",
+            PsiV => "psi_v",
+            PsiUUdotU => "psi_u_udot_u",
+            PsiUUdotV => "psi_u_udot_v",
+            PsiVVdotU => "psi_v_vdot_u",
+            PsiVVdotV => "psi_v_vdot_v",
+            PsiUDot => "psi_u_dot",
+            PsiVDot => "psi_v_dot",
+            Gamma => "gamma",
+            PsiP => "psi_p",
+            PsiPDot => "psi_p_dot",
+            PsiUDdot => "psi_u_ddot",
+            PsiPDdot => "psi_p_ddot",
+        }
+    }
+}
+
+/// An f64 function of straight-line code the attribute generates.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Kernel {
+    /// One matrix of formulas.
+    Formula(Formula),
+    /// Ψ and Ψ_u in one evaluation.
+    PsiAndPsiU,
+    /// The points' positions (0), velocities (1) or accelerations (2).
+    Points(usize),
+    /// Ψ, Ψ_u and Ψ_v (phase 0), then γ at the velocity u̇ the caller
+    /// solved for in between (phase 1); the sines and cosines computed or
+    /// given.
+    Kinematics { with_trig: bool },
+    /// Every derivative by u and by p the sensitivities need, in one
+    /// evaluation; the sines and cosines computed or given.
+    SensitivityTerms { with_trig: bool },
+}
+
+/// The sensitivities' matrices, in the order of their outputs.
+const SENSITIVITY_MATRICES: [Formula; 6] = [
+    Formula::PsiU,
+    Formula::PsiP,
+    Formula::PsiUDot,
+    Formula::PsiPDot,
+    Formula::PsiUDdot,
+    Formula::PsiPDdot,
+];
+
+/// The sensitivities' point derivatives after the matrices: their names,
+/// level (position, velocity, acceleration) and whether by p (else by u).
+const SENSITIVITY_POINTS: [(&str, usize, bool); 6] = [
+    ("points_u", 0, false),
+    ("points_p", 0, true),
+    ("point_velocities_u", 1, false),
+    ("point_velocities_p", 1, true),
+    ("point_accelerations_u", 2, false),
+    ("point_accelerations_p", 2, true),
+];
+
+impl Kernel {
+    /// Every kernel, in the order of the generated items.
+    pub const ALL: [Kernel; 20] = [
+        Kernel::Formula(Formula::Psi),
+        Kernel::Formula(Formula::PsiQ),
+        Kernel::Formula(Formula::PsiU),
+        Kernel::Formula(Formula::PsiV),
+        Kernel::PsiAndPsiU,
+        Kernel::Formula(Formula::PsiUUdotU),
+        Kernel::Formula(Formula::PsiUUdotV),
+        Kernel::Formula(Formula::PsiVVdotU),
+        Kernel::Formula(Formula::PsiVVdotV),
+        Kernel::Formula(Formula::PsiUDot),
+        Kernel::Formula(Formula::PsiVDot),
+        Kernel::Formula(Formula::Gamma),
+        Kernel::Points(0),
+        Kernel::Points(1),
+        Kernel::Points(2),
+        Kernel::Kinematics { with_trig: false },
+        Kernel::Kinematics { with_trig: true },
+        Kernel::Formula(Formula::PsiP),
+        Kernel::SensitivityTerms { with_trig: false },
+        Kernel::SensitivityTerms { with_trig: true },
+    ];
+
+    /// The generated function's name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Kernel::Formula(f) => f.name(),
+            Kernel::PsiAndPsiU => "psi_and_psi_u",
+            Kernel::Points(level) => {
+                ["point_positions", "point_velocities", "point_accelerations"][level.min(2)]
+            }
+            Kernel::Kinematics { with_trig: false } => "kinematics",
+            Kernel::Kinematics { with_trig: true } => "kinematics_with_trig",
+            Kernel::SensitivityTerms { with_trig: false } => "sensitivity_terms",
+            Kernel::SensitivityTerms { with_trig: true } => "sensitivity_terms_with_trig",
+        }
+    }
+
+    /// What the kernel computes for a model.
+    pub fn plan(self, model: &Derivatives) -> Plan {
+        match self {
+            Kernel::Formula(f) => Plan::single(vec![matrix_part(f.name(), f.of(model))]),
+            Kernel::PsiAndPsiU => Plan::single(vec![
+                matrix_part("psi", &model.psi),
+                matrix_part("psi_u", &model.psi_u),
+            ]),
+            Kernel::Points(level) => points_plan(model, level.min(2)),
+            Kernel::Kinematics { with_trig } => {
+                let first = [Formula::Psi, Formula::PsiU, Formula::PsiV]
+                    .map(|f| matrix_part(f.name(), f.of(model)));
+                let second = matrix_part("gamma", &model.gamma);
+                Plan {
+                    phases: vec![Vec::from(first), vec![second]],
+                    hints: Vec::new(),
+                    // The velocities u̇, solved for after phase 0.
+                    late: (0..model.m()).map(|k| Symbol::Vel(k as u16)).collect(),
+                    trig: with_trig,
+                }
+            }
+            Kernel::SensitivityTerms { with_trig } => {
+                let mut parts: Vec<PlannedPart> = SENSITIVITY_MATRICES
+                    .iter()
+                    .map(|f| matrix_part(f.name(), f.of(model)))
+                    .collect();
+                for (name, level, by_params) in SENSITIVITY_POINTS {
+                    parts.push(point_columns_part(model, name, level, by_params));
+                }
+                Plan {
+                    phases: vec![parts],
+                    hints: Vec::new(),
+                    late: Vec::new(),
+                    trig: with_trig,
+                }
+            }
+        }
+    }
+}
+
+/// One output of a plan: a part of the result and the nodes filling its
+/// entries, in the order of [`Part::entries`].
+pub struct PlannedPart {
+    pub part: Part,
+    pub roots: Vec<Id>,
+}
+
+/// What one kernel computes: its phases, each a list of result parts.
+pub struct Plan {
+    /// The parts of each phase; the roots of a phase are its parts' roots
+    /// in order. Each phase may use everything computed before it.
+    pub phases: Vec<Vec<PlannedPart>>,
+    /// Nodes always bound to a `let`, under these names (the points'
+    /// coordinates).
+    pub hints: Vec<(Id, String)>,
+    /// The symbols the caller binds between phase 0 and phase 1 (the
+    /// velocities u̇ of `kinematics`).
+    pub late: Vec<Symbol>,
+    /// Whether the sines and cosines of the coordinates are read from the
+    /// arguments `trig_u` and `trig_v` instead of computed.
+    pub trig: bool,
+}
+
+impl Plan {
+    fn single(parts: Vec<PlannedPart>) -> Plan {
+        Plan {
+            phases: vec![parts],
+            hints: Vec::new(),
+            late: Vec::new(),
+            trig: false,
+        }
+    }
+
+    /// The roots of each phase, in the order of its outputs.
+    pub fn roots(&self) -> Vec<Vec<Id>> {
+        self.phases
+            .iter()
+            .map(|parts| parts.iter().flat_map(|p| p.roots.iter().copied()).collect())
+            .collect()
+    }
+
+    /// The names of the arguments the sines and cosines are read from:
+    /// `trig_u` and `trig_v`, unless a symbol has the name.
+    pub fn trig_names(names: &SymbolNames) -> [String; 2] {
+        [free_name(names, "trig_u"), free_name(names, "trig_v")]
+    }
+
+    /// The straight-line code of the plan: `reserved` are the names the
+    /// function's own code binds, which temporaries avoid.
+    pub fn emit(&self, dag: &Dag, names: &SymbolNames, reserved: &[String], mode: Mode) -> Phased {
+        let roots = self.roots();
+        let phases: Vec<&[Id]> = roots.iter().map(Vec::as_slice).collect();
+        let [u, v] = Plan::trig_names(names);
+        let source = TrigSource {
+            u: format_ident!("{}", u),
+            v: format_ident!("{}", v),
+            m: names.m(),
+        };
+        emit_phases(
+            dag,
+            names,
+            &phases,
+            &self.hints,
+            reserved,
+            mode,
+            &self.late,
+            self.trig.then_some(&source),
+        )
+    }
+}
+
+/// `name`, unless a symbol already has it: then with `_` appended until
+/// free.
+pub fn free_name(names: &SymbolNames, name: &str) -> String {
+    let taken: Vec<String> = names.all_code().collect();
+    let mut candidate = name.to_owned();
+    while taken.contains(&candidate) {
+        candidate.push('_');
+    }
+    candidate
+}
+
+/// A matrix's nonzero entries, row by row.
+fn matrix_part(name: &'static str, matrix: &Matrix) -> PlannedPart {
+    let mut entries = Vec::new();
+    let mut roots = Vec::new();
+    for i in 0..matrix.rows {
+        for j in 0..matrix.cols {
+            let e = matrix.get(i, j);
+            if e != Dag::ZERO {
+                entries.push((i, j));
+                roots.push(e);
+            }
+        }
+    }
+    PlannedPart {
+        part: Part {
+            name,
+            form: Form::Matrix,
+            rows: matrix.rows,
+            cols: matrix.cols,
+            entries,
+        },
+        roots,
+    }
+}
+
+/// The points' positions, velocities or accelerations: every coordinate,
+/// zero or not, each named after its point (`b_x`, `c_y_dot`).
+fn points_plan(model: &Derivatives, level: usize) -> Plan {
+    let suffix = ["", "_dot", "_ddot"][level];
+    let mut entries = Vec::new();
+    let mut roots = Vec::new();
+    let mut hints = Vec::new();
+    for (i, p) in model.points.iter().enumerate() {
+        let l = p.name.to_lowercase();
+        let ids = [p.position, p.velocity, p.acceleration][level];
+        for (c, axis) in ["x", "y"].iter().enumerate() {
+            entries.push((i, c));
+            roots.push(ids[c]);
+            hints.push((ids[c], format!("{l}_{axis}{suffix}")));
+        }
+    }
+    let name = Kernel::Points(level).name();
+    Plan {
+        phases: vec![vec![PlannedPart {
+            part: Part {
+                name,
+                form: Form::Points,
+                rows: model.points.len(),
+                cols: 2,
+                entries,
+            },
+            roots,
+        }]],
+        hints,
+        late: Vec::new(),
+        trig: false,
+    }
+}
+
+/// A level of the points' derivatives by u or by p: column by column, one
+/// (x, y) per point, the nonzero ones.
+fn point_columns_part(
+    model: &Derivatives,
+    name: &'static str,
+    level: usize,
+    by_params: bool,
+) -> PlannedPart {
+    let cols = if by_params { model.k() } else { model.m() };
+    let mut entries = Vec::new();
+    let mut roots = Vec::new();
+    for j in 0..cols {
+        for (i, p) in model.points.iter().enumerate() {
+            let matrix = if by_params {
+                &p.by_p[level]
+            } else {
+                &p.by_u[level]
+            };
+            for c in 0..2 {
+                let e = matrix.get(c, j);
+                if e != Dag::ZERO {
+                    entries.push((2 * i + c, j));
+                    roots.push(e);
+                }
+            }
+        }
+    }
+    PlannedPart {
+        part: Part {
+            name,
+            form: Form::PointColumns,
+            rows: 2 * model.points.len(),
+            cols,
+            entries,
+        },
+        roots,
+    }
+}

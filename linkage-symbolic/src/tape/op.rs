@@ -1,0 +1,151 @@
+//! The operations of a tape over f64 registers, and what each computes:
+//! exactly what optimised Rust computes for the emitted expression it
+//! stands for, so that a tape gives the compiled code's bits.
+//!
+//! Every operation is one IEEE operation or one call of the same `f64`
+//! method the emitted code calls (the same libm function), never fused
+//! (Rust contracts no `a * b + c` into a fused multiply-add). The two forms
+//! LLVM rewrites in optimised code have operations of their own:
+//! `x.powf(0.5)` is `|√x|` with `−∞ ↦ +∞` ([`Code::PowfHalf`]) and
+//! `2.0.powf(x)` is `x.exp2()` ([`Code::Exp2`]); `x.powi(n)` is a chain of
+//! multiplications (see `compile`).
+
+/// What an operation computes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Code {
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Neg,
+    /// sin into the result register, cos into the second operand's.
+    SinCos,
+    Sin,
+    Cos,
+    Tan,
+    Asin,
+    Acos,
+    Atan,
+    Sinh,
+    Cosh,
+    Tanh,
+    Sqrt,
+    Exp,
+    Exp2,
+    Ln,
+    Abs,
+    Signum,
+    /// `x.powf(0.5)` as LLVM lowers it: `|√x|`, and `+∞` at `−∞`.
+    PowfHalf,
+    /// `y.atan2(x)`: the first operand is y.
+    Atan2,
+    Hypot,
+    Powf,
+}
+
+impl Code {
+    /// Whether it reads a second operand.
+    pub fn is_binary(self) -> bool {
+        matches!(
+            self,
+            Code::Add | Code::Sub | Code::Mul | Code::Div | Code::Atan2 | Code::Hypot | Code::Powf
+        )
+    }
+}
+
+/// One operation: `d = code(a, b)`, registers being indices into the
+/// register file; a unary operation ignores `b`, except [`Code::SinCos`],
+/// which writes the sine to `d` and the cosine to `b`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Op {
+    pub code: Code,
+    pub d: u32,
+    pub a: u32,
+    pub b: u32,
+}
+
+/// `x.powf(0.5)` in optimised code.
+fn powf_half(x: f64) -> f64 {
+    if x == f64::NEG_INFINITY {
+        f64::INFINITY
+    } else {
+        x.sqrt().abs()
+    }
+}
+
+/// `d = f(a)` on every lane.
+#[inline(always)]
+fn unary<const L: usize>(r: &mut [[f64; L]], d: u32, a: u32, f: impl Fn(f64) -> f64) {
+    let x = r[a as usize];
+    let out = &mut r[d as usize];
+    for l in 0..L {
+        out[l] = f(x[l]);
+    }
+}
+
+/// `d = f(a, b)` on every lane.
+#[inline(always)]
+fn binary<const L: usize>(r: &mut [[f64; L]], d: u32, a: u32, b: u32, f: impl Fn(f64, f64) -> f64) {
+    let (x, y) = (r[a as usize], r[b as usize]);
+    let out = &mut r[d as usize];
+    for l in 0..L {
+        out[l] = f(x[l], y[l]);
+    }
+}
+
+impl Op {
+    /// The registers it writes.
+    pub fn writes(self) -> impl Iterator<Item = u32> {
+        let cos = (self.code == Code::SinCos).then_some(self.b);
+        std::iter::once(self.d).chain(cos)
+    }
+
+    /// The registers it reads.
+    pub fn reads(self) -> impl Iterator<Item = u32> {
+        let second = self.code.is_binary().then_some(self.b);
+        std::iter::once(self.a).chain(second)
+    }
+
+    /// Runs the operation on L lanes of registers (the operands read before
+    /// the result is written, so a result may reuse an operand's register).
+    #[inline(always)]
+    pub(crate) fn execute<const L: usize>(self, r: &mut [[f64; L]]) {
+        let Op { code, d, a, b } = self;
+        match code {
+            Code::Add => binary(r, d, a, b, |x, y| x + y),
+            Code::Sub => binary(r, d, a, b, |x, y| x - y),
+            Code::Mul => binary(r, d, a, b, |x, y| x * y),
+            Code::Div => binary(r, d, a, b, |x, y| x / y),
+            Code::Neg => unary(r, d, a, |x| -x),
+            Code::SinCos => {
+                let x = r[a as usize];
+                let mut sin = [0.0; L];
+                let mut cos = [0.0; L];
+                for l in 0..L {
+                    (sin[l], cos[l]) = x[l].sin_cos();
+                }
+                r[d as usize] = sin;
+                r[b as usize] = cos;
+            }
+            Code::Sin => unary(r, d, a, f64::sin),
+            Code::Cos => unary(r, d, a, f64::cos),
+            Code::Tan => unary(r, d, a, f64::tan),
+            Code::Asin => unary(r, d, a, f64::asin),
+            Code::Acos => unary(r, d, a, f64::acos),
+            Code::Atan => unary(r, d, a, f64::atan),
+            Code::Sinh => unary(r, d, a, f64::sinh),
+            Code::Cosh => unary(r, d, a, f64::cosh),
+            Code::Tanh => unary(r, d, a, f64::tanh),
+            Code::Sqrt => unary(r, d, a, f64::sqrt),
+            Code::Exp => unary(r, d, a, f64::exp),
+            Code::Exp2 => unary(r, d, a, f64::exp2),
+            Code::Ln => unary(r, d, a, f64::ln),
+            Code::Abs => unary(r, d, a, f64::abs),
+            Code::Signum => unary(r, d, a, f64::signum),
+            Code::PowfHalf => unary(r, d, a, powf_half),
+            Code::Atan2 => binary(r, d, a, b, f64::atan2),
+            Code::Hypot => binary(r, d, a, b, f64::hypot),
+            Code::Powf => binary(r, d, a, b, f64::powf),
+        }
+    }
+}

@@ -1,0 +1,82 @@
+//! Where a tape reads its inputs: the first registers of the register
+//! file, one slot per entry of each argument of the generated function.
+
+use std::ops::Range;
+
+/// An argument of a generated function, as a tape reads it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Input {
+    /// The dependent coordinates u (m).
+    U,
+    /// The driving coordinates v (f).
+    V,
+    /// u̇ (m); in `kinematics`, written by the caller between the phases.
+    Udot,
+    /// v̇ (f).
+    Vdot,
+    /// ü (m).
+    Uddot,
+    /// v̈ (f).
+    Vddot,
+    /// (sin uₖ, cos uₖ) of each coordinate of u, in pairs (2m).
+    TrigU,
+    /// (sin vₖ, cos vₖ) of each coordinate of v, in pairs (2f).
+    TrigV,
+    /// The struct's `f64` fields in the order declared, every one of
+    /// them (`self.l1, self.l2, …`), not only the parameters p.
+    Fields,
+}
+
+impl Input {
+    /// Every input, in the order of their slots.
+    pub const ALL: [Input; 9] = [
+        Input::U,
+        Input::V,
+        Input::Udot,
+        Input::Vdot,
+        Input::Uddot,
+        Input::Vddot,
+        Input::TrigU,
+        Input::TrigV,
+        Input::Fields,
+    ];
+}
+
+/// The sizes of a mechanism that lay out the input slots.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Slots {
+    /// Dependent coordinates.
+    pub m: usize,
+    /// Driving coordinates.
+    pub f: usize,
+    /// `f64` fields of the struct.
+    pub fields: usize,
+}
+
+impl Slots {
+    /// How many values an input has.
+    pub fn len(self, input: Input) -> usize {
+        match input {
+            Input::U | Input::Udot | Input::Uddot => self.m,
+            Input::V | Input::Vdot | Input::Vddot => self.f,
+            Input::TrigU => 2 * self.m,
+            Input::TrigV => 2 * self.f,
+            Input::Fields => self.fields,
+        }
+    }
+
+    /// The registers of an input.
+    pub fn range(self, input: Input) -> Range<usize> {
+        let start: usize = Input::ALL
+            .iter()
+            .take_while(|&&i| i != input)
+            .map(|&i| self.len(i))
+            .sum();
+        start..start + self.len(input)
+    }
+
+    /// How many registers the inputs take.
+    pub fn total(self) -> usize {
+        Input::ALL.iter().map(|&i| self.len(i)).sum()
+    }
+}
