@@ -47,6 +47,8 @@ pub mod lower;
 pub mod names;
 pub mod normal;
 #[cfg(feature = "syntax")]
+pub mod owner;
+#[cfg(feature = "syntax")]
 pub mod params;
 #[cfg(feature = "syntax")]
 mod suggest;
