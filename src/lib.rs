@@ -126,6 +126,8 @@ pub mod error;
 pub mod ground;
 pub mod least_squares;
 pub mod machine;
+#[cfg(feature = "files")]
+pub mod mechanism;
 pub mod mechanisms;
 mod numerics;
 pub mod quantity;

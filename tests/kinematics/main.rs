@@ -14,4 +14,5 @@ mod batch;
 mod errors;
 mod fourbar_worksheet;
 mod mechanisms;
+mod run_time;
 mod sensitivities;
