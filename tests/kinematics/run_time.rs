@@ -172,9 +172,11 @@ fn every_kernel<L, const M: usize, const F: usize>(
     }
 }
 
-/// The strategy of a pose in motion near `u0`, `v0`.
-fn motion<const M: usize, const F: usize>()
--> impl Strategy<Value = (Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>)> {
+/// u, v, u̇, v̇, ü, v̈ as lists.
+type Motion6 = (Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>);
+
+/// A pose in motion: every coordinate and rate in [−4, 4).
+fn motion<const M: usize, const F: usize>() -> impl Strategy<Value = Motion6> {
     let numbers = |n: usize| proptest::collection::vec(-4.0..4.0f64, n);
     (
         numbers(M),

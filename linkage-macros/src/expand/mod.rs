@@ -412,7 +412,9 @@ mod tests {
         let mut without_flags = in_trait.clone();
         for (which, flags) in [("Kernels", TRIG), ("SensitivityKernel", SENSITIVITY_TRIG)] {
             for flag in flags {
-                without_flags.get_mut(which).map(|f| f.remove(&flag.name.to_lowercase()));
+                without_flags
+                    .get_mut(which)
+                    .map(|f| f.remove(&flag.name.to_lowercase()));
             }
         }
         let (fallback_inherent, fallback_trait, _) = inventory(&broken);
@@ -632,7 +634,10 @@ mod tests {
         let mut lines = guide.lines();
         while lines.any(|l| l.starts_with("```text")) {
             let block: Vec<&str> = lines.by_ref().take_while(|l| *l != "```").collect();
-            if !block.first().is_some_and(|l| l.trim_start().starts_with("///")) {
+            if !block
+                .first()
+                .is_some_and(|l| l.trim_start().starts_with("///"))
+            {
                 continue;
             }
             let excerpt = trimmed(&block);
