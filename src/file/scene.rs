@@ -1,0 +1,68 @@
+//! A file's drawing as a [`Scene`].
+
+use super::MechanismFile;
+use super::drawing::{DrawingSpec, Guide};
+use crate::draw::scene::Scene;
+
+impl DrawingSpec {
+    /// The scene this spec describes (its ground pivots, links, plates,
+    /// sliders, arrows and traces; the scales if written), added to
+    /// `scene`.
+    pub fn scene(&self, scene: Scene) -> Scene {
+        let mut scene = scene;
+        for (name, [x, y]) in &self.ground {
+            scene = scene.ground(&name.text, [x.value, y.value]);
+        }
+        for [a, b] in &self.links {
+            scene = scene.link([a.text.as_str(), b.text.as_str()]);
+        }
+        for plate in &self.plates {
+            scene = scene.plate(plate.iter().map(|n| n.text.as_str()));
+        }
+        for slider in &self.sliders {
+            let point = slider.point.text.as_str();
+            scene = match &slider.guide {
+                Guide::Ground(angle) => scene.slider(point, angle.value),
+                Guide::Along([a, b]) => scene.slider_on(point, [a.text.as_str(), b.text.as_str()]),
+                Guide::Slot(angle) => scene.block(point, angle.value),
+            };
+        }
+        scene = scene
+            .velocities(self.velocities.iter().map(|n| n.text.as_str()))
+            .accelerations(self.accelerations.iter().map(|n| n.text.as_str()))
+            .trace(self.trace.iter().map(|n| n.text.as_str()));
+        if let Some(scale) = &self.velocity_scale {
+            scene = scene.velocity_scale(scale.value);
+        }
+        if let Some(scale) = &self.acceleration_scale {
+            scene = scene.acceleration_scale(scale.value);
+        }
+        scene
+    }
+}
+
+impl MechanismFile {
+    /// The picture the file describes: its drawing (an empty scene if it
+    /// has none), titled with its title, its legend in the file's length
+    /// unit and seconds.
+    ///
+    /// ```
+    /// use linkage::file::MechanismFile;
+    ///
+    /// let text = include_str!("../../mechanisms/four_bar.toml");
+    /// let file = MechanismFile::parse(text)?;
+    /// let scene = file.scene();
+    /// # let _ = scene;
+    /// # Ok::<(), linkage::file::FileErrors>(())
+    /// ```
+    pub fn scene(&self) -> Scene {
+        let mut scene = Scene::new().units(&self.length_unit, "s");
+        if let Some(title) = &self.title {
+            scene = scene.title(title);
+        }
+        match &self.drawing {
+            Some(drawing) => drawing.scene(scene),
+            None => scene,
+        }
+    }
+}
