@@ -114,8 +114,8 @@
 //! let errors = MechanismFile::parse(&wrong).unwrap_err();
 //! let said: Vec<String> = errors.errors.iter().map(|e| e.to_string()).collect();
 //! assert_eq!(said, [
-//!     "9:7: unknown unit `cn` in `parameters.r`; did you mean `cm`?",
-//!     "13:1: unknown key `rat` in `drive.theta`; did you mean `rate`?",
+//!     "10:8: unknown unit `cn` in `parameters.r`; did you mean `cm`?",
+//!     "14:1: unknown key `rat` in `drive.theta`; did you mean `rate`?",
 //! ]);
 //! # Ok::<(), linkage::file::FileErrors>(())
 //! ```

@@ -129,14 +129,20 @@ impl Accept {
         what: "an acceleration",
     };
 
-    /// Its units, for a message: "an angle (`rad`, `deg`, `rev`) or a
-    /// length (`m`, …)".
-    fn units(&self) -> String {
-        self.kinds
-            .iter()
-            .map(|&k| format!("{k} ({})", units::of_kind(k)))
-            .collect::<Vec<_>>()
-            .join(" or ")
+    /// The units it takes, for a message: "an angle: `rad`, `deg`, `rev`;
+    /// or a length: `m`, …".
+    fn which(&self) -> String {
+        if self.kinds.is_empty() {
+            "no unit: a plain number".to_owned()
+        } else if self.kinds.len() == Accept::ANY.kinds.len() {
+            "a unit of the table of `linkage::file::units`".to_owned()
+        } else {
+            self.kinds
+                .iter()
+                .map(|&k| format!("{k}: {}", units::of_kind(k)))
+                .collect::<Vec<_>>()
+                .join("; or ")
+        }
     }
 }
 
@@ -224,7 +230,7 @@ impl Reader<'_> {
             let Some(unit) = units::lookup(written.unit) else {
                 let hint = did_you_mean(written.unit, units::spellings());
                 let hint = if hint.is_empty() {
-                    format!(" (here: {})", accept.units())
+                    format!(" ({})", accept.which())
                 } else {
                     hint
                 };
@@ -238,11 +244,11 @@ impl Reader<'_> {
                 self.error(
                     at(written.unit_at.clone()),
                     format!(
-                        "`{place}` is {} (`{}`), but {} belongs here: {}",
+                        "`{place}` is {} (`{}`), but {} belongs here ({})",
                         unit.kind,
                         written.unit,
                         accept.what,
-                        accept.units()
+                        accept.which()
                     ),
                 );
                 return None;

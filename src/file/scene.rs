@@ -47,13 +47,25 @@ impl MechanismFile {
     /// unit and seconds.
     ///
     /// ```
+    /// use linkage::draw::scene::Frame;
     /// use linkage::file::MechanismFile;
+    /// use linkage::mechanisms::FourBar;
+    /// use linkage::prelude::*;
     ///
-    /// let text = include_str!("../../mechanisms/four_bar.toml");
-    /// let file = MechanismFile::parse(text)?;
-    /// let scene = file.scene();
-    /// # let _ = scene;
-    /// # Ok::<(), linkage::file::FileErrors>(())
+    /// let file = MechanismFile::parse(include_str!("../../mechanisms/four_bar.toml"))?;
+    /// // Drawn at a pose of the file's compiled twin.
+    /// let bar = FourBar::WORKSHEET;
+    /// let theta2 = file.driver("theta2").unwrap();
+    /// let pose = bar.analyze(
+    ///     &vector![1.2, -0.9],
+    ///     &vector![theta2.at.value],
+    ///     &vector![theta2.rate.value],
+    ///     &vector![theta2.acceleration.value],
+    ///     &Options::default(),
+    /// )?;
+    /// let svg = file.scene().render(&Frame::from_analysis(&bar, &pose), &[])?;
+    /// assert!(svg.contains("The four-bar of the Maple worksheet"));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn scene(&self) -> Scene {
         let mut scene = Scene::new().units(&self.length_unit, "s");

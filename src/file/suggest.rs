@@ -35,7 +35,8 @@ fn distance(a: &str, b: &str) -> usize {
 /// The candidate closest to `name`, if it is close enough to be a likely
 /// typo (at most a third of the name's length, and at least one edit,
 /// apart; a different letter case counts as close); of two as close, the
-/// one of the name's length ("mn": `mm` rather than `m`).
+/// one that starts as the name does ("rat": `rate` rather than `at`), then
+/// the one of the name's length ("mn": `mm` rather than `m`).
 pub(super) fn closest<'a>(
     name: &str,
     candidates: impl IntoIterator<Item = &'a str>,
@@ -53,7 +54,11 @@ pub(super) fn closest<'a>(
             (d, c)
         })
         .filter(|&(d, _)| d <= limit)
-        .min_by_key(|&(d, c)| (d, c.chars().count().abs_diff(name.chars().count()), c.len()))
+        .min_by_key(|&(d, c)| {
+            let other_start = c.chars().next() != name.chars().next();
+            let length = c.chars().count().abs_diff(name.chars().count());
+            (d, other_start, length, c.len())
+        })
         .map(|(_, c)| c)
 }
 
@@ -77,6 +82,7 @@ mod tests {
         assert_eq!(closest("Rate", keys), Some("rate"));
         assert_eq!(closest("speed", keys), None);
         assert_eq!(closest("titel", ["title", "name"]), Some("title"));
+        assert_eq!(closest("rat", keys), Some("rate"));
         assert_eq!(
             did_you_mean("mn", ["m", "mm", "min"]),
             "; did you mean `mm`?"

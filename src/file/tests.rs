@@ -230,7 +230,7 @@ fn an_unknown_unit_is_pointed_at() {
     );
     assert_eq!(
         error(&with("\"400 rpm\"", "\"400 furlongs/fortnight\"")),
-        "23:13: unknown unit `furlongs/fortnight` in `drive.theta2.rate` (here: an angular rate (`rad/s`, `deg/s`, `rpm`, `rev/s`) or a linear rate (`m/s`, `mm/s`))"
+        "23:13: unknown unit `furlongs/fortnight` in `drive.theta2.rate` (an angular rate: `rad/s`, `deg/s`, `rpm`, `rev/s`; or a linear rate: `m/s`, `mm/s`)"
     );
 }
 
@@ -238,11 +238,11 @@ fn an_unknown_unit_is_pointed_at() {
 fn a_unit_of_the_wrong_kind_for_its_place() {
     assert_eq!(
         error(&with("\"400 rpm\"", "\"400 mm\"")),
-        "23:13: `drive.theta2.rate` is a length (`mm`), but a rate belongs here: an angular rate (`rad/s`, `deg/s`, `rpm`, `rev/s`) or a linear rate (`m/s`, `mm/s`)"
+        "23:13: `drive.theta2.rate` is a length (`mm`), but a rate belongs here (an angular rate: `rad/s`, `deg/s`, `rpm`, `rev/s`; or a linear rate: `m/s`, `mm/s`)"
     );
     assert_eq!(
         error(&with("D = [\"80 mm\", 0]", "D = [\"80 deg\", 0]")),
-        "30:33: `drawing.ground.D[0]` is an angle (`deg`), but a length belongs here: a length (`m`, `mm`, `cm`, `in`, `ft`)"
+        "30:33: `drawing.ground.D[0]` is an angle (`deg`), but a length belongs here (a length: `m`, `mm`, `cm`, `in`, `ft`)"
     );
     // A driver moves an angle or a length, not both.
     assert_eq!(
@@ -279,7 +279,7 @@ fn a_number_must_be_finite_and_a_number() {
     );
     assert_eq!(
         error(&with("\"80 mm\"", "\"80,5 mm\"")),
-        "14:9: unknown unit `,5 mm` in `parameters.l1` (here: a length (`m`, `mm`, `cm`, `in`, `ft`) or an angle (`rad`, `deg`, `rev`) or a time (`s`, `min`) or an angular rate (`rad/s`, `deg/s`, `rpm`, `rev/s`) or a linear rate (`m/s`, `mm/s`) or an angular acceleration (`rad/s^2`, `deg/s^2`) or a linear acceleration (`m/s^2`, `mm/s^2`) or a mass (`kg`, `g`) or a force (`N`, `kN`) or a moment (`N*m`))"
+        "14:9: unknown unit `,5 mm` in `parameters.l1` (a unit of the table of `linkage::file::units`)"
     );
 }
 
@@ -431,6 +431,13 @@ fn the_drawing_is_checked_for_what_the_file_alone_tells() {
             "sliders = [{ point = \"C\", angle = 0, slot = 0 }]"
         )),
         "32:45: a slider has one guide: `angle` or `slot`, not both"
+    );
+    assert_eq!(
+        error(&with(
+            "velocities = [\"B\", \"C\"]",
+            "velocity_scale = \"0.02 s\""
+        )),
+        "32:24: `drawing.velocity_scale` is a time (`s`), but a positive plain number belongs here (no unit: a plain number)"
     );
     assert_eq!(
         error(&with("velocities = [\"B\", \"C\"]", "velocity_scale = -1")),
@@ -591,4 +598,19 @@ proptest! {
             }
         }
     }
+}
+
+#[test]
+fn the_modules_example_file_reads() {
+    let doc: String = include_str!("mod.rs")
+        .lines()
+        .filter_map(|l| l.strip_prefix("//!"))
+        .map(|l| format!("{}\n", l.strip_prefix(' ').unwrap_or(l)))
+        .collect();
+    let start = doc.find("```toml\n").unwrap() + "```toml\n".len();
+    let end = start + doc[start..].find("```").unwrap();
+    let file = MechanismFile::parse(&doc[start..end]).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(file.name.text, "FourBar");
+    assert_eq!(file.parameter("l3"), Some(50.0));
+    assert_eq!(file.parameter("l4"), Some(70.0));
 }
