@@ -203,8 +203,9 @@ impl Reader<'_> {
         let array = self.array(place, &shape, value)?;
         let mut all = Vec::new();
         let mut ok = true;
-        for item in array.iter() {
-            let Some(points) = self.point_list(&format!("each of `{place}`"), item) else {
+        for (k, item) in array.iter().enumerate() {
+            let place = format!("{place}[{k}]");
+            let Some(points) = self.point_list(&place, item) else {
                 ok = false;
                 continue;
             };
@@ -216,7 +217,7 @@ impl Reader<'_> {
                 };
                 self.error(
                     item.span(),
-                    format!("each of `{place}` joins {count}, not {}", points.len()),
+                    format!("`{place}` must join {count}, not {}", points.len()),
                 );
                 ok = false;
                 continue;

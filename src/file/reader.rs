@@ -186,11 +186,11 @@ impl<'t> Reader<'t> {
         let array = self.array(place, "an array of point names", value)?;
         let mut names = Vec::new();
         let mut ok = true;
-        for item in array.iter() {
+        for (k, item) in array.iter().enumerate() {
             match item.get_ref() {
                 DeValue::String(s) => names.push((s.to_string(), item.span())),
                 _ => {
-                    self.wrong_type(&format!("each name of `{place}`"), "a string", item);
+                    self.wrong_type(&format!("{place}[{k}]"), "a point's name", item);
                     ok = false;
                 }
             }

@@ -409,7 +409,7 @@ fn the_assembly_is_picked_one_way() {
 fn the_drawing_is_checked_for_what_the_file_alone_tells() {
     assert_eq!(
         error(&with("[\"A\", \"B\"], ", "[\"A\", \"B\", \"C\"], ")),
-        "31:10: each of `drawing.links` joins 2 points, not 3"
+        "31:10: `drawing.links[0]` must join 2 points, not 3"
     );
     assert_eq!(
         error(&with(
@@ -417,6 +417,17 @@ fn the_drawing_is_checked_for_what_the_file_alone_tells() {
             "velocities = [\"B\", \"B\"]"
         )),
         "32:20: `B` is listed twice in `drawing.velocities`"
+    );
+    assert_eq!(
+        error(&with(
+            "velocities = [\"B\", \"C\"]",
+            "velocities = [\"B\", 3]"
+        )),
+        "32:20: `drawing.velocities[1]` must be a point's name, not an integer"
+    );
+    assert_eq!(
+        error(&with("[\"A\", \"B\"], ", "[\"A\", \"A\"], ")),
+        "31:16: `A` is listed twice in `drawing.links[0]`"
     );
     assert_eq!(
         error(&with(
@@ -448,7 +459,7 @@ fn the_drawing_is_checked_for_what_the_file_alone_tells() {
             "velocities = [\"B\", \"C\"]",
             "plates = [[\"A\", \"B\"]]"
         )),
-        "32:11: each of `drawing.plates` joins 3 or more points, not 2"
+        "32:11: `drawing.plates[0]` must join 3 or more points, not 2"
     );
 }
 
