@@ -14,9 +14,17 @@ use std::str::FromStr;
 pub const MAX_BYTES: usize = 64 * 1024;
 
 /// The most tokens read: sixteen times the largest model's (about 250).
-/// An expression's depth is at most its number of tokens, and the later
-/// stages recurse that deep (on a 1 MiB stack, as WebAssembly has).
+/// The derivatives' work grows with the square of the number of
+/// coordinates, and as many tokens make at most about 130 coordinates,
+/// under a second.
 pub const MAX_TOKENS: usize = 4096;
+
+/// The most tokens one entry of a list (an equation, a point) has, nested
+/// ones counted: real equations have about forty. An expression is at
+/// most as deep as its tokens are many, and the parser and the lowering
+/// recurse that deep: 256 levels fit a 1 MiB stack, as WebAssembly has,
+/// unoptimised.
+pub const MAX_ENTRY_TOKENS: usize = 256;
 
 /// The deepest nesting of brackets read: real equations nest four or five
 /// deep.
@@ -131,12 +139,14 @@ fn closing(open: char) -> char {
     }
 }
 
-/// At most [`MAX_TOKENS`] tokens nested at most [`MAX_DEPTH`] deep
-/// (walked without recursion: the nesting is not known to be shallow yet).
+/// At most [`MAX_TOKENS`] tokens nested at most [`MAX_DEPTH`] deep, and
+/// at most [`MAX_ENTRY_TOKENS`] between two commas inside brackets (walked
+/// without recursion: the nesting is not known to be shallow yet).
 fn check_size(source: Source<'_>, tokens: &TokenStream) -> Result<(), Diagnostic> {
     let mut count = 0;
     let mut pending: Vec<(TokenStream, usize)> = vec![(tokens.clone(), 0)];
     while let Some((stream, depth)) = pending.pop() {
+        let mut entry: Option<(Span, usize)> = None;
         for tree in stream {
             count += 1;
             let span = tree.span();
@@ -147,6 +157,24 @@ fn check_size(source: Source<'_>, tokens: &TokenStream) -> Result<(), Diagnostic
                          this is the first one past it"
                     ),
                     Some(located(source, span)),
+                ));
+            }
+            if matches!(&tree, TokenTree::Punct(p) if p.as_char() == ',') {
+                entry = None;
+                continue;
+            }
+            // At the top, an entry is `key = [...]`, whose list's entries
+            // are counted one by one below.
+            let (start, size) = entry.get_or_insert((span, 0));
+            *size += tokens_in(&tree);
+            if depth > 0 && *size > MAX_ENTRY_TOKENS {
+                let whole = start.join(span).unwrap_or(*start);
+                return Err(Diagnostic::error(
+                    format!(
+                        "this entry has more than {MAX_ENTRY_TOKENS} tokens, the most one \
+                         equation or point may have"
+                    ),
+                    Some(located(source, whole)),
                 ));
             }
             if let TokenTree::Group(group) = tree {
@@ -161,6 +189,24 @@ fn check_size(source: Source<'_>, tokens: &TokenStream) -> Result<(), Diagnostic
         }
     }
     Ok(())
+}
+
+/// The tokens of `tree`, itself and those it holds.
+fn tokens_in(tree: &TokenTree) -> usize {
+    let mut count = 1;
+    let mut pending: Vec<TokenStream> = match tree {
+        TokenTree::Group(group) => vec![group.stream()],
+        _ => Vec::new(),
+    };
+    while let Some(stream) = pending.pop() {
+        for tree in stream {
+            count += 1;
+            if let TokenTree::Group(group) = tree {
+                pending.push(group.stream());
+            }
+        }
+    }
+    count
 }
 
 /// A span of the text's tokens, in file coordinates.
@@ -214,8 +260,28 @@ mod tests {
     fn too_large_or_too_deep_is_refused() {
         let long = "a + ".repeat(MAX_BYTES / 4 + 1);
         assert!(refusal(&long).message().contains("bytes long"));
-        let many = "a + ".repeat(MAX_TOKENS);
-        assert!(refusal(&many).message().contains("tokens"));
+        let many = "a + a, ".repeat(MAX_TOKENS / 4 + 1);
+        assert!(
+            refusal(&many)
+                .message()
+                .starts_with("the equations have more than")
+        );
+        let entry = format!("closure = [{}a]", "- ".repeat(MAX_ENTRY_TOKENS));
+        let d = refusal(&entry);
+        assert!(d.message().starts_with("this entry has more than"));
+        assert_eq!(d.range(), Some(111..111 + 2 * MAX_ENTRY_TOKENS + 1));
+        let fine = format!(
+            "closure = [{}a], v = [{}b]",
+            "- ".repeat(255),
+            "- ".repeat(255)
+        );
+        assert!(
+            lex(Source {
+                text: &fine,
+                offset: 0
+            })
+            .is_ok()
+        );
         let deep = format!(
             "{}a{}",
             "(".repeat(MAX_DEPTH + 1),

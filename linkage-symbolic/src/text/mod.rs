@@ -57,10 +57,13 @@
 //! `struct <name> { <parameter>: f64, ... }` is written and lexed beside
 //! it; the pair goes through [`Input::parse_owned_by`] and
 //! [`crate::build`] as an attribute and its struct would; and every
-//! `syn::Error` recorded becomes a [`Diagnostic`] ([`locate`]). What the
+//! `syn::Error` recorded becomes a [`Diagnostic`] (`locate.rs`). What the
 //! attribute's parser cannot see is checked here first: the names given
-//! for the mechanism and its parameters ([`declaration`]) and a text the
-//! lexer refuses, or too large or too deeply nested to read ([`lex`]).
+//! for the mechanism and its parameters (`declaration.rs`) and a text the
+//! lexer refuses, or too large or too deeply nested to read (`lex.rs`:
+//! [`MAX_BYTES`], [`MAX_TOKENS`], [`MAX_ENTRY_TOKENS`], [`MAX_DEPTH`]),
+//! and equations nested too deep to differentiate in reasonable time
+//! (`depth.rs`: [`MAX_NESTING`]).
 //!
 //! proc-macro2 keeps the text of every string it lexes, for the life of
 //! the thread; [`build`] drops them when it is done
@@ -73,10 +76,12 @@
 //! procedural macros, where proc-macro2's spans are the compiler's.
 
 mod declaration;
+mod depth;
 mod lex;
 mod locate;
 
-pub use lex::{MAX_BYTES, MAX_DEPTH, MAX_TOKENS};
+pub use depth::MAX_NESTING;
+pub use lex::{MAX_BYTES, MAX_DEPTH, MAX_ENTRY_TOKENS, MAX_TOKENS};
 
 use crate::ast::Input;
 use crate::derivatives::Derivatives;
@@ -206,7 +211,13 @@ fn build_with_spans(
     let mut errors = Errors::default();
     let owner = |_: &syn::Ident| Owner::Mechanism(name.to_owned());
     let input = Input::parse_owned_by(attr, item, owner, &mut errors);
-    let derivatives = (input.as_ref()).and_then(|input| crate::build(input, &mut errors).ok());
+    let derivatives = (input.as_ref()).and_then(|input| match depth::too_deep(input) {
+        Some(too_deep) => {
+            errors.push(too_deep);
+            None
+        }
+        None => crate::build(input, &mut errors).ok(),
+    });
     diagnostics.extend(errors.into_iter().map(|error| places.diagnostic(error)));
     match (input, derivatives) {
         (Some(input), Some(derivatives)) if diagnostics.is_empty() => {
@@ -223,3 +234,6 @@ fn build_with_spans(
         .into()),
     }
 }
+
+#[cfg(test)]
+mod tests;
