@@ -4,6 +4,7 @@
 //! deeply nested for the later stages (whose recursion follows the
 //! expressions' depth) refused before they see it.
 
+use super::Equations;
 use crate::diagnostics::Diagnostic;
 use proc_macro2::{Delimiter, Span, TokenStream, TokenTree};
 use std::ops::Range;
@@ -30,24 +31,7 @@ pub const MAX_ENTRY_TOKENS: usize = 256;
 /// deep.
 pub const MAX_DEPTH: usize = 32;
 
-/// A text of equations and where it starts in its file.
-#[derive(Clone, Copy)]
-pub(super) struct Source<'a> {
-    pub text: &'a str,
-    pub offset: usize,
-}
-
-impl Source<'_> {
-    /// The bytes `range` of the text, in file coordinates.
-    pub fn in_file(&self, range: Range<usize>) -> Range<usize> {
-        self.offset.saturating_add(range.start)..self.offset.saturating_add(range.end)
-    }
-
-    /// The whole text, in file coordinates.
-    pub fn whole(&self) -> Range<usize> {
-        self.in_file(0..self.text.len())
-    }
-
+impl Equations<'_> {
     /// The character at byte `at` of the text, in file coordinates (empty
     /// at the end).
     fn char_at(&self, at: usize) -> Range<usize> {
@@ -58,29 +42,33 @@ impl Source<'_> {
     }
 }
 
-/// The tokens of `source`, or why it cannot be read.
-pub(super) fn lex(source: Source<'_>) -> Result<TokenStream, Diagnostic> {
-    if source.text.len() > MAX_BYTES {
+/// The tokens of `equations`, or why they cannot be read.
+pub(super) fn lex(equations: Equations<'_>) -> Result<TokenStream, Diagnostic> {
+    if equations.text.len() > MAX_BYTES {
         return Err(Diagnostic::error(
             format!(
                 "the equations are {} bytes long; the most this reads is {MAX_BYTES}",
-                source.text.len()
+                equations.text.len()
             ),
-            Some(source.in_file(MAX_BYTES..source.text.len())),
+            Some(equations.in_file(MAX_BYTES..equations.text.len())),
         ));
     }
-    let tokens = TokenStream::from_str(source.text)
-        .map_err(|e| refused(source, e.span().byte_range().start))?;
-    check_size(source, &tokens)?;
+    let tokens = TokenStream::from_str(equations.text)
+        .map_err(|e| refused(equations, e.span().byte_range().start))?;
+    check_size(equations, &tokens)?;
     Ok(tokens)
 }
 
 /// Why the lexer stopped at byte `at`: a bracket never closed (the lexer
 /// points at it), a closing bracket that closes nothing or the wrong
 /// bracket, or a character that starts no token.
-fn refused(source: Source<'_>, at: usize) -> Diagnostic {
-    let here = source.char_at(at);
-    let Some(c) = source.text.get(at..).and_then(|rest| rest.chars().next()) else {
+fn refused(equations: Equations<'_>, at: usize) -> Diagnostic {
+    let here = equations.char_at(at);
+    let Some(c) = equations
+        .text
+        .get(at..)
+        .and_then(|rest| rest.chars().next())
+    else {
         return Diagnostic::error("the equations end in the middle of a token", Some(here));
     };
     match c {
@@ -91,7 +79,7 @@ fn refused(source: Source<'_>, at: usize) -> Diagnostic {
             ),
             Some(here),
         ),
-        ')' | ']' | '}' => match unclosed_before(source, at) {
+        ')' | ']' | '}' => match unclosed_before(equations, at) {
             Some((open, opened_at)) => Diagnostic::error(
                 format!(
                     "mismatched `{c}`: the bracket open here is `{open}`, closed by `{}`",
@@ -120,15 +108,15 @@ fn refused(source: Source<'_>, at: usize) -> Diagnostic {
 /// The innermost bracket open at byte `at`, and where: what the lexer
 /// says of the text up to there (it read that far, so only an open bracket
 /// can stop it).
-fn unclosed_before(source: Source<'_>, at: usize) -> Option<(char, Range<usize>)> {
-    let before = source.text.get(..at)?;
+fn unclosed_before(equations: Equations<'_>, at: usize) -> Option<(char, Range<usize>)> {
+    let before = equations.text.get(..at)?;
     let opened = TokenStream::from_str(before)
         .err()?
         .span()
         .byte_range()
         .start;
     let open = before.get(opened..)?.chars().next()?;
-    matches!(open, '(' | '[' | '{').then(|| (open, source.char_at(opened)))
+    matches!(open, '(' | '[' | '{').then(|| (open, equations.char_at(opened)))
 }
 
 fn closing(open: char) -> char {
@@ -142,7 +130,7 @@ fn closing(open: char) -> char {
 /// At most [`MAX_TOKENS`] tokens nested at most [`MAX_DEPTH`] deep, and
 /// at most [`MAX_ENTRY_TOKENS`] between two commas inside brackets (walked
 /// without recursion: the nesting is not known to be shallow yet).
-fn check_size(source: Source<'_>, tokens: &TokenStream) -> Result<(), Diagnostic> {
+fn check_size(equations: Equations<'_>, tokens: &TokenStream) -> Result<(), Diagnostic> {
     let mut count = 0;
     let mut pending: Vec<(TokenStream, usize)> = vec![(tokens.clone(), 0)];
     while let Some((stream, depth)) = pending.pop() {
@@ -156,7 +144,7 @@ fn check_size(source: Source<'_>, tokens: &TokenStream) -> Result<(), Diagnostic
                         "the equations have more than {MAX_TOKENS} tokens, the most this reads; \
                          this is the first one past it"
                     ),
-                    Some(located(source, span)),
+                    Some(located(equations, span)),
                 ));
             }
             if matches!(&tree, TokenTree::Punct(p) if p.as_char() == ',') {
@@ -174,14 +162,14 @@ fn check_size(source: Source<'_>, tokens: &TokenStream) -> Result<(), Diagnostic
                         "this entry has more than {MAX_ENTRY_TOKENS} tokens, the most one \
                          equation or point may have"
                     ),
-                    Some(located(source, whole)),
+                    Some(located(equations, whole)),
                 ));
             }
             if let TokenTree::Group(group) = tree {
                 if depth + 1 > MAX_DEPTH && group.delimiter() != Delimiter::None {
                     return Err(Diagnostic::error(
                         format!("brackets nested more than {MAX_DEPTH} deep, the most this reads"),
-                        Some(located(source, group.span_open())),
+                        Some(located(equations, group.span_open())),
                     ));
                 }
                 pending.push((group.stream(), depth + 1));
@@ -210,8 +198,8 @@ fn tokens_in(tree: &TokenTree) -> usize {
 }
 
 /// A span of the text's tokens, in file coordinates.
-fn located(source: Source<'_>, span: Span) -> Range<usize> {
-    source.in_file(span.byte_range())
+fn located(equations: Equations<'_>, span: Span) -> Range<usize> {
+    equations.in_file(span.byte_range())
 }
 
 #[cfg(test)]
@@ -219,8 +207,8 @@ mod tests {
     use super::*;
 
     fn refusal(text: &str) -> Diagnostic {
-        let source = Source { text, offset: 100 };
-        lex(source).expect_err(text)
+        let equations = Equations::at(text, 100);
+        lex(equations).expect_err(text)
     }
 
     #[test]
@@ -275,13 +263,7 @@ mod tests {
             "- ".repeat(255),
             "- ".repeat(255)
         );
-        assert!(
-            lex(Source {
-                text: &fine,
-                offset: 0
-            })
-            .is_ok()
-        );
+        assert!(lex(Equations::new(&fine)).is_ok());
         let deep = format!(
             "{}a{}",
             "(".repeat(MAX_DEPTH + 1),
@@ -291,12 +273,6 @@ mod tests {
         assert!(d.message().starts_with("brackets nested"));
         assert_eq!(d.range(), Some(100 + MAX_DEPTH..101 + MAX_DEPTH));
         let fine = format!("{}a{}", "(".repeat(MAX_DEPTH), ")".repeat(MAX_DEPTH));
-        assert!(
-            lex(Source {
-                text: &fine,
-                offset: 0
-            })
-            .is_ok()
-        );
+        assert!(lex(Equations::new(&fine)).is_ok());
     }
 }

@@ -89,7 +89,6 @@ use crate::diagnostics::{Diagnostic, Diagnostics};
 use crate::errors::Errors;
 use crate::owner::Owner;
 use declaration::Declaration;
-use lex::Source;
 use locate::Places;
 use proc_macro2::TokenStream;
 use std::ops::Range;
@@ -141,6 +140,16 @@ impl<'a> Equations<'a> {
     pub fn at(text: &'a str, offset: usize) -> Equations<'a> {
         Equations { text, offset }
     }
+
+    /// The bytes `range` of the text, in file coordinates.
+    fn in_file(&self, range: Range<usize>) -> Range<usize> {
+        self.offset.saturating_add(range.start)..self.offset.saturating_add(range.end)
+    }
+
+    /// The whole text, in file coordinates.
+    fn whole(&self) -> Range<usize> {
+        self.in_file(0..self.text.len())
+    }
 }
 
 /// A mechanism read, checked and differentiated: what the later stages
@@ -175,13 +184,9 @@ fn build_with_spans(
     equations: Equations<'_>,
     parameters: &[Parameter<'_>],
 ) -> Result<Built, Diagnostics> {
-    let source = Source {
-        text: equations.text,
-        offset: equations.offset,
-    };
     let mut diagnostics = Diagnostics::new();
     let declaration = Declaration::new(name, parameters, &mut diagnostics);
-    let attr = match lex::lex(source) {
+    let attr = match lex::lex(equations) {
         Ok(tokens) => tokens,
         Err(refused) => {
             diagnostics.push(refused);
@@ -204,7 +209,7 @@ fn build_with_spans(
         .map(|token| token.span())
         .unwrap_or_else(proc_macro2::Span::call_site);
     let places = Places {
-        source,
+        equations,
         declaration: &declaration,
         struct_span,
     };
@@ -229,7 +234,7 @@ fn build_with_spans(
         _ => Err(Diagnostic::error(
             "the equations could not be read (an internal error: please report it with \
              the equations)",
-            Some(source.whole()),
+            Some(equations.whole()),
         )
         .into()),
     }

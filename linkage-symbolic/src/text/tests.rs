@@ -286,7 +286,9 @@ fn names() -> impl Strategy<Value = Vec<&'static str>> {
 #[test]
 fn any_text_is_answered_as_the_pipeline_answers_it() {
     // More with `LINKAGE_FUZZ_CASES`, as the attribute's fuzzing.
-    let cases = std::env::var("LINKAGE_FUZZ_CASES").ok().and_then(|n| n.parse().ok());
+    let cases = std::env::var("LINKAGE_FUZZ_CASES")
+        .ok()
+        .and_then(|n| n.parse().ok());
     let mut config = Config::with_cases(cases.unwrap_or(512));
     config.failure_persistence = None;
     config.rng_seed = RngSeed::Fixed(0x7465_7874_6672_6f6e);
