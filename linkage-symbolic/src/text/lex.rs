@@ -82,7 +82,7 @@ fn refused(equations: Equations<'_>, at: usize) -> Diagnostic {
         ')' | ']' | '}' => match unclosed_before(equations, at) {
             Some((open, opened_at)) => Diagnostic::error(
                 format!(
-                    "mismatched `{c}`: the bracket open here is `{open}`, closed by `{}`",
+                    "mismatched `{c}`: the `{open}` still open is closed by `{}` first",
                     closing(open)
                 ),
                 Some(here),
@@ -226,7 +226,7 @@ mod tests {
         let d = refusal("closure = [(a - t], u = [a]");
         assert_eq!(
             d.message(),
-            "mismatched `]`: the bracket open here is `(`, closed by `)`"
+            "mismatched `]`: the `(` still open is closed by `)` first"
         );
         assert_eq!(d.range(), Some(117..118));
         assert_eq!(d.labels()[0].range(), 111..112);
