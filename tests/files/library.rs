@@ -140,7 +140,7 @@ fn same_parameters<L: Sensitivities<M, F, K>, const M: usize, const F: usize, co
     model: &L,
 ) {
     let values = model.params();
-    for (k, param) in L::PARAM_NAMES.iter().enumerate() {
+    for (k, param) in model.param_names().iter().enumerate() {
         let written = file
             .parameter(param)
             .unwrap_or_else(|| panic!("{name}: no parameter {param}"));
@@ -159,15 +159,19 @@ fn same_parameters<L: Sensitivities<M, F, K>, const M: usize, const F: usize, co
 }
 
 /// The pick the file's assembly says, on the twin's coordinates.
-fn pick<L: Linkage<M, F>, const M: usize, const F: usize>(file: &MechanismFile) -> Pick<M> {
+fn pick<L: Linkage<M, F>, const M: usize, const F: usize>(
+    model: &L,
+    file: &MechanismFile,
+) -> Pick<M> {
+    let names = model.u_names();
     match &file.assembly {
         None => Pick::Index(0),
         Some(AssemblyChoice::Index { index, .. }) => Pick::Index(*index),
         Some(AssemblyChoice::Near(sketch)) => Pick::nearest(SVector::from_fn(|k, _| {
             let (_, q) = sketch
                 .iter()
-                .find(|(n, _)| n.text == L::U_NAMES[k])
-                .unwrap_or_else(|| panic!("the sketch has no {}", L::U_NAMES[k]));
+                .find(|(n, _)| n.text == names[k])
+                .unwrap_or_else(|| panic!("the sketch has no {}", names[k]));
             q.value
         })),
         Some(AssemblyChoice::Points(sketch)) => Pick::NearestPoints(
@@ -182,10 +186,12 @@ fn pick<L: Linkage<M, F>, const M: usize, const F: usize>(file: &MechanismFile) 
 
 /// One driver value of each of the twin's driving coordinates.
 fn drive<L: Linkage<M, F>, const M: usize, const F: usize>(
+    model: &L,
     file: &MechanismFile,
     of: impl Fn(&linkage::file::Driver) -> f64,
 ) -> SVector<f64, F> {
-    SVector::from_fn(|k, _| of(file.driver(L::V_NAMES[k]).unwrap()))
+    let names = model.v_names();
+    SVector::from_fn(|k, _| of(file.driver(names[k]).unwrap()))
 }
 
 /// The file's assembly, at its `at`, carried to `from`, then swept to
@@ -199,15 +205,15 @@ fn runs<L: Linkage<M, F>, const M: usize, const F: usize>(
     let names: BTreeSet<&str> = file.drivers.iter().map(|d| d.name.text.as_str()).collect();
     assert_eq!(
         names,
-        L::V_NAMES.into_iter().collect(),
+        model.v_names().into_iter().collect(),
         "{name}: the drivers"
     );
-    let at = drive::<L, M, F>(file, |d| d.at.value);
-    let from = drive::<L, M, F>(file, |d| d.from.value);
-    let to = drive::<L, M, F>(file, |d| d.to.value);
+    let at = drive(model, file, |d| d.at.value);
+    let from = drive(model, file, |d| d.from.value);
+    let to = drive(model, file, |d| d.to.value);
     let found = modes(model, &at, &Search::default()).unwrap_or_else(|e| panic!("{name}: {e}"));
     let mode = found
-        .pick(&pick::<L, M, F>(file))
+        .pick(&pick(model, file))
         .unwrap_or_else(|e| panic!("{name}: {e}"));
     let options = SweepOptions::default();
     let start = if at == from {
@@ -235,8 +241,8 @@ fn runs<L: Linkage<M, F>, const M: usize, const F: usize>(
     #[cfg(feature = "draw")]
     if file.drawing.is_some() {
         use linkage::draw::scene::Frame;
-        let rate = drive::<L, M, F>(file, |d| d.rate.value);
-        let acceleration = drive::<L, M, F>(file, |d| d.acceleration.value);
+        let rate = drive(model, file, |d| d.rate.value);
+        let acceleration = drive(model, file, |d| d.acceleration.value);
         let analysis = model
             .analyze(&mode.u, &at, &rate, &acceleration, &Options::default())
             .unwrap();

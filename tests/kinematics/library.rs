@@ -64,7 +64,8 @@ fn matches_reference<L: Linkage<M, 1>, const M: usize>(
     reference: &[Vec<f64>],
     points: &[&str],
 ) {
-    let angle = |k: usize| L::TRIG_U[k];
+    let angles = model.trig_u();
+    let angle = |k: usize| angles[k];
     for row in reference {
         let v = vector![row[0]];
         let nearest = sweep
@@ -86,7 +87,7 @@ fn matches_reference<L: Linkage<M, 1>, const M: usize>(
                 off < 1e-12,
                 "{name} at {}: {} = {} vs {}",
                 row[0],
-                L::U_NAMES[k],
+                model.u_names()[k],
                 u[k],
                 row[1 + k]
             );
@@ -94,7 +95,7 @@ fn matches_reference<L: Linkage<M, 1>, const M: usize>(
         let positions = model.point_positions(&u, &v);
         let positions = positions.as_ref();
         for (n, point) in points.iter().enumerate() {
-            let index = L::POINT_NAMES.iter().position(|p| p == point).unwrap();
+            let index = model.point_names().iter().position(|p| p == point).unwrap();
             let at = positions[index];
             let (x, y) = (row[1 + M + 2 * n], row[2 + M + 2 * n]);
             assert!(
