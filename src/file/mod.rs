@@ -126,6 +126,7 @@ mod drawing;
 mod drive;
 mod equations;
 mod error;
+mod mechanism;
 mod names;
 mod parameters;
 mod quantity;
