@@ -149,3 +149,56 @@ impl Reader<'_> {
         Some([x?, y?])
     }
 }
+
+impl AssemblyChoice {
+    /// The pick this choice says, for a mechanism whose dependent
+    /// coordinates are `u_names`: a sketch that leaves one of them out, or
+    /// names one the mechanism does not have, is a mistake at its place.
+    pub fn pick<const M: usize>(
+        &self,
+        u_names: &[&str],
+    ) -> Result<crate::assembly::Pick<M>, crate::mechanism::Diagnostic> {
+        use crate::assembly::Pick;
+        use crate::mechanism::Diagnostic;
+        match self {
+            AssemblyChoice::Index { index, .. } => Ok(Pick::Index(*index)),
+            AssemblyChoice::Near(sketch) => {
+                if let Some((name, _)) = sketch
+                    .iter()
+                    .find(|(n, _)| !u_names.contains(&n.text.as_str()))
+                {
+                    return Err(Diagnostic::error(
+                        format!(
+                            "`{}` is not a dependent coordinate: `near` sketches u = [{}]",
+                            name.text,
+                            u_names.join(", ")
+                        ),
+                        Some(name.span.clone()),
+                    ));
+                }
+                let mut u = nalgebra::SVector::<f64, M>::zeros();
+                for (k, coordinate) in u_names.iter().enumerate().take(M) {
+                    let Some((_, value)) = sketch.iter().find(|(n, _)| n.text == *coordinate)
+                    else {
+                        let at = sketch.first().map(|(n, _)| n.span.clone());
+                        return Err(Diagnostic::error(
+                            format!(
+                                "`near` leaves out `{coordinate}`: it sketches every dependent coordinate, u = [{}]",
+                                u_names.join(", ")
+                            ),
+                            at,
+                        ));
+                    };
+                    u[k] = value.value;
+                }
+                Ok(Pick::NearestCoordinates(u))
+            }
+            AssemblyChoice::Points(sketch) => Ok(Pick::NearestPoints(
+                sketch
+                    .iter()
+                    .map(|(n, [x, y])| (n.text.clone(), nalgebra::Vector2::new(x.value, y.value)))
+                    .collect(),
+            )),
+        }
+    }
+}
