@@ -5,6 +5,7 @@ use crate::models::{
     BOOM, Coupler, FIVE_BAR, JANSEN_LEG, QUICK_RETURN, SIX_BAR, SLIDER_CRANK, SLIDER_DRIVEN,
     STEPHENSON_THREE, TRAMMEL, WATT_SIX_BAR,
 };
+use crate::twins;
 use linkage::assembly::{Pick, Search, modes};
 use linkage::file::{AssemblyChoice, MechanismFile};
 use linkage::mechanisms::FourBar;
@@ -260,6 +261,65 @@ fn runs<L: Linkage<M, F>, const M: usize, const F: usize>(
     }
 }
 
+/// The file read at run time is its twin: every kernel at poses in
+/// motion, and the sweep over its drive range from its assembly, to the
+/// bit.
+fn same_at_run_time<L, const M: usize, const F: usize>(name: &str, file: &MechanismFile, model: &L)
+where
+    L: Linkage<M, F>,
+{
+    let mechanism = file.mechanism().unwrap_or_else(|e| panic!("{name}: {e}"));
+    let run_time = mechanism
+        .fixed::<M, F>()
+        .unwrap_or_else(|e| panic!("{name}: {e}"));
+    for [u, v, udot, vdot, uddot, vddot] in twins::motions::<M, F>(40) {
+        let (m, f) = (
+            SVector::<f64, M>::from_column_slice,
+            SVector::<f64, F>::from_column_slice,
+        );
+        twins::every_kernel(
+            model,
+            &run_time,
+            &m(&u),
+            &f(&v),
+            &m(&udot),
+            &f(&vdot),
+            &m(&uddot),
+            &f(&vddot),
+        );
+    }
+    let at = drive(model, file, |d| d.at.value);
+    let from = drive(model, file, |d| d.from.value);
+    let to = drive(model, file, |d| d.to.value);
+    let start = modes(model, &at, &Search::default())
+        .and_then(|found| found.pick(&pick(model, file)).cloned())
+        .unwrap_or_else(|e| panic!("{name}: {e}"));
+    let options = SweepOptions::default();
+    let mut drives = Vec::new();
+    if at != from {
+        drives.push(Drive::Line {
+            from: at,
+            to: from,
+            steps: 50,
+        });
+    }
+    drives.push(Drive::Line {
+        from,
+        to,
+        steps: file.drivers[0].steps,
+    });
+    for drive in drives {
+        let compiled = model
+            .sweep(&start.u, &drive, &options)
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        let read = run_time
+            .sweep(&start.u, &drive, &options)
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        twins::same_sweep(&compiled, &read);
+    }
+    runs(name, file, &run_time);
+}
+
 /// Every check of one file against its twin.
 fn twin<L, const M: usize, const F: usize, const K: usize>(name: &str, model: &L)
 where
@@ -268,6 +328,7 @@ where
     let (_, file) = load(name);
     same_parameters(name, &file, model);
     runs(name, &file, model);
+    same_at_run_time(name, &file, model);
 }
 
 #[test]

@@ -7,5 +7,7 @@
 mod machine;
 #[path = "../models/mod.rs"]
 mod models;
+#[path = "../common/twins.rs"]
+mod twins;
 
 mod library;
