@@ -12,7 +12,7 @@ use crate::mechanism::program::Program;
 use crate::mechanism::scratch;
 use crate::runtime::{Inverse, Kernels, Kinematics, Linkage, invert};
 use linkage_symbolic::plan::{Formula, Kernel};
-use linkage_symbolic::tape::{Form, Input, Part, Registers, Tape};
+use linkage_symbolic::tape::{Form, Input, Part, Registers};
 use nalgebra::{SMatrix, SVector, Vector2};
 use num_dual::DualNum;
 use std::sync::Arc;
@@ -29,11 +29,6 @@ pub struct Fixed<const M: usize, const F: usize, const P: usize = 32> {
     v_names: [&'static str; F],
     trig_u: [bool; M],
     trig_v: [bool; F],
-}
-
-/// Where a kernel sits in the list of kernels: its register file's key.
-fn index(kernel: Kernel) -> usize {
-    Kernel::ALL.iter().position(|&k| k == kernel).unwrap_or(0)
 }
 
 /// A matrix of a result from its part's outputs (every other entry zero).
@@ -117,26 +112,21 @@ impl<const M: usize, const F: usize, const P: usize> Fixed<M, F, P> {
         inputs: &[(Input, &[f64])],
         read: impl FnOnce(&[Part], &[f64]) -> R,
     ) -> R {
-        let tape = self.program.tape(kernel);
-        scratch::with_registers(
-            self.program.id,
-            index(kernel),
-            tape,
-            |registers, outputs| {
-                set(registers, Input::Fields, &self.fields);
-                for (input, values) in inputs {
-                    set(registers, *input, values);
-                }
-                let out = outputs
-                    .get_mut(0)
-                    .map(Vec::as_mut_slice)
-                    .unwrap_or_default();
-                if tape.run(0, registers, out).is_err() {
-                    out.fill(f64::NAN);
-                }
-                read(tape.parts(0), out)
-            },
-        )
+        let (index, tape) = self.program.tape(kernel);
+        scratch::with_registers(self.program.id, index, tape, |registers, outputs| {
+            set(registers, Input::Fields, &self.fields);
+            for (input, values) in inputs {
+                set(registers, *input, values);
+            }
+            let out = outputs
+                .get_mut(0)
+                .map(Vec::as_mut_slice)
+                .unwrap_or_default();
+            if tape.run(0, registers, out).is_err() {
+                out.fill(f64::NAN);
+            }
+            read(tape.parts(0), out)
+        })
     }
 
     /// A kernel whose one part is a matrix.
@@ -153,10 +143,8 @@ impl<const M: usize, const F: usize, const P: usize> Fixed<M, F, P> {
     /// A kernel of the points.
     fn points(&self, level: usize, inputs: &[(Input, &[f64])]) -> PointSet<P> {
         self.run(Kernel::Points(level), inputs, |parts, values| {
-            let count = self.program.point_names.len();
-            let mut points = PointSet::<P>::zeros(count.min(P)).unwrap_or_else(|| {
-                PointSet::zeros(0).unwrap_or_else(|| unreachable!("an empty set fits"))
-            });
+            // The view was made only if its capacity holds every point.
+            let mut points = PointSet::<P>::clamped(self.program.point_names.len());
             if let Some(part) = parts.first().filter(|p| p.form == Form::Points) {
                 let slots = points.as_mut();
                 for (&(i, c), &x) in part.entries.iter().zip(values) {
@@ -184,54 +172,49 @@ impl<const M: usize, const F: usize, const P: usize> Fixed<M, F, P> {
         let kernel = Kernel::Kinematics {
             with_trig: trig.is_some(),
         };
-        let tape: &Tape = self.program.tape(kernel);
-        scratch::with_registers(
-            self.program.id,
-            index(kernel),
-            tape,
-            |registers, outputs| {
-                set(registers, Input::Fields, &self.fields);
-                set(registers, Input::U, u.as_slice());
-                set(registers, Input::V, v.as_slice());
-                set(registers, Input::Vdot, vdot.as_slice());
-                if let Some((trig_u, trig_v)) = trig {
-                    set(registers, Input::TrigU, flat(trig_u).as_flattened());
-                    set(registers, Input::TrigV, flat(trig_v).as_flattened());
-                }
-                let [first, second, ..] = outputs else {
-                    return unevaluated();
-                };
-                if tape.run(0, registers, first).is_err() {
-                    first.fill(f64::NAN);
-                }
-                let parts = tape.parts(0);
-                let psi: SVector<f64, M> = named(parts, first, "psi");
-                let psi_u: SMatrix<f64, M, M> = named(parts, first, "psi_u");
-                let psi_v: SMatrix<f64, M, F> = named(parts, first, "psi_v");
-                let Inverse {
-                    inverse,
-                    rcond,
-                    det,
-                } = invert(&psi_u);
-                let udot = -(inverse * (psi_v * vdot));
-                set(registers, Input::Udot, udot.as_slice());
-                if tape.run(1, registers, second).is_err() {
-                    second.fill(f64::NAN);
-                }
-                let gamma: SVector<f64, M> = named(tape.parts(1), second, "gamma");
-                let uddot = -(inverse * (psi_v * vddot + gamma));
-                Kinematics {
-                    psi,
-                    psi_u,
-                    psi_v,
-                    inverse,
-                    rcond,
-                    det,
-                    udot,
-                    uddot,
-                }
-            },
-        )
+        let (index, tape) = self.program.tape(kernel);
+        scratch::with_registers(self.program.id, index, tape, |registers, outputs| {
+            set(registers, Input::Fields, &self.fields);
+            set(registers, Input::U, u.as_slice());
+            set(registers, Input::V, v.as_slice());
+            set(registers, Input::Vdot, vdot.as_slice());
+            if let Some((trig_u, trig_v)) = trig {
+                set(registers, Input::TrigU, flat(trig_u).as_flattened());
+                set(registers, Input::TrigV, flat(trig_v).as_flattened());
+            }
+            let [first, second, ..] = outputs else {
+                return unevaluated();
+            };
+            if tape.run(0, registers, first).is_err() {
+                first.fill(f64::NAN);
+            }
+            let parts = tape.parts(0);
+            let psi: SVector<f64, M> = named(parts, first, "psi");
+            let psi_u: SMatrix<f64, M, M> = named(parts, first, "psi_u");
+            let psi_v: SMatrix<f64, M, F> = named(parts, first, "psi_v");
+            let Inverse {
+                inverse,
+                rcond,
+                det,
+            } = invert(&psi_u);
+            let udot = -(inverse * (psi_v * vdot));
+            set(registers, Input::Udot, udot.as_slice());
+            if tape.run(1, registers, second).is_err() {
+                second.fill(f64::NAN);
+            }
+            let gamma: SVector<f64, M> = named(tape.parts(1), second, "gamma");
+            let uddot = -(inverse * (psi_v * vddot + gamma));
+            Kinematics {
+                psi,
+                psi_u,
+                psi_v,
+                inverse,
+                rcond,
+                det,
+                udot,
+                uddot,
+            }
+        })
     }
 }
 

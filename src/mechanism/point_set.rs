@@ -17,10 +17,15 @@ pub struct PointSet<const P: usize> {
 impl<const P: usize> PointSet<P> {
     /// `len` points at the origin; `None` if `len` exceeds the capacity `P`.
     pub fn zeros(len: usize) -> Option<PointSet<P>> {
-        (len <= P).then(|| PointSet {
-            len,
+        (len <= P).then(|| PointSet::clamped(len))
+    }
+
+    /// `len` points at the origin, or `P` if `len` is more.
+    pub(crate) fn clamped(len: usize) -> PointSet<P> {
+        PointSet {
+            len: len.min(P),
             slots: [Vector2::zeros(); P],
-        })
+        }
     }
 
     /// The number of points.

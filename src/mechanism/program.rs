@@ -83,9 +83,11 @@ impl Program {
         })
     }
 
-    /// The tape of a kernel.
-    pub(crate) fn tape(&self, kernel: Kernel) -> &Tape {
-        self.tapes.get(kernel)
+    /// The tape of a kernel, and the kernel's place in [`Kernel::ALL`]
+    /// (the key of its register files).
+    pub(crate) fn tape(&self, kernel: Kernel) -> (usize, &Tape) {
+        let index = Kernel::ALL.iter().position(|&k| k == kernel).unwrap_or(0);
+        (index, self.tapes.get(kernel))
     }
 
     /// The coordinates of u, then of v, whose sine and cosine the kernel
@@ -93,7 +95,7 @@ impl Program {
     pub(crate) fn trig_flags(&self, kernel: Kernel) -> (Vec<bool>, Vec<bool>) {
         let mut u = vec![false; self.m];
         let mut v = vec![false; self.f];
-        for &k in self.tape(kernel).trig_coords() {
+        for &k in self.tape(kernel).1.trig_coords() {
             match k.checked_sub(self.m) {
                 None => u[k] = true,
                 Some(j) => v[j] = true,
