@@ -16,17 +16,7 @@ struct Analyze<'a> {
 impl Job for Analyze<'_> {
     type Output = Table;
     fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<Table, Failure> {
-        let drives = super::drives(self.loaded, &model)?;
-        let u = super::assembled(self.loaded, &model, &drives.at)?;
-        let pose = model
-            .analyze(
-                &u,
-                &drives.at,
-                &drives.rate,
-                &drives.acceleration,
-                &Options::default(),
-            )
-            .map_err(|e| Failure::Analysis(e.to_string()))?;
+        let (drives, pose) = super::analysed(self.loaded, &model)?;
         let unit = &self.loaded.file.length_unit;
         let mut table = Table::new(
             format!(

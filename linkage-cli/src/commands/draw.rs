@@ -18,17 +18,7 @@ struct Picture<'a> {
 impl Job for Picture<'_> {
     type Output = String;
     fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<String, Failure> {
-        let drives = super::drives(self.loaded, &model)?;
-        let u = super::assembled(self.loaded, &model, &drives.at)?;
-        let pose = model
-            .analyze(
-                &u,
-                &drives.at,
-                &drives.rate,
-                &drives.acceleration,
-                &Options::default(),
-            )
-            .map_err(|e| Failure::Analysis(e.to_string()))?;
+        let (drives, pose) = super::analysed(self.loaded, &model)?;
         let frame = Frame::from_analysis(&model, &pose);
         let mut cycle = Vec::new();
         super::sweep_each(self.loaded, &model, drives.steps, &mut |_, p| {

@@ -45,20 +45,19 @@ impl Job for Find<'_> {
         } else {
             self.watches.to_vec()
         };
+        // Each watch, and the quantity as written that it watches.
         let mut watches = Vec::new();
+        let mut watched: Vec<&str> = Vec::new();
         for text in &written {
-            let watch = parse_watch::<M, F>(text).map_err(Failure::Analysis)?;
-            watches.push(if self.zeros {
-                watch.zeros()
-            } else {
-                watch.extrema()
-            });
-            if self.zeros {
-                watches.push(
-                    parse_watch::<M, F>(text)
-                        .map_err(Failure::Analysis)?
-                        .extrema(),
-                );
+            let finds: &[bool] = if self.zeros { &[true, false] } else { &[false] };
+            for &zeros in finds {
+                let watch = parse_watch::<M, F>(text).map_err(Failure::Analysis)?;
+                watches.push(if zeros {
+                    watch.zeros()
+                } else {
+                    watch.extrema()
+                });
+                watched.push(text);
             }
         }
         let steps = super::drives(self.loaded, &model)?.steps;

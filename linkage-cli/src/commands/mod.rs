@@ -88,6 +88,33 @@ pub fn assembled<const M: usize, const F: usize>(
         .map_err(|e| Failure::Analysis(format!("at the drivers' `at` ({at:?}): {e}")))
 }
 
+/// The file's drive, and the analysis of the pose at its `at` (from the
+/// file's assembly, at the drivers' rates and accelerations).
+#[allow(clippy::type_complexity)]
+pub fn analysed<const M: usize, const F: usize>(
+    loaded: &Loaded,
+    model: &Fixed<M, F>,
+) -> Result<
+    (
+        Drives<F>,
+        Analysis<M, F, <Fixed<M, F> as Kernels<M, F>>::Points>,
+    ),
+    Failure,
+> {
+    let drives = drives(loaded, model)?;
+    let u = assembled(loaded, model, &drives.at)?;
+    let pose = model
+        .analyze(
+            &u,
+            &drives.at,
+            &drives.rate,
+            &drives.acceleration,
+            &Options::default(),
+        )
+        .map_err(|e| Failure::Analysis(e.to_string()))?;
+    Ok((drives, pose))
+}
+
 /// The poses of a sweep over the file's drive range, from the file's
 /// assembly (carried from `at` to `from` first), with `speed` the drivers'
 /// speed along it; each pose is given to `on_pose` with its index.
