@@ -6,6 +6,34 @@
 use linkage::mechanism::Fixed;
 use linkage::prelude::*;
 
+/// The inside of the attribute `#[linkage::linkage(...)]` (or
+/// `#[crate::linkage(...)]`) on `struct name` in `source`.
+pub fn attribute<'s>(source: &'s str, name: &str) -> &'s str {
+    let item = source
+        .find(&format!("pub struct {name} "))
+        .unwrap_or_else(|| panic!("no struct {name}"));
+    let open = ["#[linkage::linkage(", "#[crate::linkage("]
+        .iter()
+        .filter_map(|a| source[..item].rfind(a).map(|k| k + a.len()))
+        .max()
+        .unwrap_or_else(|| panic!("no attribute on {name}"));
+    // The parenthesis that closes the one opened.
+    let mut depth = 1;
+    for (k, c) in source[open..].char_indices() {
+        match c {
+            '(' => depth += 1,
+            ')' => {
+                depth -= 1;
+                if depth == 0 {
+                    return &source[open..open + k];
+                }
+            }
+            _ => {}
+        }
+    }
+    panic!("the attribute on {name} does not close")
+}
+
 pub fn same<const R: usize, const C: usize>(
     what: &str,
     a: &SMatrix<f64, R, C>,

@@ -5,7 +5,7 @@ use crate::models::{
     BOOM, Coupler, FIVE_BAR, JANSEN_LEG, QUICK_RETURN, SIX_BAR, SLIDER_CRANK, SLIDER_DRIVEN,
     STEPHENSON_THREE, TRAMMEL, WATT_SIX_BAR,
 };
-use crate::twins;
+use crate::twins::{self, attribute};
 use linkage::assembly::{Pick, Search, modes};
 use linkage::file::{AssemblyChoice, MechanismFile};
 use linkage::mechanisms::FourBar;
@@ -56,34 +56,6 @@ fn load(name: &str) -> (String, MechanismFile) {
     let text = std::fs::read_to_string(&path).unwrap();
     let file = MechanismFile::read(&path).unwrap_or_else(|e| panic!("{e}"));
     (text, file)
-}
-
-/// The inside of the attribute `#[linkage::linkage(...)]` (or
-/// `#[crate::linkage(...)]`) on `struct name` in `source`.
-fn attribute<'s>(source: &'s str, name: &str) -> &'s str {
-    let item = source
-        .find(&format!("pub struct {name} "))
-        .unwrap_or_else(|| panic!("no struct {name}"));
-    let open = ["#[linkage::linkage(", "#[crate::linkage("]
-        .iter()
-        .filter_map(|a| source[..item].rfind(a).map(|k| k + a.len()))
-        .max()
-        .unwrap_or_else(|| panic!("no attribute on {name}"));
-    // The parenthesis that closes the one opened.
-    let mut depth = 1;
-    for (k, c) in source[open..].char_indices() {
-        match c {
-            '(' => depth += 1,
-            ')' => {
-                depth -= 1;
-                if depth == 0 {
-                    return &source[open..open + k];
-                }
-            }
-            _ => {}
-        }
-    }
-    panic!("the attribute on {name} does not close")
 }
 
 /// Rust's tokens of a text, as a string: spacing, line breaks and comments

@@ -3,30 +3,12 @@
 //! same numbers to the bit — every kernel at random poses and rates, and
 //! the analyses (a pose, a sweep with its singular poses) built on them.
 
-use crate::common::twins::{every_kernel, same, same_points};
+use crate::common::twins::{attribute, every_kernel, same, same_points};
 use crate::models::{BOOM, FIVE_BAR, SIX_BAR, SLIDER_CRANK, STEPHENSON_THREE, WATT_SIX_BAR};
 use linkage::mechanism::{Fixed, Mechanism};
 use linkage::mechanisms::FourBar;
 use linkage::prelude::*;
 use proptest::prelude::*;
-
-/// The text inside `#[...linkage(` … `)]` of the struct `name` in `source`.
-fn attribute_of(source: &str, name: &str) -> String {
-    let at = source
-        .find(&format!("pub struct {name} "))
-        .unwrap_or_else(|| panic!("no struct {name}"));
-    let start = source[..at].rfind("linkage(").expect("an attribute") + "linkage(".len();
-    let mut depth = 0;
-    for (k, c) in source[start..at].char_indices() {
-        match c {
-            '(' | '[' | '{' => depth += 1,
-            ')' if depth == 0 => return source[start..start + k].to_owned(),
-            ')' | ']' | '}' => depth -= 1,
-            _ => {}
-        }
-    }
-    panic!("the attribute of {name} does not end")
-}
 
 /// The twin of a compiled mechanism: its attribute read at run time, with
 /// the compiled mechanism's parameter values.
@@ -42,7 +24,7 @@ where
     let parameters: Vec<(&str, f64)> = (compiled.param_names().iter().copied())
         .zip(values.iter().copied())
         .collect();
-    let mechanism = Mechanism::from_text(name, &attribute_of(source, name), &parameters)
+    let mechanism = Mechanism::from_text(name, attribute(source, name), &parameters)
         .unwrap_or_else(|e| panic!("{name} reads at run time: {e}"));
     mechanism.fixed::<M, F>().expect("the compiled sizes")
 }
