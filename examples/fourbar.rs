@@ -191,7 +191,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "{:<6} {:>22} {:>22}  {:>20} {:>20}  {:>8}",
         "", "ours x", "ours y", "worksheet x", "worksheet y", "rel. diff"
     );
-    let index = |name| FourBar::point_index(name).expect("a point of the four-bar");
+    let index = |name| bar.point_index(name).expect("a point of the four-bar");
     for (name, px, py) in worksheet::POINTS {
         let point = index(&name[1..]);
         let value = match &name[..1] {

@@ -22,7 +22,7 @@ use linkage::draw::diagrams::{Chart, Panel};
 use linkage::draw::scene::{Frame, Scene};
 use linkage::machine::{Applied, Motor, flywheel};
 use linkage::prelude::*;
-use machine::{COURSE_PROJECT, Shaper, machine, synthesize};
+use machine::{COURSE_PROJECT, machine, synthesize};
 use std::collections::HashMap;
 use std::f64::consts::{PI, TAU};
 
@@ -147,7 +147,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     t.row("ω_1cp [rad/s]", "omega1cp", omega);
 
     let a = m.analysis(f)?;
-    let index = |name| Shaper::point_index(name).expect("a point of the shaper");
+    let index = |name| m.model().point_index(name).expect("a point of the shaper");
     let (pa, pd, ps3) = (index("A"), index("D"), index("S3"));
     t.heading("2. Positions at f (Newton on the generated closure equations)");
     t.row("x_A [m]", "x_A", a.points[pa].x);

@@ -73,7 +73,7 @@ pub fn coupler_band(study: &CycleStudy) -> Result<String, DiagramError> {
                 to: vector![std::f64::consts::TAU],
                 steps: x.value.len() - 1,
             };
-            let g3 = FourBar::point_index("G3")?;
+            let g3 = FourBar::G3;
             let summary = sample
                 .sweep_each(&study.start, &drive, &SweepOptions::default(), |p| {
                     let g3 = sample.point_positions(&p.u, &p.v).as_ref()[g3];

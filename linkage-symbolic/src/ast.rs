@@ -5,6 +5,7 @@
 //! others.
 
 use crate::errors::Errors;
+use crate::owner::Owner;
 use proc_macro2::{Delimiter, Span, TokenStream, TokenTree};
 use syn::spanned::Spanned;
 use syn::{Expr, Ident};
@@ -65,6 +66,9 @@ impl List<Ident> {
 /// The parsed attribute and struct.
 pub struct Input {
     pub item: syn::ItemStruct,
+    /// Who the parameters belong to, for messages: the struct, or the
+    /// mechanism the struct stands for at run time.
+    pub owner: Owner,
     pub fields: Vec<Field>,
     pub u: List<Ident>,
     pub v: List<Ident>,
@@ -88,6 +92,19 @@ impl Input {
     /// Parses the attribute and the struct; every problem found is recorded
     /// in `errors`, and `None` returned only when nothing usable is left.
     pub fn parse(attr: TokenStream, item: TokenStream, errors: &mut Errors) -> Option<Input> {
+        Input::parse_owned_by(attr, item, |ident| Owner::Struct(ident.to_string()), errors)
+    }
+
+    /// [`Input::parse`], the messages naming the parameters' owner as
+    /// `owner` words it (given the struct's name): a mechanism read at run
+    /// time, whose struct only carries its parameters, is an
+    /// [`Owner::Mechanism`].
+    pub fn parse_owned_by(
+        attr: TokenStream,
+        item: TokenStream,
+        owner: impl FnOnce(&Ident) -> Owner,
+        errors: &mut Errors,
+    ) -> Option<Input> {
         let item: syn::ItemStruct = match syn::parse2(item) {
             Ok(item) => item,
             Err(e) => {
@@ -100,6 +117,7 @@ impl Input {
             }
         };
         let fields = parse_fields(&item, errors);
+        let owner = owner(&item.ident);
         let mut u = None;
         let mut v = None;
         let mut points = None;
@@ -134,8 +152,15 @@ impl Input {
             // The equations' tokens kept, the names' dropped.
             let tokens = &mut equation_tokens;
             match name.as_str() {
-                "u" => u = parse_names(&key, value, errors, parse_ident),
-                "v" => v = parse_names(&key, value, errors, parse_ident),
+                "u" | "v" => {
+                    let list = parse_names(
+                        &key,
+                        value,
+                        errors,
+                        "a coordinate is a plain name, e.g. `theta3`",
+                    );
+                    if name == "u" { u = list } else { v = list }
+                }
                 "points" => {
                     points = parse_list(&key, value, errors, parse_point).map(|(list, written)| {
                         tokens.extend([written]);
@@ -148,7 +173,13 @@ impl Input {
                         list
                     })
                 }
-                "params" => params = parse_names(&key, value, errors, parse_param),
+                "params" => {
+                    let message = format!(
+                        "a parameter is the name of {}, e.g. `l2`",
+                        owner.a_parameter_of_it()
+                    );
+                    params = parse_names(&key, value, errors, &message)
+                }
                 other => {
                     let hint = match crate::suggest::closest(other, KEYS.iter().copied()) {
                         Some(k) => format!("; did you mean `{k}`?"),
@@ -157,8 +188,9 @@ impl Input {
                     errors.push(syn::Error::new(
                         key.span(),
                         format!(
-                            "unknown key `{other}`: the attribute takes `u = [...]`, `v = [...]`, \
-                             `closure = [...]` and optionally `points = [...]` and `params = [...]`{hint}"
+                            "unknown key `{other}`: {} takes `u = [...]`, `v = [...]`, \
+                             `closure = [...]` and optionally `points = [...]` and `params = [...]`{hint}",
+                            owner.reader()
                         ),
                     ));
                 }
@@ -170,7 +202,8 @@ impl Input {
                 errors.push(syn::Error::new(
                     call_site,
                     format!(
-                        "missing `{what} = [...]` in #[linkage::linkage(...)], e.g. `{example}`"
+                        "missing `{what} = [...]` in {}, e.g. `{example}`",
+                        owner.where_written()
                     ),
                 ));
             }
@@ -182,6 +215,7 @@ impl Input {
         let complete = u.is_some() && v.is_some() && closure.is_some();
         Some(Input {
             item,
+            owner,
             fields,
             u: u.unwrap_or_else(List::empty),
             v: v.unwrap_or_else(List::empty),
@@ -271,14 +305,15 @@ fn parse_entry(chunk: &TokenStream, errors: &mut Errors) -> Option<(Ident, Vec<T
     Some((key, iter.collect()))
 }
 
-/// `[a, b, c]` of names (`u`, `v`, `params`). A single name written
-/// without its brackets, `v = theta2`, is reported and read as `[theta2]`,
-/// so that the mechanism's sizes stay known and nothing else is reported.
+/// `[a, b, c]` of names (`u`, `v`, `params`), `not_a_name` the message for
+/// an entry that is not one. A single name written without its brackets,
+/// `v = theta2`, is reported and read as `[theta2]`, so that the
+/// mechanism's sizes stay known and nothing else is reported.
 fn parse_names(
     key: &Ident,
     value: Vec<TokenTree>,
     errors: &mut Errors,
-    parse_item: fn(TokenStream, &mut Errors) -> Option<Ident>,
+    not_a_name: &str,
 ) -> Option<List<Ident>> {
     if let [TokenTree::Ident(name)] = value.as_slice() {
         errors.push(syn::Error::new(
@@ -291,7 +326,15 @@ fn parse_names(
             span: name.span(),
         });
     }
-    parse_list(key, value, errors, parse_item).map(|(list, _)| list)
+    let parse_name =
+        |chunk: TokenStream, errors: &mut Errors| match syn::parse2::<Ident>(chunk.clone()) {
+            Ok(i) => Some(i),
+            Err(_) => {
+                errors.push(syn::Error::new_spanned(chunk, not_a_name));
+                None
+            }
+        };
+    parse_list(key, value, errors, parse_name).map(|(list, _)| list)
 }
 
 /// `[a, b, c]`, each element parsed by `parse_item`; with the list as
@@ -300,7 +343,7 @@ fn parse_list<T>(
     key: &Ident,
     value: Vec<TokenTree>,
     errors: &mut Errors,
-    parse_item: fn(TokenStream, &mut Errors) -> Option<T>,
+    parse_item: impl Fn(TokenStream, &mut Errors) -> Option<T>,
 ) -> Option<(List<T>, TokenTree)> {
     let group = match value.as_slice() {
         [TokenTree::Group(g)] if g.delimiter() == Delimiter::Bracket => g.clone(),
@@ -326,32 +369,6 @@ fn parse_list<T>(
         span: group.span(),
     };
     Some((list, TokenTree::Group(group)))
-}
-
-fn parse_ident(chunk: TokenStream, errors: &mut Errors) -> Option<Ident> {
-    match syn::parse2::<Ident>(chunk.clone()) {
-        Ok(i) => Some(i),
-        Err(_) => {
-            errors.push(syn::Error::new_spanned(
-                chunk,
-                "a coordinate is a plain name, e.g. `theta3`",
-            ));
-            None
-        }
-    }
-}
-
-fn parse_param(chunk: TokenStream, errors: &mut Errors) -> Option<Ident> {
-    match syn::parse2::<Ident>(chunk.clone()) {
-        Ok(i) => Some(i),
-        Err(_) => {
-            errors.push(syn::Error::new_spanned(
-                chunk,
-                "a parameter is the name of an `f64` field of the struct, e.g. `l2`",
-            ));
-            None
-        }
-    }
 }
 
 fn parse_expr(chunk: TokenStream, errors: &mut Errors) -> Option<Expr> {

@@ -23,3 +23,14 @@ impl Errors {
         Some(first)
     }
 }
+
+/// The errors one by one, in the order they were found; an error that
+/// points at two places (`syn::Error::combine`) stays one.
+impl IntoIterator for Errors {
+    type Item = syn::Error;
+    type IntoIter = std::vec::IntoIter<syn::Error>;
+
+    fn into_iter(self) -> Self::IntoIter {
+        self.0.into_iter()
+    }
+}

@@ -22,7 +22,9 @@
 //! Features: `syntax` (default) reads and emits Rust with syn and quote;
 //! without it only the DAG, its derivative rules, its normal form, its
 //! display and [`names`] remain. `eval` adds `interp`, an evaluator of the DAG on the dual
-//! numbers of num-dual.
+//! numbers of num-dual. `text` adds [`text`], the pipeline run on a
+//! mechanism given as text at run time, and the [`diagnostics`] that
+//! locate its mistakes.
 
 #![forbid(unsafe_code)]
 // Without `syntax` the pipeline's first stages are not compiled, and the
@@ -34,6 +36,8 @@ pub mod ast;
 pub mod dag;
 #[cfg(feature = "syntax")]
 pub mod derivatives;
+#[cfg(feature = "text")]
+pub mod diagnostics;
 pub mod diff;
 pub mod display;
 #[cfg(feature = "syntax")]
@@ -47,12 +51,16 @@ pub mod lower;
 pub mod names;
 pub mod normal;
 #[cfg(feature = "syntax")]
+pub mod owner;
+#[cfg(feature = "syntax")]
 pub mod params;
 #[cfg(feature = "syntax")]
 pub mod plan;
 #[cfg(feature = "syntax")]
 mod suggest;
 pub mod tape;
+#[cfg(feature = "text")]
+pub mod text;
 #[cfg(feature = "syntax")]
 pub mod valid;
 

@@ -13,6 +13,7 @@
 use crate::ast::{Input, unraw};
 use crate::dag::{Constant, Dag, Func, Func2, Id, Symbol};
 use crate::errors::Errors;
+use crate::owner::Owner;
 use std::collections::HashMap;
 use syn::{BinOp, Expr, Ident, Lit, Member, UnOp};
 
@@ -58,13 +59,13 @@ struct Lowerer<'a> {
     point_names: Vec<Ident>,
     /// (point used, point being defined) pairs already reported.
     early_uses: std::collections::HashSet<(usize, usize)>,
-    struct_name: &'a Ident,
+    owner: &'a Owner,
     errors: &'a mut Errors,
 }
 
 /// Resolves every name of `input` and lowers its expressions.
 pub fn lower(input: &Input, errors: &mut Errors) -> Option<Lowered> {
-    let struct_name = &input.item.ident;
+    let owner = &input.owner;
     let mut names: HashMap<String, Binding> = HashMap::new();
     let mut params = Vec::new();
     for field in &input.fields {
@@ -123,8 +124,9 @@ pub fn lower(input: &Input, errors: &mut Errors) -> Option<Lowered> {
             errors.push(syn::Error::new(
                 ident.span(),
                 format!(
-                    "`{name}` is declared as a {kind} but is also a field of `{struct_name}`; \
-                     rename one of them so that every name in the equations means one thing"
+                    "`{name}` is declared as a {kind} but is also {}; \
+                     rename one of them so that every name in the equations means one thing",
+                    owner.a_member()
                 ),
             ));
             // The name is taken to mean the coordinate or point, as declared,
@@ -160,7 +162,7 @@ pub fn lower(input: &Input, errors: &mut Errors) -> Option<Lowered> {
         points: Vec::new(),
         point_names: input.points.items.iter().map(|p| p.name.clone()).collect(),
         early_uses: Default::default(),
-        struct_name,
+        owner,
         errors,
     };
     let mut points = Vec::new();
@@ -333,9 +335,10 @@ impl Lowerer<'_> {
                 p,
                 format!(
                     "unknown path `{}`; an equation may name the constants of `std::f64::consts` \
-                     (e.g. `PI` or `std::f64::consts::PI`), the struct's `f64` fields, the coordinates \
+                     (e.g. `PI` or `std::f64::consts::PI`), {}, the coordinates \
                      and the points",
-                    segments.join("::")
+                    segments.join("::"),
+                    self.owner.its_parameters()
                 ),
             ),
         }
@@ -351,7 +354,7 @@ impl Lowerer<'_> {
                 format!(
                     "field `{name}` of `{}` has type `{ty}`; only `f64` fields are parameters \
                      that equations can use",
-                    self.struct_name
+                    self.owner.name()
                 ),
             ),
             Some(Binding::Point(_)) => self.error(
@@ -376,9 +379,9 @@ impl Lowerer<'_> {
                 self.error(
                     ident,
                     format!(
-                        "unknown name `{name}`: not a coordinate, a point, an `f64` field of `{}` \
+                        "unknown name `{name}`: not a coordinate, a point, {} \
                          or a constant of `std::f64::consts`{hint}",
-                        self.struct_name
+                        self.owner.a_parameter()
                     ),
                 )
             }
@@ -416,8 +419,8 @@ impl Lowerer<'_> {
                 return self.error(
                     field,
                     format!(
-                        "`{name}` is a field of `{}`, not a point: only points have `.x` and `.y`",
-                        self.struct_name
+                        "`{name}` is {}, not a point: only points have `.x` and `.y`",
+                        self.owner.a_member()
                     ),
                 );
             }

@@ -18,13 +18,13 @@ pub fn resolve(input: &Input, lowered: &mut Lowered, errors: &mut Errors) {
             .collect();
         return;
     };
-    let struct_name = &input.item.ident;
+    let owner = &input.owner;
     let usable: Vec<String> = (0..lowered.fields.len())
         .filter(|&k| used[k])
         .map(|k| lowered.field_name(k))
         .collect();
     let listing = if usable.is_empty() {
-        "none: the equations use no `f64` field".to_owned()
+        format!("none: the equations use no {}", owner.parameter_kind())
     } else {
         usable.join(", ")
     };
@@ -49,9 +49,10 @@ pub fn resolve(input: &Input, lowered: &mut Lowered, errors: &mut Errors) {
                 continue;
             }
             Some(_) => format!(
-                "`{name}` is a field of `{struct_name}` that neither the closure equations nor \
+                "`{name}` is {} that neither the closure equations nor \
                  the points use, so every derivative by it is zero; the parameters the \
-                 equations use: {listing}"
+                 equations use: {listing}",
+                owner.a_member()
             ),
             None => {
                 let field = input.fields.iter().find(|f| unraw(&f.ident) == name);
@@ -59,19 +60,22 @@ pub fn resolve(input: &Input, lowered: &mut Lowered, errors: &mut Errors) {
                 let point = lowered.points.iter().any(|(p, _, _)| unraw(p) == name);
                 if let Some(field) = field {
                     format!(
-                        "field `{name}` of `{struct_name}` has type `{}`; only `f64` fields are \
+                        "field `{name}` of `{}` has type `{}`; only `f64` fields are \
                          parameters (the ones the equations use: {listing})",
+                        owner.name(),
                         field.ty
                     )
                 } else if coordinate {
                     format!(
-                        "`{name}` is a coordinate, not a parameter: `params` lists `f64` fields \
-                         of `{struct_name}` (the ones the equations use: {listing})"
+                        "`{name}` is a coordinate, not a parameter: `params` lists {} \
+                         (the ones the equations use: {listing})",
+                        owner.parameters()
                     )
                 } else if point {
                     format!(
-                        "`{name}` is a point, not a parameter: `params` lists `f64` fields of \
-                         `{struct_name}` (the ones the equations use: {listing})"
+                        "`{name}` is a point, not a parameter: `params` lists {} \
+                         (the ones the equations use: {listing})",
+                        owner.parameters()
                     )
                 } else {
                     let hint =
@@ -80,8 +84,10 @@ pub fn resolve(input: &Input, lowered: &mut Lowered, errors: &mut Errors) {
                             None => String::new(),
                         };
                     format!(
-                        "`{name}` is not a field of `{struct_name}`: `params` lists `f64` fields \
-                         the equations use ({listing}){hint}"
+                        "`{name}` is not {}: `params` lists {} \
+                         the equations use ({listing}){hint}",
+                        owner.a_member(),
+                        owner.parameters_kind()
                     )
                 }
             }

@@ -170,7 +170,7 @@ pub(crate) fn scale<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     v: &SVector<f64, F>,
     lengths: &Lengths,
 ) -> Result<Scale<M>, AssemblyError> {
-    let mut angle = L::TRIG_U;
+    let mut angle = model.trig_u();
     let mut sizes = equation_sizes(model, v, &angle)?;
     let size: f64 = sizes.sum();
     let candidates = angle;

@@ -98,6 +98,6 @@ pub fn modes<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
         equation_sizes: scale.equations,
         stable,
         runs,
-        point_names: L::POINT_NAMES,
+        point_names: model.point_names(),
     })
 }

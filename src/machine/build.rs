@@ -69,7 +69,7 @@ impl<L: Linkage<M, 1>, const M: usize> MachineBuilder<L, M> {
                 value: self.grid as f64,
             });
         }
-        let names = Names::of::<L, M, 1>();
+        let names = Names::of(&self.model);
         let bodies = self
             .bodies
             .iter()

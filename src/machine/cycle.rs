@@ -116,7 +116,7 @@ impl<L: Linkage<M, 1>, const M: usize> Machine<L, M> {
             points: a.points.as_ref().to_vec(),
             points_phi: a.point_velocities.as_ref().to_vec(),
             points_phiphi: a.point_accelerations.as_ref().to_vec(),
-            point_names: L::POINT_NAMES,
+            point_names: self.model().point_names(),
             coordinate_names: self.coordinates.clone(),
         }
     }

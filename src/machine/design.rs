@@ -27,7 +27,7 @@ use crate::runtime::{Linkage, Sensitivities, Sensitivity};
 use std::f64::consts::TAU;
 
 /// A machine ready to be differentiated by its design: the model's
-/// parameters p (`Sensitivities::PARAM_NAMES`, in order), then each body's
+/// parameters p (`Sensitivities::param_names`, in order), then each body's
 /// mass and moment of inertia ("mass of …", "inertia of …").
 pub struct Design<'m, L: Sensitivities<M, 1, K>, const M: usize, const K: usize> {
     machine: &'m Machine<L, M>,
@@ -85,7 +85,12 @@ impl<L: Linkage<M, 1>, const M: usize> Machine<L, M> {
                 });
             }
         }
-        let mut names: Vec<String> = L::PARAM_NAMES.iter().map(|n| n.to_string()).collect();
+        let mut names: Vec<String> = self
+            .model
+            .param_names()
+            .iter()
+            .map(|n| n.to_string())
+            .collect();
         for body in &self.bodies {
             names.push(format!("mass of {}", body.name));
             names.push(format!("inertia of {}", body.name));

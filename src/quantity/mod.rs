@@ -26,7 +26,7 @@
 //! let pose = crank.analyze(&vector![-0.1, 0.25], &vector![0.0], &vector![10.0], &vector![0.0], &Options::default())?;
 //! let motion = Motion::of_analysis(&pose);
 //! let pose = Pose::of(&crank, &motion);
-//! let names = Names::of::<SliderCrank, 2, 1>();
+//! let names = Names::of(&SliderCrank { r: 1.0, l: 2.0, e: 0.0 });
 //! // The crank pin's velocity is r·ω upwards at θ2 = 0.
 //! let up = Quantity::<fn(&Pose<f64, 2, 1>) -> f64>::point("B", Axis::Y, Of::Velocity);
 //! assert_eq!(up.name(), "velocity of B.y");

@@ -58,10 +58,15 @@ pub struct Names {
 
 impl Names {
     /// The names of the model `L`.
-    pub fn of<L: Linkage<M, F>, const M: usize, const F: usize>() -> Names {
+    pub fn of<L: Linkage<M, F>, const M: usize, const F: usize>(model: &L) -> Names {
         Names {
-            points: L::POINT_NAMES,
-            coordinates: L::U_NAMES.iter().chain(&L::V_NAMES).copied().collect(),
+            points: model.point_names(),
+            coordinates: model
+                .u_names()
+                .iter()
+                .chain(&model.v_names())
+                .copied()
+                .collect(),
             solved: M,
         }
     }

@@ -21,7 +21,7 @@ pub struct Pose<N: Scalar, const M: usize, const F: usize> {
     pub points: Vec<Vector2<N>>,
     pub point_velocities: Vec<Vector2<N>>,
     pub point_accelerations: Vec<Vector2<N>>,
-    /// The points' names ([`Kernels::POINT_NAMES`](crate::Kernels::POINT_NAMES)).
+    /// The points' names ([`Kernels::point_names`](crate::Kernels::point_names)).
     pub names: &'static [&'static str],
 }
 
@@ -64,7 +64,7 @@ impl<N: Scalar + Copy, const M: usize, const F: usize> Pose<N, M, F> {
             points: Vec::new(),
             point_velocities: Vec::new(),
             point_accelerations: Vec::new(),
-            names: L::POINT_NAMES,
+            names: model.point_names(),
         };
         pose.set(model, motion, lift);
         pose
@@ -105,7 +105,7 @@ impl<N: Scalar + Copy, const M: usize, const F: usize> Pose<N, M, F> {
         self.u = u.map(&lift);
         self.udot = udot.map(&lift);
         self.uddot = uddot.map(&lift);
-        self.names = L::POINT_NAMES;
+        self.names = model.point_names();
     }
 }
 

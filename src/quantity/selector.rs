@@ -177,7 +177,7 @@ mod tests {
     type Fun = fn(&Plain) -> f64;
 
     fn names() -> Names {
-        Names::of::<crate::mechanisms::FourBar, 2, 1>()
+        Names::of(&crate::mechanisms::FourBar::WORKSHEET)
     }
 
     fn pose() -> Plain {

@@ -5,7 +5,6 @@
 //! [`Linkage`](crate::runtime::Linkage), a trait on top of this one.
 
 use crate::runtime::results::Kinematics;
-use crate::runtime::symbolic::SymbolicTable;
 use nalgebra::{SMatrix, SVector, Vector2};
 use num_dual::DualNum;
 
@@ -18,18 +17,28 @@ use num_dual::DualNum;
 /// struct's inherent function of the same name), together with
 /// [`Linkage`](crate::runtime::Linkage), the analyses built on it. Users
 /// rarely name it: a `Linkage<M, F>` bound reaches every item of this
-/// trait (`L::POINT_NAMES`, `model.psi(&u, &v)`), and on a generated
+/// trait (`model.point_names()`, `model.psi(&u, &v)`), and on a generated
 /// struct the inherent functions and constants answer first. Name it in a
 /// fully qualified path (`<FourBar as Kernels<2, 1>>::psi`) or in a bound
 /// that needs no analysis.
 pub trait Kernels<const M: usize, const F: usize> {
     /// The points' positions, velocities or accelerations: one 2-vector per
-    /// named point, in the order of [`Kernels::POINT_NAMES`].
+    /// named point, in the order of [`Kernels::point_names`].
     type Points: Copy + core::fmt::Debug + PartialEq + AsRef<[Vector2<f64>]> + AsMut<[Vector2<f64>]>;
-    const U_NAMES: [&'static str; M];
-    const V_NAMES: [&'static str; F];
-    const POINT_NAMES: &'static [&'static str];
-    const SYMBOLIC: SymbolicTable;
+
+    /// The names of the dependent coordinates u, in order (a generated
+    /// struct also has them as the constant `U_NAMES`).
+    fn u_names(&self) -> [&'static str; M];
+    /// The names of the driving coordinates v, in order (`V_NAMES`).
+    fn v_names(&self) -> [&'static str; F];
+    /// The names of the points, in the order of [`Kernels::Points`]
+    /// (`POINT_NAMES`).
+    fn point_names(&self) -> &'static [&'static str];
+    /// The index of a named point, found at run time (the generated
+    /// constants, `FourBar::C`, give it at compile time).
+    fn point_index(&self, name: &str) -> Option<usize> {
+        self.point_names().iter().position(|n| *n == name)
+    }
 
     /// Ψ
     fn psi(&self, u: &SVector<f64, M>, v: &SVector<f64, F>) -> SVector<f64, M>;
@@ -109,10 +118,14 @@ pub trait Kernels<const M: usize, const F: usize> {
     /// Which coordinates of u have their sine and cosine read from `trig_u`
     /// by [`Kernels::kinematics_with_trig`] (none by default).
     #[doc(hidden)]
-    const TRIG_U: [bool; M] = [false; M];
+    fn trig_u(&self) -> [bool; M] {
+        [false; M]
+    }
     /// Which coordinates of v have their sine and cosine read from `trig_v`.
     #[doc(hidden)]
-    const TRIG_V: [bool; F] = [false; F];
+    fn trig_v(&self) -> [bool; F] {
+        [false; F]
+    }
     /// [`Kernels::kinematics`] with the sines and cosines of the coordinates
     /// supplied: `trig_u[k]` = (sin uₖ, cos uₖ), likewise `trig_v`. A sweep
     /// carries them from pose to pose by the angle-addition formulas. The

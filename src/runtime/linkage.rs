@@ -20,12 +20,6 @@ use nalgebra::SVector;
 /// from the equations, and this trait (empty: every method is provided).
 /// Every item of [`Kernels`] is reachable through a `Linkage<M, F>` bound.
 pub trait Linkage<const M: usize, const F: usize>: Kernels<M, F> {
-    /// The index of a named point, found at run time (the generated
-    /// constants, `FourBar::C`, give it at compile time).
-    fn point_index(name: &str) -> Option<usize> {
-        Self::POINT_NAMES.iter().position(|n| *n == name)
-    }
-
     /// Solves Ψ(u, v) = 0 for u by Newton–Raphson from the guess `u0`.
     fn solve_position(
         &self,

@@ -165,9 +165,9 @@ pub(crate) fn solve_fused<L: Kernels<M, F> + ?Sized, const M: usize, const F: us
     let mut trig = TrigCarrier::new();
     let mut evaluate = |u: &SVector<f64, M>, exact: bool| -> Result<Kinematics<M, F>, Error> {
         let (trig_u, trig_v) = if exact {
-            trig.exactly_at(&L::TRIG_U, &L::TRIG_V, u, v)
+            trig.exactly_at(&model.trig_u(), &model.trig_v(), u, v)
         } else {
-            trig.at(&L::TRIG_U, &L::TRIG_V, u, v)
+            trig.at(&model.trig_u(), &model.trig_v(), u, v)
         };
         let k = model.kinematics_with_trig(u, v, &trig_u, &trig_v, vdot, vddot);
         check_value(Stage::Position, "Ψ", k.psi.as_slice())?;

@@ -32,7 +32,7 @@ pub(crate) type SinCos<const N: usize> = [(f64, f64); N];
 
 /// The sines and cosines an analysis computed at its pose, handed on to the
 /// sensitivities there ([`crate::runtime::Sensitivities::sensitivities_of`]): `sin_cos_u[k]` =
-/// `u[k].sin_cos()` for the coordinates of [`crate::runtime::Kernels::TRIG_U`], and
+/// `u[k].sin_cos()` for the coordinates of [`crate::runtime::Kernels::trig_u`], and
 /// likewise of the analysis's drivers v (the other entries unspecified).
 /// They are used only at exactly this `u`: the analysis's own `u` may be
 /// changed by its caller, its drivers may not.

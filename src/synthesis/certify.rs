@@ -414,7 +414,7 @@ where
     let Some(end) = leg.end else {
         return Ok(());
     };
-    if !continuation::same_pose::<L, M>(&followed.u, &poses[end], 1e-7) {
+    if !continuation::same_pose(model, &followed.u, &poses[end], 1e-7) {
         return Err(Defect::Branch {
             target: end,
             v: leg.to,

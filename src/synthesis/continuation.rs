@@ -79,13 +79,15 @@ where
 /// Whether the poses `a` and `b` of `L` are the same to `tolerance`
 /// (relative to |b|, at least absolute): its angles up to whole turns.
 pub(crate) fn same_pose<L: Linkage<M, 1>, const M: usize>(
+    model: &L,
     a: &SVector<f64, M>,
     b: &SVector<f64, M>,
     tolerance: f64,
 ) -> bool {
+    let angles = model.trig_u();
     (0..M).all(|i| {
         let d = a[i] - b[i];
-        let d = if L::TRIG_U[i] { within_a_turn(d) } else { d };
+        let d = if angles[i] { within_a_turn(d) } else { d };
         d.abs() <= tolerance * b[i].abs().max(1.0)
     })
 }
@@ -93,12 +95,17 @@ pub(crate) fn same_pose<L: Linkage<M, 1>, const M: usize>(
 /// Whether the drivers `a` and `b` of `L` are the same to `tolerance`:
 /// up to whole turns if the driver is an angle.
 pub(crate) fn same_driver<L: Linkage<M, 1>, const M: usize>(
+    model: &L,
     a: f64,
     b: f64,
     tolerance: f64,
 ) -> bool {
     let d = a - b;
-    let d = if L::TRIG_V[0] { within_a_turn(d) } else { d };
+    let d = if model.trig_v()[0] {
+        within_a_turn(d)
+    } else {
+        d
+    };
     d.abs() <= tolerance
 }
 

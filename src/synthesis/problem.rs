@@ -112,7 +112,7 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
         timing: Timing,
     ) -> Result<Self, SynthesisError> {
         let task = Task::Path {
-            point: point_index::<L, M, K>(point)?,
+            point: point_index(&model, point)?,
         };
         let values = targets.iter().map(|t| [t.x, t.y, 0.0]).collect();
         Problem::new(model, task, values, timing)
@@ -175,7 +175,7 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
         targets: &[(f64, f64)],
     ) -> Result<Self, SynthesisError> {
         let task = Task::Function {
-            coordinate: coordinate_index::<L, M, K>(coordinate)?,
+            coordinate: coordinate_index(&model, coordinate)?,
         };
         let values = targets.iter().map(|t| [t.1, 0.0, 0.0]).collect();
         let drivers = targets.iter().map(|t| t.0).collect();
@@ -232,8 +232,8 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
             .flat_map(|a| targets.iter().map(move |b| (a.0 - b.0).norm()))
             .fold(0.0, f64::max);
         let task = Task::Motion {
-            point: point_index::<L, M, K>(point)?,
-            angle: coordinate_index::<L, M, K>(angle)?,
+            point: point_index(&model, point)?,
+            angle: coordinate_index(&model, angle)?,
             length: if spread > 0.0 { spread } else { 1.0 },
         };
         let values = targets.iter().map(|t| [t.0.x, t.0.y, t.1]).collect();
@@ -282,7 +282,7 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
 
     /// Frees the parameter `name`, within [lower, upper].
     pub fn free(mut self, name: &str, lower: f64, upper: f64) -> Result<Self, SynthesisError> {
-        let index = quantity::parameter(&L::PARAM_NAMES, OWNER, name)?;
+        let index = quantity::parameter(&self.model.param_names(), OWNER, name)?;
         if !(lower.is_finite() && upper.is_finite() && lower < upper) {
             return Err(SynthesisError::EmptyBounds {
                 parameter: name.to_owned(),
@@ -427,7 +427,7 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
             .flat_map(|t| t[..rows].iter().map(|x| x.abs()))
             .fold(0.0, f64::max);
         let angle = match self.task {
-            Task::Function { coordinate } => L::TRIG_U[coordinate],
+            Task::Function { coordinate } => self.model.trig_u()[coordinate],
             Task::Path { .. } | Task::Motion { .. } => false,
         };
         if angle || largest == 0.0 {
@@ -474,15 +474,17 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
 /// Who names the points, coordinates and parameters of a synthesis.
 const OWNER: &str = "the synthesis problem";
 
-fn point_index<L: Linkage<M, 1>, const M: usize, const K: usize>(
+fn point_index<L: Linkage<M, 1>, const M: usize>(
+    model: &L,
     name: &str,
 ) -> Result<usize, SynthesisError> {
-    Ok(Names::of::<L, M, 1>().point(OWNER, name)?)
+    Ok(Names::of(model).point(OWNER, name)?)
 }
 
 /// The index of a solved coordinate (of u).
-fn coordinate_index<L: Linkage<M, 1>, const M: usize, const K: usize>(
+fn coordinate_index<L: Linkage<M, 1>, const M: usize>(
+    model: &L,
     name: &str,
 ) -> Result<usize, SynthesisError> {
-    Ok(Names::of::<L, M, 1>().solved(OWNER, name)?)
+    Ok(Names::of(model).solved(OWNER, name)?)
 }

@@ -563,6 +563,6 @@ where
         .drivers
         .iter()
         .zip(&b.drivers)
-        .all(|(x, y)| continuation::same_driver::<L, M>(*x, *y, 1e-6));
+        .all(|(x, y)| continuation::same_driver(&a.model, *x, *y, 1e-6));
     params && drivers
 }

@@ -84,7 +84,7 @@ where
 {
     let resolved = outputs
         .iter()
-        .map(|o| o.resolve::<L>())
+        .map(|o| o.resolve(model))
         .collect::<Result<Vec<_>, _>>()?;
     let mut bands: Vec<Band<F, K>> = outputs
         .iter()

@@ -93,7 +93,7 @@ pub fn at_found<L, const M: usize, const K: usize>(
 where
     L: Sensitivities<M, 1, K>,
 {
-    let resolved = output.resolve::<L>()?;
+    let resolved = output.resolve(model)?;
     let vdot = sweep.poses[found.between.0].vdot;
     let speed = vdot[0].abs();
     let direction = vdot[0].signum();

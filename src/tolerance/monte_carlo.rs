@@ -152,7 +152,7 @@ where
     }
     let resolved = outputs
         .iter()
-        .map(|o| o.resolve::<L>())
+        .map(|o| o.resolve(model))
         .collect::<Result<Vec<_>, _>>()?;
     let sweep = model
         .sweep(u0, drive, options)

@@ -142,8 +142,9 @@ impl<'a, const M: usize, const F: usize, const K: usize> Output<'a, M, F, K> {
     /// The output on the model `L`: its names resolved to indices.
     pub(super) fn resolve<L: Sensitivities<M, F, K>>(
         &self,
+        model: &L,
     ) -> Result<Resolved<'_, M, F, K>, ToleranceError> {
-        let names = Names::of::<L, M, F>();
+        let names = Names::of(model);
         Ok(match &self.output {
             Outputs::Quantity(quantity) => Resolved::Quantity(quantity.resolve(&names)?),
             Outputs::Path { name, point } => Resolved::Path(names.point(name, point)?),

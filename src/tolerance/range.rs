@@ -64,7 +64,7 @@ where
     L: Sensitivities<M, 1, K>,
 {
     let sweep = model.sweep(u0, drive, options)?;
-    let resolved = output.resolve::<L>()?;
+    let resolved = output.resolve(model)?;
     let found = extreme_values(model, &sweep, output, &options.options)?;
     let located = |f: &Found<M, 1>| -> Result<Located<K>, ToleranceError> {
         // The value's gradient needs u_p alone at position level; the
@@ -212,7 +212,7 @@ where
             error,
         })?;
     // The output is checked once: its names, and that it can be located.
-    output.resolve::<L>()?;
+    output.resolve(model)?;
     watch_of(output)?;
     let events = nominal.events.len();
     let ranges = monte_carlo(model, tolerances, run, |sample: &L| {

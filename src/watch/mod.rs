@@ -210,7 +210,7 @@ pub fn locate<L: Linkage<M, F>, const M: usize, const F: usize>(
     options: &Options,
 ) -> Result<Vec<Found<M, F>>, WatchError> {
     options.check()?;
-    let names = Names::of::<L, M, F>();
+    let names = Names::of(model);
     let resolved = watches
         .iter()
         .map(|w| w.quantity.resolve(&names))

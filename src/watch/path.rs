@@ -89,6 +89,6 @@ pub(super) fn path_pose<L: Linkage<M, F>, const M: usize, const F: usize>(
         points: points(&|x| dual(x.re, x.v1)),
         point_velocities: points(&|x| dual(x.v1 * s, x.v2 * s)),
         point_accelerations: points(&|x| dual(x.v2 * s * s, x.v3 * s * s)),
-        names: L::POINT_NAMES,
+        names: model.point_names(),
     }
 }

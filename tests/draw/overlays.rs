@@ -51,7 +51,7 @@ pub(crate) fn turn(model: &CouplerFourBar, steps: usize) -> Vec<Frame> {
 
 /// The coupler point's positions over a turn.
 fn coupler_curve(frames: &[Frame]) -> Vec<Vector2<f64>> {
-    let p = CouplerFourBar::point_index("P").unwrap();
+    let p = CouplerFourBar::P;
     frames.iter().map(|f| f.positions[p]).collect()
 }
 
@@ -338,7 +338,7 @@ fn ghost_poses_are_drawn_faint_under_the_pose_without_labels_or_arrows() {
             .map(|n| back.model(Vector2::new(number(n, "cx"), number(n, "cy"))))
             .collect();
         for name in ["B", "C", "P"] {
-            let at = frame.positions[CouplerFourBar::point_index(name).unwrap()];
+            let at = frame.positions[CouplerFourBar::WORKSHEET.point_index(name).unwrap()];
             assert!(
                 joints.iter().any(|j| (j - at).amax() <= back.tolerance()),
                 "ghost {k}: no joint at {name}"
@@ -638,7 +638,7 @@ fn bad_markers_curves_notes_and_ghosts_are_typed_errors() {
         })
     );
     let mut broken = cycle[3].clone();
-    broken.positions[CouplerFourBar::point_index("C").unwrap()].y = nan;
+    broken.positions[CouplerFourBar::C].y = nan;
     assert_eq!(
         render(base().ghosts(&[cycle[1].clone(), broken])),
         SceneError::NonFinite {

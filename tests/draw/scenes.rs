@@ -156,7 +156,7 @@ fn the_worksheet_scene_is_drawn_where_the_kinematics_say() {
     let back = Readback::new(&doc);
     let tol = back.tolerance();
     assert!(tol < 0.01, "a usable scale: {} px/mm", back.scale);
-    let index = |name| FourBar::point_index(name).unwrap();
+    let index = |name| FourBar::WORKSHEET.point_index(name).unwrap();
     for name in ["B", "C", "G2", "G3", "G4"] {
         let n = by_id(&doc, &format!("point-{name}"));
         let drawn = back.model(Vector2::new(number(n, "cx"), number(n, "cy")));
@@ -263,7 +263,7 @@ fn the_animation_moves_every_part_through_every_frame() {
             .collect()
     };
     let (xs, ys) = (track("cx"), track("cy"));
-    let k = FourBar::point_index("B").unwrap();
+    let k = FourBar::B;
     for (i, frame) in cycle.iter().enumerate() {
         let drawn = back.model(Vector2::new(xs[i], ys[i]));
         assert!((drawn - frame.positions[k]).amax() <= back.tolerance());
@@ -605,7 +605,7 @@ fn shaper() -> (Scene, Frame, Vec<Frame>) {
 /// same way along the guide.
 fn slider_crank() -> (Scene, Frame, Vec<Frame>) {
     let cycle = slider_crank_cycle();
-    let k = SliderCrank::point_index("P").unwrap();
+    let k = SliderCrank::P;
     let same_way = cycle
         .iter()
         .max_by(|f, g| {
@@ -1162,7 +1162,7 @@ fn the_animation_has_the_stills_scales_and_names_no_pose() {
         .velocities(["G3", "G4"])
         .accelerations(["G3", "G4"])
         .title("The four-bar at θ₂ = 20°");
-    let g4 = FourBar::point_index("G4").unwrap();
+    let g4 = FourBar::G4;
     let slowest = cycle
         .iter()
         .min_by(|f, g| {

@@ -138,7 +138,7 @@ impl Worksheet {
         put("alpha4_gamma_method", b[1]);
         put("det_psi_u", bar.psi_u(&a.u, &v).determinant());
 
-        let index = |name| FourBar::point_index(name).unwrap();
+        let index = |name| bar.point_index(name).unwrap();
         let [pb, pc, g2, g3, g4] = ["B", "C", "G2", "G3", "G4"].map(index);
         let p = |k: usize| a.points[k];
         let vel = |k: usize| a.point_velocities[k];

@@ -49,7 +49,7 @@ fn agrees_with_dual<L, const M: usize, const F: usize, const K: usize>(
         assert!(
             worst.iter().all(|&d| d <= tolerance),
             "∂/∂{}: u, u̇, ü, points differ from num-dual by {worst:?}\nours {ours:?}\ndual {dual:?}",
-            L::PARAM_NAMES[j]
+            model.param_names()[j]
         );
     }
 }
@@ -125,8 +125,8 @@ fn the_terms_with_the_poses_sines_and_cosines_given_are_the_same_numbers() {
         let m = motion;
         let computed = model.sensitivity_terms(&m.u, &m.v, &m.udot, &m.vdot, &m.uddot, &m.vddot);
         let (trig_u, trig_v) = (
-            trig_of(&m.u, &L::SENSITIVITY_TRIG_U),
-            trig_of(&m.v, &L::SENSITIVITY_TRIG_V),
+            trig_of(&m.u, &model.sensitivity_trig_u()),
+            trig_of(&m.v, &model.sensitivity_trig_v()),
         );
         let given = model.sensitivity_terms_with_trig(
             &m.u, &m.v, &trig_u, &trig_v, &m.udot, &m.vdot, &m.uddot, &m.vddot,
@@ -436,14 +436,14 @@ where
         .unwrap();
     // Ours: (value, velocity, acceleration) and, per parameter, their derivatives.
     let ours = |quantity: &str, param: Option<usize>| -> [f64; 3] {
-        if let Some(i) = L::U_NAMES.iter().position(|n| *n == quantity) {
+        if let Some(i) = model.u_names().iter().position(|n| *n == quantity) {
             return match param {
                 None => [motion.u[i], motion.udot[i], motion.uddot[i]],
                 Some(j) => [s.u[(i, j)], s.udot[(i, j)], s.uddot[(i, j)]],
             };
         }
         let (point, axis) = quantity.split_once('.').expect("a point coordinate");
-        let c = L::point_index(point).expect("a point of the model");
+        let c = model.point_index(point).expect("a point of the model");
         let a = usize::from(axis == "y");
         match param {
             None => [
@@ -462,7 +462,9 @@ where
     let mut checked = 0;
     for (quantity, param, expected) in &r.rows {
         let j = (param != "-").then(|| {
-            L::param_index(param).unwrap_or_else(|| panic!("{mechanism} has no parameter {param}"))
+            model
+                .param_index(param)
+                .unwrap_or_else(|| panic!("{mechanism} has no parameter {param}"))
         });
         let got = ours(quantity, j);
         // The row's scale: the largest of the quantity's terms at each order.

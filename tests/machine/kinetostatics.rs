@@ -76,9 +76,9 @@ fn cross(a: Vector2<f64>, b: Vector2<f64>) -> f64 {
 /// F_30.
 fn by_hand(m: &Machine<FourBar, 2>, phi: f64, omega: f64, epsilon: f64) -> [Vector2<f64>; 4] {
     let a = m.analysis(phi).unwrap();
-    let point = |name| a.points[FourBar::point_index(name).unwrap()];
+    let point = |name| a.points[m.model().point_index(name).unwrap()];
     let acc = |name| {
-        let k = FourBar::point_index(name).unwrap();
+        let k = m.model().point_index(name).unwrap();
         a.point_accelerations[k] * (omega * omega) + a.point_velocities[k] * epsilon
     };
     let (b, c, g3, g4) = (point("B"), point("C"), point("G3"), point("G4"));
@@ -111,7 +111,7 @@ fn by_hand(m: &Machine<FourBar, 2>, phi: f64, omega: f64, epsilon: f64) -> [Vect
 fn hand_moment(m: &Machine<FourBar, 2>, phi: f64, omega: f64, epsilon: f64) -> f64 {
     let [_, f12, _, _] = by_hand(m, phi, omega, epsilon);
     let a = m.analysis(phi).unwrap();
-    let b = a.points[FourBar::point_index("B").unwrap()];
+    let b = a.points[FourBar::B];
     -cross(b, f12)
 }
 

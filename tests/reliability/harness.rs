@@ -414,7 +414,7 @@ fn check_sensitivities<L: Sensitivities<M, 1, K>, const M: usize, const K: usize
             prop_assert!(
                 distance[g] <= options.accuracy * sizes[g] + 1e-300,
                 "sensitivity group {g} by {}: ours {ours:?}, num-dual {dual:?} (terms {sizes:?})",
-                L::PARAM_NAMES[j]
+                model.param_names()[j]
             );
         }
     }

@@ -277,7 +277,7 @@ fn five_positions_give_only_burmester_pairs_and_every_dyad() {
         let p = design.model.params();
         let x: Vec<f64> = wide
             .iter()
-            .map(|(name, _, _)| p[Coupler::param_index(name).unwrap()])
+            .map(|(name, _, _)| p[design.model.param_index(name).unwrap()])
             .chain(design.drivers.iter().copied())
             .collect();
         let (_, jacobian, _) = problem

@@ -88,7 +88,7 @@ fn a_closed_target_curve_is_fitted_by_least_squares() {
             &SweepOptions::default(),
         )
         .unwrap();
-    let g3 = FourBar::point_index("G3").unwrap();
+    let g3 = FourBar::G3;
     let curve: Vec<Vector2<f64>> = sweep.poses[..720]
         .iter()
         .map(|pose| {

@@ -32,6 +32,7 @@ pub enum Entry {
 
 /// One generated constant: an array with an entry per coordinate, point or
 /// parameter.
+#[derive(Clone, Copy)]
 pub struct Constant {
     pub name: &'static str,
     pub per: Per,
@@ -168,6 +169,34 @@ impl Constant {
             #(#[doc = #doc])*
             #hidden
             pub const #name: [#element; #n] = #value;
+        }
+    }
+
+    /// The trait's method that answers with this constant:
+    /// `fn u_names(&self) -> [&'static str; m] { Self::U_NAMES }` (the
+    /// points' names as a slice), or in the fallback an array of `""` or
+    /// `false` of the dimension's size (the points: none).
+    pub fn trait_method(&self, dims: &Dims, placeholder: bool) -> TokenStream {
+        let method = format_ident!("{}", self.name.to_lowercase());
+        let (name, element) = (format_ident!("{}", self.name), self.element());
+        let n = self.dim(dims).tokens();
+        let hidden = self.hidden.then(|| quote!(#[doc(hidden)]));
+        let empty = match self.entry {
+            Entry::Name => quote!(""),
+            Entry::Flag => quote!(false),
+        };
+        let (ty, value) = match (self.per, placeholder) {
+            (Per::Point, false) => (quote!(&'static [#element]), quote!(&Self::#name)),
+            (Per::Point, true) => (quote!(&'static [#element]), quote!(&[])),
+            (_, false) => (quote!([#element; #n]), quote!(Self::#name)),
+            (_, true) => (quote!([#element; #n]), quote!([#empty; #n])),
+        };
+        quote! {
+            #hidden
+            #[inline]
+            fn #method(&self) -> #ty {
+                #value
+            }
         }
     }
 

@@ -67,11 +67,13 @@ pub fn fallback(input: &Input, unbuilt: &Unbuilt) -> TokenStream {
         .collect();
     let point_indices = super::point_indices(names.iter().map(String::as_str));
     let consts = constants::all().map(|c| c.placeholder(&dims, false));
-    let (u_names, v_names, param_names) = (
-        constants::U_NAMES.placeholder(&dims, true),
-        constants::V_NAMES.placeholder(&dims, true),
-        constants::PARAM_NAMES.placeholder(&dims, true),
-    );
+    let names = [
+        constants::U_NAMES,
+        constants::V_NAMES,
+        constants::POINT_NAMES,
+    ]
+    .map(|c| c.trait_method(&dims, true));
+    let param_names = constants::PARAM_NAMES.trait_method(&dims, true);
     let symbolic_name = format_ident!("{}", constants::SYMBOLIC);
     let inherent = QUANTITIES.iter().filter(|q| q.function).map(|q| {
         let fn_name = format_ident!("{}", q.name);
@@ -159,10 +161,7 @@ pub fn fallback(input: &Input, unbuilt: &Unbuilt) -> TokenStream {
             #[allow(unused_variables)]
             impl #linkage_generics #kernels for #ty #ty_generics #where_clause {
                 type Points = [Vector2<f64>; #np];
-                #u_names
-                #v_names
-                const POINT_NAMES: &'static [&'static str] = &[];
-                const SYMBOLIC: ::linkage::SymbolicTable = Self::SYMBOLIC;
+                #(#names)*
                 #(#kinematics)*
             }
             impl #linkage_generics #linkage for #ty #ty_generics #where_clause {}

@@ -378,12 +378,25 @@ mod tests {
                 .map(|q| q.name.to_owned())
                 .collect()
         };
-        let mut sensitivities = of(Trait::Sensitivities);
+        // Besides the quantities, each trait answers with its constants.
+        let answering = |which: Trait, constants: &[super::constants::Constant]| {
+            let mut names = of(which);
+            names.extend(constants.iter().map(|c| c.name.to_lowercase()));
+            names
+        };
+        use super::constants::{
+            PARAM_NAMES, POINT_NAMES, SENSITIVITY_TRIG, TRIG, U_NAMES, V_NAMES,
+        };
+        let mut sensitivities = answering(Trait::Sensitivities, &[PARAM_NAMES]);
         sensitivities.extend(["params".to_owned(), "set_params".to_owned()]);
+        let kernels = [U_NAMES, V_NAMES, POINT_NAMES, TRIG[0], TRIG[1]];
         let in_trait = BTreeMap::from([
-            ("Kernels".to_owned(), of(Trait::Kernels)),
+            ("Kernels".to_owned(), answering(Trait::Kernels, &kernels)),
             ("Linkage".to_owned(), BTreeSet::new()),
-            ("SensitivityKernel".to_owned(), of(Trait::SensitivityKernel)),
+            (
+                "SensitivityKernel".to_owned(),
+                answering(Trait::SensitivityKernel, &SENSITIVITY_TRIG),
+            ),
             ("Sensitivities".to_owned(), sensitivities),
         ]);
         let keys: BTreeSet<String> = QUANTITIES
@@ -394,9 +407,17 @@ mod tests {
         assert_eq!(good_inherent, functions);
         assert_eq!(good_trait, in_trait);
         assert_eq!(good_keys, keys);
+        // The fallback leaves the flags of the carried sines and cosines to
+        // the traits' defaults (none carried).
+        let mut without_flags = in_trait.clone();
+        for (which, flags) in [("Kernels", TRIG), ("SensitivityKernel", SENSITIVITY_TRIG)] {
+            for flag in flags {
+                without_flags.get_mut(which).map(|f| f.remove(&flag.name.to_lowercase()));
+            }
+        }
         let (fallback_inherent, fallback_trait, _) = inventory(&broken);
         assert_eq!(fallback_inherent, functions);
-        assert_eq!(fallback_trait, in_trait);
+        assert_eq!(fallback_trait, without_flags);
         assert!(
             quote!(#broken).to_string().contains("compile_error"),
             "the broken attribute reports its mistake"
@@ -589,8 +610,8 @@ mod tests {
         assert!(text.contains("gamma[0] = -l3_c_theta3 * theta3_dot.powi(2)"));
     }
 
-    /// The excerpts of generated code in the guide (its `rust,ignore`
-    /// blocks) are the expansion's own lines, indentation aside: the guide
+    /// The excerpts of generated code in the guide (its `text` blocks that
+    /// begin with a doc comment) are the expansion's own lines, indentation aside: the guide
     /// shows what the macro emits today.
     #[test]
     fn the_guides_excerpts_are_the_generated_code() {
@@ -609,8 +630,11 @@ mod tests {
         let expansion = trimmed(&text.lines().collect::<Vec<_>>());
         let mut excerpts = 0;
         let mut lines = guide.lines();
-        while lines.any(|l| l.starts_with("```rust,ignore")) {
+        while lines.any(|l| l.starts_with("```text")) {
             let block: Vec<&str> = lines.by_ref().take_while(|l| *l != "```").collect();
+            if !block.first().is_some_and(|l| l.trim_start().starts_with("///")) {
+                continue;
+            }
             let excerpt = trimmed(&block);
             assert!(
                 expansion

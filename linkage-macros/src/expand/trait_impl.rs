@@ -4,6 +4,7 @@
 //! methods, the analyses, are all provided).
 
 use super::Generator;
+use super::constants::{PARAM_NAMES, POINT_NAMES, SENSITIVITY_TRIG, TRIG, U_NAMES, V_NAMES};
 use super::quantities::{QUANTITIES, Source, Trait};
 use super::signature;
 use proc_macro2::{Literal, TokenStream};
@@ -33,16 +34,22 @@ impl Generator<'_> {
                     let call = signature::delegate(q);
                     let prefix = match q.source {
                         Source::Kinematics { with_trig: false } => quote!(#[inline]),
-                        Source::Kinematics { with_trig: true } => quote! {
-                            const TRIG_U: [bool; #m] = Self::TRIG_U;
-                            const TRIG_V: [bool; #f] = Self::TRIG_V;
-                            #[inline(always)]
-                        },
-                        Source::SensitivityTerms { with_trig: true } => quote! {
-                            const SENSITIVITY_TRIG_U: [bool; #m] = Self::SENSITIVITY_TRIG_U;
-                            const SENSITIVITY_TRIG_V: [bool; #f] = Self::SENSITIVITY_TRIG_V;
-                            #[inline(always)]
-                        },
+                        Source::Kinematics { with_trig: true } => {
+                            let flags = TRIG.iter().map(|c| c.trait_method(&dims, false));
+                            quote! {
+                                #(#flags)*
+                                #[inline(always)]
+                            }
+                        }
+                        Source::SensitivityTerms { with_trig: true } => {
+                            let flags = SENSITIVITY_TRIG
+                                .iter()
+                                .map(|c| c.trait_method(&dims, false));
+                            quote! {
+                                #(#flags)*
+                                #[inline(always)]
+                            }
+                        }
                         _ => quote!(#[inline]),
                     };
                     quote! {
@@ -59,6 +66,8 @@ impl Generator<'_> {
             functions(Trait::SensitivityKernel),
             functions(Trait::Sensitivities),
         );
+        let names = [U_NAMES, V_NAMES, POINT_NAMES].map(|c| c.trait_method(&dims, false));
+        let param_names = PARAM_NAMES.trait_method(&dims, false);
         let lowered = &self.model.lowered;
         let param_idents: Vec<_> = lowered
             .params
@@ -70,10 +79,7 @@ impl Generator<'_> {
             #[automatically_derived]
             impl #impl_generics ::linkage::Kernels<#m, #f> for #ty #ty_generics #where_clause {
                 type Points = [Vector2<f64>; #np];
-                const U_NAMES: [&'static str; #m] = Self::U_NAMES;
-                const V_NAMES: [&'static str; #f] = Self::V_NAMES;
-                const POINT_NAMES: &'static [&'static str] = &Self::POINT_NAMES;
-                const SYMBOLIC: ::linkage::SymbolicTable = Self::SYMBOLIC;
+                #(#names)*
                 #(#kinematics)*
             }
 
@@ -87,7 +93,7 @@ impl Generator<'_> {
 
             #[automatically_derived]
             impl #impl_generics ::linkage::Sensitivities<#m, #f, #k> for #ty #ty_generics #where_clause {
-                const PARAM_NAMES: [&'static str; #k] = Self::PARAM_NAMES;
+                #param_names
                 #[inline]
                 fn params(&self) -> SVector<f64, #k> {
                     SVector::<f64, #k>::from([#(self.#param_idents),*])

@@ -1809,10 +1809,18 @@ const _: () = {
     #[automatically_derived]
     impl ::linkage::Kernels<2, 1> for FourBar {
         type Points = [Vector2<f64>; 5];
-        const U_NAMES: [&'static str; 2] = Self::U_NAMES;
-        const V_NAMES: [&'static str; 1] = Self::V_NAMES;
-        const POINT_NAMES: &'static [&'static str] = &Self::POINT_NAMES;
-        const SYMBOLIC: ::linkage::SymbolicTable = Self::SYMBOLIC;
+        #[inline]
+        fn u_names(&self) -> [&'static str; 2] {
+            Self::U_NAMES
+        }
+        #[inline]
+        fn v_names(&self) -> [&'static str; 1] {
+            Self::V_NAMES
+        }
+        #[inline]
+        fn point_names(&self) -> &'static [&'static str] {
+            &Self::POINT_NAMES
+        }
         #[inline]
         fn psi(&self, u: &SVector<f64, 2>, v: &SVector<f64, 1>) -> SVector<f64, 2> {
             Self::psi(self, u, v)
@@ -1939,8 +1947,16 @@ const _: () = {
         ) -> ::linkage::Kinematics<2, 1> {
             Self::kinematics(self, u, v, vdot, vddot)
         }
-        const TRIG_U: [bool; 2] = Self::TRIG_U;
-        const TRIG_V: [bool; 1] = Self::TRIG_V;
+        #[doc(hidden)]
+        #[inline]
+        fn trig_u(&self) -> [bool; 2] {
+            Self::TRIG_U
+        }
+        #[doc(hidden)]
+        #[inline]
+        fn trig_v(&self) -> [bool; 1] {
+            Self::TRIG_V
+        }
         #[inline(always)]
         fn kinematics_with_trig(
             &self,
@@ -1984,8 +2000,16 @@ const _: () = {
         ) -> ::linkage::SensitivityTerms<2, 4, [Vector2<f64>; 5]> {
             Self::sensitivity_terms(self, u, v, udot, vdot, uddot, vddot)
         }
-        const SENSITIVITY_TRIG_U: [bool; 2] = Self::SENSITIVITY_TRIG_U;
-        const SENSITIVITY_TRIG_V: [bool; 1] = Self::SENSITIVITY_TRIG_V;
+        #[doc(hidden)]
+        #[inline]
+        fn sensitivity_trig_u(&self) -> [bool; 2] {
+            Self::SENSITIVITY_TRIG_U
+        }
+        #[doc(hidden)]
+        #[inline]
+        fn sensitivity_trig_v(&self) -> [bool; 1] {
+            Self::SENSITIVITY_TRIG_V
+        }
         #[inline(always)]
         fn sensitivity_terms_with_trig(
             &self,
@@ -2013,7 +2037,10 @@ const _: () = {
     }
     #[automatically_derived]
     impl ::linkage::Sensitivities<2, 1, 4> for FourBar {
-        const PARAM_NAMES: [&'static str; 4] = Self::PARAM_NAMES;
+        #[inline]
+        fn param_names(&self) -> [&'static str; 4] {
+            Self::PARAM_NAMES
+        }
         #[inline]
         fn params(&self) -> SVector<f64, 4> {
             SVector::<f64, 4>::from([self.l1, self.l2, self.l3, self.l4])

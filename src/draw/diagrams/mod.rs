@@ -5,7 +5,7 @@
 //! Rows: positions, velocities, accelerations. Columns: angles and lengths
 //! (each with its units), as the mechanism has them. A coordinate is taken
 //! for an angle when the closure equations take its sine or cosine
-//! ([`Kernels::TRIG_U`](crate::Kernels::TRIG_U)); [`Diagrams::kind`] overrides that. Angles are
+//! ([`Kernels::trig_u`](crate::Kernels::trig_u)); [`Diagrams::kind`] overrides that. Angles are
 //! drawn in degrees, their rates in rad/s and rad/s². A sweep of one
 //! revolution of an angular driver back to the pose it started from is a
 //! period of the motion: it is drawn over 0…360° whatever angle it started
@@ -134,7 +134,7 @@ impl Diagrams {
     /// The diagrams of `sweep` (a sweep of `model`) as SVG.
     pub fn render<L: Linkage<M, F>, const M: usize, const F: usize>(
         &self,
-        _model: &L,
+        model: &L,
         sweep: &Sweep<M, F>,
     ) -> Result<String, DiagramError> {
         let poses = &sweep.poses;
@@ -143,7 +143,7 @@ impl Diagrams {
         }
         // The abscissa: the driver for f = 1, else the pose's step.
         let driver_kind = if F == 1 {
-            Some(self.kind_of(L::V_NAMES[0], L::TRIG_V[0]))
+            Some(self.kind_of(model.v_names()[0], model.trig_v()[0]))
         } else {
             None
         };
@@ -161,16 +161,18 @@ impl Diagrams {
                 }
             })
             .collect();
-        check_plottable("driver", L::V_NAMES[0], xs.iter().copied(), 1)?;
+        check_plottable("driver", model.v_names()[0], xs.iter().copied(), 1)?;
         let x_desc = match driver_kind {
-            Some(Kind::Angle) => format!("{} [°]", textbook(L::V_NAMES[0])),
-            Some(Kind::Length) => format!("{} [{}]", textbook(L::V_NAMES[0]), self.length_unit),
+            Some(Kind::Angle) => format!("{} [°]", textbook(model.v_names()[0])),
+            Some(Kind::Length) => {
+                format!("{} [{}]", textbook(model.v_names()[0]), self.length_unit)
+            }
             None => "pose".to_string(),
         };
         let mut curves = Vec::new();
         for k in 0..M {
-            let name = L::U_NAMES[k];
-            let kind = self.kind_of(name, L::TRIG_U[k]);
+            let name = model.u_names()[k];
+            let kind = self.kind_of(name, model.trig_u()[k]);
             let mut values = Vec::with_capacity(poses.len());
             for (i, p) in poses.iter().enumerate() {
                 let position = if kind == Kind::Angle {

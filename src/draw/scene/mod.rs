@@ -238,11 +238,11 @@ impl Frame {
     /// The points of a whole analysis ([`Linkage::analyze`]) of `model`
     /// (which names the points).
     pub fn from_analysis<L: Linkage<M, F>, const M: usize, const F: usize>(
-        _model: &L,
+        model: &L,
         analysis: &Analysis<M, F, L::Points>,
     ) -> Frame {
         Frame {
-            names: L::POINT_NAMES.iter().map(|s| s.to_string()).collect(),
+            names: model.point_names().iter().map(|s| s.to_string()).collect(),
             positions: analysis.points.as_ref().to_vec(),
             velocities: Some(analysis.point_velocities.as_ref().to_vec()),
             accelerations: Some(analysis.point_accelerations.as_ref().to_vec()),
@@ -277,7 +277,7 @@ impl Frame {
         vddot: &SVector<f64, F>,
     ) -> Frame {
         Frame {
-            names: L::POINT_NAMES.iter().map(|s| s.to_string()).collect(),
+            names: model.point_names().iter().map(|s| s.to_string()).collect(),
             positions: model.point_positions(u, v).as_ref().to_vec(),
             velocities: Some(model.point_velocities(u, v, udot, vdot).as_ref().to_vec()),
             accelerations: Some(
@@ -296,7 +296,7 @@ impl Frame {
         v: &SVector<f64, F>,
     ) -> Frame {
         Frame {
-            names: L::POINT_NAMES.iter().map(|s| s.to_string()).collect(),
+            names: model.point_names().iter().map(|s| s.to_string()).collect(),
             positions: model.point_positions(u, v).as_ref().to_vec(),
             velocities: None,
             accelerations: None,

@@ -183,7 +183,7 @@ impl<'m, L: Linkage<M, 1>, const M: usize> KinetostaticsBuilder<'m, L, M> {
                 name,
             )?)
         };
-        let point_names = L::POINT_NAMES;
+        let point_names = self.machine.model().point_names();
         let point_ref = |owner: &str, name: &str| -> Result<PointRef, KinetostaticsError> {
             let known = point_names
                 .iter()
@@ -195,7 +195,7 @@ impl<'m, L: Linkage<M, 1>, const M: usize> KinetostaticsBuilder<'m, L, M> {
                 Some(g) => PointRef::Ground(self.ground_points[g].1),
             })
         };
-        let names = Names::of::<L, M, 1>();
+        let names = Names::of(self.machine.model());
         let mut joints = Vec::new();
         for joint in &self.joints {
             let guide = match &joint.kind {

@@ -28,9 +28,13 @@ use num_dual::DualNum;
 pub trait SensitivityKernel<const M: usize, const F: usize, const K: usize>: Linkage<M, F> {
     /// Which coordinates of u [`SensitivityKernel::sensitivity_terms_with_trig`]
     /// reads the sine and cosine of.
-    const SENSITIVITY_TRIG_U: [bool; M] = [false; M];
+    fn sensitivity_trig_u(&self) -> [bool; M] {
+        [false; M]
+    }
     /// Which coordinates of v it reads them of.
-    const SENSITIVITY_TRIG_V: [bool; F] = [false; F];
+    fn sensitivity_trig_v(&self) -> [bool; F] {
+        [false; F]
+    }
 
     /// Every term the sensitivities need, in one evaluation (see
     /// [`SensitivityTerms`]).
@@ -72,8 +76,9 @@ pub trait SensitivityKernel<const M: usize, const F: usize, const K: usize>: Lin
 pub trait Sensitivities<const M: usize, const F: usize, const K: usize>:
     SensitivityKernel<M, F, K>
 {
-    /// The parameters p, in order: the struct's fields.
-    const PARAM_NAMES: [&'static str; K];
+    /// The parameters p, in order: the struct's fields (a generated struct
+    /// also has them as the constant `PARAM_NAMES`).
+    fn param_names(&self) -> [&'static str; K];
 
     /// The parameters' current values.
     fn params(&self) -> SVector<f64, K>;
@@ -101,8 +106,8 @@ pub trait Sensitivities<const M: usize, const F: usize, const K: usize>:
     ) -> impl AsRef<[Vector2<D>]>;
 
     /// The index of a parameter, found at run time.
-    fn param_index(name: &str) -> Option<usize> {
-        Self::PARAM_NAMES.iter().position(|n| *n == name)
+    fn param_index(&self, name: &str) -> Option<usize> {
+        self.param_names().iter().position(|n| *n == name)
     }
 
     /// The sensitivities at a pose in motion (an assembled pose with its
@@ -136,7 +141,7 @@ pub trait Sensitivities<const M: usize, const F: usize, const K: usize>:
         let motion = Motion::of_analysis(analysis);
         match &analysis.trig {
             Some(trig) if trig.u == motion.u => {
-                let (trig_u, trig_v) = completed::<Self, M, F, K>(trig, &motion.u, &motion.v);
+                let (trig_u, trig_v) = completed::<Self, M, F, K>(self, trig, &motion.u, &motion.v);
                 with_trig(self, &motion, &trig_u, &trig_v, options)
             }
             _ => self.sensitivities(&motion, options),
@@ -159,21 +164,16 @@ pub trait Sensitivities<const M: usize, const F: usize, const K: usize>:
     ) -> Result<SweepSummary<M, F>, Error> {
         let accuracy = options.options;
         let mut trig = TrigCarrier::<M, F>::new();
+        let (trig_flags_u, trig_flags_v) = (self.sensitivity_trig_u(), self.sensitivity_trig_v());
         let mut previous: Option<(SVector<f64, M>, SVector<f64, F>)> = None;
         self.sweep_each(u0, drive, options, |pose| {
             let motion = Motion::of_sweep_pose(pose);
             let dense = previous.is_some_and(|(u, v)| {
-                carry_pays(&Self::SENSITIVITY_TRIG_U, &u, &pose.u)
-                    && carry_pays(&Self::SENSITIVITY_TRIG_V, &v, &pose.v)
+                carry_pays(&trig_flags_u, &u, &pose.u) && carry_pays(&trig_flags_v, &v, &pose.v)
             });
             previous = Some((pose.u, pose.v));
             let sensitivity = if dense {
-                let (trig_u, trig_v) = trig.at(
-                    &Self::SENSITIVITY_TRIG_U,
-                    &Self::SENSITIVITY_TRIG_V,
-                    &pose.u,
-                    &pose.v,
-                );
+                let (trig_u, trig_v) = trig.at(&trig_flags_u, &trig_flags_v, &pose.u, &pose.v);
                 with_trig(self, &motion, &trig_u, &trig_v, &accuracy)
             } else {
                 self.sensitivities(&motion, &accuracy)
@@ -209,6 +209,7 @@ where
 /// not (a point's angle, say).
 #[inline(always)]
 fn completed<L, const M: usize, const F: usize, const K: usize>(
+    model: &L,
     trig: &PoseTrig<M, F>,
     u: &SVector<f64, M>,
     v: &SVector<f64, F>,
@@ -217,13 +218,15 @@ where
     L: SensitivityKernel<M, F, K> + ?Sized,
 {
     let (mut trig_u, mut trig_v) = (trig.sin_cos_u, trig.sin_cos_v);
+    let (sensitivity_u, kinematics_u) = (model.sensitivity_trig_u(), model.trig_u());
+    let (sensitivity_v, kinematics_v) = (model.sensitivity_trig_v(), model.trig_v());
     for k in 0..M {
-        if L::SENSITIVITY_TRIG_U[k] && !L::TRIG_U[k] {
+        if sensitivity_u[k] && !kinematics_u[k] {
             trig_u[k] = u[k].sin_cos();
         }
     }
     for k in 0..F {
-        if L::SENSITIVITY_TRIG_V[k] && !L::TRIG_V[k] {
+        if sensitivity_v[k] && !kinematics_v[k] {
             trig_v[k] = v[k].sin_cos();
         }
     }

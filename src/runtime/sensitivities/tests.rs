@@ -8,7 +8,6 @@ use super::*;
 use crate::runtime::kernels::Kernels;
 use crate::runtime::options::{AccelerationMethod, JacobianSource};
 use crate::runtime::results::Kinematics;
-use crate::runtime::symbolic::SymbolicTable;
 use core::cell::Cell;
 use nalgebra::{Matrix1, vector};
 
@@ -102,16 +101,15 @@ impl Tips {
 
 impl Kernels<1, 1> for Tips {
     type Points = Points;
-    const U_NAMES: [&'static str; 1] = ["theta"];
-    const V_NAMES: [&'static str; 1] = ["phi"];
-    const POINT_NAMES: &'static [&'static str] = &["tip"];
-    const SYMBOLIC: SymbolicTable = SymbolicTable {
-        name: "Tips",
-        u: &["θ"],
-        v: &["φ"],
-        matrices: &[],
-        methods_agree: None,
-    };
+    fn u_names(&self) -> [&'static str; 1] {
+        ["theta"]
+    }
+    fn v_names(&self) -> [&'static str; 1] {
+        ["phi"]
+    }
+    fn point_names(&self) -> &'static [&'static str] {
+        &["tip"]
+    }
 
     fn psi(&self, u: &SVector<f64, 1>, v: &SVector<f64, 1>) -> SVector<f64, 1> {
         vector![self.r * u[0].sin() - v[0].sin()]
@@ -197,8 +195,12 @@ impl Kernels<1, 1> for Tips {
     ) -> Kinematics<1, 1> {
         self.kinematics_on(u[0].sin_cos(), v[0].sin_cos(), vdot, vddot)
     }
-    const TRIG_U: [bool; 1] = [true];
-    const TRIG_V: [bool; 1] = [true];
+    fn trig_u(&self) -> [bool; 1] {
+        [true]
+    }
+    fn trig_v(&self) -> [bool; 1] {
+        [true]
+    }
     fn kinematics_with_trig(
         &self,
         _u: &SVector<f64, 1>,
@@ -261,7 +263,9 @@ impl Kernels<1, 1> for Tips {
 impl Linkage<1, 1> for Tips {}
 
 impl SensitivityKernel<1, 1, 1> for Tips {
-    const SENSITIVITY_TRIG_U: [bool; 1] = [true];
+    fn sensitivity_trig_u(&self) -> [bool; 1] {
+        [true]
+    }
     fn sensitivity_terms(
         &self,
         u: &SVector<f64, 1>,
@@ -291,7 +295,9 @@ impl SensitivityKernel<1, 1, 1> for Tips {
 }
 
 impl Sensitivities<1, 1, 1> for Tips {
-    const PARAM_NAMES: [&'static str; 1] = ["r"];
+    fn param_names(&self) -> [&'static str; 1] {
+        ["r"]
+    }
     fn params(&self) -> SVector<f64, 1> {
         vector![self.r]
     }

@@ -85,7 +85,11 @@ where
     let mut reversals = 0;
     let mut complete = true;
     // The fast path carries the sines and cosines the model reads.
-    let carries = L::TRIG_U.iter().chain(L::TRIG_V.iter()).any(|&b| b);
+    let carries = model
+        .trig_u()
+        .iter()
+        .chain(model.trig_v().iter())
+        .any(|&b| b);
     let mut trig = TrigCarrier::new();
     // A rocking drive ends back at the start after two reversals.
     let closes = |reversals: usize, direction: f64| rocking && reversals >= 2 && direction > 0.0;

@@ -33,7 +33,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
     ) -> Kinematics<M, F> {
         let zero = SVector::<f64, F>::zeros();
         if carries {
-            let (trig_u, trig_v) = trig.at(&L::TRIG_U, &L::TRIG_V, x, v);
+            let (trig_u, trig_v) = trig.at(&self.model.trig_u(), &self.model.trig_v(), x, v);
             self.model
                 .kinematics_with_trig(x, v, &trig_u, &trig_v, &self.dir, &zero)
         } else {

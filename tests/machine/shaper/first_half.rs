@@ -4,7 +4,7 @@
 //! closed form against Newton.
 
 use super::reference::{printed, reference};
-use crate::machine::{COURSE_PROJECT, Data, Shaper, machine, synthesize};
+use crate::machine::{COURSE_PROJECT, Data, machine, synthesize};
 use linkage::machine::flywheel;
 use linkage::prelude::*;
 use std::collections::HashMap;
@@ -37,7 +37,7 @@ fn ours(data: &Data) -> HashMap<&'static str, f64> {
     put("shaper.f", f);
     put("shaper.phi1_f_deg", (shaper.phi0 - f).to_degrees());
     let a = m.analysis(f).unwrap();
-    let point = |name| Shaper::point_index(name).unwrap();
+    let point = |name| m.model().point_index(name).unwrap();
     let (pa, pd, ps3) = (point("A"), point("D"), point("S3"));
     put("shaper.x_A", a.points[pa].x);
     put("shaper.y_A", a.points[pa].y);

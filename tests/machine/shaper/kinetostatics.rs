@@ -2,7 +2,7 @@
 //! reference, and the balancing moment three ways over a cycle.
 
 use super::reference::{printed, reference};
-use crate::machine::{self, COURSE_PROJECT, Data, Shaper, machine, synthesize};
+use crate::machine::{self, COURSE_PROJECT, Data, machine, synthesize};
 use linkage::prelude::*;
 use std::collections::HashMap;
 use std::f64::consts::TAU;
@@ -19,7 +19,7 @@ fn ours_kinetostatics(data: &Data) -> HashMap<String, f64> {
     let (w, eps) = (e.omega(f).unwrap(), e.epsilon(f).unwrap());
     let sol = statics.solve(f, w, eps).unwrap();
     let a = m.analysis(f).unwrap();
-    let point = |name| Shaper::point_index(name).unwrap();
+    let point = |name| m.model().point_index(name).unwrap();
     let acc = |p: usize| a.point_accelerations[p] * (w * w) + a.point_velocities[p] * eps;
     let rocker = a.uddot[0] * w * w + a.udot[0] * eps;
     let mut out = HashMap::new();

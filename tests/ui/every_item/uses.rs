@@ -12,11 +12,11 @@ use linkage::tolerance::{Tolerance, Tolerances};
 
 /// The trait impls, at the four-bar's dimensions.
 fn through_the_traits<L: Sensitivities<2, 1, 4>>(model: &L) -> usize {
-    let names: ([&str; 2], [&str; 1], [&str; 4]) = (L::U_NAMES, L::V_NAMES, L::PARAM_NAMES);
-    let _: &[&str] = L::POINT_NAMES;
-    let _: SymbolicTable = L::SYMBOLIC;
+    let names: ([&str; 2], [&str; 1], [&str; 4]) =
+        (model.u_names(), model.v_names(), model.param_names());
+    let _: &[&str] = model.point_names();
     let _: SVector<f64, 4> = model.params();
-    names.0.len() + names.1.len() + names.2.len() + L::point_index("C").unwrap_or(0)
+    names.0.len() + names.1.len() + names.2.len() + model.point_index("C").unwrap_or(0)
 }
 
 /// Results used as they come, with no type written to fix their sizes

@@ -1,0 +1,236 @@
+//! The equations' text read into tokens, within bounds: proc-macro2's
+//! lexer (the one the attribute's tokens come from outside a compiler),
+//! a text it refuses described and located, and a text too large or too
+//! deeply nested for the later stages (whose recursion follows the
+//! expressions' depth) refused before they see it.
+
+use crate::diagnostics::Diagnostic;
+use proc_macro2::{Delimiter, Span, TokenStream, TokenTree};
+use std::ops::Range;
+use std::str::FromStr;
+
+/// The longest text read, in bytes: a hundred times the largest mechanism
+/// of the project's models (about 700 bytes).
+pub const MAX_BYTES: usize = 64 * 1024;
+
+/// The most tokens read: sixteen times the largest model's (about 250).
+/// An expression's depth is at most its number of tokens, and the later
+/// stages recurse that deep (on a 1 MiB stack, as WebAssembly has).
+pub const MAX_TOKENS: usize = 4096;
+
+/// The deepest nesting of brackets read: real equations nest four or five
+/// deep.
+pub const MAX_DEPTH: usize = 32;
+
+/// A text of equations and where it starts in its file.
+#[derive(Clone, Copy)]
+pub(super) struct Source<'a> {
+    pub text: &'a str,
+    pub offset: usize,
+}
+
+impl Source<'_> {
+    /// The bytes `range` of the text, in file coordinates.
+    pub fn in_file(&self, range: Range<usize>) -> Range<usize> {
+        self.offset.saturating_add(range.start)..self.offset.saturating_add(range.end)
+    }
+
+    /// The whole text, in file coordinates.
+    pub fn whole(&self) -> Range<usize> {
+        self.in_file(0..self.text.len())
+    }
+
+    /// The character at byte `at` of the text, in file coordinates (empty
+    /// at the end).
+    fn char_at(&self, at: usize) -> Range<usize> {
+        let width = (self.text.get(at..))
+            .and_then(|rest| rest.chars().next())
+            .map_or(0, char::len_utf8);
+        self.in_file(at..at + width)
+    }
+}
+
+/// The tokens of `source`, or why it cannot be read.
+pub(super) fn lex(source: Source<'_>) -> Result<TokenStream, Diagnostic> {
+    if source.text.len() > MAX_BYTES {
+        return Err(Diagnostic::error(
+            format!(
+                "the equations are {} bytes long; the most this reads is {MAX_BYTES}",
+                source.text.len()
+            ),
+            Some(source.in_file(MAX_BYTES..source.text.len())),
+        ));
+    }
+    let tokens = TokenStream::from_str(source.text)
+        .map_err(|e| refused(source, e.span().byte_range().start))?;
+    check_size(source, &tokens)?;
+    Ok(tokens)
+}
+
+/// Why the lexer stopped at byte `at`: a bracket never closed (the lexer
+/// points at it), a closing bracket that closes nothing or the wrong
+/// bracket, or a character that starts no token.
+fn refused(source: Source<'_>, at: usize) -> Diagnostic {
+    let here = source.char_at(at);
+    let Some(c) = source.text.get(at..).and_then(|rest| rest.chars().next()) else {
+        return Diagnostic::error("the equations end in the middle of a token", Some(here));
+    };
+    match c {
+        '(' | '[' | '{' => Diagnostic::error(
+            format!(
+                "unclosed `{c}`: the equations end before the `{}` that closes it",
+                closing(c)
+            ),
+            Some(here),
+        ),
+        ')' | ']' | '}' => match unclosed_before(source, at) {
+            Some((open, opened_at)) => Diagnostic::error(
+                format!(
+                    "mismatched `{c}`: the bracket open here is `{open}`, closed by `{}`",
+                    closing(open)
+                ),
+                Some(here),
+            )
+            .with_label(opened_at, format!("`{open}` opened here")),
+            None => Diagnostic::error(
+                format!("unexpected `{c}`: it closes no bracket"),
+                Some(here),
+            ),
+        },
+        '"' => Diagnostic::error("a string that is never closed", Some(here)),
+        _ => Diagnostic::error(
+            format!(
+                "unexpected `{}`: an equation is written with numbers, names, operators, \
+                 commas and brackets",
+                c.escape_debug()
+            ),
+            Some(here),
+        ),
+    }
+}
+
+/// The innermost bracket open at byte `at`, and where: what the lexer
+/// says of the text up to there (it read that far, so only an open bracket
+/// can stop it).
+fn unclosed_before(source: Source<'_>, at: usize) -> Option<(char, Range<usize>)> {
+    let before = source.text.get(..at)?;
+    let opened = TokenStream::from_str(before)
+        .err()?
+        .span()
+        .byte_range()
+        .start;
+    let open = before.get(opened..)?.chars().next()?;
+    matches!(open, '(' | '[' | '{').then(|| (open, source.char_at(opened)))
+}
+
+fn closing(open: char) -> char {
+    match open {
+        '(' => ')',
+        '[' => ']',
+        _ => '}',
+    }
+}
+
+/// At most [`MAX_TOKENS`] tokens nested at most [`MAX_DEPTH`] deep
+/// (walked without recursion: the nesting is not known to be shallow yet).
+fn check_size(source: Source<'_>, tokens: &TokenStream) -> Result<(), Diagnostic> {
+    let mut count = 0;
+    let mut pending: Vec<(TokenStream, usize)> = vec![(tokens.clone(), 0)];
+    while let Some((stream, depth)) = pending.pop() {
+        for tree in stream {
+            count += 1;
+            let span = tree.span();
+            if count > MAX_TOKENS {
+                return Err(Diagnostic::error(
+                    format!(
+                        "the equations have more than {MAX_TOKENS} tokens, the most this reads; \
+                         this is the first one past it"
+                    ),
+                    Some(located(source, span)),
+                ));
+            }
+            if let TokenTree::Group(group) = tree {
+                if depth + 1 > MAX_DEPTH && group.delimiter() != Delimiter::None {
+                    return Err(Diagnostic::error(
+                        format!("brackets nested more than {MAX_DEPTH} deep, the most this reads"),
+                        Some(located(source, group.span_open())),
+                    ));
+                }
+                pending.push((group.stream(), depth + 1));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// A span of the text's tokens, in file coordinates.
+fn located(source: Source<'_>, span: Span) -> Range<usize> {
+    source.in_file(span.byte_range())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn refusal(text: &str) -> Diagnostic {
+        let source = Source { text, offset: 100 };
+        lex(source).expect_err(text)
+    }
+
+    #[test]
+    fn an_unclosed_bracket_is_the_one_left_open() {
+        let d = refusal("u = [a, b], v = [t, closure = [a - t]");
+        assert_eq!(
+            d.message(),
+            "unclosed `[`: the equations end before the `]` that closes it"
+        );
+        assert_eq!(d.range(), Some(116..117));
+    }
+
+    #[test]
+    fn a_mismatched_bracket_names_the_open_one() {
+        let d = refusal("closure = [(a - t], u = [a]");
+        assert_eq!(
+            d.message(),
+            "mismatched `]`: the bracket open here is `(`, closed by `)`"
+        );
+        assert_eq!(d.range(), Some(117..118));
+        assert_eq!(d.labels()[0].range(), 111..112);
+        let d = refusal("u = [a]]");
+        assert_eq!(d.message(), "unexpected `]`: it closes no bracket");
+        assert_eq!(d.range(), Some(107..108));
+    }
+
+    #[test]
+    fn a_stray_character_is_located() {
+        let d = refusal("closure = [a → t]");
+        assert!(d.message().starts_with("unexpected `→`"), "{}", d.message());
+        assert_eq!(d.range(), Some(113..116));
+        let d = refusal("u = [\"a]");
+        assert_eq!(d.message(), "a string that is never closed");
+    }
+
+    #[test]
+    fn too_large_or_too_deep_is_refused() {
+        let long = "a + ".repeat(MAX_BYTES / 4 + 1);
+        assert!(refusal(&long).message().contains("bytes long"));
+        let many = "a + ".repeat(MAX_TOKENS);
+        assert!(refusal(&many).message().contains("tokens"));
+        let deep = format!(
+            "{}a{}",
+            "(".repeat(MAX_DEPTH + 1),
+            ")".repeat(MAX_DEPTH + 1)
+        );
+        let d = refusal(&deep);
+        assert!(d.message().starts_with("brackets nested"));
+        assert_eq!(d.range(), Some(100 + MAX_DEPTH..101 + MAX_DEPTH));
+        let fine = format!("{}a{}", "(".repeat(MAX_DEPTH), ")".repeat(MAX_DEPTH));
+        assert!(
+            lex(Source {
+                text: &fine,
+                offset: 0
+            })
+            .is_ok()
+        );
+    }
+}
