@@ -44,6 +44,7 @@ pub mod display;
 pub mod emit;
 #[cfg(feature = "syntax")]
 pub mod errors;
+mod hasher;
 #[cfg(any(test, feature = "eval"))]
 pub mod interp;
 #[cfg(feature = "syntax")]

@@ -412,7 +412,9 @@ mod tests {
         let mut without_flags = in_trait.clone();
         for (which, flags) in [("Kernels", TRIG), ("SensitivityKernel", SENSITIVITY_TRIG)] {
             for flag in flags {
-                without_flags.get_mut(which).map(|f| f.remove(&flag.name.to_lowercase()));
+                without_flags
+                    .get_mut(which)
+                    .map(|f| f.remove(&flag.name.to_lowercase()));
             }
         }
         let (fallback_inherent, fallback_trait, _) = inventory(&broken);
@@ -497,6 +499,21 @@ mod tests {
             text.contains("const PARAM_NAMES : [& 'static str ; 2]"),
             "{text}"
         );
+    }
+
+    /// The f64 functions of the table are the plan's kernels, in the same
+    /// order and under the same names: what each computes is planned in
+    /// one place (`linkage_symbolic::plan`), which the tapes compile too.
+    #[test]
+    fn the_tables_kernels_are_the_plans() {
+        use linkage_symbolic::plan::Kernel;
+        let kernels: Vec<Kernel> = QUANTITIES.iter().filter_map(|q| q.kernel()).collect();
+        assert_eq!(kernels, Kernel::ALL);
+        for q in QUANTITIES {
+            if let Some(kernel) = q.kernel() {
+                assert_eq!(kernel.name(), q.name);
+            }
+        }
     }
 
     /// The four-bar of the worksheet, formatted as `cargo expand` shows it.
@@ -632,7 +649,10 @@ mod tests {
         let mut lines = guide.lines();
         while lines.any(|l| l.starts_with("```text")) {
             let block: Vec<&str> = lines.by_ref().take_while(|l| *l != "```").collect();
-            if !block.first().is_some_and(|l| l.trim_start().starts_with("///")) {
+            if !block
+                .first()
+                .is_some_and(|l| l.trim_start().starts_with("///"))
+            {
                 continue;
             }
             let excerpt = trimmed(&block);

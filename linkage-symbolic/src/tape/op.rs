@@ -73,6 +73,16 @@ fn powf_half(x: f64) -> f64 {
     }
 }
 
+/// `x.sin_cos()` in a function of its own, where LLVM makes the sine and
+/// the cosine one call of libm's `sincos`, as it does in the compiled
+/// kernels. The interpreter calls it through a pointer LLVM cannot see
+/// through: in line, amid the interpreter's stores, LLVM calls `sin` and
+/// `cos` apart (the same bits at twice the cost).
+#[inline(never)]
+fn sin_cos(x: f64) -> (f64, f64) {
+    x.sin_cos()
+}
+
 /// `d = f(a)` on every lane.
 #[inline(always)]
 fn unary<const L: usize>(r: &mut [[f64; L]], d: u32, a: u32, f: impl Fn(f64) -> f64) {
@@ -119,10 +129,11 @@ impl Op {
             Code::Neg => unary(r, d, a, |x| -x),
             Code::SinCos => {
                 let x = r[a as usize];
+                let sin_cos = std::hint::black_box(sin_cos as fn(f64) -> (f64, f64));
                 let mut sin = [0.0; L];
                 let mut cos = [0.0; L];
                 for l in 0..L {
-                    (sin[l], cos[l]) = x[l].sin_cos();
+                    (sin[l], cos[l]) = sin_cos(x[l]);
                 }
                 r[d as usize] = sin;
                 r[b as usize] = cos;

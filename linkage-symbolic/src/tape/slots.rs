@@ -67,16 +67,44 @@ impl Slots {
 
     /// The registers of an input.
     pub fn range(self, input: Input) -> Range<usize> {
-        let start: usize = Input::ALL
-            .iter()
-            .take_while(|&&i| i != input)
-            .map(|&i| self.len(i))
-            .sum();
+        let (m, f) = (self.m, self.f);
+        let start = match input {
+            Input::U => 0,
+            Input::V => m,
+            Input::Udot => m + f,
+            Input::Vdot => 2 * m + f,
+            Input::Uddot => 2 * (m + f),
+            Input::Vddot => 3 * m + 2 * f,
+            Input::TrigU => 3 * (m + f),
+            Input::TrigV => 5 * m + 3 * f,
+            Input::Fields => 5 * (m + f),
+        };
         start..start + self.len(input)
     }
 
     /// How many registers the inputs take.
     pub fn total(self) -> usize {
         Input::ALL.iter().map(|&i| self.len(i)).sum()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_inputs_follow_one_another_in_order() {
+        let slots = Slots {
+            m: 3,
+            f: 2,
+            fields: 4,
+        };
+        let mut next = 0;
+        for input in Input::ALL {
+            let range = slots.range(input);
+            assert_eq!(range.start, next, "{input:?}");
+            next = range.end;
+        }
+        assert_eq!(next, slots.total());
     }
 }

@@ -4,8 +4,8 @@
 //! rewritten the same way, so that the tape computes what the compiled
 //! code computes.
 
+use crate::hasher::FastMap;
 use crate::tape::op::{Code, Op};
-use std::collections::HashMap;
 
 /// A value while compiling: a virtual register, or a constant known now.
 #[derive(Clone, Copy, Debug)]
@@ -34,7 +34,7 @@ pub(super) struct Builder {
     /// Each finished phase: where its operations end, and its outputs.
     pub(super) phases: Vec<(usize, Vec<u32>)>,
     /// The register of each constant, by its bits.
-    constants: HashMap<u64, u32>,
+    constants: FastMap<u64, u32>,
 }
 
 impl Builder {
@@ -43,7 +43,7 @@ impl Builder {
             registers: vec![Virtual::Input; inputs],
             ops: Vec::new(),
             phases: Vec::new(),
-            constants: HashMap::new(),
+            constants: FastMap::default(),
         }
     }
 

@@ -9,10 +9,10 @@
 use super::CompileError;
 use super::builder::{Builder, Val};
 use crate::dag::Constant;
+use crate::hasher::FastMap;
 use crate::tape::op::Code;
 use crate::tape::slots::Input;
 use proc_macro2::{Delimiter, Group, Ident, Literal, TokenStream, TokenTree};
-use std::collections::HashMap;
 
 /// A value of the emitted code.
 #[derive(Clone, Debug)]
@@ -35,13 +35,13 @@ enum Pattern {
 pub(super) struct Reader<'b> {
     builder: &'b mut Builder,
     /// The bindings of the statements read so far.
-    env: HashMap<String, Value>,
+    env: FastMap<String, Value>,
     /// The argument vectors by name.
-    arrays: HashMap<String, Input>,
+    arrays: FastMap<String, Input>,
     /// The struct's `f64` fields by name: their registers.
-    fields: HashMap<String, u32>,
+    fields: FastMap<String, u32>,
     /// Where each input's registers start.
-    starts: HashMap<Input, (u32, usize)>,
+    starts: FastMap<Input, (u32, usize)>,
 }
 
 type Result<T> = std::result::Result<T, CompileError>;
