@@ -162,28 +162,6 @@ struct Emitter<'a> {
     products: FastMap<(Id, i32), Vec<Id>>,
 }
 
-/// Emits the straight-line code computing `roots`; `hints` names chosen
-/// nodes (e.g. a point's coordinates) and always binds them.
-pub fn emit(
-    dag: &Dag,
-    names: &SymbolNames,
-    roots: &[Id],
-    hints: &[(Id, String)],
-    reserved: &[String],
-    mode: Mode,
-) -> Body {
-    let phased = emit_phases(dag, names, &[roots], hints, reserved, mode, &[], None);
-    let mut statements = phased.prologue;
-    let mut phases = phased.phases.into_iter();
-    let (phase_statements, values) = phases.next().unwrap_or_default();
-    statements.extend(phase_statements);
-    Body {
-        statements,
-        values,
-        reads: phased.reads,
-    }
-}
-
 /// Code in phases: the values of phase k may use everything computed in
 /// phases before it, and the `late` symbols become available only from
 /// phase 1 on (the caller binds them between the phases — e.g. the
@@ -198,6 +176,21 @@ pub struct Phased {
     /// The coordinates (indices into q = (u, v)) whose sine or cosine is read
     /// from the [`TrigSource`], ascending.
     pub trig_coords: Vec<usize>,
+}
+
+impl Phased {
+    /// Code in one phase as one body: the prologue's statements, then the
+    /// phase's.
+    pub fn into_body(self) -> Body {
+        let mut statements = self.prologue;
+        let (phase, values) = self.phases.into_iter().next().unwrap_or_default();
+        statements.extend(phase);
+        Body {
+            statements,
+            values,
+            reads: self.reads,
+        }
+    }
 }
 
 /// Sines and cosines of the coordinates given by the caller instead of
