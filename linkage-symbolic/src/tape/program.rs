@@ -33,7 +33,7 @@ pub struct Tape {
     constants: Vec<f64>,
     ops: Vec<Op>,
     phases: Vec<Phase>,
-    /// The size of the register file.
+    /// How many registers it uses (its file has the next power of two).
     registers: usize,
     /// The coordinates (indices into q = (u, v)) whose sine and cosine are
     /// read from `TrigU` and `TrigV`, ascending.
@@ -163,7 +163,7 @@ impl Tape {
         self.ops.is_empty()
     }
 
-    /// The size of its register file.
+    /// How many registers it uses (inputs, constants and temporaries).
     pub fn register_count(&self) -> usize {
         self.registers
     }
@@ -176,10 +176,11 @@ impl Tape {
     }
 
     /// A register file for this tape on L lanes (L ≥ 1), the constants in
-    /// place and every input zero.
+    /// place and every input zero; its size is the power of two at or
+    /// above the registers the tape uses.
     pub fn registers<const L: usize>(&self) -> Registers<L> {
         const { assert!(L > 0, "a register file has at least one lane") };
-        let mut values = vec![[0.0; L]; self.registers];
+        let mut values = vec![[0.0; L]; self.registers.next_power_of_two()];
         let first = self.slots.total();
         for (register, &c) in values[first..].iter_mut().zip(&self.constants) {
             *register = [c; L];
@@ -246,14 +247,19 @@ impl Tape {
         Ok(&p.outputs)
     }
 
-    /// The interpreter: the phase's operations, in order.
+    /// The interpreter: the phase's operations, in order, on a file whose
+    /// size is a power of two (every file this tape made).
     fn execute<const L: usize>(&self, phase: usize, registers: &mut [[f64; L]]) {
         let start = match phase {
             0 => 0,
             _ => self.phases[phase - 1].end,
         };
+        let size = registers.len();
+        if !size.is_power_of_two() {
+            return;
+        }
         for op in &self.ops[start..self.phases[phase].end] {
-            op.execute(registers);
+            op.execute(registers, size - 1);
         }
     }
 }

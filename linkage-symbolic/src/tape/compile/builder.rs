@@ -210,8 +210,10 @@ impl Builder {
                 Virtual::Temporary => [f64::NAN],
             })
             .collect();
+        r.resize(r.len().next_power_of_two(), [f64::NAN]);
+        let mask = r.len() - 1;
         for op in &self.ops {
-            op.execute(&mut r);
+            op.execute(&mut r, mask);
         }
         match v {
             Val::Reg(k) => r[k as usize][0],
@@ -224,14 +226,14 @@ impl Builder {
 /// tape would run (the libm call optimised code makes at run time, and
 /// LLVM when it folds the call while compiling).
 fn fold(code: Code, x: f64, y: f64) -> f64 {
-    let mut scratch = [[x], [y], [0.0]];
+    let mut scratch = [[x], [y], [0.0], [0.0]];
     Op {
         code,
         d: 2,
         a: 0,
         b: 1,
     }
-    .execute(&mut scratch);
+    .execute(&mut scratch, 3);
     scratch[2][0]
 }
 
