@@ -5,12 +5,15 @@
 //! keys. Only lookups depend on it: nothing iterates these maps into an
 //! order that shows.
 
-use std::collections::{HashMap, HashSet};
+use std::collections::HashMap;
+#[cfg(feature = "syntax")]
+use std::collections::HashSet;
 use std::hash::{BuildHasherDefault, Hasher};
 
 /// A `HashMap` with [`FxHasher`].
 pub(crate) type FastMap<K, V> = HashMap<K, V, BuildHasherDefault<FxHasher>>;
-/// A `HashSet` with [`FxHasher`].
+/// A `HashSet` with [`FxHasher`] (the emitter's).
+#[cfg(feature = "syntax")]
 pub(crate) type FastSet<K> = HashSet<K, BuildHasherDefault<FxHasher>>;
 
 /// The hash state: one word, each input word rotated in and multiplied.
