@@ -82,6 +82,10 @@
 //!   branch, order, transmission angle, Grashof type); without a guess of
 //!   the first pose, each start is assembled by [`assembly`].
 //! - [`batch`]: many designs or drives at once, in parallel.
+//! - `file` (feature `files`, default): mechanism files — a mechanism's
+//!   equations, parameters with units, drive, assembly and drawing as
+//!   TOML, read at run time with every mistake located in the file; the
+//!   repository's `mechanisms/` is a library of them.
 //! - [`quantity`]: a model's names and the quantities of a pose (a
 //!   coordinate, a point's x or y, their rates, a function of the pose)
 //!   that every analysis names and reads.
@@ -123,9 +127,13 @@ pub mod closed_form;
 #[cfg(feature = "draw")]
 pub mod draw;
 pub mod error;
+#[cfg(feature = "files")]
+pub mod file;
 pub mod ground;
 pub mod least_squares;
 pub mod machine;
+#[cfg(feature = "files")]
+pub mod mechanism;
 pub mod mechanisms;
 mod numerics;
 pub mod quantity;

@@ -14,6 +14,21 @@ pub fn eval<D: DualNum<Primitive = f64> + Copy>(
     eval_rec(dag, root, leaf, &mut values)
 }
 
+/// The values of `roots`, with the leaves given by `leaf`, each shared
+/// node evaluated once.
+pub fn eval_many<D: DualNum<Primitive = f64> + Copy>(
+    dag: &Dag,
+    roots: &[Id],
+    leaf: &dyn Fn(Symbol) -> D,
+) -> Vec<D> {
+    let size = roots.iter().map(|r| r.index() + 1).max().unwrap_or(0);
+    let mut values: Vec<Option<D>> = vec![None; size];
+    roots
+        .iter()
+        .map(|&root| eval_rec(dag, root, leaf, &mut values))
+        .collect()
+}
+
 fn eval_rec<D: DualNum<Primitive = f64> + Copy>(
     dag: &Dag,
     id: Id,

@@ -35,7 +35,10 @@ pub fn closest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) ->
             (d, c)
         })
         .filter(|&(d, _)| d <= limit)
-        .min_by_key(|&(d, c)| (d, c.len()))
+        // Ties go to the shorter name, then the first in alphabetical
+        // order: the same suggestion whatever order the candidates come in
+        // (a hash map's keys, say).
+        .min_by_key(|&(d, c)| (d, c.len(), c))
         .map(|(_, c)| c)
 }
 
@@ -57,5 +60,7 @@ mod tests {
         assert_eq!(closest("thta3", known), Some("theta3"));
         assert_eq!(closest("pi", known), Some("PI"));
         assert_eq!(closest("omega", known), None);
+        assert_eq!(closest("l3", ["l4", "l2"]), Some("l2"));
+        assert_eq!(closest("l3", ["l2", "l4"]), Some("l2"));
     }
 }

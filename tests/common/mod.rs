@@ -2,6 +2,7 @@
 #![allow(dead_code)]
 
 pub mod sensitivity;
+pub mod twins;
 
 #[allow(unused_imports)] // not every test binary uses it
 pub use linkage::mechanisms::FourBar;

@@ -28,7 +28,7 @@ mod atoms;
 pub use atoms::{Constant, Func, Func2, Id, Node, Num, Symbol};
 
 /// The expression DAG: an arena of unique nodes.
-#[derive(Default)]
+#[derive(Clone, Default)]
 pub struct Dag {
     nodes: Vec<Node>,
     index: FastMap<Node, Id>,

@@ -4,6 +4,7 @@
 //! deeply nested for the later stages (whose recursion follows the
 //! expressions' depth) refused before they see it.
 
+use super::Equations;
 use crate::diagnostics::Diagnostic;
 use proc_macro2::{Delimiter, Span, TokenStream, TokenTree};
 use std::ops::Range;
@@ -14,32 +15,23 @@ use std::str::FromStr;
 pub const MAX_BYTES: usize = 64 * 1024;
 
 /// The most tokens read: sixteen times the largest model's (about 250).
-/// An expression's depth is at most its number of tokens, and the later
-/// stages recurse that deep (on a 1 MiB stack, as WebAssembly has).
+/// The derivatives' work grows with the square of the number of
+/// coordinates, and as many tokens make at most about 130 coordinates,
+/// under a second.
 pub const MAX_TOKENS: usize = 4096;
+
+/// The most tokens one entry of a list (an equation, a point) has, nested
+/// ones counted: real equations have about forty. An expression is at
+/// most as deep as its tokens are many, and the parser and the lowering
+/// recurse that deep: 256 levels fit a 1 MiB stack, as WebAssembly has,
+/// unoptimised.
+pub const MAX_ENTRY_TOKENS: usize = 256;
 
 /// The deepest nesting of brackets read: real equations nest four or five
 /// deep.
 pub const MAX_DEPTH: usize = 32;
 
-/// A text of equations and where it starts in its file.
-#[derive(Clone, Copy)]
-pub(super) struct Source<'a> {
-    pub text: &'a str,
-    pub offset: usize,
-}
-
-impl Source<'_> {
-    /// The bytes `range` of the text, in file coordinates.
-    pub fn in_file(&self, range: Range<usize>) -> Range<usize> {
-        self.offset.saturating_add(range.start)..self.offset.saturating_add(range.end)
-    }
-
-    /// The whole text, in file coordinates.
-    pub fn whole(&self) -> Range<usize> {
-        self.in_file(0..self.text.len())
-    }
-
+impl Equations<'_> {
     /// The character at byte `at` of the text, in file coordinates (empty
     /// at the end).
     fn char_at(&self, at: usize) -> Range<usize> {
@@ -50,29 +42,33 @@ impl Source<'_> {
     }
 }
 
-/// The tokens of `source`, or why it cannot be read.
-pub(super) fn lex(source: Source<'_>) -> Result<TokenStream, Diagnostic> {
-    if source.text.len() > MAX_BYTES {
+/// The tokens of `equations`, or why they cannot be read.
+pub(super) fn lex(equations: Equations<'_>) -> Result<TokenStream, Diagnostic> {
+    if equations.text.len() > MAX_BYTES {
         return Err(Diagnostic::error(
             format!(
                 "the equations are {} bytes long; the most this reads is {MAX_BYTES}",
-                source.text.len()
+                equations.text.len()
             ),
-            Some(source.in_file(MAX_BYTES..source.text.len())),
+            Some(equations.in_file(MAX_BYTES..equations.text.len())),
         ));
     }
-    let tokens = TokenStream::from_str(source.text)
-        .map_err(|e| refused(source, e.span().byte_range().start))?;
-    check_size(source, &tokens)?;
+    let tokens = TokenStream::from_str(equations.text)
+        .map_err(|e| refused(equations, e.span().byte_range().start))?;
+    check_size(equations, &tokens)?;
     Ok(tokens)
 }
 
 /// Why the lexer stopped at byte `at`: a bracket never closed (the lexer
 /// points at it), a closing bracket that closes nothing or the wrong
 /// bracket, or a character that starts no token.
-fn refused(source: Source<'_>, at: usize) -> Diagnostic {
-    let here = source.char_at(at);
-    let Some(c) = source.text.get(at..).and_then(|rest| rest.chars().next()) else {
+fn refused(equations: Equations<'_>, at: usize) -> Diagnostic {
+    let here = equations.char_at(at);
+    let Some(c) = equations
+        .text
+        .get(at..)
+        .and_then(|rest| rest.chars().next())
+    else {
         return Diagnostic::error("the equations end in the middle of a token", Some(here));
     };
     match c {
@@ -83,10 +79,10 @@ fn refused(source: Source<'_>, at: usize) -> Diagnostic {
             ),
             Some(here),
         ),
-        ')' | ']' | '}' => match unclosed_before(source, at) {
+        ')' | ']' | '}' => match unclosed_before(equations, at) {
             Some((open, opened_at)) => Diagnostic::error(
                 format!(
-                    "mismatched `{c}`: the bracket open here is `{open}`, closed by `{}`",
+                    "mismatched `{c}`: the `{open}` still open is closed by `{}` first",
                     closing(open)
                 ),
                 Some(here),
@@ -112,15 +108,15 @@ fn refused(source: Source<'_>, at: usize) -> Diagnostic {
 /// The innermost bracket open at byte `at`, and where: what the lexer
 /// says of the text up to there (it read that far, so only an open bracket
 /// can stop it).
-fn unclosed_before(source: Source<'_>, at: usize) -> Option<(char, Range<usize>)> {
-    let before = source.text.get(..at)?;
+fn unclosed_before(equations: Equations<'_>, at: usize) -> Option<(char, Range<usize>)> {
+    let before = equations.text.get(..at)?;
     let opened = TokenStream::from_str(before)
         .err()?
         .span()
         .byte_range()
         .start;
     let open = before.get(opened..)?.chars().next()?;
-    matches!(open, '(' | '[' | '{').then(|| (open, source.char_at(opened)))
+    matches!(open, '(' | '[' | '{').then(|| (open, equations.char_at(opened)))
 }
 
 fn closing(open: char) -> char {
@@ -131,12 +127,14 @@ fn closing(open: char) -> char {
     }
 }
 
-/// At most [`MAX_TOKENS`] tokens nested at most [`MAX_DEPTH`] deep
-/// (walked without recursion: the nesting is not known to be shallow yet).
-fn check_size(source: Source<'_>, tokens: &TokenStream) -> Result<(), Diagnostic> {
+/// At most [`MAX_TOKENS`] tokens nested at most [`MAX_DEPTH`] deep, and
+/// at most [`MAX_ENTRY_TOKENS`] between two commas inside brackets (walked
+/// without recursion: the nesting is not known to be shallow yet).
+fn check_size(equations: Equations<'_>, tokens: &TokenStream) -> Result<(), Diagnostic> {
     let mut count = 0;
     let mut pending: Vec<(TokenStream, usize)> = vec![(tokens.clone(), 0)];
     while let Some((stream, depth)) = pending.pop() {
+        let mut entry: Option<(Span, usize)> = None;
         for tree in stream {
             count += 1;
             let span = tree.span();
@@ -146,14 +144,32 @@ fn check_size(source: Source<'_>, tokens: &TokenStream) -> Result<(), Diagnostic
                         "the equations have more than {MAX_TOKENS} tokens, the most this reads; \
                          this is the first one past it"
                     ),
-                    Some(located(source, span)),
+                    Some(located(equations, span)),
+                ));
+            }
+            if matches!(&tree, TokenTree::Punct(p) if p.as_char() == ',') {
+                entry = None;
+                continue;
+            }
+            // At the top, an entry is `key = [...]`, whose list's entries
+            // are counted one by one below.
+            let (start, size) = entry.get_or_insert((span, 0));
+            *size += tokens_in(&tree);
+            if depth > 0 && *size > MAX_ENTRY_TOKENS {
+                let whole = start.join(span).unwrap_or(*start);
+                return Err(Diagnostic::error(
+                    format!(
+                        "this entry has more than {MAX_ENTRY_TOKENS} tokens, the most one \
+                         equation or point may have"
+                    ),
+                    Some(located(equations, whole)),
                 ));
             }
             if let TokenTree::Group(group) = tree {
                 if depth + 1 > MAX_DEPTH && group.delimiter() != Delimiter::None {
                     return Err(Diagnostic::error(
                         format!("brackets nested more than {MAX_DEPTH} deep, the most this reads"),
-                        Some(located(source, group.span_open())),
+                        Some(located(equations, group.span_open())),
                     ));
                 }
                 pending.push((group.stream(), depth + 1));
@@ -163,9 +179,27 @@ fn check_size(source: Source<'_>, tokens: &TokenStream) -> Result<(), Diagnostic
     Ok(())
 }
 
+/// The tokens of `tree`, itself and those it holds.
+fn tokens_in(tree: &TokenTree) -> usize {
+    let mut count = 1;
+    let mut pending: Vec<TokenStream> = match tree {
+        TokenTree::Group(group) => vec![group.stream()],
+        _ => Vec::new(),
+    };
+    while let Some(stream) = pending.pop() {
+        for tree in stream {
+            count += 1;
+            if let TokenTree::Group(group) = tree {
+                pending.push(group.stream());
+            }
+        }
+    }
+    count
+}
+
 /// A span of the text's tokens, in file coordinates.
-fn located(source: Source<'_>, span: Span) -> Range<usize> {
-    source.in_file(span.byte_range())
+fn located(equations: Equations<'_>, span: Span) -> Range<usize> {
+    equations.in_file(span.byte_range())
 }
 
 #[cfg(test)]
@@ -173,8 +207,8 @@ mod tests {
     use super::*;
 
     fn refusal(text: &str) -> Diagnostic {
-        let source = Source { text, offset: 100 };
-        lex(source).expect_err(text)
+        let equations = Equations::at(text, 100);
+        lex(equations).expect_err(text)
     }
 
     #[test]
@@ -192,7 +226,7 @@ mod tests {
         let d = refusal("closure = [(a - t], u = [a]");
         assert_eq!(
             d.message(),
-            "mismatched `]`: the bracket open here is `(`, closed by `)`"
+            "mismatched `]`: the `(` still open is closed by `)` first"
         );
         assert_eq!(d.range(), Some(117..118));
         assert_eq!(d.labels()[0].range(), 111..112);
@@ -214,8 +248,22 @@ mod tests {
     fn too_large_or_too_deep_is_refused() {
         let long = "a + ".repeat(MAX_BYTES / 4 + 1);
         assert!(refusal(&long).message().contains("bytes long"));
-        let many = "a + ".repeat(MAX_TOKENS);
-        assert!(refusal(&many).message().contains("tokens"));
+        let many = "a + a, ".repeat(MAX_TOKENS / 4 + 1);
+        assert!(
+            refusal(&many)
+                .message()
+                .starts_with("the equations have more than")
+        );
+        let entry = format!("closure = [{}a]", "- ".repeat(MAX_ENTRY_TOKENS));
+        let d = refusal(&entry);
+        assert!(d.message().starts_with("this entry has more than"));
+        assert_eq!(d.range(), Some(111..111 + 2 * MAX_ENTRY_TOKENS + 1));
+        let fine = format!(
+            "closure = [{}a], v = [{}b]",
+            "- ".repeat(255),
+            "- ".repeat(255)
+        );
+        assert!(lex(Equations::new(&fine)).is_ok());
         let deep = format!(
             "{}a{}",
             "(".repeat(MAX_DEPTH + 1),
@@ -225,12 +273,6 @@ mod tests {
         assert!(d.message().starts_with("brackets nested"));
         assert_eq!(d.range(), Some(100 + MAX_DEPTH..101 + MAX_DEPTH));
         let fine = format!("{}a{}", "(".repeat(MAX_DEPTH), ")".repeat(MAX_DEPTH));
-        assert!(
-            lex(Source {
-                text: &fine,
-                offset: 0
-            })
-            .is_ok()
-        );
+        assert!(lex(Equations::new(&fine)).is_ok());
     }
 }

@@ -5,15 +5,15 @@
 //! parameter is declared) or none (the call site, which is, in a compiler,
 //! the whole attribute: here the whole text of the equations).
 
+use super::Equations;
 use super::declaration::Declaration;
-use super::lex::Source;
 use crate::diagnostics::Diagnostic;
 use proc_macro2::Span;
 use std::ops::Range;
 
 /// What places the spans of one build.
 pub(super) struct Places<'a> {
-    pub source: Source<'a>,
+    pub equations: Equations<'a>,
     pub declaration: &'a Declaration,
     /// A span of the struct's text (any: a span joins only spans of its
     /// own text, which tells the texts apart).
@@ -43,9 +43,9 @@ impl Places<'_> {
         if self.struct_span.join(span).is_some() {
             self.declaration.declared_at(span.byte_range())
         } else if Span::call_site().join(span).is_some() {
-            Some(self.source.whole())
+            Some(self.equations.whole())
         } else {
-            Some(self.source.in_file(span.byte_range()))
+            Some(self.equations.in_file(span.byte_range()))
         }
     }
 }

@@ -57,10 +57,13 @@
 //! `struct <name> { <parameter>: f64, ... }` is written and lexed beside
 //! it; the pair goes through [`Input::parse_owned_by`] and
 //! [`crate::build`] as an attribute and its struct would; and every
-//! `syn::Error` recorded becomes a [`Diagnostic`] ([`locate`]). What the
+//! `syn::Error` recorded becomes a [`Diagnostic`] (`locate.rs`). What the
 //! attribute's parser cannot see is checked here first: the names given
-//! for the mechanism and its parameters ([`declaration`]) and a text the
-//! lexer refuses, or too large or too deeply nested to read ([`lex`]).
+//! for the mechanism and its parameters (`declaration.rs`) and a text the
+//! lexer refuses, or too large or too deeply nested to read (`lex.rs`:
+//! [`MAX_BYTES`], [`MAX_TOKENS`], [`MAX_ENTRY_TOKENS`], [`MAX_DEPTH`]),
+//! and equations nested too deep to differentiate in reasonable time
+//! (`depth.rs`: [`MAX_NESTING`]).
 //!
 //! proc-macro2 keeps the text of every string it lexes, for the life of
 //! the thread; [`build`] drops them when it is done
@@ -73,10 +76,12 @@
 //! procedural macros, where proc-macro2's spans are the compiler's.
 
 mod declaration;
+mod depth;
 mod lex;
 mod locate;
 
-pub use lex::{MAX_BYTES, MAX_DEPTH, MAX_TOKENS};
+pub use depth::MAX_NESTING;
+pub use lex::{MAX_BYTES, MAX_DEPTH, MAX_ENTRY_TOKENS, MAX_TOKENS};
 
 use crate::ast::Input;
 use crate::derivatives::Derivatives;
@@ -84,7 +89,6 @@ use crate::diagnostics::{Diagnostic, Diagnostics};
 use crate::errors::Errors;
 use crate::owner::Owner;
 use declaration::Declaration;
-use lex::Source;
 use locate::Places;
 use proc_macro2::TokenStream;
 use std::ops::Range;
@@ -136,6 +140,16 @@ impl<'a> Equations<'a> {
     pub fn at(text: &'a str, offset: usize) -> Equations<'a> {
         Equations { text, offset }
     }
+
+    /// The bytes `range` of the text, in file coordinates.
+    fn in_file(&self, range: Range<usize>) -> Range<usize> {
+        self.offset.saturating_add(range.start)..self.offset.saturating_add(range.end)
+    }
+
+    /// The whole text, in file coordinates.
+    fn whole(&self) -> Range<usize> {
+        self.in_file(0..self.text.len())
+    }
 }
 
 /// A mechanism read, checked and differentiated: what the later stages
@@ -170,13 +184,9 @@ fn build_with_spans(
     equations: Equations<'_>,
     parameters: &[Parameter<'_>],
 ) -> Result<Built, Diagnostics> {
-    let source = Source {
-        text: equations.text,
-        offset: equations.offset,
-    };
     let mut diagnostics = Diagnostics::new();
     let declaration = Declaration::new(name, parameters, &mut diagnostics);
-    let attr = match lex::lex(source) {
+    let attr = match lex::lex(equations) {
         Ok(tokens) => tokens,
         Err(refused) => {
             diagnostics.push(refused);
@@ -199,14 +209,20 @@ fn build_with_spans(
         .map(|token| token.span())
         .unwrap_or_else(proc_macro2::Span::call_site);
     let places = Places {
-        source,
+        equations,
         declaration: &declaration,
         struct_span,
     };
     let mut errors = Errors::default();
     let owner = |_: &syn::Ident| Owner::Mechanism(name.to_owned());
     let input = Input::parse_owned_by(attr, item, owner, &mut errors);
-    let derivatives = (input.as_ref()).and_then(|input| crate::build(input, &mut errors).ok());
+    let derivatives = (input.as_ref()).and_then(|input| match depth::too_deep(input) {
+        Some(too_deep) => {
+            errors.push(too_deep);
+            None
+        }
+        None => crate::build(input, &mut errors).ok(),
+    });
     diagnostics.extend(errors.into_iter().map(|error| places.diagnostic(error)));
     match (input, derivatives) {
         (Some(input), Some(derivatives)) if diagnostics.is_empty() => {
@@ -218,8 +234,11 @@ fn build_with_spans(
         _ => Err(Diagnostic::error(
             "the equations could not be read (an internal error: please report it with \
              the equations)",
-            Some(source.whole()),
+            Some(equations.whole()),
         )
         .into()),
     }
 }
+
+#[cfg(test)]
+mod tests;

@@ -429,11 +429,14 @@ impl Scene {
         self
     }
 
-    /// A ternary (or larger) link: the polygon through its joints.
-    pub fn plate<const N: usize>(mut self, corners: [&str; N]) -> Scene {
-        self.shapes.push(Shape::Plate(
-            corners.iter().map(|s| s.to_string()).collect(),
-        ));
+    /// A ternary (or larger) link: the polygon through its joints (an
+    /// array of names, or any list of them, such as one read at run time).
+    pub fn plate<I>(mut self, corners: I) -> Scene
+    where
+        I: IntoIterator,
+        I::Item: AsRef<str>,
+    {
+        self.shapes.push(Shape::Plate(owned(corners)));
         self
     }
 
@@ -471,16 +474,22 @@ impl Scene {
     }
 
     /// Velocity arrows at these points.
-    pub fn velocities<const N: usize>(mut self, points: [&str; N]) -> Scene {
-        self.velocity_arrows
-            .extend(points.iter().map(|s| s.to_string()));
+    pub fn velocities<I>(mut self, points: I) -> Scene
+    where
+        I: IntoIterator,
+        I::Item: AsRef<str>,
+    {
+        self.velocity_arrows.extend(owned(points));
         self
     }
 
     /// Acceleration arrows at these points.
-    pub fn accelerations<const N: usize>(mut self, points: [&str; N]) -> Scene {
-        self.acceleration_arrows
-            .extend(points.iter().map(|s| s.to_string()));
+    pub fn accelerations<I>(mut self, points: I) -> Scene
+    where
+        I: IntoIterator,
+        I::Item: AsRef<str>,
+    {
+        self.acceleration_arrows.extend(owned(points));
         self
     }
 
@@ -499,8 +508,12 @@ impl Scene {
 
     /// The path of these points over the cycle given to
     /// [`Scene::render`] (a coupler curve).
-    pub fn trace<const N: usize>(mut self, points: [&str; N]) -> Scene {
-        self.traces.extend(points.iter().map(|s| s.to_string()));
+    pub fn trace<I>(mut self, points: I) -> Scene
+    where
+        I: IntoIterator,
+        I::Item: AsRef<str>,
+    {
+        self.traces.extend(owned(points));
         self
     }
 
@@ -609,6 +622,15 @@ impl Scene {
             .chain(&self.acceleration_arrows)
             .chain(&self.traces)
     }
+}
+
+/// Names given as any list of strings, owned.
+fn owned<I>(names: I) -> Vec<String>
+where
+    I: IntoIterator,
+    I::Item: AsRef<str>,
+{
+    names.into_iter().map(|s| s.as_ref().to_owned()).collect()
 }
 
 pub(super) fn positive(what: &'static str, value: f64) -> Result<(), SceneError> {

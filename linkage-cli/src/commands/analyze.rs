@@ -1,0 +1,88 @@
+//! `linkage analyze FILE`: the pose at the drivers' `at`, with velocities
+//! and accelerations at their rates.
+
+use crate::cli::Analysis;
+use crate::failure::Failure;
+use crate::load::{Loaded, load};
+use crate::sizes::{self, Job};
+use crate::table::Table;
+use linkage::mechanism::Fixed;
+use linkage::prelude::*;
+
+struct Analyze<'a> {
+    loaded: &'a Loaded,
+}
+
+impl Job for Analyze<'_> {
+    type Output = Table;
+    fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<Table, Failure> {
+        let drives = super::drives(self.loaded, &model)?;
+        let u = super::assembled(self.loaded, &model, &drives.at)?;
+        let pose = model
+            .analyze(
+                &u,
+                &drives.at,
+                &drives.rate,
+                &drives.acceleration,
+                &Options::default(),
+            )
+            .map_err(|e| Failure::Analysis(e.to_string()))?;
+        let unit = &self.loaded.file.length_unit;
+        let mut table = Table::new(
+            format!(
+                "{} at {}",
+                model.name(),
+                at_text(&model.v_names(), drives.at.as_slice())
+            ),
+            vec![
+                ("value".into(), String::new()),
+                ("velocity".into(), "/s".into()),
+                ("acceleration".into(), "/s²".into()),
+            ],
+        );
+        table.row_header = "quantity".into();
+        for (k, name) in model.u_names().iter().enumerate() {
+            table.push_named(name, vec![pose.u[k], pose.udot[k], pose.uddot[k]]);
+        }
+        for (k, name) in model.v_names().iter().enumerate() {
+            table.push_named(
+                name,
+                vec![drives.at[k], drives.rate[k], drives.acceleration[k]],
+            );
+        }
+        let (p, pv, pa) = (
+            pose.points.as_ref(),
+            pose.point_velocities.as_ref(),
+            pose.point_accelerations.as_ref(),
+        );
+        for (k, name) in model.point_names().iter().enumerate() {
+            for (axis, c) in [("x", 0), ("y", 1)] {
+                table.push_named(
+                    &format!("{name}.{axis} [{unit}]"),
+                    vec![p[k][c], pv[k][c], pa[k][c]],
+                );
+            }
+        }
+        Ok(table)
+    }
+}
+
+/// `theta2 = 0.349066`.
+pub fn at_text(names: &[&str], v: &[f64]) -> String {
+    let parts: Vec<String> = names
+        .iter()
+        .zip(v)
+        .map(|(n, x)| format!("{n} = {x}"))
+        .collect();
+    parts.join(", ")
+}
+
+pub fn run(args: &Analysis) -> Result<(), Failure> {
+    let loaded = load(&args.input.file)?;
+    let table = sizes::run(&loaded.mechanism, Analyze { loaded: &loaded })?;
+    let mut out = Vec::new();
+    table
+        .write(args.output.format, &mut out)
+        .map_err(|e| Failure::Io(e.to_string()))?;
+    super::emit(args.input.output.as_deref(), &out)
+}

@@ -1,0 +1,156 @@
+//! The subcommands, one per file, and what they share: the drive the file
+//! says, the assembly it starts from, and where the result goes.
+
+pub mod analyze;
+pub mod check;
+pub mod draw;
+pub mod expand;
+pub mod extremes;
+pub mod sweep;
+
+use crate::failure::Failure;
+use crate::load::{Loaded, report};
+use linkage::mechanism::{Diagnostic, Diagnostics, Fixed};
+use linkage::prelude::*;
+use std::io::Write;
+use std::path::Path;
+
+/// The file's drive at the mechanism's sizes: each driving coordinate's
+/// `at`, `from`, `to`, rate and acceleration, and the steps.
+pub struct Drives<const F: usize> {
+    pub at: SVector<f64, F>,
+    pub from: SVector<f64, F>,
+    pub to: SVector<f64, F>,
+    pub rate: SVector<f64, F>,
+    pub acceleration: SVector<f64, F>,
+    pub steps: usize,
+}
+
+/// The drive of `loaded` for `model`: a driving coordinate without its
+/// `[drive.<name>]` table is a mistake in the file.
+pub fn drives<const M: usize, const F: usize>(
+    loaded: &Loaded,
+    model: &Fixed<M, F>,
+) -> Result<Drives<F>, Failure> {
+    let names = model.v_names();
+    let mut missing = Diagnostics::new();
+    for name in names {
+        if loaded.file.driver(name).is_none() {
+            missing.push(Diagnostic::error(
+                format!("`{name}` is a driving coordinate without its table `[drive.{name}]`: give its `from` and `to`"),
+                Some(loaded.file.name.span.clone()),
+            ));
+        }
+    }
+    if !missing.is_empty() {
+        report(&missing, &loaded.shown, &loaded.text);
+        return Err(Failure::Mistakes);
+    }
+    let of = |f: &dyn Fn(&linkage::file::Driver) -> f64| {
+        SVector::<f64, F>::from_fn(|k, _| loaded.file.driver(names[k]).map_or(0.0, f))
+    };
+    let steps = names
+        .iter()
+        .filter_map(|n| loaded.file.driver(n))
+        .map(|d| d.steps)
+        .max()
+        .unwrap_or(linkage::file::DEFAULT_STEPS);
+    Ok(Drives {
+        at: of(&|d| d.at.value),
+        from: of(&|d| d.from.value),
+        to: of(&|d| d.to.value),
+        rate: of(&|d| d.rate.value),
+        acceleration: of(&|d| d.acceleration.value),
+        steps,
+    })
+}
+
+/// The assembly the file picks at the drivers' `at`.
+pub fn assembled<const M: usize, const F: usize>(
+    loaded: &Loaded,
+    model: &Fixed<M, F>,
+    at: &SVector<f64, F>,
+) -> Result<SVector<f64, M>, Failure> {
+    use linkage::assembly::{Assemble, Pick};
+    let pick = match &loaded.file.assembly {
+        None => Pick::Index(0),
+        Some(choice) => match choice.pick::<M>(&model.u_names()) {
+            Ok(pick) => pick,
+            Err(mistake) => {
+                report(&mistake.into(), &loaded.shown, &loaded.text);
+                return Err(Failure::Mistakes);
+            }
+        },
+    };
+    model
+        .assemble(at, &pick)
+        .map(|mode| mode.u)
+        .map_err(|e| Failure::Analysis(format!("at the drivers' `at` ({at:?}): {e}")))
+}
+
+/// The poses of a sweep over the file's drive range, from the file's
+/// assembly (carried from `at` to `from` first), with `speed` the drivers'
+/// speed along it; each pose is given to `on_pose` with its index.
+pub fn sweep_each<const M: usize, const F: usize>(
+    loaded: &Loaded,
+    model: &Fixed<M, F>,
+    steps: usize,
+    on_pose: &mut dyn FnMut(usize, &SweepPose<M, F>),
+) -> Result<SweepSummary<M, F>, Failure> {
+    let drives = drives(loaded, model)?;
+    let u_at = assembled(loaded, model, &drives.at)?;
+    let mut options = SweepOptions::default();
+    if F == 1 {
+        options.speed = drives.rate[0];
+    }
+    let start = if drives.at == drives.from {
+        u_at
+    } else {
+        let back = Drive::Line {
+            from: drives.at,
+            to: drives.from,
+            steps: 100,
+        };
+        let carried = model
+            .sweep(&u_at, &back, &options)
+            .map_err(|e| Failure::Analysis(format!("from `at` back to `from`: {e}")))?;
+        if !carried.complete {
+            return Err(Failure::Analysis(
+                "the assembly at `at` does not reach `from` (a limit position between them)"
+                    .to_owned(),
+            ));
+        }
+        carried.poses.last().map_or(u_at, |p| p.u)
+    };
+    let drive = Drive::Line {
+        from: drives.from,
+        to: drives.to,
+        steps,
+    };
+    let mut index = 0;
+    model
+        .sweep_each(&start, &drive, &options, |pose| {
+            on_pose(index, pose);
+            index += 1;
+        })
+        .map_err(|e| Failure::Analysis(e.to_string()))
+}
+
+/// Writes `bytes` to the file `output`, or to standard output.
+pub fn emit(output: Option<&Path>, bytes: &[u8]) -> Result<(), Failure> {
+    match output {
+        Some(path) => std::fs::write(path, bytes)
+            .map_err(|e| Failure::Io(format!("cannot write {}: {e}", path.display()))),
+        None => {
+            let mut out = std::io::stdout().lock();
+            out.write_all(bytes)
+                .and_then(|()| out.flush())
+                .or_else(|e| match e.kind() {
+                    // A reader that stopped reading (`| head`) is not a failure.
+                    std::io::ErrorKind::BrokenPipe => Ok(()),
+                    _ => Err(e),
+                })
+                .map_err(|e| Failure::Io(format!("cannot write to standard output: {e}")))
+        }
+    }
+}

@@ -1,0 +1,35 @@
+//! Why a command failed, and the exit status that says so.
+
+use std::fmt;
+
+/// A command's failure: the message has been written, or is here.
+#[derive(Debug)]
+pub enum Failure {
+    /// The mechanism file has mistakes (already written to standard error).
+    Mistakes,
+    /// The analysis failed.
+    Analysis(String),
+    /// A file could not be read or written.
+    Io(String),
+}
+
+impl Failure {
+    /// The exit status: 1 mistakes in the file, 3 the analysis, 4 a file.
+    pub fn code(&self) -> u8 {
+        match self {
+            Failure::Mistakes => 1,
+            Failure::Analysis(_) => 3,
+            Failure::Io(_) => 4,
+        }
+    }
+}
+
+impl fmt::Display for Failure {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Failure::Mistakes => f.write_str("the mechanism file has mistakes"),
+            Failure::Analysis(why) => write!(f, "{why}"),
+            Failure::Io(why) => write!(f, "{why}"),
+        }
+    }
+}

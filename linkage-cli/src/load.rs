@@ -1,0 +1,72 @@
+//! Reading the mechanism file named on the command line (or standard
+//! input) into its file and its run-time mechanism, every mistake written
+//! to standard error as a compiler writes them.
+
+use crate::failure::Failure;
+use linkage::file::MechanismFile;
+use linkage::mechanism::{Diagnostics, Mechanism, MechanismError};
+use std::io::{IsTerminal, Read};
+use std::path::Path;
+
+/// A mechanism file, read and made into its mechanism.
+pub struct Loaded {
+    /// The name to show in messages: the path, or `<stdin>`.
+    pub shown: String,
+    pub text: String,
+    pub file: MechanismFile,
+    pub mechanism: Mechanism,
+}
+
+/// Writes `diagnostics` against the file's text to standard error.
+pub fn report(diagnostics: &Diagnostics, shown: &str, text: &str) {
+    let colour = std::io::stderr().is_terminal();
+    eprint!("{}", diagnostics.render(shown, text, colour));
+}
+
+/// The file's text: the file at `path`, or standard input for `-`.
+fn text_of(path: &Path) -> Result<(String, String), Failure> {
+    if path.as_os_str() == "-" {
+        let mut text = String::new();
+        std::io::stdin()
+            .read_to_string(&mut text)
+            .map_err(|e| Failure::Io(format!("cannot read standard input: {e}")))?;
+        return Ok(("<stdin>".to_owned(), text));
+    }
+    let bytes = std::fs::read(path)
+        .map_err(|e| Failure::Io(format!("cannot read {}: {e}", path.display())))?;
+    let text = String::from_utf8(bytes).map_err(|e| {
+        Failure::Io(format!(
+            "{} is not UTF-8 text (byte {}): a mechanism file is text in UTF-8",
+            path.display(),
+            e.utf8_error().valid_up_to()
+        ))
+    })?;
+    Ok((path.display().to_string(), text))
+}
+
+/// Reads the mechanism file at `path` and makes its mechanism; every
+/// mistake is written to standard error.
+pub fn load(path: &Path) -> Result<Loaded, Failure> {
+    let (shown, text) = text_of(path)?;
+    let file = match MechanismFile::parse(&text) {
+        Ok(file) => file,
+        Err(errors) => {
+            report(&Diagnostics::from(&errors), &shown, &text);
+            return Err(Failure::Mistakes);
+        }
+    };
+    let mechanism = match file.mechanism() {
+        Ok(mechanism) => mechanism,
+        Err(MechanismError::Mistakes(diagnostics)) => {
+            report(&diagnostics, &shown, &text);
+            return Err(Failure::Mistakes);
+        }
+        Err(other) => return Err(Failure::Analysis(other.to_string())),
+    };
+    Ok(Loaded {
+        shown,
+        text,
+        file,
+        mechanism,
+    })
+}

@@ -1,0 +1,37 @@
+//! `linkage`, the command-line tool: a mechanism file (TOML) checked,
+//! analysed at a pose, swept through its drive range, searched for the
+//! extremes of its quantities, drawn, and promoted to Rust — the library's
+//! own analyses on the mechanism read at run time.
+
+mod cli;
+mod commands;
+mod failure;
+mod load;
+mod progress;
+mod sizes;
+mod table;
+
+use clap::Parser;
+use cli::{Cli, Command};
+use std::process::ExitCode;
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match &cli.command {
+        Command::Check(input) => commands::check::run(input),
+        Command::Analyze(args) => commands::analyze::run(args),
+        Command::Sweep(args) => commands::sweep::run(args),
+        Command::Extremes(args) => commands::extremes::run(args),
+        Command::Draw(args) => commands::draw::run(args),
+        Command::Expand(input) => commands::expand::run(input),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(failure) => {
+            if !matches!(failure, failure::Failure::Mistakes) {
+                eprintln!("error: {failure}");
+            }
+            ExitCode::from(failure.code())
+        }
+    }
+}

@@ -1,0 +1,497 @@
+//! [`Fixed`]: a run-time mechanism seen at sizes fixed at compile time
+//! (m, f and a capacity of named points), so that it implements
+//! [`Kernels`] and [`Linkage`] and every analysis of the library takes it
+//! as it takes a compiled mechanism: the same code, instantiated for its
+//! sizes. Each kernel runs its tape on this thread's register file, then
+//! does exactly what the generated function does with the result (the
+//! same nalgebra operations in the same order), so that the numbers are
+//! the compiled mechanism's, bit for bit.
+
+use crate::mechanism::point_set::PointSet;
+use crate::mechanism::program::Program;
+use crate::mechanism::scratch;
+use crate::runtime::{Inverse, Kernels, Kinematics, Linkage, invert};
+use linkage_symbolic::plan::{Formula, Kernel};
+use linkage_symbolic::tape::{Form, Input, Part, Registers, Tape};
+use nalgebra::{SMatrix, SVector, Vector2};
+use num_dual::DualNum;
+use std::sync::Arc;
+
+/// A run-time mechanism at the sizes m = `M`, f = `F`, with room for `P`
+/// named points: made by [`Mechanism::fixed`](super::Mechanism::fixed),
+/// which checks the sizes. Cheap to clone (the tapes are shared).
+#[derive(Clone, Debug)]
+pub struct Fixed<const M: usize, const F: usize, const P: usize = 32> {
+    program: Arc<Program>,
+    /// Every parameter's value, in the order the tapes read them.
+    fields: Vec<f64>,
+    u_names: [&'static str; M],
+    v_names: [&'static str; F],
+    trig_u: [bool; M],
+    trig_v: [bool; F],
+}
+
+/// Where a kernel sits in the list of kernels: its register file's key.
+fn index(kernel: Kernel) -> usize {
+    Kernel::ALL.iter().position(|&k| k == kernel).unwrap_or(0)
+}
+
+/// A matrix of a result from its part's outputs (every other entry zero).
+fn matrix<const R: usize, const C: usize>(
+    part: Option<&Part>,
+    values: &[f64],
+) -> SMatrix<f64, R, C> {
+    let mut out = SMatrix::<f64, R, C>::zeros();
+    if let Some(part) = part {
+        for (&(i, j), &x) in part.entries.iter().zip(values) {
+            if i < R && j < C {
+                out[(i, j)] = x;
+            }
+        }
+    }
+    out
+}
+
+/// Splits a phase's outputs into its parts' shares.
+fn shares<'a>(parts: &'a [Part], values: &'a [f64]) -> impl Iterator<Item = (&'a Part, &'a [f64])> {
+    let mut start = 0;
+    parts.iter().map(move |part| {
+        let end = (start + part.entries.len()).min(values.len());
+        let share = &values[start.min(end)..end];
+        start = end;
+        (part, share)
+    })
+}
+
+/// Writes an input; a program's tapes have the sizes the view checked, so
+/// this cannot fail (a failure leaves the input as it was, and the
+/// runtime's checks report what comes of it).
+fn set(registers: &mut Registers, input: Input, values: &[f64]) {
+    let _ = registers.set(input, values);
+}
+
+/// The sines and cosines of u and of v given to a kernel.
+type Given<'a, const M: usize, const F: usize> = (&'a [(f64, f64); M], &'a [(f64, f64); F]);
+
+/// Pairs (sin, cos) flattened, as the tapes read them.
+fn flat<const N: usize>(pairs: &[(f64, f64); N]) -> [[f64; 2]; N] {
+    pairs.map(|(s, c)| [s, c])
+}
+
+impl<const M: usize, const F: usize, const P: usize> Fixed<M, F, P> {
+    /// The view of `program` with these parameter values; the caller has
+    /// checked the sizes.
+    pub(crate) fn new(program: Arc<Program>, fields: Vec<f64>) -> Fixed<M, F, P> {
+        let array = |names: &[&'static str], k: usize| names.get(k).copied().unwrap_or("");
+        let (trig_u, trig_v) = program.trig_flags(Kernel::Kinematics { with_trig: true });
+        Fixed {
+            u_names: std::array::from_fn(|k| array(&program.u_names, k)),
+            v_names: std::array::from_fn(|k| array(&program.v_names, k)),
+            trig_u: std::array::from_fn(|k| trig_u.get(k).copied().unwrap_or(false)),
+            trig_v: std::array::from_fn(|k| trig_v.get(k).copied().unwrap_or(false)),
+            program,
+            fields,
+        }
+    }
+
+    /// The mechanism's name.
+    pub fn name(&self) -> &str {
+        &self.program.name
+    }
+
+    /// Every parameter's name, in order (not only those differentiated by).
+    pub fn parameter_names(&self) -> &[&'static str] {
+        &self.program.field_names
+    }
+
+    /// Every parameter's value, in the order of [`Fixed::parameter_names`].
+    pub fn parameters(&self) -> &[f64] {
+        &self.fields
+    }
+
+    /// Runs one phase-0 kernel with the inputs `inputs` written, and hands
+    /// its parts' shares to `read`.
+    fn run<R>(
+        &self,
+        kernel: Kernel,
+        inputs: &[(Input, &[f64])],
+        read: impl FnOnce(&[Part], &[f64]) -> R,
+    ) -> R {
+        let tape = self.program.tape(kernel);
+        scratch::with_registers(
+            self.program.id,
+            index(kernel),
+            tape,
+            |registers, outputs| {
+                set(registers, Input::Fields, &self.fields);
+                for (input, values) in inputs {
+                    set(registers, *input, values);
+                }
+                let out = outputs
+                    .get_mut(0)
+                    .map(Vec::as_mut_slice)
+                    .unwrap_or_default();
+                if tape.run(0, registers, out).is_err() {
+                    out.fill(f64::NAN);
+                }
+                read(tape.parts(0), out)
+            },
+        )
+    }
+
+    /// A kernel whose one part is a matrix.
+    fn formula<const R: usize, const C: usize>(
+        &self,
+        formula: Formula,
+        inputs: &[(Input, &[f64])],
+    ) -> SMatrix<f64, R, C> {
+        self.run(Kernel::Formula(formula), inputs, |parts, values| {
+            matrix(parts.first(), values)
+        })
+    }
+
+    /// A kernel of the points.
+    fn points(&self, level: usize, inputs: &[(Input, &[f64])]) -> PointSet<P> {
+        self.run(Kernel::Points(level), inputs, |parts, values| {
+            let count = self.program.point_names.len();
+            let mut points = PointSet::<P>::zeros(count.min(P)).unwrap_or_else(|| {
+                PointSet::zeros(0).unwrap_or_else(|| unreachable!("an empty set fits"))
+            });
+            if let Some(part) = parts.first().filter(|p| p.form == Form::Points) {
+                let slots = points.as_mut();
+                for (&(i, c), &x) in part.entries.iter().zip(values) {
+                    if let Some(point) = slots.get_mut(i) {
+                        point[c.min(1)] = x;
+                    }
+                }
+            }
+            points
+        })
+    }
+
+    /// `kinematics`, the sines and cosines computed or given: phase 0
+    /// gives Ψ, Ψ_u and Ψ_v; then, as the generated function does, the
+    /// inverse and u̇ = −Ψ_u⁻¹(Ψ_v v̇); phase 1 gives γ at that u̇; and
+    /// ü = −Ψ_u⁻¹(Ψ_v v̈ + γ).
+    fn kinematics_of(
+        &self,
+        trig: Option<Given<'_, M, F>>,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        vdot: &SVector<f64, F>,
+        vddot: &SVector<f64, F>,
+    ) -> Kinematics<M, F> {
+        let kernel = Kernel::Kinematics {
+            with_trig: trig.is_some(),
+        };
+        let tape: &Tape = self.program.tape(kernel);
+        scratch::with_registers(
+            self.program.id,
+            index(kernel),
+            tape,
+            |registers, outputs| {
+                set(registers, Input::Fields, &self.fields);
+                set(registers, Input::U, u.as_slice());
+                set(registers, Input::V, v.as_slice());
+                set(registers, Input::Vdot, vdot.as_slice());
+                if let Some((trig_u, trig_v)) = trig {
+                    set(registers, Input::TrigU, flat(trig_u).as_flattened());
+                    set(registers, Input::TrigV, flat(trig_v).as_flattened());
+                }
+                let [first, second, ..] = outputs else {
+                    return unevaluated();
+                };
+                if tape.run(0, registers, first).is_err() {
+                    first.fill(f64::NAN);
+                }
+                let parts = tape.parts(0);
+                let psi: SVector<f64, M> = named(parts, first, "psi");
+                let psi_u: SMatrix<f64, M, M> = named(parts, first, "psi_u");
+                let psi_v: SMatrix<f64, M, F> = named(parts, first, "psi_v");
+                let Inverse {
+                    inverse,
+                    rcond,
+                    det,
+                } = invert(&psi_u);
+                let udot = -(inverse * (psi_v * vdot));
+                set(registers, Input::Udot, udot.as_slice());
+                if tape.run(1, registers, second).is_err() {
+                    second.fill(f64::NAN);
+                }
+                let gamma: SVector<f64, M> = named(tape.parts(1), second, "gamma");
+                let uddot = -(inverse * (psi_v * vddot + gamma));
+                Kinematics {
+                    psi,
+                    psi_u,
+                    psi_v,
+                    inverse,
+                    rcond,
+                    det,
+                    udot,
+                    uddot,
+                }
+            },
+        )
+    }
+}
+
+/// The matrix `name` of a phase's result.
+fn named<const R: usize, const C: usize>(
+    parts: &[Part],
+    values: &[f64],
+    name: &str,
+) -> SMatrix<f64, R, C> {
+    shares(parts, values)
+        .find(|(part, _)| part.name == name)
+        .map_or_else(SMatrix::zeros, |(part, share)| matrix(Some(part), share))
+}
+
+/// What a kernel gives when its tape could not run: not numbers, which
+/// the runtime's checks turn into a typed error.
+fn unevaluated<const M: usize, const F: usize>() -> Kinematics<M, F> {
+    Kinematics {
+        psi: SVector::repeat(f64::NAN),
+        psi_u: SMatrix::repeat(f64::NAN),
+        psi_v: SMatrix::repeat(f64::NAN),
+        inverse: SMatrix::repeat(f64::NAN),
+        rcond: f64::NAN,
+        det: f64::NAN,
+        udot: SVector::repeat(f64::NAN),
+        uddot: SVector::repeat(f64::NAN),
+    }
+}
+
+impl<const M: usize, const F: usize, const P: usize> Kernels<M, F> for Fixed<M, F, P> {
+    type Points = PointSet<P>;
+
+    fn u_names(&self) -> [&'static str; M] {
+        self.u_names
+    }
+
+    fn v_names(&self) -> [&'static str; F] {
+        self.v_names
+    }
+
+    fn point_names(&self) -> &'static [&'static str] {
+        self.program.point_names
+    }
+
+    fn psi(&self, u: &SVector<f64, M>, v: &SVector<f64, F>) -> SVector<f64, M> {
+        self.formula(
+            Formula::Psi,
+            &[(Input::U, u.as_slice()), (Input::V, v.as_slice())],
+        )
+    }
+
+    fn psi_u(&self, u: &SVector<f64, M>, v: &SVector<f64, F>) -> SMatrix<f64, M, M> {
+        self.formula(
+            Formula::PsiU,
+            &[(Input::U, u.as_slice()), (Input::V, v.as_slice())],
+        )
+    }
+
+    fn psi_v(&self, u: &SVector<f64, M>, v: &SVector<f64, F>) -> SMatrix<f64, M, F> {
+        self.formula(
+            Formula::PsiV,
+            &[(Input::U, u.as_slice()), (Input::V, v.as_slice())],
+        )
+    }
+
+    fn psi_and_psi_u(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+    ) -> (SVector<f64, M>, SMatrix<f64, M, M>) {
+        let inputs = [(Input::U, u.as_slice()), (Input::V, v.as_slice())];
+        self.run(Kernel::PsiAndPsiU, &inputs, |parts, values| {
+            (named(parts, values, "psi"), named(parts, values, "psi_u"))
+        })
+    }
+
+    fn psi_u_udot_u(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        udot: &SVector<f64, M>,
+    ) -> SMatrix<f64, M, M> {
+        let inputs = [
+            (Input::U, u.as_slice()),
+            (Input::V, v.as_slice()),
+            (Input::Udot, udot.as_slice()),
+        ];
+        self.formula(Formula::PsiUUdotU, &inputs)
+    }
+
+    fn psi_u_udot_v(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        udot: &SVector<f64, M>,
+    ) -> SMatrix<f64, M, F> {
+        let inputs = [
+            (Input::U, u.as_slice()),
+            (Input::V, v.as_slice()),
+            (Input::Udot, udot.as_slice()),
+        ];
+        self.formula(Formula::PsiUUdotV, &inputs)
+    }
+
+    fn psi_v_vdot_u(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        vdot: &SVector<f64, F>,
+    ) -> SMatrix<f64, M, M> {
+        let inputs = [
+            (Input::U, u.as_slice()),
+            (Input::V, v.as_slice()),
+            (Input::Vdot, vdot.as_slice()),
+        ];
+        self.formula(Formula::PsiVVdotU, &inputs)
+    }
+
+    fn psi_v_vdot_v(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        vdot: &SVector<f64, F>,
+    ) -> SMatrix<f64, M, F> {
+        let inputs = [
+            (Input::U, u.as_slice()),
+            (Input::V, v.as_slice()),
+            (Input::Vdot, vdot.as_slice()),
+        ];
+        self.formula(Formula::PsiVVdotV, &inputs)
+    }
+
+    fn psi_u_dot(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        udot: &SVector<f64, M>,
+        vdot: &SVector<f64, F>,
+    ) -> SMatrix<f64, M, M> {
+        self.formula(Formula::PsiUDot, &motion(u, v, udot, vdot))
+    }
+
+    fn psi_v_dot(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        udot: &SVector<f64, M>,
+        vdot: &SVector<f64, F>,
+    ) -> SMatrix<f64, M, F> {
+        self.formula(Formula::PsiVDot, &motion(u, v, udot, vdot))
+    }
+
+    fn gamma(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        udot: &SVector<f64, M>,
+        vdot: &SVector<f64, F>,
+    ) -> SVector<f64, M> {
+        self.formula(Formula::Gamma, &motion(u, v, udot, vdot))
+    }
+
+    fn kinematics(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        vdot: &SVector<f64, F>,
+        vddot: &SVector<f64, F>,
+    ) -> Kinematics<M, F> {
+        self.kinematics_of(None, u, v, vdot, vddot)
+    }
+
+    fn trig_u(&self) -> [bool; M] {
+        self.trig_u
+    }
+
+    fn trig_v(&self) -> [bool; F] {
+        self.trig_v
+    }
+
+    fn kinematics_with_trig(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        trig_u: &[(f64, f64); M],
+        trig_v: &[(f64, f64); F],
+        vdot: &SVector<f64, F>,
+        vddot: &SVector<f64, F>,
+    ) -> Kinematics<M, F> {
+        self.kinematics_of(Some((trig_u, trig_v)), u, v, vdot, vddot)
+    }
+
+    fn point_positions(&self, u: &SVector<f64, M>, v: &SVector<f64, F>) -> PointSet<P> {
+        self.points(0, &[(Input::U, u.as_slice()), (Input::V, v.as_slice())])
+    }
+
+    fn point_velocities(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        udot: &SVector<f64, M>,
+        vdot: &SVector<f64, F>,
+    ) -> PointSet<P> {
+        self.points(1, &motion(u, v, udot, vdot))
+    }
+
+    fn point_accelerations(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        udot: &SVector<f64, M>,
+        vdot: &SVector<f64, F>,
+        uddot: &SVector<f64, M>,
+        vddot: &SVector<f64, F>,
+    ) -> PointSet<P> {
+        let mut inputs = motion(u, v, udot, vdot).to_vec();
+        inputs.extend([
+            (Input::Uddot, uddot.as_slice()),
+            (Input::Vddot, vddot.as_slice()),
+        ]);
+        self.points(2, &inputs)
+    }
+
+    fn psi_generic<D: DualNum<Primitive = f64> + Copy>(
+        &self,
+        u: &SVector<D, M>,
+        v: &SVector<D, F>,
+    ) -> SVector<D, M> {
+        let q = |k: usize| if k < M { u[k] } else { v[k - M] };
+        let values = self.program.psi_dual(&self.fields, &q);
+        SVector::from_fn(|i, _| values.get(i).copied().unwrap_or(D::from(f64::NAN)))
+    }
+
+    fn point_positions_generic<D: DualNum<Primitive = f64> + Copy>(
+        &self,
+        u: &SVector<D, M>,
+        v: &SVector<D, F>,
+    ) -> impl AsRef<[Vector2<D>]> {
+        let q = |k: usize| if k < M { u[k] } else { v[k - M] };
+        let points = self.program.points_dual(&self.fields, &q);
+        points
+            .into_iter()
+            .map(|[x, y]| Vector2::new(x, y))
+            .collect::<Vec<_>>()
+    }
+}
+
+impl<const M: usize, const F: usize, const P: usize> Linkage<M, F> for Fixed<M, F, P> {}
+
+/// The inputs of a kernel of a pose in motion.
+fn motion<'a, const M: usize, const F: usize>(
+    u: &'a SVector<f64, M>,
+    v: &'a SVector<f64, F>,
+    udot: &'a SVector<f64, M>,
+    vdot: &'a SVector<f64, F>,
+) -> [(Input, &'a [f64]); 4] {
+    [
+        (Input::U, u.as_slice()),
+        (Input::V, v.as_slice()),
+        (Input::Udot, udot.as_slice()),
+        (Input::Vdot, vdot.as_slice()),
+    ]
+}

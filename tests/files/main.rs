@@ -1,0 +1,13 @@
+//! The library of mechanism files, `mechanisms/`: every file loads, its
+//! equations are its compiled twin's token for token, its parameters the
+//! twin's to the bit, its drive runs from its assembly over the whole range
+//! on the twin, and its drawing draws.
+
+#[path = "../../examples/shaper/machine.rs"]
+mod machine;
+#[path = "../models/mod.rs"]
+mod models;
+#[path = "../common/twins.rs"]
+mod twins;
+
+mod library;
