@@ -119,10 +119,17 @@ struct Sample {
 }
 
 impl Sample {
+    /// The sines and cosines the kernels with them given read: of the
+    /// coordinates shifted, so that a kernel computing them instead gives
+    /// other numbers.
+    fn sin_cos(x: f64) -> (f64, f64) {
+        (x + 0.25).sin_cos()
+    }
+
     fn trig(q: &[f64]) -> Vec<f64> {
         q.iter()
-            .flat_map(|x| {
-                let (s, c) = x.sin_cos();
+            .flat_map(|&x| {
+                let (s, c) = Sample::sin_cos(x);
                 [s, c]
             })
             .collect()
@@ -261,7 +268,7 @@ macro_rules! mechanism {
             }
 
             fn pairs<const N: usize>(x: &[f64]) -> [(f64, f64); N] {
-                std::array::from_fn(|k| x[k].sin_cos())
+                std::array::from_fn(|k| Sample::sin_cos(x[k]))
             }
 
             /// The compiled kernel's result, part by part (one phase).

@@ -17,7 +17,10 @@
 //!
 //! [`build`] runs stages 1–3. The `#[linkage::linkage(...)]` attribute
 //! (crate `linkage-macros`) is a thin shell around this crate: it assembles
-//! the emitted statements into documented items.
+//! the emitted statements into documented items, each f64 function from
+//! its [`plan`]. A [`tape`] is the same statements compiled into a
+//! register program that gives the compiled function's numbers without a
+//! compiler (its interpreter needs no feature, its compiler `syntax`).
 //!
 //! Features: `syntax` (default) reads and emits Rust with syn and quote;
 //! without it only the DAG, its derivative rules, its normal form, its
@@ -44,6 +47,7 @@ pub mod display;
 pub mod emit;
 #[cfg(feature = "syntax")]
 pub mod errors;
+mod hasher;
 #[cfg(any(test, feature = "eval"))]
 pub mod interp;
 #[cfg(feature = "syntax")]

@@ -7,7 +7,7 @@ use super::docs::doc_attributes;
 use super::quantities::{Arg, Quantity};
 use super::signature;
 use linkage_symbolic::dag::{Id, Node, Symbol};
-use linkage_symbolic::emit::{Mode, Phased, Reads};
+use linkage_symbolic::emit::{Body, Mode, Reads};
 use linkage_symbolic::plan::{Kernel, free_name};
 use linkage_symbolic::tape::{Form, Part};
 use proc_macro2::{Literal, TokenStream};
@@ -27,15 +27,6 @@ pub fn reads(r: &Reads, arg: Arg) -> bool {
     }
 }
 
-/// The statements (the prologue's, then the phase's) and the values of
-/// code in one phase.
-pub fn single_phase(phased: Phased) -> (Vec<TokenStream>, Vec<TokenStream>, Reads) {
-    let mut statements = phased.prologue;
-    let (phase, values) = phased.phases.into_iter().next().unwrap_or_default();
-    statements.extend(phase);
-    (statements, values, phased.reads)
-}
-
 impl Generator<'_> {
     /// The function of `q`, computing its kernel, documented by `doc`.
     pub(super) fn function(&self, q: &Quantity, doc: &[String], kernel: Kernel) -> TokenStream {
@@ -49,7 +40,11 @@ impl Generator<'_> {
             .map(|p| self.free_name(p.name))
             .collect();
         let phased = plan.emit(self.dag(), &self.names, &reserved, Mode::F64);
-        let (statements, values, read) = single_phase(phased);
+        let Body {
+            statements,
+            values,
+            reads: read,
+        } = phased.into_body();
         let mut values = values.iter();
         let mut result_names = reserved.iter();
         let mut stmts = Vec::new();

@@ -5,10 +5,10 @@
 
 use super::Generator;
 use super::docs::doc_attributes;
-use super::function::{assemble, reads, single_phase};
+use super::function::{assemble, reads};
 use super::quantities::{Arg, Quantity};
 use super::signature;
-use linkage_symbolic::emit::{Mode, Reads};
+use linkage_symbolic::emit::{Body, Mode};
 use linkage_symbolic::plan::{Formula, Kernel};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -33,8 +33,8 @@ impl Generator<'_> {
             std::slice::from_ref(&result),
             mode(q),
         );
-        let body = single_phase(phased);
-        let mut values = body.1.iter();
+        let body = phased.into_body();
+        let mut values = body.values.iter();
         let mut stmts = Vec::new();
         let mut value = quote!();
         for part in plan.phases.iter().flatten() {
@@ -49,8 +49,8 @@ impl Generator<'_> {
     pub(super) fn generic_points(&self, q: &Quantity, doc: &[String]) -> TokenStream {
         let plan = Kernel::Points(0).plan(self.model);
         let phased = plan.emit(self.dag(), &self.names, &[], mode(q));
-        let body = single_phase(phased);
-        let mut values = body.1.iter();
+        let body = phased.into_body();
+        let mut values = body.values.iter();
         let vectors = self.model.points.iter().map(|_| {
             let x = values.next();
             let y = values.next();
@@ -64,16 +64,16 @@ impl Generator<'_> {
         &self,
         q: &Quantity,
         doc: &[String],
-        body: &(Vec<TokenStream>, Vec<TokenStream>, Reads),
+        body: &Body,
         result: TokenStream,
     ) -> TokenStream {
         let name = format_ident!("{}", q.name);
         let dims = self.dims();
         let generics = signature::generics(q);
-        let args = signature::args(q, &dims, |a| reads(&body.2, a));
+        let args = signature::args(q, &dims, |a| reads(&body.reads, a));
         let ret = signature::output_type(q, &dims, false);
         let doc = doc_attributes(doc);
-        let statements = &body.0;
+        let statements = &body.statements;
         quote! {
             #doc
             #[must_use]

@@ -501,6 +501,21 @@ mod tests {
         );
     }
 
+    /// The f64 functions of the table are the plan's kernels, in the same
+    /// order and under the same names: what each computes is planned in
+    /// one place (`linkage_symbolic::plan`), which the tapes compile too.
+    #[test]
+    fn the_tables_kernels_are_the_plans() {
+        use linkage_symbolic::plan::Kernel;
+        let kernels: Vec<Kernel> = QUANTITIES.iter().filter_map(|q| q.kernel()).collect();
+        assert_eq!(kernels, Kernel::ALL);
+        for q in QUANTITIES {
+            if let Some(kernel) = q.kernel() {
+                assert_eq!(kernel.name(), q.name);
+            }
+        }
+    }
+
     /// The four-bar of the worksheet, formatted as `cargo expand` shows it.
     pub fn fourbar_expansion() -> String {
         let attr = quote! {

@@ -6,7 +6,7 @@
 use super::Generator;
 use super::constants::SENSITIVITY_TRIG;
 use super::docs::doc_attributes;
-use super::function::{assemble, point_columns, reads, single_phase};
+use super::function::{assemble, point_columns, reads};
 use super::quantities::Quantity;
 use super::signature;
 use linkage_symbolic::emit::Mode;
@@ -40,7 +40,8 @@ impl Generator<'_> {
         let phased = plan.emit(self.dag(), &self.names, &names_taken, Mode::F64);
         let trig_coords = phased.trig_coords.clone();
         let reads_of = phased.reads;
-        let (body_statements, body_values, _) = single_phase(phased);
+        let body = phased.into_body();
+        let (body_statements, body_values) = (body.statements, body.values);
         let mut values = body_values.iter();
         let mut statements = Vec::new();
         let mut fields = Vec::new();

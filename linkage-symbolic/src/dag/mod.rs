@@ -21,7 +21,7 @@
 //! power of two, because `0.1·(a − b)` and `0.1·a − 0.1·b` differ badly when
 //! `a ≈ b`.
 
-use std::collections::HashMap;
+use crate::hasher::FastMap;
 
 mod atoms;
 
@@ -31,8 +31,8 @@ pub use atoms::{Constant, Func, Func2, Id, Node, Num, Symbol};
 #[derive(Clone, Default)]
 pub struct Dag {
     nodes: Vec<Node>,
-    index: HashMap<Node, Id>,
-    derivatives: HashMap<(Id, Symbol), Id>,
+    index: FastMap<Node, Id>,
+    derivatives: FastMap<(Id, Symbol), Id>,
 }
 
 impl Dag {

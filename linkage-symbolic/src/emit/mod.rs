@@ -7,10 +7,10 @@
 
 use crate::dag::{Dag, Func, Func2, Id, Node, Symbol, children};
 use crate::display::display_order;
+use crate::hasher::{FastMap, FastSet};
 use crate::names::SymbolNames;
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
-use std::collections::{HashMap, HashSet};
 
 mod expr;
 
@@ -51,6 +51,10 @@ pub struct Body {
 /// identifiers and are valid; anything else is sanitised rather than allowed
 /// to panic.
 fn ident(name: &str) -> proc_macro2::Ident {
+    // The common case without tokenizing: what `syn` reads as an identifier.
+    if is_plain_identifier(name) {
+        return proc_macro2::Ident::new(name, proc_macro2::Span::call_site());
+    }
     if let Ok(i) = syn::parse_str::<proc_macro2::Ident>(name) {
         return i;
     }
@@ -72,6 +76,70 @@ fn ident(name: &str) -> proc_macro2::Ident {
         .unwrap_or_else(|_| format_ident!("generated_value"))
 }
 
+/// An ASCII identifier that is not a keyword (nor `_`): one that
+/// `syn::parse_str::<Ident>` accepts as it is.
+fn is_plain_identifier(name: &str) -> bool {
+    let mut chars = name.chars();
+    let first_ok = chars
+        .next()
+        .is_some_and(|c| c.is_ascii_alphabetic() || c == '_');
+    let keyword = matches!(
+        name,
+        "_" | "abstract"
+            | "as"
+            | "async"
+            | "await"
+            | "become"
+            | "box"
+            | "break"
+            | "const"
+            | "continue"
+            | "crate"
+            | "do"
+            | "dyn"
+            | "else"
+            | "enum"
+            | "extern"
+            | "false"
+            | "final"
+            | "fn"
+            | "for"
+            | "if"
+            | "impl"
+            | "in"
+            | "let"
+            | "loop"
+            | "macro"
+            | "match"
+            | "mod"
+            | "move"
+            | "mut"
+            | "override"
+            | "priv"
+            | "pub"
+            | "ref"
+            | "return"
+            | "Self"
+            | "self"
+            | "static"
+            | "struct"
+            | "super"
+            | "trait"
+            | "true"
+            | "try"
+            | "type"
+            | "typeof"
+            | "unsafe"
+            | "unsized"
+            | "use"
+            | "virtual"
+            | "where"
+            | "while"
+            | "yield"
+    );
+    first_ok && chars.all(|c| c.is_ascii_alphanumeric() || c == '_') && !keyword
+}
+
 /// Binding strength of an emitted expression.
 #[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Debug)]
 enum Prec {
@@ -86,34 +154,12 @@ struct Emitter<'a> {
     names: &'a SymbolNames,
     mode: Mode,
     /// Temporaries by node.
-    bound: HashMap<Id, String>,
+    bound: FastMap<Id, String>,
     /// The bound products whose `let` is already written, which a later
     /// product containing their factors reuses, by their first factor (a
     /// product within another has its first factor there too, so only
     /// these few are candidates).
-    products: HashMap<(Id, i32), Vec<Id>>,
-}
-
-/// Emits the straight-line code computing `roots`; `hints` names chosen
-/// nodes (e.g. a point's coordinates) and always binds them.
-pub fn emit(
-    dag: &Dag,
-    names: &SymbolNames,
-    roots: &[Id],
-    hints: &[(Id, String)],
-    reserved: &[String],
-    mode: Mode,
-) -> Body {
-    let phased = emit_phases(dag, names, &[roots], hints, reserved, mode, &[], None);
-    let mut statements = phased.prologue;
-    let mut phases = phased.phases.into_iter();
-    let (phase_statements, values) = phases.next().unwrap_or_default();
-    statements.extend(phase_statements);
-    Body {
-        statements,
-        values,
-        reads: phased.reads,
-    }
+    products: FastMap<(Id, i32), Vec<Id>>,
 }
 
 /// Code in phases: the values of phase k may use everything computed in
@@ -130,6 +176,21 @@ pub struct Phased {
     /// The coordinates (indices into q = (u, v)) whose sine or cosine is read
     /// from the [`TrigSource`], ascending.
     pub trig_coords: Vec<usize>,
+}
+
+impl Phased {
+    /// Code in one phase as one body: the prologue's statements, then the
+    /// phase's.
+    pub fn into_body(self) -> Body {
+        let mut statements = self.prologue;
+        let (phase, values) = self.phases.into_iter().next().unwrap_or_default();
+        statements.extend(phase);
+        Body {
+            statements,
+            values,
+            reads: self.reads,
+        }
+    }
 }
 
 /// Sines and cosines of the coordinates given by the caller instead of
@@ -152,8 +213,8 @@ pub fn emit_phases(
     trig_source: Option<&TrigSource>,
 ) -> Phased {
     // Reachable nodes, their use counts, and the first phase needing each.
-    let mut uses: HashMap<Id, usize> = HashMap::new();
-    let mut phase_of: HashMap<Id, usize> = HashMap::new();
+    let mut uses: FastMap<Id, usize> = FastMap::default();
+    let mut phase_of: FastMap<Id, usize> = FastMap::default();
     for (p, roots) in phases.iter().enumerate() {
         let mut stack: Vec<Id> = roots.to_vec();
         for &r in roots.iter() {
@@ -175,7 +236,7 @@ pub fn emit_phases(
     let mut order: Vec<Id> = phase_of.keys().copied().collect();
     order.sort();
 
-    let hint_of: HashMap<Id, &str> = hints
+    let hint_of: FastMap<Id, &str> = hints
         .iter()
         .rev()
         .map(|(id, name)| (*id, name.as_str()))
@@ -194,7 +255,7 @@ pub fn emit_phases(
         })
         .collect();
 
-    let mut taken: HashSet<String> = names.all_code().collect();
+    let mut taken: FastSet<String> = names.all_code().collect();
     taken.extend(
         [
             "u", "v", "udot", "vdot", "uddot", "vddot", "params", "self", "D",
@@ -206,13 +267,13 @@ pub fn emit_phases(
         dag,
         names,
         mode,
-        bound: HashMap::new(),
-        products: HashMap::new(),
+        bound: FastMap::default(),
+        products: FastMap::default(),
     };
 
     // Sine and cosine of the same angle share one sin_cos, in the first
     // phase that needs either.
-    let mut trig_pairs: HashMap<Id, (Option<Id>, Option<Id>)> = HashMap::new();
+    let mut trig_pairs: FastMap<Id, (Option<Id>, Option<Id>)> = FastMap::default();
     for &id in &to_bind {
         match dag.node(id) {
             Node::Call(Func::Sin, a) => trig_pairs.entry(*a).or_default().0 = Some(id),
@@ -276,7 +337,7 @@ pub fn emit_phases(
     let prologue = emitter.prologue(&symbols, &mut reads);
 
     // The temporaries of each phase, in topological order.
-    let mut emitted_pairs: HashSet<Id> = HashSet::new();
+    let mut emitted_pairs: FastSet<Id> = FastSet::default();
     let mut out = Vec::with_capacity(phases.len());
     for (p, roots) in phases.iter().enumerate() {
         let mut statements = Vec::new();
@@ -357,7 +418,7 @@ fn join_products(factors: Vec<TokenStream>) -> TokenStream {
     out
 }
 
-fn unique(name: String, taken: &mut HashSet<String>) -> String {
+fn unique(name: String, taken: &mut FastSet<String>) -> String {
     let mut candidate = name.clone();
     let mut k = 2;
     while taken.contains(&candidate) {
@@ -366,4 +427,45 @@ fn unique(name: String, taken: &mut HashSet<String>) -> String {
     }
     taken.insert(candidate.clone());
     candidate
+}
+
+#[cfg(test)]
+mod ident_tests {
+    use super::{ident, is_plain_identifier};
+
+    /// The fast path takes only what `syn` takes, as it is; the rest goes
+    /// the way it went.
+    #[test]
+    fn a_plain_identifier_is_what_syn_reads() {
+        for name in [
+            "theta3",
+            "l2_c_theta3",
+            "_x",
+            "Self",
+            "self",
+            "type",
+            "_",
+            "r#type",
+            "3x",
+            "θ3",
+            "a-b",
+            "",
+            "trig_u",
+            "gen",
+            "union",
+            "x9_",
+        ] {
+            let parsed = syn::parse_str::<proc_macro2::Ident>(name).ok();
+            if is_plain_identifier(name) {
+                assert_eq!(
+                    parsed.as_ref().map(|i| i.to_string()),
+                    Some(name.to_owned()),
+                    "{name}"
+                );
+            }
+            if let Some(parsed) = parsed {
+                assert_eq!(ident(name), parsed, "{name}");
+            }
+        }
+    }
 }

@@ -73,11 +73,21 @@ fn powf_half(x: f64) -> f64 {
     }
 }
 
+/// `x.sin_cos()` in a function of its own, where LLVM makes the sine and
+/// the cosine one call of libm's `sincos`, as it does in the compiled
+/// kernels. The interpreter calls it through a pointer LLVM cannot see
+/// through: in line, amid the interpreter's stores, LLVM calls `sin` and
+/// `cos` apart (the same bits at twice the cost).
+#[inline(never)]
+fn sin_cos(x: f64) -> (f64, f64) {
+    x.sin_cos()
+}
+
 /// `d = f(a)` on every lane.
 #[inline(always)]
-fn unary<const L: usize>(r: &mut [[f64; L]], d: u32, a: u32, f: impl Fn(f64) -> f64) {
-    let x = r[a as usize];
-    let out = &mut r[d as usize];
+fn unary<const L: usize>(r: &mut [[f64; L]], d: usize, a: usize, f: impl Fn(f64) -> f64) {
+    let x = r[a];
+    let out = &mut r[d];
     for l in 0..L {
         out[l] = f(x[l]);
     }
@@ -85,9 +95,15 @@ fn unary<const L: usize>(r: &mut [[f64; L]], d: u32, a: u32, f: impl Fn(f64) -> 
 
 /// `d = f(a, b)` on every lane.
 #[inline(always)]
-fn binary<const L: usize>(r: &mut [[f64; L]], d: u32, a: u32, b: u32, f: impl Fn(f64, f64) -> f64) {
-    let (x, y) = (r[a as usize], r[b as usize]);
-    let out = &mut r[d as usize];
+fn binary<const L: usize>(
+    r: &mut [[f64; L]],
+    d: usize,
+    a: usize,
+    b: usize,
+    f: impl Fn(f64, f64) -> f64,
+) {
+    let (x, y) = (r[a], r[b]);
+    let out = &mut r[d];
     for l in 0..L {
         out[l] = f(x[l], y[l]);
     }
@@ -108,24 +124,33 @@ impl Op {
 
     /// Runs the operation on L lanes of registers (the operands read before
     /// the result is written, so a result may reuse an operand's register).
+    /// The register file's size is a power of two, `mask` one less: its
+    /// registers are indexed through the mask, which spares the bounds
+    /// checks (a tape's registers are inside its file, checked once when it
+    /// was made).
     #[inline(always)]
-    pub(crate) fn execute<const L: usize>(self, r: &mut [[f64; L]]) {
-        let Op { code, d, a, b } = self;
-        match code {
+    pub(crate) fn execute<const L: usize>(self, r: &mut [[f64; L]], mask: usize) {
+        let (d, a, b) = (
+            self.d as usize & mask,
+            self.a as usize & mask,
+            self.b as usize & mask,
+        );
+        match self.code {
             Code::Add => binary(r, d, a, b, |x, y| x + y),
             Code::Sub => binary(r, d, a, b, |x, y| x - y),
             Code::Mul => binary(r, d, a, b, |x, y| x * y),
             Code::Div => binary(r, d, a, b, |x, y| x / y),
             Code::Neg => unary(r, d, a, |x| -x),
             Code::SinCos => {
-                let x = r[a as usize];
+                let x = r[a];
+                let sin_cos = std::hint::black_box(sin_cos as fn(f64) -> (f64, f64));
                 let mut sin = [0.0; L];
                 let mut cos = [0.0; L];
                 for l in 0..L {
-                    (sin[l], cos[l]) = x[l].sin_cos();
+                    (sin[l], cos[l]) = sin_cos(x[l]);
                 }
-                r[d as usize] = sin;
-                r[b as usize] = cos;
+                r[d] = sin;
+                r[b] = cos;
             }
             Code::Sin => unary(r, d, a, f64::sin),
             Code::Cos => unary(r, d, a, f64::cos),

@@ -33,7 +33,7 @@ pub struct Tape {
     constants: Vec<f64>,
     ops: Vec<Op>,
     phases: Vec<Phase>,
-    /// The size of the register file.
+    /// How many registers it uses (its file has the next power of two).
     registers: usize,
     /// The coordinates (indices into q = (u, v)) whose sine and cosine are
     /// read from `TrigU` and `TrigV`, ascending.
@@ -163,7 +163,7 @@ impl Tape {
         self.ops.is_empty()
     }
 
-    /// The size of its register file.
+    /// How many registers it uses (inputs, constants and temporaries).
     pub fn register_count(&self) -> usize {
         self.registers
     }
@@ -176,10 +176,11 @@ impl Tape {
     }
 
     /// A register file for this tape on L lanes (L ≥ 1), the constants in
-    /// place and every input zero.
+    /// place and every input zero; its size is the power of two at or
+    /// above the registers the tape uses.
     pub fn registers<const L: usize>(&self) -> Registers<L> {
         const { assert!(L > 0, "a register file has at least one lane") };
-        let mut values = vec![[0.0; L]; self.registers];
+        let mut values = vec![[0.0; L]; self.registers.next_power_of_two()];
         let first = self.slots.total();
         for (register, &c) in values[first..].iter_mut().zip(&self.constants) {
             *register = [c; L];
@@ -193,7 +194,9 @@ impl Tape {
 
     /// Runs a phase on one lane and writes its outputs to `out`. Phases run
     /// in order: a phase reads what the phases before it computed, and the
-    /// inputs the caller wrote in between.
+    /// inputs the caller wrote in between; a later phase may run again on
+    /// its own (γ at another u̇), the registers it reads of earlier phases
+    /// kept.
     pub fn run(
         &self,
         phase: usize,
@@ -244,14 +247,19 @@ impl Tape {
         Ok(&p.outputs)
     }
 
-    /// The interpreter: the phase's operations, in order.
+    /// The interpreter: the phase's operations, in order, on a file whose
+    /// size is a power of two (every file this tape made).
     fn execute<const L: usize>(&self, phase: usize, registers: &mut [[f64; L]]) {
         let start = match phase {
             0 => 0,
             _ => self.phases[phase - 1].end,
         };
+        let size = registers.len();
+        if !size.is_power_of_two() {
+            return;
+        }
         for op in &self.ops[start..self.phases[phase].end] {
-            op.execute(registers);
+            op.execute(registers, size - 1);
         }
     }
 }
@@ -281,5 +289,200 @@ impl Registers<1> {
     /// Writes an input.
     pub fn set(&mut self, input: Input, values: &[f64]) -> Result<(), TapeError> {
         self.set_lane(input, 0, values)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::tape::part::Form;
+
+    fn column(name: &'static str, rows: usize) -> Part {
+        Part {
+            name,
+            form: Form::Matrix,
+            rows,
+            cols: 1,
+            entries: (0..rows).map(|i| (i, 0)).collect(),
+        }
+    }
+
+    fn op(code: Code, d: u32, a: u32, b: u32) -> Op {
+        Op { code, d, a, b }
+    }
+
+    /// m = 1, f = 0, one field: the inputs u, u̇, ü, (sin u, cos u) and
+    /// the field in registers 0–5, the constant 2 in 6. Phase 0 gives
+    /// (u·l + 2, sin u, cos u), phase 1 u̇ times the first.
+    fn example() -> Tape {
+        let slots = Slots {
+            m: 1,
+            f: 0,
+            fields: 1,
+        };
+        let ops = vec![
+            op(Code::Mul, 7, 0, 5),
+            op(Code::Add, 7, 7, 6),
+            op(Code::SinCos, 8, 0, 9),
+            op(Code::Mul, 8, 1, 7),
+        ];
+        let phases = vec![
+            Phase {
+                end: 3,
+                outputs: vec![7, 8, 9],
+                parts: vec![column("first", 3)],
+            },
+            Phase {
+                end: 4,
+                outputs: vec![8],
+                parts: vec![column("second", 1)],
+            },
+        ];
+        Tape::new(slots, vec![2.0], ops, phases, 10, Vec::new()).expect("a consistent tape")
+    }
+
+    #[test]
+    fn phases_run_in_order_on_the_registers_they_share() {
+        let tape = example();
+        let mut r = tape.registers::<1>();
+        r.set(Input::U, &[0.7]).unwrap();
+        r.set(Input::Fields, &[3.0]).unwrap();
+        let mut first = [0.0; 3];
+        tape.run(0, &mut r, &mut first).unwrap();
+        assert_eq!(first, [0.7 * 3.0 + 2.0, 0.7_f64.sin(), 0.7_f64.cos()]);
+        r.set(Input::Udot, &[-1.5]).unwrap();
+        let mut second = [0.0];
+        tape.run(1, &mut r, &mut second).unwrap();
+        assert_eq!(second, [-1.5 * (0.7 * 3.0 + 2.0)]);
+    }
+
+    #[test]
+    fn each_lane_computes_what_one_lane_does() {
+        let tape = example();
+        let mut lanes = tape.registers::<4>();
+        let us = [0.1, -2.0, 3.5, 1e-9];
+        let udots = [1.0, 2.0, -3.0, 0.5];
+        for (l, (&u, &udot)) in us.iter().zip(&udots).enumerate() {
+            lanes.set_lane(Input::U, l, &[u]).unwrap();
+            lanes.set_lane(Input::Udot, l, &[udot]).unwrap();
+            lanes.set_lane(Input::Fields, l, &[0.3]).unwrap();
+        }
+        let mut out = [[0.0; 4]; 3];
+        tape.run_lanes(0, &mut lanes, &mut out).unwrap();
+        let mut second = [[0.0; 4]; 1];
+        tape.run_lanes(1, &mut lanes, &mut second).unwrap();
+        for (l, (&u, &udot)) in us.iter().zip(&udots).enumerate() {
+            let mut one = tape.registers::<1>();
+            one.set(Input::U, &[u]).unwrap();
+            one.set(Input::Udot, &[udot]).unwrap();
+            one.set(Input::Fields, &[0.3]).unwrap();
+            let mut first = [0.0; 3];
+            tape.run(0, &mut one, &mut first).unwrap();
+            let mut next = [0.0];
+            tape.run(1, &mut one, &mut next).unwrap();
+            for k in 0..3 {
+                assert_eq!(out[k][l].to_bits(), first[k].to_bits());
+            }
+            assert_eq!(second[0][l].to_bits(), next[0].to_bits());
+        }
+    }
+
+    #[test]
+    fn a_call_that_does_not_fit_is_an_error() {
+        let tape = example();
+        let mut r = tape.registers::<1>();
+        assert_eq!(
+            r.set(Input::U, &[1.0, 2.0]),
+            Err(TapeError::InputLength {
+                input: Input::U,
+                expected: 1,
+                found: 2
+            })
+        );
+        assert_eq!(
+            r.set(Input::V, &[1.0]),
+            Err(TapeError::InputLength {
+                input: Input::V,
+                expected: 0,
+                found: 1
+            })
+        );
+        let mut lanes = tape.registers::<2>();
+        assert_eq!(
+            lanes.set_lane(Input::U, 2, &[1.0]),
+            Err(TapeError::Lane { lane: 2, lanes: 2 })
+        );
+        assert_eq!(
+            tape.run(2, &mut r, &mut []),
+            Err(TapeError::Phase {
+                phase: 2,
+                phases: 2
+            })
+        );
+        assert_eq!(
+            tape.run(0, &mut r, &mut [0.0; 2]),
+            Err(TapeError::OutputLength {
+                phase: 0,
+                expected: 3,
+                found: 2
+            })
+        );
+        // Another tape, identical but for its identity.
+        let mut foreign = example().registers::<1>();
+        assert_eq!(
+            tape.run(0, &mut foreign, &mut [0.0; 3]),
+            Err(TapeError::ForeignRegisters)
+        );
+    }
+
+    #[test]
+    fn an_inconsistent_tape_is_refused() {
+        let slots = Slots {
+            m: 1,
+            f: 0,
+            fields: 1,
+        };
+        let phase = |end, outputs: Vec<u32>| Phase {
+            end,
+            parts: vec![column("x", outputs.len())],
+            outputs,
+        };
+        let cases = [
+            // Writes the input u.
+            (vec![op(Code::Neg, 0, 1, 0)], vec![phase(1, vec![0])], 8),
+            // Writes the constant.
+            (vec![op(Code::Neg, 6, 1, 0)], vec![phase(1, vec![6])], 8),
+            // Reads outside the file.
+            (vec![op(Code::Add, 7, 1, 8)], vec![phase(1, vec![7])], 8),
+            // Sine and cosine into one register.
+            (vec![op(Code::SinCos, 7, 0, 7)], vec![phase(1, vec![7])], 8),
+            // An output outside the file.
+            (vec![op(Code::Neg, 7, 0, 0)], vec![phase(1, vec![9])], 8),
+            // Operations after the last phase.
+            (vec![op(Code::Neg, 7, 0, 0)], vec![phase(0, vec![7])], 8),
+            // A file smaller than its inputs and constants.
+            (Vec::new(), vec![phase(0, vec![0])], 6),
+        ];
+        for (ops, phases, registers) in cases {
+            let tape = Tape::new(slots, vec![2.0], ops.clone(), phases, registers, Vec::new());
+            assert!(
+                matches!(tape, Err(TapeError::Invalid(_))),
+                "{ops:?} accepted"
+            );
+        }
+        let mismatched = Phase {
+            end: 0,
+            outputs: vec![0, 1],
+            parts: vec![column("x", 1)],
+        };
+        let tape = Tape::new(
+            slots,
+            Vec::new(),
+            Vec::new(),
+            vec![mismatched],
+            6,
+            Vec::new(),
+        );
+        assert!(matches!(tape, Err(TapeError::Invalid(_))));
     }
 }

@@ -1,8 +1,9 @@
 //! Registers for the virtual ones: the inputs keep their slots, the
 //! constants follow them, and the temporaries share what is left, a
 //! register reused once its value is dead (its last reader has run, or,
-//! for an output, its phase has ended). Operations whose results nothing
-//! reads are dropped.
+//! for an output, its phase has ended) — but a value of one phase that a
+//! later phase reads keeps its register, so that a later phase can run
+//! again on its own. Operations whose results nothing reads are dropped.
 
 use super::builder::{Builder, Virtual};
 use crate::tape::op::{Code, Op};
@@ -40,24 +41,47 @@ pub(super) fn allocate(builder: Builder) -> Allocated {
             }
         }
     }
-    // Positions: operation k at 2k + 1, the end of a phase ending before
-    // operation e at 2e (after its last operation, before the next one).
-    let mut last_use: Vec<Option<usize>> = vec![None; virtuals.len()];
-    for (k, op) in ops.iter().enumerate().filter(|(k, _)| kept[*k]) {
-        for r in op.reads() {
-            last_use[r as usize] = Some(2 * k + 1);
+    // The phase of each operation.
+    let mut phase_of = vec![0; ops.len()];
+    let mut start = 0;
+    for (p, (end, _)) in phases.iter().enumerate() {
+        for phase in &mut phase_of[start..*end] {
+            *phase = p;
+        }
+        start = *end;
+    }
+    let mut defined_in: Vec<Option<usize>> = vec![None; virtuals.len()];
+    for (k, op) in ops.iter().enumerate() {
+        for w in op.writes() {
+            defined_in[w as usize] = Some(phase_of[k]);
         }
     }
-    for (end, outputs) in &phases {
+    // Positions: operation k at 2k + 1, the end of a phase ending before
+    // operation e at 2e (after its last operation, before the next one).
+    // A value a later phase reads stays for good: a later phase may run
+    // again (with other late inputs) without the phases before it.
+    let mut last_use: Vec<Option<usize>> = vec![None; virtuals.len()];
+    let mut pinned = vec![false; virtuals.len()];
+    let mut used = |r: u32, at: usize, phase: usize| {
+        let r = r as usize;
+        last_use[r] = Some(last_use[r].unwrap_or(0).max(at));
+        if defined_in[r].is_some_and(|p| p < phase) {
+            pinned[r] = true;
+        }
+    };
+    for (k, op) in ops.iter().enumerate().filter(|(k, _)| kept[*k]) {
+        for r in op.reads() {
+            used(r, 2 * k + 1, phase_of[k]);
+        }
+    }
+    for (p, (end, outputs)) in phases.iter().enumerate() {
         for &r in outputs {
-            let at = 2 * end;
-            let previous = last_use[r as usize].unwrap_or(0);
-            last_use[r as usize] = Some(previous.max(at));
+            used(r, 2 * end, p);
         }
     }
     let mut deaths: Vec<Vec<u32>> = vec![Vec::new(); 2 * ops.len() + 2];
     for (r, kind) in virtuals.iter().enumerate() {
-        if let (Virtual::Temporary, Some(at)) = (kind, last_use[r]) {
+        if let (Virtual::Temporary, Some(at), false) = (kind, last_use[r], pinned[r]) {
             deaths[at].push(r as u32);
         }
     }

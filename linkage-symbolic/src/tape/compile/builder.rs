@@ -4,8 +4,8 @@
 //! rewritten the same way, so that the tape computes what the compiled
 //! code computes.
 
+use crate::hasher::FastMap;
 use crate::tape::op::{Code, Op};
-use std::collections::HashMap;
 
 /// A value while compiling: a virtual register, or a constant known now.
 #[derive(Clone, Copy, Debug)]
@@ -34,7 +34,7 @@ pub(super) struct Builder {
     /// Each finished phase: where its operations end, and its outputs.
     pub(super) phases: Vec<(usize, Vec<u32>)>,
     /// The register of each constant, by its bits.
-    constants: HashMap<u64, u32>,
+    constants: FastMap<u64, u32>,
 }
 
 impl Builder {
@@ -43,7 +43,7 @@ impl Builder {
             registers: vec![Virtual::Input; inputs],
             ops: Vec::new(),
             phases: Vec::new(),
-            constants: HashMap::new(),
+            constants: FastMap::default(),
         }
     }
 
@@ -195,18 +195,45 @@ impl Builder {
     }
 }
 
+#[cfg(test)]
+impl Builder {
+    /// The value of `v` when the inputs are `inputs` (a test's evaluator
+    /// of the virtual program).
+    pub(super) fn evaluate(&self, inputs: &[f64], v: Val) -> f64 {
+        let mut r: Vec<[f64; 1]> = self
+            .registers
+            .iter()
+            .enumerate()
+            .map(|(k, kind)| match kind {
+                Virtual::Input => [inputs[k]],
+                Virtual::Constant(c) => [*c],
+                Virtual::Temporary => [f64::NAN],
+            })
+            .collect();
+        r.resize(r.len().next_power_of_two(), [f64::NAN]);
+        let mask = r.len() - 1;
+        for op in &self.ops {
+            op.execute(&mut r, mask);
+        }
+        match v {
+            Val::Reg(k) => r[k as usize][0],
+            Val::Const(c) => c,
+        }
+    }
+}
+
 /// The value of an operation on constants, computed by the operation the
 /// tape would run (the libm call optimised code makes at run time, and
 /// LLVM when it folds the call while compiling).
 fn fold(code: Code, x: f64, y: f64) -> f64 {
-    let mut scratch = [[x], [y], [0.0]];
+    let mut scratch = [[x], [y], [0.0], [0.0]];
     Op {
         code,
         d: 2,
         a: 0,
         b: 1,
     }
-    .execute(&mut scratch);
+    .execute(&mut scratch, 3);
     scratch[2][0]
 }
 
@@ -235,7 +262,113 @@ fn exp2_scale(base: f64) -> Option<i32> {
 
 #[cfg(test)]
 mod tests {
-    use super::exp2_scale;
+    use super::{Builder, Val, exp2_scale};
+    use std::hint::black_box;
+
+    fn xs() -> impl Iterator<Item = f64> {
+        let mut state = 0x2545_f491_4f6c_dd1d_u64;
+        (0..2000).map(move |_| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            let unit = (state >> 11) as f64 / (1u64 << 53) as f64;
+            (unit - 0.5) * 7.0
+        })
+    }
+
+    /// `powi` with a literal exponent, as optimised code computes it.
+    macro_rules! literal_powi {
+        ($x:expr, $n:expr, [$($k:literal),*]) => {
+            match $n {
+                $($k => $x.powi($k),)*
+                _ => f64::NAN,
+            }
+        };
+    }
+
+    #[test]
+    fn powi_gives_the_bits_of_f64_powi() {
+        for n in -9..=12 {
+            let mut b = Builder::new(1);
+            let v = b.powi(Val::Reg(0), n);
+            for x in xs() {
+                let tape = b.evaluate(&[x], v);
+                let runtime = x.powi(black_box(n));
+                let literal = literal_powi!(
+                    x,
+                    n,
+                    [
+                        -9, -8, -7, -6, -5, -4, -3, -2, -1, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11,
+                        12
+                    ]
+                );
+                assert_eq!(
+                    tape.to_bits(),
+                    runtime.to_bits(),
+                    "{x}^{n} (run-time exponent)"
+                );
+                assert_eq!(
+                    tape.to_bits(),
+                    literal.to_bits(),
+                    "{x}^{n} (literal exponent)"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn powf_by_a_constant_is_what_optimised_code_computes() {
+        for y in [-1.0, 0.0, 1.0, 2.0, 0.5, 1.5, -0.5] {
+            let mut b = Builder::new(1);
+            let v = b.powf(Val::Reg(0), Val::Const(y));
+            for x in xs().chain([f64::NEG_INFINITY, -0.0, 0.0, f64::INFINITY]) {
+                let tape = b.evaluate(&[x], v);
+                let compiled = match y {
+                    -1.0 => x.powf(-1.0),
+                    0.0 => x.powf(0.0),
+                    1.0 => x.powf(1.0),
+                    2.0 => x.powf(2.0),
+                    0.5 => x.powf(0.5),
+                    1.5 => x.powf(1.5),
+                    _ => x.powf(-0.5),
+                };
+                let same =
+                    tape.to_bits() == compiled.to_bits() || tape.is_nan() && compiled.is_nan();
+                assert!(
+                    same,
+                    "{x}.powf({y}): {tape} on the tape, {compiled} compiled"
+                );
+            }
+        }
+        for base in [2.0, 4.0, 0.5, 0.125, 3.0, 10.0] {
+            let mut b = Builder::new(1);
+            let v = b.powf(Val::Const(base), Val::Reg(0));
+            for x in xs() {
+                let tape = b.evaluate(&[x], v);
+                let compiled = match base {
+                    2.0 => 2f64.powf(x),
+                    4.0 => 4f64.powf(x),
+                    0.5 => 0.5f64.powf(x),
+                    0.125 => 0.125f64.powf(x),
+                    3.0 => 3f64.powf(x),
+                    _ => 10f64.powf(x),
+                };
+                assert_eq!(tape.to_bits(), compiled.to_bits(), "{base}.powf({x})");
+            }
+        }
+    }
+
+    #[test]
+    fn constants_fold_as_llvm_folds_them() {
+        let mut b = Builder::new(0);
+        let c = std::f64::consts::SQRT_2;
+        let Val::Const(folded) = b.powi(Val::Const(c), 5) else {
+            panic!("a constant's power is a constant");
+        };
+        assert_eq!(folded.to_bits(), c.powf(5.0).to_bits());
+        assert_eq!(folded.to_bits(), std::f64::consts::SQRT_2.powi(5).to_bits());
+        assert!(b.ops.is_empty());
+    }
 
     #[test]
     fn the_bases_llvm_turns_into_exp2() {

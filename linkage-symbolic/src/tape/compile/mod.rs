@@ -142,3 +142,118 @@ fn compile_named(
     )
     .map_err(|e| named(CompileError::new(e.to_string())))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::tape::{Form, Registers};
+
+    /// The worksheet's four-bar, built from its text.
+    fn fourbar() -> Derivatives {
+        let attr = "u = [theta3, theta4], v = [theta2],
+            points = [
+                B = (l2 * theta2.cos(), l2 * theta2.sin()),
+                C = (B.x + l3 * theta3.cos(), B.y + l3 * theta3.sin()),
+            ],
+            closure = [
+                l2 * theta2.cos() + l3 * theta3.cos() + l4 * theta4.cos() - l1,
+                l2 * theta2.sin() + l3 * theta3.sin() + l4 * theta4.sin(),
+            ]";
+        let item = "pub struct FourBar { pub l1: f64, pub l2: f64, pub l3: f64, pub l4: f64 }";
+        let mut errors = crate::errors::Errors::default();
+        let input = crate::ast::Input::parse(
+            attr.parse().expect("tokens"),
+            item.parse().expect("tokens"),
+            &mut errors,
+        )
+        .expect("a struct");
+        match crate::build(&input, &mut errors) {
+            Ok(model) => model,
+            Err(_) => panic!("{:?}", errors.combined()),
+        }
+    }
+
+    #[test]
+    fn kinematics_runs_in_two_phases_sharing_its_registers() {
+        let model = fourbar();
+        let tapes = Tapes::build(&model).expect("every kernel compiles");
+        for kernel in Kernel::ALL {
+            let phases = tapes.get(kernel).phases();
+            let expected = if matches!(kernel, Kernel::Kinematics { .. }) {
+                2
+            } else {
+                1
+            };
+            assert_eq!(phases, expected, "{}", kernel.name());
+        }
+        let tape = tapes.get(Kernel::Kinematics { with_trig: false });
+        let names =
+            |phase: usize| -> Vec<&str> { tape.parts(phase).iter().map(|p| p.name).collect() };
+        assert_eq!(names(0), ["psi", "psi_u", "psi_v"]);
+        assert_eq!(names(1), ["gamma"]);
+        assert!(tape.parts(0).iter().all(|p| p.form == Form::Matrix));
+        // γ = −l3·cos θ3·θ̇3² − …: it reads the u̇ written between phases.
+        let mut r: Registers = tape.registers();
+        r.set(Input::U, &[0.3, 1.2]).unwrap();
+        r.set(Input::V, &[0.5]).unwrap();
+        r.set(Input::Vdot, &[1.0]).unwrap();
+        r.set(Input::Fields, &[4.0, 1.0, 3.0, 2.5]).unwrap();
+        let mut first = vec![0.0; tape.outputs(0)];
+        tape.run(0, &mut r, &mut first).unwrap();
+        // Phase 1 twice, at two velocities, after one phase 0: the
+        // registers of phase 0 it reads stay.
+        let mut gamma = [[0.0; 2]; 2];
+        for (k, udot) in [[0.0, 0.0], [2.0, -1.0]].iter().enumerate() {
+            r.set(Input::Udot, udot).unwrap();
+            tape.run(1, &mut r, &mut gamma[k]).unwrap();
+        }
+        assert_ne!(gamma[0], gamma[1]);
+        let expected = -3.0 * 0.3_f64.cos() * 4.0 - 2.5 * 1.2_f64.cos() - 0.5_f64.cos();
+        assert!((gamma[1][0] - expected).abs() < 1e-12, "{gamma:?}");
+    }
+
+    #[test]
+    fn the_sines_and_cosines_given_replace_the_calls() {
+        let model = fourbar();
+        let computed = compile(&model, Kernel::Kinematics { with_trig: false }).unwrap();
+        let given = compile(&model, Kernel::Kinematics { with_trig: true }).unwrap();
+        let calls = |t: &Tape| {
+            t.ops()
+                .iter()
+                .filter(|op| op.code == crate::tape::Code::SinCos)
+                .count()
+        };
+        assert_eq!(calls(&computed), 3);
+        assert_eq!(calls(&given), 0);
+        assert_eq!(given.trig_coords(), [0, 1, 2]);
+        assert!(computed.trig_coords().is_empty());
+    }
+
+    #[test]
+    fn registers_are_reused_and_nothing_unread_is_computed() {
+        let model = fourbar();
+        let tape = compile(&model, Kernel::SensitivityTerms { with_trig: false }).unwrap();
+        let first_temporary = tape.slots().total() + tape.constants().len();
+        let temporaries = tape.register_count() - first_temporary;
+        assert!(
+            temporaries < tape.len(),
+            "{temporaries} registers for {} operations",
+            tape.len()
+        );
+        // Every result is read by a later operation or is an output.
+        let outputs: Vec<u32> = (0..tape.phases())
+            .flat_map(|p| tape.phase(p).map(|p| p.outputs.clone()).unwrap_or_default())
+            .collect();
+        for (k, op) in tape.ops().iter().enumerate() {
+            for w in op.writes() {
+                let read_later = tape.ops()[k + 1..]
+                    .iter()
+                    .any(|later| later.reads().any(|r| r == w));
+                assert!(
+                    read_later || outputs.contains(&w),
+                    "operation {k} ({op:?}) unread"
+                );
+            }
+        }
+    }
+}

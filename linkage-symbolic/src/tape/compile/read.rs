@@ -9,10 +9,10 @@
 use super::CompileError;
 use super::builder::{Builder, Val};
 use crate::dag::Constant;
+use crate::hasher::FastMap;
 use crate::tape::op::Code;
 use crate::tape::slots::Input;
 use proc_macro2::{Delimiter, Group, Ident, Literal, TokenStream, TokenTree};
-use std::collections::HashMap;
 
 /// A value of the emitted code.
 #[derive(Clone, Debug)]
@@ -35,13 +35,13 @@ enum Pattern {
 pub(super) struct Reader<'b> {
     builder: &'b mut Builder,
     /// The bindings of the statements read so far.
-    env: HashMap<String, Value>,
+    env: FastMap<String, Value>,
     /// The argument vectors by name.
-    arrays: HashMap<String, Input>,
+    arrays: FastMap<String, Input>,
     /// The struct's `f64` fields by name: their registers.
-    fields: HashMap<String, u32>,
+    fields: FastMap<String, u32>,
     /// Where each input's registers start.
-    starts: HashMap<Input, (u32, usize)>,
+    starts: FastMap<Input, (u32, usize)>,
 }
 
 type Result<T> = std::result::Result<T, CompileError>;
@@ -129,6 +129,20 @@ impl<'b> Reader<'b> {
         }
         self.builder.end_phase(values);
         Ok(())
+    }
+
+    /// The value of an expression (a test's look at what was read).
+    #[cfg(test)]
+    fn value(&mut self, expression: &str) -> Result<Val> {
+        let tokens: Vec<TokenTree> = expression
+            .parse::<TokenStream>()
+            .map_err(|e| CompileError::new(e.to_string()))?
+            .into_iter()
+            .collect();
+        let mut c = Cursor::new(&tokens);
+        let value = self.expr(&mut c)?;
+        c.end()?;
+        number(value)
     }
 
     fn bind(&mut self, pattern: Pattern, value: Value) -> Result<()> {
@@ -481,6 +495,114 @@ impl<'t> Cursor<'t> {
         match self.peek() {
             None => Ok(()),
             Some(t) => error(format_args!("unexpected `{t}`")),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::tape::slots::Slots;
+
+    const SLOTS: Slots = Slots {
+        m: 2,
+        f: 1,
+        fields: 2,
+    };
+
+    /// Reads the statements, then the expression, and evaluates it at
+    /// inputs 1, 2, 3, … in slot order (u = (1, 2), v = 3, …, the fields
+    /// `a` and `b` last).
+    fn read(statements: &[&str], expression: &str) -> Result<f64> {
+        let mut builder = Builder::new(SLOTS.total());
+        let start = |i: Input| SLOTS.range(i).start as u32;
+        let inputs = Input::ALL.map(|i| (i, start(i), SLOTS.len(i)));
+        let fields = [
+            ("a".to_owned(), start(Input::Fields)),
+            ("b".to_owned(), start(Input::Fields) + 1),
+        ];
+        let late = [("theta3_dot".to_owned(), start(Input::Udot))];
+        let trig = ["trig_u".to_owned(), "trig_v".to_owned()];
+        let mut reader = Reader::new(&mut builder, inputs, trig, fields, late);
+        for s in statements {
+            let tokens: TokenStream = s
+                .parse()
+                .map_err(|e: proc_macro2::LexError| CompileError::new(e.to_string()))?;
+            reader.statement(&tokens)?;
+        }
+        let v = reader.value(expression)?;
+        drop(reader);
+        let values: Vec<f64> = (1..=SLOTS.total()).map(|k| k as f64).collect();
+        Ok(builder.evaluate(&values, v))
+    }
+
+    fn inputs() -> (f64, f64, f64, f64) {
+        let total = SLOTS.total() as f64;
+        (1.0, 2.0, total - 1.0, total)
+    }
+
+    #[test]
+    fn rusts_precedence_and_associativity() {
+        let (x, y, a, b) = inputs();
+        let lets = [
+            "let (x, y) = (u[0], u[1]);",
+            "let Self { a, b, .. } = *self;",
+        ];
+        let cases: [(&str, f64); 7] = [
+            ("-x.powi(2)", -(x * x)),
+            ("(-x).powi(2)", x * x),
+            ("-a * b", -a * b),
+            ("a - b - x", a - b - x),
+            ("a / b * y", a / b * y),
+            ("x + y * a - b / x", x + y * a - b / x),
+            ("-(a - b) * x.sqrt()", -(a - b) * x.sqrt()),
+        ];
+        for (expression, expected) in cases {
+            let value = read(&lets, expression).expect("a form the emitter writes");
+            assert_eq!(value.to_bits(), expected.to_bits(), "{expression}");
+        }
+    }
+
+    #[test]
+    fn tuples_fields_indices_paths_and_late_names() {
+        let u = |k: usize| (SLOTS.range(Input::U).start + k + 1) as f64;
+        let trig_u1 = SLOTS.range(Input::TrigU).start + 2;
+        let (s, c) = ((trig_u1 + 1) as f64, (trig_u1 + 2) as f64);
+        let cos_v = (SLOTS.range(Input::TrigV).start + 2) as f64;
+        let udot = (SLOTS.range(Input::Udot).start + 1) as f64;
+        let lets = [
+            "let (s, c) = trig_u[1];",
+            "let q = trig_v[0].1;",
+            "let (t, w) = u[0].sin_cos();",
+        ];
+        let value = read(
+            &lets,
+            "s * c + q - t * w + ::core::f64::consts::PI * theta3_dot",
+        )
+        .expect("a form the emitter writes");
+        let (t, w) = u(0).sin_cos();
+        let expected = s * c + cos_v - t * w + std::f64::consts::PI * udot;
+        assert_eq!(value.to_bits(), expected.to_bits());
+    }
+
+    #[test]
+    fn a_form_the_emitter_does_not_write_is_an_error() {
+        for (statements, expression) in [
+            (vec!["let x = u[5];"], "x"),
+            (vec!["let x = u[0].cbrt();"], "x"),
+            (vec![], "zz"),
+            (vec!["let mut x = u[0];"], "x"),
+            (vec!["let (x, y) = u[0];"], "x"),
+            (vec!["let x = u[0]"], "x"),
+            (vec![], "u[0].powi(u[1])"),
+            (vec![], "::core::f64::consts::NOT_A_CONSTANT"),
+            (vec![], "u"),
+            (vec![], "u[0] u[1]"),
+        ] {
+            assert!(
+                read(&statements, expression).is_err(),
+                "{statements:?} then `{expression}` accepted"
+            );
         }
     }
 }
