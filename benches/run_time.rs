@@ -1,0 +1,438 @@
+//! Criterion benchmarks of run-time mechanisms against compiled ones: each
+//! benchmark mechanism (the worksheet's four-bar, the offset slider-crank,
+//! the two-loop six-bar, and a chain of 32 four-bar loops) compiled by the
+//! attribute and read at run time from the same attribute text with the
+//! same parameter values ([`linkage::mechanism::Mechanism::from_text`],
+//! seen at its sizes with `fixed`), side by side in one group, compiled
+//! then run-time for each row: Ψ and Ψ_u in one pass, the fused kernel, a
+//! whole analysis at one pose (warm), and a sweep over a revolution (its
+//! time per pose as criterion's throughput in elements). Then the time
+//! from text to a ready mechanism (read, lowered, differentiated, every
+//! tape built) for the four-bar and chains of N = 1 … 32 loops, and its
+//! two stages apart (`text::build`, `Tapes::build`).
+//!
+//!     cargo bench --bench run_time               # all
+//!     cargo bench --bench run_time -- four-bar   # one mechanism
+//!     cargo bench --bench run_time -- from_text  # text to a ready mechanism
+
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use linkage::mechanism::{Fixed, Mechanism};
+use linkage::prelude::*;
+use linkage_symbolic::plan::Kernel;
+use linkage_symbolic::tape::{self, Tapes};
+use linkage_symbolic::text::{self, Equations, Parameter};
+use std::hint::black_box;
+use std::time::Duration;
+
+#[path = "../examples/speed_accuracy/workloads.rs"]
+mod workloads;
+use workloads::{FOUR_BAR, SIX_BAR, SLIDER_CRANK};
+
+#[path = "run_time/chain.rs"]
+mod chain;
+
+/// Poses of the benchmarked sweeps: one revolution of the crank.
+const SWEEP_STEPS: usize = 10_000;
+
+/// The chain's parameters: every loop the worksheet's crank-rocker, its
+/// coupler point 30 from B at 0.5 rad, each crank keyed 0.3 rad past the
+/// previous rocker.
+const CHAIN_PARAMETERS: [(&str, f64); 7] = [
+    ("l1", 80.0),
+    ("l2", 20.0),
+    ("l3", 50.0),
+    ("l4", 70.0),
+    ("e", 30.0),
+    ("beta", 0.5),
+    ("delta", 0.3),
+];
+
+const CHAIN: chain::Chain = chain::Chain {
+    l1: 80.0,
+    l2: 20.0,
+    l3: 50.0,
+    l4: 70.0,
+    e: 30.0,
+    beta: 0.5,
+    delta: 0.3,
+};
+
+/// The text inside `#[...linkage(` … `)]` of the struct `name` in `source`.
+fn attribute_of(source: &str, name: &str) -> String {
+    let at = source
+        .find(&format!("pub struct {name} "))
+        .unwrap_or_else(|| panic!("no struct {name}"));
+    let start = source[..at].rfind("linkage(").expect("an attribute") + "linkage(".len();
+    let mut depth = 0;
+    for (k, c) in source[start..at].char_indices() {
+        match c {
+            '(' | '[' | '{' => depth += 1,
+            ')' if depth == 0 => return source[start..start + k].to_owned(),
+            ')' | ']' | '}' => depth -= 1,
+            _ => {}
+        }
+    }
+    panic!("the attribute of {name} does not end")
+}
+
+/// The run-time twin of a compiled mechanism: its attribute text read at
+/// run time, with the compiled mechanism's parameter values.
+fn twin<L, const M: usize, const K: usize>(compiled: &L, source: &str, name: &str) -> Fixed<M, 1>
+where
+    L: Sensitivities<M, 1, K>,
+{
+    let values = compiled.params();
+    let parameters: Vec<(&str, f64)> = (compiled.param_names().iter().copied())
+        .zip(values.iter().copied())
+        .collect();
+    Mechanism::from_text(name, &attribute_of(source, name), &parameters)
+        .unwrap_or_else(|e| panic!("{name} reads at run time: {e}"))
+        .fixed::<M, 1>()
+        .expect("the compiled sizes")
+}
+
+/// N four-bar loops in a chain, as `linkage-macros/examples/expansion_cost.rs`
+/// writes them: the crank of loop k is keyed to the rocker of loop k − 1
+/// (at the angle `delta`), its ground pivots shifted along x; each loop
+/// has a coupler point. m = 2N.
+fn chain_text(n: usize) -> String {
+    let mut u = Vec::new();
+    let mut points = Vec::new();
+    let mut closure = Vec::new();
+    for k in 1..=n {
+        u.push(format!("a{k}"));
+        u.push(format!("b{k}"));
+        let crank = if k == 1 {
+            "t".to_owned()
+        } else {
+            format!("(b{} + delta)", k - 1)
+        };
+        let x0 = format!("{}.0 * l1", k - 1);
+        points.push(format!(
+            "P{k} = ({x0} + l2 * {crank}.cos() + e * (a{k} + beta).cos(), l2 * {crank}.sin() + e * (a{k} + beta).sin())"
+        ));
+        closure.push(format!(
+            "l2 * {crank}.cos() + l3 * a{k}.cos() + l4 * b{k}.cos() - l1"
+        ));
+        closure.push(format!(
+            "l2 * {crank}.sin() + l3 * a{k}.sin() + l4 * b{k}.sin()"
+        ));
+    }
+    format!(
+        "u = [{}], v = [t], points = [{}], closure = [{}]",
+        u.join(", "),
+        points.join(", "),
+        closure.join(", ")
+    )
+}
+
+/// A text without its layout: no white space, no trailing commas.
+fn tokens_of(text: &str) -> String {
+    let bare: String = text.chars().filter(|c| !c.is_whitespace()).collect();
+    bare.replace(",]", "]")
+        .replace(",)", ")")
+        .trim_end_matches(',')
+        .to_owned()
+}
+
+/// The chain's pose at crank angle `t`, loop by loop from the closed form
+/// (the branch of the four-bar's benchmarks).
+fn chain_pose<const M: usize>(t: f64) -> SVector<f64, M> {
+    let four_bar = linkage::closed_form::FourBar {
+        l1: CHAIN.l1,
+        l2: CHAIN.l2,
+        l3: CHAIN.l3,
+        l4: CHAIN.l4,
+    };
+    let mut u = SVector::<f64, M>::zeros();
+    let mut crank = t;
+    for k in 0..M / 2 {
+        let [a, b] = four_bar.position(crank, 1.0).expect("a crank-rocker turns");
+        u[2 * k] = a;
+        u[2 * k + 1] = b;
+        crank = b + CHAIN.delta;
+    }
+    u
+}
+
+/// A converged pose at θ2 = 20° (from a sweep, so on the benchmarks'
+/// branch).
+fn pose<L: Linkage<M, 1>, const M: usize>(
+    model: &L,
+    u0: &SVector<f64, M>,
+) -> (SVector<f64, M>, SVector<f64, 1>) {
+    let v = vector![20f64.to_radians()];
+    let drive = Drive::Line {
+        from: vector![0.0],
+        to: v,
+        steps: 200,
+    };
+    let sweep = model
+        .sweep(u0, &drive, &SweepOptions::default())
+        .expect("the benchmark mechanisms sweep");
+    (sweep.poses.last().expect("poses").u, v)
+}
+
+/// The revolution every sweep follows.
+fn revolution() -> Drive<1> {
+    Drive::Line {
+        from: vector![0.0],
+        to: vector![std::f64::consts::TAU],
+        steps: SWEEP_STEPS,
+    }
+}
+
+/// The two follow the same poses, to the bit (a run-time twin runs the
+/// compiled code's operations): the benchmark compares equal work.
+fn same_sweep<A: Linkage<M, 1>, B: Linkage<M, 1>, const M: usize>(
+    name: &str,
+    compiled: &A,
+    run_time: &B,
+    u0: &SVector<f64, M>,
+) {
+    let options = SweepOptions::default();
+    let a = compiled.sweep(u0, &revolution(), &options).expect("sweeps");
+    let b = run_time.sweep(u0, &revolution(), &options).expect("sweeps");
+    assert!(
+        a.complete && b.complete,
+        "{name}: the revolution is followed"
+    );
+    assert_eq!(a.poses.len(), b.poses.len(), "{name}: the poses");
+    for (p, q) in a.poses.iter().zip(&b.poses) {
+        assert!(
+            p.u.iter()
+                .zip(q.u.iter())
+                .all(|(x, y)| x.to_bits() == y.to_bits()),
+            "{name}: the twin's sweep differs at step {}",
+            p.step
+        );
+    }
+}
+
+/// Which rows a mechanism is measured on.
+#[derive(Clone, Copy, PartialEq)]
+enum Rows {
+    /// Every row.
+    All,
+    /// The analysis and the sweep.
+    Analyses,
+}
+
+/// The benchmarks of one mechanism, compiled and run-time side by side;
+/// `u0` starts the sweeps at θ2 = 0.
+fn side_by_side<A: Linkage<M, 1>, B: Linkage<M, 1>, const M: usize>(
+    c: &mut Criterion,
+    name: &str,
+    compiled: &A,
+    run_time: &B,
+    u0: SVector<f64, M>,
+    rows: Rows,
+) {
+    let (u, v) = pose(compiled, &u0);
+    let vdot = vector![1.0];
+    let vddot = vector![0.0];
+    let options = Options::default();
+    let mut group = c.benchmark_group(name);
+    if rows == Rows::Analyses {
+        group.sample_size(10);
+    }
+    macro_rules! both {
+        ($row:expr, |$model:ident| $body:expr) => {
+            group.bench_function(BenchmarkId::new($row, "compiled"), |b| {
+                let $model = compiled;
+                b.iter(|| $body)
+            });
+            group.bench_function(BenchmarkId::new($row, "run-time"), |b| {
+                let $model = run_time;
+                b.iter(|| $body)
+            });
+        };
+    }
+    if rows == Rows::All {
+        both!("psi_and_psi_u", |model| model
+            .psi_and_psi_u(black_box(&u), black_box(&v)));
+        both!("kinematics", |model| model.kinematics(
+            black_box(&u),
+            black_box(&v),
+            &vdot,
+            &vddot
+        ));
+    }
+    // From the converged pose: one evaluation confirms it.
+    both!("analyze warm", |model| model
+        .analyze(black_box(&u), black_box(&v), &vdot, &vddot, &options)
+        .expect("regular pose"));
+    let drive = revolution();
+    let sweep_options = SweepOptions::default();
+    group.throughput(Throughput::Elements(SWEEP_STEPS as u64 + 1));
+    // Checked once, where the sweeps are measured (not when a filter
+    // leaves them out).
+    let mut checked = false;
+    group.bench_function(BenchmarkId::new("sweep 10000", "compiled"), |b| {
+        if !checked {
+            same_sweep(name, compiled, run_time, &u0);
+            checked = true;
+        }
+        b.iter(|| {
+            compiled
+                .sweep(black_box(&u0), &drive, &sweep_options)
+                .expect("the revolution sweeps")
+        })
+    });
+    group.bench_function(BenchmarkId::new("sweep 10000", "run-time"), |b| {
+        b.iter(|| {
+            run_time
+                .sweep(black_box(&u0), &drive, &sweep_options)
+                .expect("the revolution sweeps")
+        })
+    });
+    group.finish();
+}
+
+fn mechanisms(c: &mut Criterion) {
+    let source = include_str!("../examples/speed_accuracy/workloads.rs");
+    let four_bar = linkage::closed_form::FourBar {
+        l1: 80.0,
+        l2: 20.0,
+        l3: 50.0,
+        l4: 70.0,
+    }
+    .position(0.0, 1.0)
+    .expect("assembles");
+    side_by_side(
+        c,
+        "four-bar",
+        &FOUR_BAR,
+        &twin(&FOUR_BAR, source, "FourBar"),
+        vector![four_bar[0], four_bar[1]],
+        Rows::All,
+    );
+    // The starts of kernels.rs (near the reference data's, k = 0).
+    side_by_side(
+        c,
+        "slider-crank",
+        &SLIDER_CRANK,
+        &twin(&SLIDER_CRANK, source, "SliderCrank"),
+        vector![0.050_020_857, 0.249_749_844],
+        Rows::All,
+    );
+    side_by_side(
+        c,
+        "six-bar",
+        &SIX_BAR,
+        &twin(&SIX_BAR, source, "SixBar"),
+        vector![1.369_438_4, -0.775_193_4, 2.237_243_8, -3.043_485_2],
+        Rows::All,
+    );
+    let chain_source = include_str!("run_time/chain.rs");
+    let attribute = attribute_of(chain_source, "Chain");
+    assert_eq!(
+        tokens_of(&attribute),
+        tokens_of(&chain_text(32)),
+        "the compiled chain is the generator's"
+    );
+    let run_time = Mechanism::from_text("Chain", &attribute, &CHAIN_PARAMETERS)
+        .expect("the chain reads at run time")
+        .fixed::<64, 1>()
+        .expect("m = 64, f = 1");
+    side_by_side(
+        c,
+        "chain N = 32",
+        &CHAIN,
+        &run_time,
+        chain_pose::<64>(0.0),
+        Rows::Analyses,
+    );
+}
+
+/// From text to a ready mechanism: the four-bar (the attribute of
+/// `linkage::mechanisms::FourBar`, points and all) and chains of N loops.
+fn from_text(c: &mut Criterion) {
+    let four_bar = attribute_of(include_str!("../src/mechanisms.rs"), "FourBar");
+    let four_bar_parameters = [("l1", 80.0), ("l2", 20.0), ("l3", 50.0), ("l4", 70.0)];
+    let chains: Vec<(usize, String)> = [1, 2, 4, 8, 16, 32]
+        .into_iter()
+        .map(|n| (n, chain_text(n)))
+        .collect();
+    let mut group = c.benchmark_group("from_text");
+    group.sampling_mode(criterion::SamplingMode::Flat);
+    group.bench_function("four-bar (worksheet)", |b| {
+        b.iter(|| {
+            Mechanism::from_text("FourBar", black_box(&four_bar), &four_bar_parameters)
+                .expect("reads")
+        })
+    });
+    for (n, text) in &chains {
+        if *n >= 8 {
+            group.sample_size(10);
+        }
+        group.bench_function(BenchmarkId::new("chain", n), |b| {
+            b.iter(|| {
+                Mechanism::from_text("Chain", black_box(text), &CHAIN_PARAMETERS).expect("reads")
+            })
+        });
+    }
+    group.finish();
+
+    // The two stages apart: read, lowered and differentiated
+    // (`text::build`), then every kernel's tape (`Tapes::build`).
+    let mut group = c.benchmark_group("from_text stages");
+    group.sampling_mode(criterion::SamplingMode::Flat);
+    let names = |list: &[(&'static str, f64)]| -> Vec<Parameter<'static>> {
+        list.iter().map(|(n, _)| Parameter::new(n)).collect()
+    };
+    let cases = [
+        (
+            "four-bar (worksheet)",
+            four_bar.clone(),
+            names(&four_bar_parameters),
+        ),
+        ("chain 32", chains[5].1.clone(), names(&CHAIN_PARAMETERS)),
+    ];
+    for (what, text, parameters) in &cases {
+        if what.starts_with("chain") {
+            group.sample_size(10);
+        }
+        group.bench_function(BenchmarkId::new("text::build", what), |b| {
+            b.iter(|| text::build("M", Equations::new(black_box(text)), parameters).is_ok())
+        });
+        let built = text::build("M", Equations::new(text), parameters)
+            .unwrap_or_else(|_| panic!("{what} builds"));
+        group.bench_function(BenchmarkId::new("Tapes::build", what), |b| {
+            b.iter(|| Tapes::build(black_box(&built.derivatives)).is_ok())
+        });
+    }
+    group.finish();
+
+    // `Tapes::build` kernel by kernel (`tape::compile`), with each tape's
+    // length: where the second stage spends its time.
+    let mut group = c.benchmark_group("from_text kernels");
+    group.sampling_mode(criterion::SamplingMode::Flat);
+    group.warm_up_time(Duration::from_millis(200));
+    group.measurement_time(Duration::from_millis(500));
+    group.sample_size(10);
+    for (what, text, parameters) in &cases {
+        let built = text::build("M", Equations::new(text), parameters)
+            .unwrap_or_else(|_| panic!("{what} builds"));
+        for kernel in Kernel::ALL {
+            let ops = tape::compile(&built.derivatives, kernel)
+                .map(|t| t.len())
+                .unwrap_or(0);
+            let id = format!("{what}/{} ({ops} ops)", kernel.name());
+            group.bench_function(id, |b| {
+                b.iter(|| tape::compile(black_box(&built.derivatives), kernel).is_ok())
+            });
+        }
+    }
+    group.finish();
+}
+
+criterion_group! {
+    name = run_time;
+    config = Criterion::default()
+        .warm_up_time(Duration::from_millis(500))
+        .measurement_time(Duration::from_secs(2))
+        .sample_size(30);
+    targets = mechanisms, from_text
+}
+criterion_main!(run_time);
