@@ -21,10 +21,15 @@ use std::sync::Arc;
 /// named points: made by [`Mechanism::fixed`](super::Mechanism::fixed),
 /// which checks the sizes. Cheap to clone (the tapes are shared).
 #[derive(Clone, Debug)]
-pub struct Fixed<const M: usize, const F: usize, const P: usize = 32> {
+pub struct Fixed<const M: usize, const F: usize, const P: usize = 32, const K: usize = 0> {
     program: Arc<Program>,
     /// Every parameter's value, in the order the tapes read them.
     fields: Vec<f64>,
+    /// The parameters differentiated by, column by column of the
+    /// sensitivities (at most `K`; the columns after them are zero): each
+    /// one's column in the sensitivity tapes, which differentiate by every
+    /// parameter p of the mechanism.
+    columns: Vec<usize>,
     u_names: [&'static str; M],
     v_names: [&'static str; F],
     trig_u: [bool; M],
@@ -73,10 +78,15 @@ fn flat<const N: usize>(pairs: &[(f64, f64); N]) -> [[f64; 2]; N] {
     pairs.map(|(s, c)| [s, c])
 }
 
-impl<const M: usize, const F: usize, const P: usize> Fixed<M, F, P> {
-    /// The view of `program` with these parameter values; the caller has
-    /// checked the sizes.
-    pub(crate) fn new(program: Arc<Program>, fields: Vec<f64>) -> Fixed<M, F, P> {
+impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F, P, K> {
+    /// The view of `program` with these parameter values, differentiated
+    /// by the parameters of `columns` (see [`Fixed::columns`]); the caller
+    /// has checked the sizes.
+    pub(crate) fn new(
+        program: Arc<Program>,
+        fields: Vec<f64>,
+        columns: Vec<usize>,
+    ) -> Fixed<M, F, P, K> {
         let array = |names: &[&'static str], k: usize| names.get(k).copied().unwrap_or("");
         let (trig_u, trig_v) = program.trig_flags(Kernel::Kinematics { with_trig: true });
         Fixed {
@@ -86,6 +96,7 @@ impl<const M: usize, const F: usize, const P: usize> Fixed<M, F, P> {
             trig_v: std::array::from_fn(|k| trig_v.get(k).copied().unwrap_or(false)),
             program,
             fields,
+            columns,
         }
     }
 
@@ -244,7 +255,9 @@ fn unevaluated<const M: usize, const F: usize>() -> Kinematics<M, F> {
     }
 }
 
-impl<const M: usize, const F: usize, const P: usize> Kernels<M, F> for Fixed<M, F, P> {
+impl<const M: usize, const F: usize, const P: usize, const K: usize> Kernels<M, F>
+    for Fixed<M, F, P, K>
+{
     type Points = PointSet<P>;
 
     fn u_names(&self) -> [&'static str; M] {
@@ -462,7 +475,10 @@ impl<const M: usize, const F: usize, const P: usize> Kernels<M, F> for Fixed<M, 
     }
 }
 
-impl<const M: usize, const F: usize, const P: usize> Linkage<M, F> for Fixed<M, F, P> {}
+impl<const M: usize, const F: usize, const P: usize, const K: usize> Linkage<M, F>
+    for Fixed<M, F, P, K>
+{
+}
 
 /// The inputs of a kernel of a pose in motion.
 fn motion<'a, const M: usize, const F: usize>(

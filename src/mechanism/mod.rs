@@ -212,6 +212,10 @@ impl Mechanism {
         if points > P {
             return Err(MechanismError::TooManyPoints { points, most: P });
         }
-        Ok(Fixed::new(self.program.clone(), self.fields.clone()))
+        Ok(Fixed::new(
+            self.program.clone(),
+            self.fields.clone(),
+            Vec::new(),
+        ))
     }
 }
