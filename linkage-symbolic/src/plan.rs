@@ -144,6 +144,38 @@ impl Kernel {
         Kernel::SensitivityTerms { with_trig: true },
     ];
 
+    /// Its place in [`Kernel::ALL`], without a search (`None` for a formula
+    /// only the sensitivities' kernel computes, which has no function of
+    /// its own).
+    pub fn index(self) -> Option<usize> {
+        let k = match self {
+            Kernel::Formula(Formula::Psi) => 0,
+            Kernel::Formula(Formula::PsiQ) => 1,
+            Kernel::Formula(Formula::PsiU) => 2,
+            Kernel::Formula(Formula::PsiV) => 3,
+            Kernel::PsiAndPsiU => 4,
+            Kernel::Formula(Formula::PsiUUdotU) => 5,
+            Kernel::Formula(Formula::PsiUUdotV) => 6,
+            Kernel::Formula(Formula::PsiVVdotU) => 7,
+            Kernel::Formula(Formula::PsiVVdotV) => 8,
+            Kernel::Formula(Formula::PsiUDot) => 9,
+            Kernel::Formula(Formula::PsiVDot) => 10,
+            Kernel::Formula(Formula::Gamma) => 11,
+            Kernel::Points(0) => 12,
+            Kernel::Points(1) => 13,
+            Kernel::Points(_) => 14,
+            Kernel::Kinematics { with_trig: false } => 15,
+            Kernel::Kinematics { with_trig: true } => 16,
+            Kernel::Formula(Formula::PsiP) => 17,
+            Kernel::SensitivityTerms { with_trig: false } => 18,
+            Kernel::SensitivityTerms { with_trig: true } => 19,
+            Kernel::Formula(Formula::PsiPDot | Formula::PsiUDdot | Formula::PsiPDdot) => {
+                return None;
+            }
+        };
+        Some(k)
+    }
+
     /// The generated function's name.
     pub fn name(self) -> &'static str {
         match self {
@@ -376,5 +408,20 @@ fn point_columns_part(
             entries,
         },
         roots,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_kernel_knows_its_place() {
+        for (k, kernel) in Kernel::ALL.into_iter().enumerate() {
+            assert_eq!(kernel.index(), Some(k), "{}", kernel.name());
+        }
+        for inside in [Formula::PsiPDot, Formula::PsiUDdot, Formula::PsiPDdot] {
+            assert_eq!(Kernel::Formula(inside).index(), None);
+        }
     }
 }

@@ -211,6 +211,31 @@ impl Tape {
         Ok(())
     }
 
+    /// Runs a phase on one lane and writes output k to `out[places[k]]`:
+    /// straight into a result laid out as its reader reads it (a matrix
+    /// column by column, say), whose other entries are left as they are
+    /// (a place outside `out` is skipped).
+    pub fn run_to(
+        &self,
+        phase: usize,
+        registers: &mut Registers,
+        out: &mut [f64],
+        places: &[u32],
+    ) -> Result<(), TapeError> {
+        let outputs = self.check(phase, registers.tape, places.len())?;
+        let values = &mut registers.values;
+        self.execute(phase, values);
+        // A power of two (see `execute`): the outputs, inside the file,
+        // read through its mask.
+        let mask = values.len().wrapping_sub(1);
+        for (&place, &r) in places.iter().zip(outputs) {
+            if let Some(o) = out.get_mut(place as usize) {
+                *o = values[r as usize & mask][0];
+            }
+        }
+        Ok(())
+    }
+
     /// Runs a phase on every lane: `out[k][l]` is output k of lane l.
     pub fn run_lanes<const L: usize>(
         &self,
@@ -266,6 +291,7 @@ impl Tape {
 
 impl<const L: usize> Registers<L> {
     /// Writes an input on one lane.
+    #[inline]
     pub fn set_lane(&mut self, input: Input, lane: usize, values: &[f64]) -> Result<(), TapeError> {
         let range = self.slots.range(input);
         if values.len() != range.len() {
@@ -287,6 +313,7 @@ impl<const L: usize> Registers<L> {
 
 impl Registers<1> {
     /// Writes an input.
+    #[inline]
     pub fn set(&mut self, input: Input, values: &[f64]) -> Result<(), TapeError> {
         self.set_lane(input, 0, values)
     }
@@ -354,6 +381,28 @@ mod tests {
         let mut second = [0.0];
         tape.run(1, &mut r, &mut second).unwrap();
         assert_eq!(second, [-1.5 * (0.7 * 3.0 + 2.0)]);
+    }
+
+    #[test]
+    fn outputs_go_to_their_places() {
+        let tape = example();
+        let mut r = tape.registers::<1>();
+        r.set(Input::U, &[0.7]).unwrap();
+        r.set(Input::Fields, &[3.0]).unwrap();
+        let mut listed = [0.0; 3];
+        tape.run(0, &mut r, &mut listed).unwrap();
+        // Backwards, one place left alone and one outside.
+        let mut placed = [-1.0; 4];
+        tape.run_to(0, &mut r, &mut placed, &[2, 1, 9]).unwrap();
+        assert_eq!(placed, [-1.0, listed[1], listed[0], -1.0]);
+        assert_eq!(
+            tape.run_to(0, &mut r, &mut placed, &[0]),
+            Err(TapeError::OutputLength {
+                phase: 0,
+                expected: 3,
+                found: 1
+            })
+        );
     }
 
     #[test]

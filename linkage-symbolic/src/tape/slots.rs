@@ -55,6 +55,7 @@ pub struct Slots {
 
 impl Slots {
     /// How many values an input has.
+    #[inline]
     pub fn len(self, input: Input) -> usize {
         match input {
             Input::U | Input::Udot | Input::Uddot => self.m,
@@ -67,6 +68,7 @@ impl Slots {
 
     /// The registers of an input: after those of the inputs before it in
     /// [`Input::ALL`] (u, v, u̇, v̇, ü, v̈: m + f each; then 2m, 2f).
+    #[inline]
     pub fn range(self, input: Input) -> Range<usize> {
         let (m, f) = (self.m, self.f);
         let start = match input {

@@ -70,8 +70,7 @@ impl Tapes {
 
     /// The tape of a kernel.
     pub fn get(&self, kernel: Kernel) -> &Tape {
-        let k = Kernel::ALL.iter().position(|&k| k == kernel).unwrap_or(0);
-        &self.tapes[k]
+        &self.tapes[kernel.index().unwrap_or(0)]
     }
 }
 
