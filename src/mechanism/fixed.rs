@@ -12,7 +12,7 @@ use crate::mechanism::program::Program;
 use crate::mechanism::scratch;
 use crate::runtime::{Inverse, Kernels, Kinematics, Linkage, invert};
 use linkage_symbolic::plan::{Formula, Kernel};
-use linkage_symbolic::tape::{Form, Input, Part, Registers};
+use linkage_symbolic::tape::{Input, Registers};
 use nalgebra::{SMatrix, SVector, Vector2};
 use num_dual::DualNum;
 use std::sync::Arc;
@@ -36,36 +36,23 @@ pub struct Fixed<const M: usize, const F: usize, const P: usize = 32, const K: u
     trig_v: [bool; F],
 }
 
-/// A matrix of a result from its part's outputs (every other entry zero).
-fn matrix<const R: usize, const C: usize>(
-    part: Option<&Part>,
-    values: &[f64],
-) -> SMatrix<f64, R, C> {
-    let mut out = SMatrix::<f64, R, C>::zeros();
-    if let Some(part) = part {
-        for (&(i, j), &x) in part.entries.iter().zip(values) {
-            if i < R && j < C {
-                out[(i, j)] = x;
-            }
-        }
+/// The R × C matrix of a result laid out by [`KernelTape`] that starts
+/// at `start` (NaN where the result is shorter: a tape that did not run).
+///
+/// [`KernelTape`]: crate::mechanism::kernel_tape::KernelTape
+fn block<const R: usize, const C: usize>(result: &[f64], start: usize) -> SMatrix<f64, R, C> {
+    // Sliced to a length known at compile time: copied in line.
+    match result.get(start..).and_then(|rest| rest.get(..R * C)) {
+        Some(entries) => SMatrix::from_column_slice(entries),
+        None => SMatrix::repeat(f64::NAN),
     }
-    out
-}
-
-/// Splits a phase's outputs into its parts' shares.
-fn shares<'a>(parts: &'a [Part], values: &'a [f64]) -> impl Iterator<Item = (&'a Part, &'a [f64])> {
-    let mut start = 0;
-    parts.iter().map(move |part| {
-        let end = (start + part.entries.len()).min(values.len());
-        let share = &values[start.min(end)..end];
-        start = end;
-        (part, share)
-    })
 }
 
 /// Writes an input; a program's tapes have the sizes the view checked, so
 /// this cannot fail (a failure leaves the input as it was, and the
-/// runtime's checks report what comes of it).
+/// runtime's checks report what comes of it). In line, so that the
+/// input's length is known where it is copied.
+#[inline(always)]
 fn set(registers: &mut Registers, input: Input, values: &[f64]) {
     let _ = registers.set(input, values);
 }
@@ -116,27 +103,31 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
     }
 
     /// Runs one phase-0 kernel with the inputs `inputs` written, and hands
-    /// its parts' shares to `read`.
+    /// its result, laid out by [`KernelTape`], to `read` (an empty result
+    /// if the tape could not run).
+    ///
+    /// [`KernelTape`]: crate::mechanism::kernel_tape::KernelTape
     fn run<R>(
         &self,
         kernel: Kernel,
         inputs: &[(Input, &[f64])],
-        read: impl FnOnce(&[Part], &[f64]) -> R,
+        read: impl FnOnce(&[f64]) -> R,
     ) -> R {
-        let (index, tape) = self.program.tape(kernel);
-        scratch::with_registers(self.program.id, index, tape, |registers, outputs| {
+        let Ok(kernel) = self.program.kernel(kernel) else {
+            return read(&[]);
+        };
+        scratch::with_registers(self.program.id, kernel, |registers, results| {
             set(registers, Input::Fields, &self.fields);
             for (input, values) in inputs {
                 set(registers, *input, values);
             }
-            let out = outputs
-                .get_mut(0)
-                .map(Vec::as_mut_slice)
-                .unwrap_or_default();
-            if tape.run(0, registers, out).is_err() {
-                out.fill(f64::NAN);
+            match results.first_mut() {
+                Some(result) => match kernel.run(0, registers, result) {
+                    Ok(()) => read(result),
+                    Err(_) => read(&[]),
+                },
+                None => read(&[]),
             }
-            read(tape.parts(0), out)
         })
     }
 
@@ -146,26 +137,26 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
         formula: Formula,
         inputs: &[(Input, &[f64])],
     ) -> SMatrix<f64, R, C> {
-        self.run(Kernel::Formula(formula), inputs, |parts, values| {
-            matrix(parts.first(), values)
-        })
+        self.run(Kernel::Formula(formula), inputs, |result| block(result, 0))
     }
 
-    /// A kernel of the points.
+    /// A kernel of the points (none to run if the mechanism has none).
     fn points(&self, level: usize, inputs: &[(Input, &[f64])]) -> PointSet<P> {
-        self.run(Kernel::Points(level), inputs, |parts, values| {
-            // The view was made only if its capacity holds every point.
-            let mut points = PointSet::<P>::clamped(self.program.point_names.len());
-            if let Some(part) = parts.first().filter(|p| p.form == Form::Points) {
-                let slots = points.as_mut();
-                for (&(i, c), &x) in part.entries.iter().zip(values) {
-                    if let Some(point) = slots.get_mut(i) {
-                        point[c.min(1)] = x;
-                    }
-                }
+        // The view was made only if its capacity holds every point.
+        let mut points = PointSet::<P>::clamped(self.program.point_names.len());
+        if points.is_empty() {
+            return points;
+        }
+        self.run(Kernel::Points(level), inputs, |result| {
+            let slots = points.as_mut();
+            if result.len() < 2 * slots.len() {
+                slots.fill(Vector2::repeat(f64::NAN));
             }
-            points
-        })
+            for (point, xy) in slots.iter_mut().zip(result.chunks_exact(2)) {
+                *point = Vector2::new(xy[0], xy[1]);
+            }
+        });
+        points
     }
 
     /// `kinematics`, the sines and cosines computed or given: phase 0
@@ -183,8 +174,10 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
         let kernel = Kernel::Kinematics {
             with_trig: trig.is_some(),
         };
-        let (index, tape) = self.program.tape(kernel);
-        scratch::with_registers(self.program.id, index, tape, |registers, outputs| {
+        let Ok(kernel) = self.program.kernel(kernel) else {
+            return unevaluated();
+        };
+        scratch::with_registers(self.program.id, kernel, |registers, results| {
             set(registers, Input::Fields, &self.fields);
             set(registers, Input::U, u.as_slice());
             set(registers, Input::V, v.as_slice());
@@ -193,16 +186,16 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
                 set(registers, Input::TrigU, flat(trig_u).as_flattened());
                 set(registers, Input::TrigV, flat(trig_v).as_flattened());
             }
-            let [first, second, ..] = outputs else {
+            let [first, second, ..] = results else {
                 return unevaluated();
             };
-            if tape.run(0, registers, first).is_err() {
-                first.fill(f64::NAN);
+            if kernel.run(0, registers, first).is_err() {
+                return unevaluated();
             }
-            let parts = tape.parts(0);
-            let psi: SVector<f64, M> = named(parts, first, "psi");
-            let psi_u: SMatrix<f64, M, M> = named(parts, first, "psi_u");
-            let psi_v: SMatrix<f64, M, F> = named(parts, first, "psi_v");
+            // The parts in the order the program checked: Ψ, Ψ_u, Ψ_v; γ.
+            let psi: SVector<f64, M> = block(first, kernel.start(0, 0));
+            let psi_u: SMatrix<f64, M, M> = block(first, kernel.start(0, 1));
+            let psi_v: SMatrix<f64, M, F> = block(first, kernel.start(0, 2));
             let Inverse {
                 inverse,
                 rcond,
@@ -210,10 +203,10 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
             } = invert(&psi_u);
             let udot = -(inverse * (psi_v * vdot));
             set(registers, Input::Udot, udot.as_slice());
-            if tape.run(1, registers, second).is_err() {
-                second.fill(f64::NAN);
-            }
-            let gamma: SVector<f64, M> = named(tape.parts(1), second, "gamma");
+            let gamma: SVector<f64, M> = match kernel.run(1, registers, second) {
+                Ok(()) => block(second, kernel.start(1, 0)),
+                Err(_) => SVector::repeat(f64::NAN),
+            };
             let uddot = -(inverse * (psi_v * vddot + gamma));
             Kinematics {
                 psi,
@@ -227,17 +220,6 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
             }
         })
     }
-}
-
-/// The matrix `name` of a phase's result.
-fn named<const R: usize, const C: usize>(
-    parts: &[Part],
-    values: &[f64],
-    name: &str,
-) -> SMatrix<f64, R, C> {
-    shares(parts, values)
-        .find(|(part, _)| part.name == name)
-        .map_or_else(SMatrix::zeros, |(part, share)| matrix(Some(part), share))
 }
 
 /// What a kernel gives when its tape could not run: not numbers, which
@@ -299,8 +281,9 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Kernels<M, 
         v: &SVector<f64, F>,
     ) -> (SVector<f64, M>, SMatrix<f64, M, M>) {
         let inputs = [(Input::U, u.as_slice()), (Input::V, v.as_slice())];
-        self.run(Kernel::PsiAndPsiU, &inputs, |parts, values| {
-            (named(parts, values, "psi"), named(parts, values, "psi_u"))
+        // The parts in the order the program checked: Ψ, Ψ_u.
+        self.run(Kernel::PsiAndPsiU, &inputs, |result| {
+            (block(result, 0), block(result, M))
         })
     }
 
@@ -443,11 +426,15 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Kernels<M, 
         uddot: &SVector<f64, M>,
         vddot: &SVector<f64, F>,
     ) -> PointSet<P> {
-        let mut inputs = motion(u, v, udot, vdot).to_vec();
-        inputs.extend([
+        let [u, v, udot, vdot] = motion(u, v, udot, vdot);
+        let inputs = [
+            u,
+            v,
+            udot,
+            vdot,
             (Input::Uddot, uddot.as_slice()),
             (Input::Vddot, vddot.as_slice()),
-        ]);
+        ];
         self.points(2, &inputs)
     }
 

@@ -44,6 +44,7 @@
 mod error;
 mod fixed;
 mod interned;
+mod kernel_tape;
 mod point_set;
 mod program;
 mod scratch;
@@ -93,7 +94,7 @@ impl Mechanism {
         values: &[f64],
     ) -> Result<Mechanism, MechanismError> {
         let built = linkage_symbolic::text::build(name, equations, parameters)?;
-        let program = Program::new(name, &built.derivatives)?;
+        let program = Program::new(name, equations.text, parameters, &built.derivatives)?;
         if values.len() != program.field_names.len() {
             return Err(MechanismError::Internal {
                 what: format!(
