@@ -2,16 +2,18 @@
 
 use crate::table::Format;
 use clap::{Args, Parser, Subcommand};
+use linkage::tolerance::Tolerance;
 use std::path::PathBuf;
 
 /// Planar mechanisms from their closure equations: a mechanism file
-/// checked, analysed, swept, drawn, and promoted to Rust.
+/// checked, analysed, swept, differentiated by its dimensions, toleranced,
+/// synthesized, drawn, and promoted to Rust.
 ///
 /// FILE is a mechanism file (TOML; see the guide's chapter on mechanism
 /// files), or `-` for standard input. Results go to standard output (or
 /// `--output`), messages to standard error.
 ///
-/// Exit status: 0 done; 1 the mechanism file has mistakes; 2 the command
+/// Exit status: 0 done; 1 the mechanism file (or a targets file) has mistakes; 2 the command
 /// line is wrong; 3 the analysis failed (the mechanism does not assemble,
 /// a singular pose, …); 4 a file could not be read or written.
 #[derive(Debug, Parser)]
@@ -33,6 +35,16 @@ pub enum Command {
     Sweep(Sweep),
     /// The extremes (and zeros) of quantities over the drive range.
     Extremes(Extremes),
+    /// The derivatives of the pose at the drivers' `at` (coordinates and
+    /// points, with their velocities and accelerations) by each parameter.
+    Sensitivities(SensitivitiesArgs),
+    /// How far tolerances on the parameters move quantities over the drive
+    /// range: the worst case, the root-sum-square and σ where each is
+    /// largest, with each parameter's share, and a Monte Carlo check.
+    Tolerance(ToleranceArgs),
+    /// Dimensions that make a point pass through targets, or a coordinate
+    /// take values at given drivers: every design found, certified.
+    Synthesize(SynthesizeArgs),
     /// Draws the mechanism at its `at` pose, with the paths its points
     /// trace over the drive range (SVG).
     Draw(Draw),
@@ -104,4 +116,140 @@ pub struct Draw {
     /// The picture's width in pixels.
     #[arg(long, default_value_t = 800.0)]
     pub width: f64,
+}
+
+#[derive(Debug, Args)]
+pub struct SensitivitiesArgs {
+    #[command(flatten)]
+    pub input: Input,
+    #[command(flatten)]
+    pub output: Output,
+    /// A parameter to differentiate by (repeat for more); every parameter
+    /// the mechanism is differentiated by when none is given.
+    #[arg(short, long = "param")]
+    pub params: Vec<String>,
+}
+
+#[derive(Debug, Args)]
+pub struct ToleranceArgs {
+    #[command(flatten)]
+    pub input: Input,
+    #[command(flatten)]
+    pub output: Output,
+    /// A tolerance: `l2=0.05` is ±0.05 (uniform in a Monte Carlo run),
+    /// `l2=normal:0.02` a normal spread of σ = 0.02; in the units the
+    /// engine uses (lengths in the file's `length_unit`, angles in
+    /// radians). The parameters not named are exact.
+    #[arg(short, long = "tolerance", value_parser = parse_tolerance, required = true)]
+    pub tolerances: Vec<(String, Tolerance)>,
+    /// A quantity: a coordinate (`theta4`), a point's component (`C.x`),
+    /// with `'` for its velocity and `''` for its acceleration, or a
+    /// point's deviation normal to its path (`C.path`). Every coordinate
+    /// of u when none is given.
+    #[arg(short, long = "quantity")]
+    pub quantities: Vec<String>,
+    /// The number of equal steps of the drive range; the file's by default.
+    #[arg(long)]
+    pub steps: Option<usize>,
+    /// Check the linear spreads with this many Monte Carlo samples.
+    #[arg(long, default_value_t = 0)]
+    pub samples: usize,
+    /// The Monte Carlo run's random state (the same state, the same run).
+    #[arg(long, default_value_t = 1)]
+    pub random_state: u64,
+}
+
+/// A tolerance on the command line: `name=0.05` or `name=normal:0.02`.
+fn parse_tolerance(text: &str) -> Result<(String, Tolerance), String> {
+    let (name, value) = text.split_once('=').ok_or_else(|| {
+        format!("`{text}`: write a tolerance as `name=0.05` or `name=normal:0.02`")
+    })?;
+    let (normal, number) = match value.strip_prefix("normal:") {
+        Some(sigma) => (true, sigma),
+        None => (false, value),
+    };
+    let size: f64 = number
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{text}`: `{number}` is not a number"))?;
+    if !(size.is_finite() && size >= 0.0) {
+        return Err(format!("`{text}`: a tolerance is a finite number ≥ 0"));
+    }
+    let tolerance = if normal {
+        Tolerance::Normal(size)
+    } else {
+        Tolerance::Band(size)
+    };
+    Ok((name.trim().to_owned(), tolerance))
+}
+
+/// What a synthesis matches.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Timing {
+    /// Whenever the mechanism can: the drivers at the targets are unknowns
+    /// too (the targets' file has x, y).
+    Free,
+    /// At the drivers given with the targets (x, y after the driver).
+    Prescribed,
+    /// At the drivers given plus one offset the same for every target.
+    Relative,
+}
+
+#[derive(Debug, Args)]
+pub struct SynthesizeArgs {
+    #[command(flatten)]
+    pub input: Input,
+    #[command(flatten)]
+    pub output: Output,
+    /// Path generation: the point that passes through the targets.
+    #[arg(
+        long,
+        conflicts_with = "function",
+        required_unless_present = "function"
+    )]
+    pub path: Option<String>,
+    /// Function generation: the coordinate that takes the targets' values
+    /// at their drivers.
+    #[arg(long)]
+    pub function: Option<String>,
+    /// The targets, one per line, numbers separated by commas or spaces:
+    /// `x, y` for a path with free timing, `driver, x, y` with prescribed
+    /// or relative timing, `driver, value` for a function; `#` starts a
+    /// comment.
+    #[arg(long)]
+    pub targets: PathBuf,
+    /// When a path's point reaches its targets.
+    #[arg(long, value_enum, default_value_t = Timing::Free)]
+    pub timing: Timing,
+    /// A parameter the synthesis chooses, within bounds: `l2=0.1:0.5`
+    /// (repeat for more). The others keep the file's values.
+    #[arg(long = "free", value_parser = parse_free, required = true)]
+    pub free: Vec<(String, f64, f64)>,
+    /// Stop at exactly as many targets as the free parameters can meet
+    /// (precision points): the designs then pass through them, certified.
+    #[arg(long)]
+    pub precision_points: bool,
+    /// The number of starts of the search.
+    #[arg(long, default_value_t = 32)]
+    pub starts: usize,
+}
+
+/// A free parameter on the command line: `name=lower:upper`.
+fn parse_free(text: &str) -> Result<(String, f64, f64), String> {
+    let shape =
+        || format!("`{text}`: write a free parameter as `name=lower:upper`, e.g. `l2=0.1:0.5`");
+    let (name, bounds) = text.split_once('=').ok_or_else(shape)?;
+    let (lower, upper) = bounds.split_once(':').ok_or_else(shape)?;
+    let number = |x: &str| {
+        x.trim()
+            .parse::<f64>()
+            .ok()
+            .filter(|x| x.is_finite())
+            .ok_or_else(|| format!("`{text}`: `{x}` is not a finite number"))
+    };
+    let (lower, upper) = (number(lower)?, number(upper)?);
+    if lower >= upper {
+        return Err(format!("`{text}`: the lower bound must be below the upper"));
+    }
+    Ok((name.trim().to_owned(), lower, upper))
 }

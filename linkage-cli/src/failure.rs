@@ -7,6 +7,9 @@ use std::fmt;
 pub enum Failure {
     /// The mechanism file has mistakes (already written to standard error).
     Mistakes,
+    /// A file other than the mechanism's (a synthesis's targets) has a
+    /// mistake, located in the message.
+    Malformed(String),
     /// The analysis failed.
     Analysis(String),
     /// A file could not be read or written.
@@ -14,10 +17,10 @@ pub enum Failure {
 }
 
 impl Failure {
-    /// The exit status: 1 mistakes in the file, 3 the analysis, 4 a file.
+    /// The exit status: 1 mistakes in a file, 3 the analysis, 4 a file.
     pub fn code(&self) -> u8 {
         match self {
-            Failure::Mistakes => 1,
+            Failure::Mistakes | Failure::Malformed(_) => 1,
             Failure::Analysis(_) => 3,
             Failure::Io(_) => 4,
         }
@@ -28,7 +31,7 @@ impl fmt::Display for Failure {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Failure::Mistakes => f.write_str("the mechanism file has mistakes"),
-            Failure::Analysis(why) => write!(f, "{why}"),
+            Failure::Analysis(why) | Failure::Malformed(why) => write!(f, "{why}"),
             Failure::Io(why) => write!(f, "{why}"),
         }
     }

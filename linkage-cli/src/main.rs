@@ -1,13 +1,15 @@
 //! `linkage`, the command-line tool: a mechanism file (TOML) checked,
 //! analysed at a pose, swept through its drive range, searched for the
-//! extremes of its quantities, drawn, and promoted to Rust — the library's
-//! own analyses on the mechanism read at run time.
+//! extremes of its quantities, differentiated by its dimensions, its
+//! tolerances stacked, its dimensions synthesized, drawn, and promoted to
+//! Rust — the library's own analyses on the mechanism read at run time.
 
 mod cli;
 mod commands;
 mod failure;
 mod load;
 mod progress;
+mod quantity;
 mod sizes;
 mod table;
 
@@ -22,6 +24,9 @@ fn main() -> ExitCode {
         Command::Analyze(args) => commands::analyze::run(args),
         Command::Sweep(args) => commands::sweep::run(args),
         Command::Extremes(args) => commands::extremes::run(args),
+        Command::Sensitivities(args) => commands::sensitivities::run(args),
+        Command::Tolerance(args) => commands::tolerance::run(args),
+        Command::Synthesize(args) => commands::synthesize::run(args),
         Command::Draw(args) => commands::draw::run(args),
         Command::Expand(input) => commands::expand::run(input),
     };

@@ -18,6 +18,33 @@ pub trait Job {
     ) -> Result<Self::Output, Failure>;
 }
 
+/// Work with the sensitivities of a mechanism at its sizes, by chosen
+/// parameters: at most [`PARAMETERS`] of them, the columns after them
+/// zero.
+pub trait SensitivityJob {
+    type Output;
+    fn run<const M: usize, const F: usize>(
+        self,
+        mechanism: Fixed<M, F, 32, PARAMETERS>,
+    ) -> Result<Self::Output, Failure>;
+}
+
+/// Work with the sensitivities of a mechanism of one driving coordinate
+/// (the synthesis), at its m.
+pub trait DesignJob {
+    type Output;
+    fn run<const M: usize>(
+        self,
+        mechanism: Fixed<M, 1, 32, PARAMETERS>,
+    ) -> Result<Self::Output, Failure>;
+}
+
+/// The room for parameters of the sensitivities: one size for every
+/// mechanism (each size instantiates the sensitivities, the tolerance
+/// analyses and the synthesis once more), the columns of the parameters
+/// not chosen zero.
+pub const PARAMETERS: usize = 16;
+
 /// The sizes (m, f) this tool is built for.
 pub const SIZES: &[(usize, usize)] = &[
     (1, 1),
@@ -39,27 +66,121 @@ pub const SIZES: &[(usize, usize)] = &[
     (6, 2),
 ];
 
-macro_rules! at_sizes {
-    ($mechanism:expr, $job:expr; $(($m:literal, $f:literal)),*) => {
+/// `$then!(args; sizes...)` with the list of [`SIZES`] (the test below
+/// holds the two the same).
+macro_rules! with_sizes {
+    ($then:ident!($($args:tt)*)) => {
+        $then!($($args)*;
+            (1, 1), (2, 1), (3, 1), (4, 1), (5, 1), (6, 1), (7, 1), (8, 1), (10, 1), (12, 1), (16, 1),
+            (1, 2), (2, 2), (3, 2), (4, 2), (5, 2), (6, 2))
+    };
+}
+
+/// `$then!(args; m...)` with the m of the sizes of [`SIZES`] with f = 1.
+macro_rules! with_one_driver {
+    ($then:ident!($($args:tt)*)) => {
+        $then!($($args)*; 1, 2, 3, 4, 5, 6, 7, 8, 10, 12, 16)
+    };
+}
+
+/// `$job.run(view)` with the view `$view::<m, 1>$arguments` at the
+/// mechanism's m.
+macro_rules! at_m {
+    ($mechanism:expr, $job:expr, $view:ident $arguments:tt; $($m:literal),*) => {
         match ($mechanism.m(), $mechanism.f()) {
-            $(($m, $f) => {
-                let fixed = $mechanism.fixed::<$m, $f>().map_err(|e| Failure::Analysis(e.to_string()))?;
-                $job.run(fixed)
-            })*
-            (m, f) => Err(Failure::Analysis(format!(
-                "this tool analyses mechanisms of the sizes {}; this one has m = {m}, f = {f}: \
-                 promote it to Rust with `linkage expand`",
-                SIZES.iter().map(|(m, f)| format!("({m}, {f})")).collect::<Vec<_>>().join(" ")
+            $(($m, 1) => $job.run($view::<$m, 1> $arguments ?),)*
+            (_, f) if f != 1 => Err(Failure::Analysis(format!(
+                "the synthesis takes mechanisms of one driving coordinate; this one has f = {f}"
             ))),
+            (m, f) => Err(not_built_for(m, f)),
         }
     };
 }
 
+/// `$job.run(view)` with the view `$view::<m, f>$arguments` at the
+/// mechanism's sizes.
+macro_rules! at_sizes {
+    ($mechanism:expr, $job:expr, $view:ident $arguments:tt; $(($m:literal, $f:literal)),*) => {
+        match ($mechanism.m(), $mechanism.f()) {
+            $(($m, $f) => $job.run($view::<$m, $f> $arguments ?),)*
+            (m, f) => Err(not_built_for(m, f)),
+        }
+    };
+}
+
+/// The failure of a mechanism of sizes the tool is not built for.
+fn not_built_for(m: usize, f: usize) -> Failure {
+    Failure::Analysis(format!(
+        "this tool analyses mechanisms of the sizes {}; this one has m = {m}, f = {f}: \
+         promote it to Rust with `linkage expand`",
+        SIZES
+            .iter()
+            .map(|(m, f)| format!("({m}, {f})"))
+            .collect::<Vec<_>>()
+            .join(" ")
+    ))
+}
+
+/// The mechanism at m = `M`, f = `F`.
+fn fixed<const M: usize, const F: usize>(mechanism: &Mechanism) -> Result<Fixed<M, F>, Failure> {
+    mechanism
+        .fixed::<M, F>()
+        .map_err(|e| Failure::Analysis(e.to_string()))
+}
+
+/// The mechanism at m = `M`, f = `F`, differentiated by `names`.
+fn sensitive<const M: usize, const F: usize>(
+    mechanism: &Mechanism,
+    names: &[&str],
+) -> Result<Fixed<M, F, 32, PARAMETERS>, Failure> {
+    mechanism
+        .differentiated_by::<M, F, 32, PARAMETERS>(names)
+        .map_err(|e| Failure::Analysis(e.to_string()))
+}
+
 /// Runs `job` on `mechanism` at its sizes.
 pub fn run<J: Job>(mechanism: &Mechanism, job: J) -> Result<J::Output, Failure> {
-    at_sizes!(mechanism, job;
-        (1, 1), (2, 1), (3, 1), (4, 1), (5, 1), (6, 1), (7, 1), (8, 1), (10, 1), (12, 1), (16, 1),
-        (1, 2), (2, 2), (3, 2), (4, 2), (5, 2), (6, 2))
+    with_sizes!(at_sizes!(mechanism, job, fixed(mechanism)))
+}
+
+/// Runs `job` on `mechanism` at its sizes, its sensitivities by the
+/// parameters `names` (every one it is differentiated by if none is
+/// named).
+pub fn run_sensitive<J: SensitivityJob>(
+    mechanism: &Mechanism,
+    names: &[String],
+    job: J,
+) -> Result<J::Output, Failure> {
+    let all = mechanism.differentiated();
+    let names: Vec<&str> = if names.is_empty() {
+        all
+    } else {
+        names.iter().map(String::as_str).collect()
+    };
+    if names.len() > PARAMETERS {
+        return Err(Failure::Analysis(format!(
+            "the mechanism is differentiated by {} parameters; this tool takes at most \
+             {PARAMETERS} at once: choose them with `--param`",
+            names.len()
+        )));
+    }
+    with_sizes!(at_sizes!(mechanism, job, sensitive(mechanism, &names)))
+}
+
+/// Runs `job` on `mechanism` of one driving coordinate at its m, its
+/// sensitivities by the parameters `names`.
+pub fn run_design<J: DesignJob>(
+    mechanism: &Mechanism,
+    names: &[&str],
+    job: J,
+) -> Result<J::Output, Failure> {
+    if names.len() > PARAMETERS {
+        return Err(Failure::Analysis(format!(
+            "{} parameters are free; this tool frees at most {PARAMETERS} at once",
+            names.len()
+        )));
+    }
+    with_one_driver!(at_m!(mechanism, job, sensitive(mechanism, names)))
 }
 
 #[cfg(test)]
@@ -100,5 +221,38 @@ mod tests {
             panic!("m = 9 is not a size of the tool");
         };
         assert!(why.contains("m = 9, f = 1"), "{why}");
+    }
+
+    struct Design;
+    impl DesignJob for Design {
+        type Output = usize;
+        fn run<const M: usize>(self, _: Fixed<M, 1, 32, PARAMETERS>) -> Result<usize, Failure> {
+            Ok(M)
+        }
+    }
+
+    /// The synthesis's list is the sizes' with f = 1.
+    #[test]
+    fn every_size_of_one_driver_designs_at_its_m() {
+        for &(m, f) in SIZES {
+            let u: Vec<String> = (0..m).map(|k| format!("x{k}")).collect();
+            let v: Vec<String> = (0..f).map(|k| format!("t{k}")).collect();
+            let closure: Vec<String> = (0..m).map(|k| format!("x{k} - a * t0")).collect();
+            let text = format!(
+                "u = [{}], v = [{}], closure = [{}]",
+                u.join(", "),
+                v.join(", "),
+                closure.join(", ")
+            );
+            let mechanism = Mechanism::from_text("Sizes", &text, &[("a", 1.0)]).unwrap();
+            match run_design(&mechanism, &["a"], Design) {
+                Ok(designed) => assert_eq!((designed, f), (m, 1)),
+                Err(Failure::Analysis(why)) => {
+                    assert_ne!(f, 1, "{why}");
+                    assert!(why.contains("one driving coordinate"), "{why}");
+                }
+                Err(other) => panic!("{other}"),
+            }
+        }
     }
 }

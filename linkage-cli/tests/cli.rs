@@ -44,6 +44,7 @@ fn every_file_of_the_library_checks_analyses_sweeps_and_draws() {
             vec!["sweep", path, "--steps", "24", "-f", "csv"],
             vec!["draw", path],
             vec!["expand", path],
+            vec!["sensitivities", path, "-f", "csv"],
         ] {
             let out = run(&args);
             assert!(
@@ -57,40 +58,41 @@ fn every_file_of_the_library_checks_analyses_sweeps_and_draws() {
     }
 }
 
-/// The worksheet's four-bar swept by the tool, read back from CSV, is the
-/// compiled four-bar's sweep from the same assembly, every number to the bit.
-#[test]
-fn the_sweep_in_csv_is_the_compiled_sweep_to_the_bit() {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../mechanisms/four_bar.toml");
-    let out = run(&[
-        "sweep",
-        path.to_str().unwrap(),
-        "--steps",
-        "90",
-        "-f",
-        "csv",
-    ]);
+/// The library's file of the worksheet's four-bar.
+fn four_bar_file() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../mechanisms/four_bar.toml")
+}
+
+/// CSV read back: the header's columns and the rows' numbers (after the
+/// row name, if `named`).
+fn csv(out: &Output, named: bool) -> (Vec<String>, Vec<Vec<f64>>) {
     assert!(out.status.success(), "{}", text(&out.stderr));
     let csv = text(&out.stdout);
-    let rows: Vec<Vec<f64>> = csv
-        .lines()
-        .skip(1)
-        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+    let mut lines = csv.lines();
+    let header = lines
+        .next()
+        .unwrap()
+        .split(',')
+        .map(str::to_owned)
         .collect();
-    let file = MechanismFile::read(&path).unwrap();
+    let rows = lines
+        .map(|l| {
+            (l.split(',').skip(usize::from(named)))
+                .map(|x| x.parse().unwrap())
+                .collect()
+        })
+        .collect();
+    (header, rows)
+}
+
+/// The compiled four-bar as the tool sees the file: the pose it assembles
+/// at the driver's `at`, and the sweep's options, its start at `from` and
+/// its range.
+fn worksheet_sweep() -> (FourBar, SweepOptions, SVector<f64, 2>, (f64, f64)) {
+    let file = MechanismFile::read(four_bar_file()).unwrap();
     let driver = file.driver("theta2").unwrap();
     let bar = FourBar::WORKSHEET;
-    let start = bar
-        .assemble(
-            &vector![driver.at.value],
-            &file
-                .assembly
-                .as_ref()
-                .unwrap()
-                .pick::<2>(&["theta3", "theta4"])
-                .unwrap(),
-        )
-        .unwrap();
+    let start = worksheet_at();
     let options = SweepOptions {
         speed: driver.rate.value,
         ..SweepOptions::default()
@@ -106,12 +108,60 @@ fn the_sweep_in_csv_is_the_compiled_sweep_to_the_bit() {
             &options,
         )
         .unwrap();
+    let from = back.poses.last().unwrap().u;
+    (bar, options, from, (driver.from.value, driver.to.value))
+}
+
+/// The compiled four-bar analysed at the file's `at`, from the file's
+/// assembly, at the file's rate and acceleration.
+fn worksheet_at() -> Analysis<2, 1, [Vector2<f64>; 5]> {
+    let file = MechanismFile::read(four_bar_file()).unwrap();
+    let driver = file.driver("theta2").unwrap();
+    let bar = FourBar::WORKSHEET;
+    let pick = file
+        .assembly
+        .as_ref()
+        .unwrap()
+        .pick::<2>(&["theta3", "theta4"])
+        .unwrap();
+    let mode = bar.assemble(&vector![driver.at.value], &pick).unwrap();
+    bar.analyze(
+        &mode.u,
+        &vector![driver.at.value],
+        &vector![driver.rate.value],
+        &vector![driver.acceleration.value],
+        &Options::default(),
+    )
+    .unwrap()
+}
+
+/// The worksheet's four-bar swept by the tool, read back from CSV, is the
+/// compiled four-bar's sweep from the same assembly, every number to the bit.
+#[test]
+fn the_sweep_in_csv_is_the_compiled_sweep_to_the_bit() {
+    let path = four_bar_file();
+    let out = run(&[
+        "sweep",
+        path.to_str().unwrap(),
+        "--steps",
+        "90",
+        "-f",
+        "csv",
+    ]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let csv = text(&out.stdout);
+    let rows: Vec<Vec<f64>> = csv
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    let (bar, options, from, to) = worksheet_sweep();
     let sweep = bar
         .sweep(
-            &back.poses.last().unwrap().u,
+            &from,
             &Drive::Line {
-                from: vector![driver.from.value],
-                to: vector![driver.to.value],
+                from: vector![to.0],
+                to: vector![to.1],
                 steps: 90,
             },
             &options,
@@ -192,4 +242,201 @@ fn expand_writes_the_attribute_with_the_files_values() {
         let line = format!("{}: {:?},", p.name.text, p.quantity.value);
         assert!(rust.contains(&line), "{line} in {rust}");
     }
+}
+
+/// The tool's sensitivities of the worksheet's four-bar are the compiled
+/// four-bar's at the same pose, every number to the bit.
+#[test]
+fn the_sensitivities_are_the_compiled_ones_to_the_bit() {
+    let path = four_bar_file();
+    let out = run(&["sensitivities", path.to_str().unwrap(), "-f", "csv"]);
+    let (header, rows) = csv(&out, true);
+    assert_eq!(header, ["quantity", "d/dl1", "d/dl2", "d/dl3", "d/dl4"]);
+    let s = FourBar::WORKSHEET
+        .sensitivities_of(&worksheet_at(), &Options::default())
+        .unwrap();
+    // theta3, theta3', theta3'', theta4, …, then the points.
+    let mut expected = Vec::new();
+    for k in 0..2 {
+        for m in [&s.u, &s.udot, &s.uddot] {
+            expected.push((0..4).map(|j| m[(k, j)]).collect::<Vec<_>>());
+        }
+    }
+    for p in 0..5 {
+        for level in [&s.points, &s.point_velocities, &s.point_accelerations] {
+            for axis in [0, 1] {
+                expected.push(level.iter().map(|column| column[p][axis]).collect());
+            }
+        }
+    }
+    assert_eq!(rows.len(), expected.len());
+    for (row, e) in rows.iter().zip(&expected) {
+        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(row), bits(e), "{row:?} {e:?}");
+    }
+    // Chosen parameters, in the order asked.
+    let out = run(&[
+        "sensitivities",
+        path.to_str().unwrap(),
+        "-f",
+        "csv",
+        "-p",
+        "l3",
+        "-p",
+        "l1",
+    ]);
+    let (header, chosen) = csv(&out, true);
+    assert_eq!(header, ["quantity", "d/dl3", "d/dl1"]);
+    assert_eq!(chosen[0], [rows[0][2], rows[0][0]]);
+}
+
+/// The tool's tolerance bands of the worksheet's four-bar are the compiled
+/// four-bar's: the largest worst case, RSS and σ of each quantity, and the
+/// pose where it is.
+#[test]
+fn the_tolerance_bands_are_the_compiled_ones() {
+    use linkage::tolerance::{self, Output, Tolerance, Tolerances};
+    use linkage::watch::{Axis, Of};
+    let path = four_bar_file();
+    let out = run(&[
+        "tolerance",
+        path.to_str().unwrap(),
+        "-t",
+        "l2=0.05",
+        "-t",
+        "l3=normal:0.02",
+        "-q",
+        "theta4",
+        "-q",
+        "C.y''",
+        "-q",
+        "C.path",
+        "--steps",
+        "72",
+        "-f",
+        "csv",
+    ]);
+    let (header, rows) = csv(&out, true);
+    assert_eq!(
+        header,
+        [
+            "quantity",
+            "at theta2",
+            "value",
+            "worst case",
+            "RSS",
+            "σ",
+            "share of l2",
+            "share of l3"
+        ]
+    );
+    let (bar, options, from, (a, b)) = worksheet_sweep();
+    let drive = Drive::Line {
+        from: vector![a],
+        to: vector![b],
+        steps: 72,
+    };
+    let tolerances = Tolerances::new([
+        Tolerance::EXACT,
+        Tolerance::Band(0.05),
+        Tolerance::Normal(0.02),
+        Tolerance::EXACT,
+    ])
+    .unwrap();
+    let outputs = [
+        Output::coordinate("theta4", Of::Position),
+        Output::point("C", Axis::Y, Of::Acceleration),
+        Output::path("C"),
+    ];
+    let cycle = tolerance::cycle(&bar, &from, &drive, &options, &outputs, &tolerances).unwrap();
+    assert_eq!(rows.len(), 3);
+    for (row, band) in rows.iter().zip(&cycle.bands) {
+        let (k, spread) = band.largest().unwrap();
+        let shares = tolerances.contributions(&band.gradient[k].unwrap());
+        let expected = [
+            band.v[k][0],
+            band.value[k],
+            spread.worst_case,
+            spread.rss,
+            spread.sigma,
+            shares[1],
+            shares[2],
+        ];
+        for (x, y) in row.iter().zip(expected) {
+            assert!(
+                (x - y).abs() <= 2.0 * f64::EPSILON * y.abs(),
+                "{}: {row:?} against {expected:?}",
+                band.name
+            );
+        }
+    }
+}
+
+/// A path synthesis from the command line finds the worksheet's
+/// dimensions again from five points of its coupler's midpoint; a targets
+/// file with a mistake says where (status 1), bounds the wrong way round
+/// are a command-line mistake (status 2).
+#[test]
+fn synthesis_finds_the_dimensions_that_traced_the_targets() {
+    let bar = FourBar::WORKSHEET;
+    let (_, options, from, _) = worksheet_sweep();
+    let drive = Drive::Line {
+        from: vector![0.3],
+        to: vector![0.3 + 4.0 * std::f64::consts::TAU / 5.0],
+        steps: 4,
+    };
+    let sweep = bar.sweep(&from, &drive, &options).unwrap();
+    let dir = std::env::temp_dir().join(format!("linkage-synthesis-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let targets = dir.join("targets.txt");
+    let mut lines = String::from("# x, y of G3\n");
+    for pose in &sweep.poses {
+        let g3 = bar.point_positions(&pose.u, &pose.v)[FourBar::G3];
+        lines += &format!("{:e}, {:e}\n", g3.x, g3.y);
+    }
+    std::fs::write(&targets, lines).unwrap();
+    let path = four_bar_file();
+    let (path, targets) = (path.to_str().unwrap(), targets.to_str().unwrap());
+    let args = [
+        "synthesize",
+        path,
+        "--path",
+        "G3",
+        "--targets",
+        targets,
+        "--free",
+        "l2=10:30",
+        "--free",
+        "l3=30:70",
+        "--free",
+        "l4=40:80",
+        "--precision-points",
+        "--starts",
+        "16",
+        "-f",
+        "csv",
+    ];
+    let (header, rows) = csv(&run(&args), true);
+    assert_eq!(&header[..5], ["design", "l1", "l2", "l3", "l4"]);
+    assert!(!rows.is_empty());
+    for row in &rows {
+        let error = (0..4)
+            .map(|j| (row[j] - [bar.l1, bar.l2, bar.l3, bar.l4][j]).abs())
+            .fold(0.0, f64::max);
+        assert!(error < 1e-9, "{row:?}");
+    }
+    std::fs::write(targets, "1.0, 2.0\n3.0, y\n").unwrap();
+    let out = run(&args);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(
+        text(&out.stderr).contains("targets.txt:2: `y` is not a finite number"),
+        "{}",
+        text(&out.stderr)
+    );
+    let mut wrong = args;
+    wrong[7] = "l2=30:10";
+    let out = run(&wrong);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(text(&out.stderr).contains("the lower bound must be below the upper"));
+    std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -1,7 +1,9 @@
 //! The equations: the attribute's grammar as text, and where in the file it
 //! starts.
 
+use super::names::Name;
 use super::reader::{Reader, Value};
+use linkage_symbolic::text;
 use toml::de::DeValue;
 
 /// The equations as written (the inside of `#[linkage::linkage(...)]`:
@@ -48,5 +50,32 @@ impl Reader<'_> {
             text: text.to_string(),
             offset: inner.start,
         })
+    }
+}
+
+impl Reader<'_> {
+    /// The equations' own mistakes, as the file's: what reading them as a
+    /// mechanism would report, with `declared` the parameters.
+    pub(super) fn check_equations(&mut self, name: &str, equations: &Equations, declared: &[Name]) {
+        let parameters: Vec<text::Parameter<'_>> = (declared.iter())
+            .map(|p| text::Parameter::declared_at(&p.text, p.span.clone()))
+            .collect();
+        let at = text::Equations::at(&equations.text, equations.offset);
+        let Err(mistakes) = text::build(name, at, &parameters) else {
+            return;
+        };
+        for mistake in mistakes.iter() {
+            let at = mistake
+                .range()
+                .unwrap_or(equations.offset..equations.offset);
+            let mut error = self.mistake(at, mistake.message());
+            for label in mistake.labels() {
+                error = error.label(label.range(), label.message());
+            }
+            for note in mistake.notes() {
+                error = error.note(note);
+            }
+            self.push(error);
+        }
     }
 }

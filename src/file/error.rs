@@ -22,6 +22,8 @@ pub struct FileError {
     pub line: usize,
     /// The column of `at`'s start, from 1, in characters.
     pub column: usize,
+    /// What else to know, at no place.
+    pub notes: Vec<String>,
 }
 
 impl FileError {
@@ -34,12 +36,19 @@ impl FileError {
             labels: Vec::new(),
             line,
             column,
+            notes: Vec::new(),
         }
     }
 
     /// The same, with a note at another place.
     pub(super) fn label(mut self, at: Range<usize>, note: impl Into<String>) -> FileError {
         self.labels.push((at, note.into()));
+        self
+    }
+
+    /// The same, with a note at no place.
+    pub(super) fn note(mut self, note: impl Into<String>) -> FileError {
+        self.notes.push(note.into());
         self
     }
 

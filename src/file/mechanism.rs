@@ -27,6 +27,9 @@ impl From<&FileError> for Diagnostic {
         for (at, note) in &error.labels {
             diagnostic = diagnostic.with_label(at.clone(), note.clone());
         }
+        for note in &error.notes {
+            diagnostic = diagnostic.with_note(note.clone());
+        }
         diagnostic
     }
 }
@@ -55,6 +58,28 @@ mod tests {
             rendered.contains("unsupported function `sinn`"),
             "{rendered}"
         );
+    }
+
+    /// A file with a mistake of its own and one in its equations reports
+    /// both, in the file's order; a parameter whose value is wrong is
+    /// still declared (no follow-on `unknown name`).
+    #[test]
+    fn the_equations_are_checked_beside_the_files_mistakes() {
+        let text = FILE.replace("l = 2", "l = \"2 furlong\"");
+        let errors = MechanismFile::parse(&text).unwrap_err();
+        let messages: Vec<String> = errors.errors.iter().map(|e| e.to_string()).collect();
+        assert_eq!(messages.len(), 2, "{messages:?}");
+        assert!(
+            messages[0].starts_with("4:22: unsupported function `sinn`"),
+            "{messages:?}"
+        );
+        assert!(
+            messages[1].starts_with("7:") && messages[1].contains("furlong"),
+            "{messages:?}"
+        );
+        // Only the file's mistake once the equations are right.
+        let text = text.replace("sinn", "sin");
+        assert_eq!(MechanismFile::parse(&text).unwrap_err().errors.len(), 1);
     }
 
     #[test]

@@ -272,11 +272,26 @@ impl Reader<'_> {
         let title = title.and_then(|v| self.string("title", v).map(str::to_owned));
         let equations = equations.and_then(|v| self.equations(v));
         let length = length?;
-        let parameters = parameters.map_or_else(Vec::new, |v| self.parameters(v, length));
+        let (parameters, declared) = match parameters {
+            Some(v) => self.parameters(v, length),
+            None => (Vec::new(), Some(Vec::new())),
+        };
         let drivers = drive.map_or_else(Vec::new, |v| self.drive(v, length));
         let assembly = assembly.and_then(|v| self.assembly(v, length));
         let drawing = drawing.and_then(|v| self.drawing(v, length));
         self.names_apart(&parameters, &drivers, assembly.as_ref());
+        // A file that will not make a mechanism has its equations' mistakes
+        // reported with its own, all at once: the parameters those
+        // declared (a wrong value declares its name). Not if a parameter's
+        // name is wrong, or a driver's too: a name of the equations would
+        // then be unknown only because of that one mistake.
+        let clash = (parameters.iter()).any(|p| drivers.iter().any(|d| d.name.text == p.name.text));
+        if let (true, false, Some(equations), Some(declared)) =
+            (self.failed(), clash, &equations, &declared)
+        {
+            let shown = name.as_ref().map_or("Mechanism", |n| n.text.as_str());
+            self.check_equations(shown, equations, declared);
+        }
         Some(MechanismFile {
             name: name?,
             title,

@@ -78,3 +78,37 @@ impl MechanismFile {
         }
     }
 }
+
+impl MechanismFile {
+    /// [`MechanismFile::scene`], and for a file without `[drawing]` the
+    /// paths of `points` (the mechanism's named points) over the drive
+    /// range: a file says how its bodies look, but every mechanism has its
+    /// points' paths to show.
+    pub fn scene_of(&self, points: &[&str]) -> Scene {
+        let scene = self.scene();
+        match &self.drawing {
+            Some(_) => scene,
+            None => scene.trace(points.iter().copied()),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const FILE: &str = "name = \"Crank\"\nequations = '''\nu = [x], v = [t],\npoints = [P = (x, t)],\nclosure = [x - t.sin()],\n'''\n[drive.t]\nfrom = 0\nto = 1\n";
+
+    /// Without `[drawing]`, the points' paths are drawn; with one, what it
+    /// says.
+    #[test]
+    fn a_file_without_a_drawing_traces_its_points() {
+        let file = MechanismFile::parse(FILE).unwrap();
+        let traced = Scene::new().units("m", "s").trace(["P"]);
+        assert_eq!(file.scene_of(&["P"]), traced);
+        let drawn = format!("{FILE}[drawing]\ntrace = []\n");
+        let file = MechanismFile::parse(&drawn).unwrap();
+        assert_eq!(file.scene_of(&["P"]), file.scene());
+        assert_ne!(file.scene_of(&["P"]), traced);
+    }
+}

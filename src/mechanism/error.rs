@@ -20,6 +20,17 @@ pub enum MechanismError {
     TooManyPoints { points: usize, most: usize },
     /// A view with k parameters asked of a mechanism with another number.
     Parameters { asked: usize, has: usize },
+    /// A view with room for `most` parameters asked to differentiate by
+    /// more.
+    TooManyParameters { parameters: usize, most: usize },
+    /// A parameter the mechanism has but is not differentiated by (not in
+    /// its `params = [...]`).
+    NotDifferentiated {
+        name: String,
+        differentiated: Vec<String>,
+    },
+    /// A parameter named twice.
+    RepeatedParameter { name: String },
     /// A parameter the mechanism does not have.
     UnknownParameter { name: String, known: Vec<String> },
     /// A parameter's value is not a finite number.
@@ -46,6 +57,22 @@ impl fmt::Display for MechanismError {
                 f,
                 "the mechanism is differentiated by {has} parameters, not {asked}"
             ),
+            MechanismError::TooManyParameters { parameters, most } => write!(
+                f,
+                "{parameters} parameters asked for; this view holds at most {most}"
+            ),
+            MechanismError::NotDifferentiated {
+                name,
+                differentiated,
+            } => write!(
+                f,
+                "the mechanism is not differentiated by `{name}` (it is not in its `params`); \
+                 it is differentiated by: {}",
+                differentiated.join(", ")
+            ),
+            MechanismError::RepeatedParameter { name } => {
+                write!(f, "the parameter `{name}` is named twice")
+            }
             MechanismError::UnknownParameter { name, known } => write!(
                 f,
                 "the mechanism has no parameter `{name}`; its parameters: {}",

@@ -10,6 +10,7 @@
 use crate::mechanism::point_set::PointSet;
 use crate::mechanism::program::Program;
 use crate::mechanism::scratch;
+use crate::mechanism::sensitive::Columns;
 use crate::runtime::{Inverse, Kernels, Kinematics, Linkage, invert};
 use linkage_symbolic::plan::{Formula, Kernel};
 use linkage_symbolic::tape::{Input, Registers};
@@ -26,10 +27,8 @@ pub struct Fixed<const M: usize, const F: usize, const P: usize = 32, const K: u
     /// Every parameter's value, in the order the tapes read them.
     fields: Vec<f64>,
     /// The parameters differentiated by, column by column of the
-    /// sensitivities (at most `K`; the columns after them are zero): each
-    /// one's column in the sensitivity tapes, which differentiate by every
-    /// parameter p of the mechanism.
-    columns: Vec<usize>,
+    /// sensitivities (at most `K`; the columns after them are zero).
+    columns: Columns,
     u_names: [&'static str; M],
     v_names: [&'static str; F],
     trig_u: [bool; M],
@@ -72,7 +71,7 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
     pub(crate) fn new(
         program: Arc<Program>,
         fields: Vec<f64>,
-        columns: Vec<usize>,
+        columns: Columns,
     ) -> Fixed<M, F, P, K> {
         let array = |names: &[&'static str], k: usize| names.get(k).copied().unwrap_or("");
         let (trig_u, trig_v) = program.trig_flags(Kernel::Kinematics { with_trig: true });
@@ -102,12 +101,46 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
         &self.fields
     }
 
+    /// The program the view runs.
+    pub(super) fn program(&self) -> &Program {
+        &self.program
+    }
+
+    /// The parameters of the sensitivities' columns.
+    pub(super) fn columns(&self) -> &Columns {
+        &self.columns
+    }
+
+    /// The number of named points.
+    pub(super) fn point_count(&self) -> usize {
+        self.program.point_names.len()
+    }
+
+    /// Sets the value of the parameter `k` (of [`Fixed::parameter_names`]).
+    pub(super) fn set_field(&mut self, k: usize, value: f64) {
+        if let Some(field) = self.fields.get_mut(k) {
+            *field = value;
+        }
+    }
+
+    /// Which coordinates of u and of v the sensitivities' kernel with the
+    /// sines and cosines given reads them of.
+    pub(super) fn sensitivity_trig(&self) -> ([bool; M], [bool; F]) {
+        let (u, v) = self
+            .program
+            .trig_flags(Kernel::SensitivityTerms { with_trig: true });
+        (
+            std::array::from_fn(|k| u.get(k).copied().unwrap_or(false)),
+            std::array::from_fn(|k| v.get(k).copied().unwrap_or(false)),
+        )
+    }
+
     /// Runs one phase-0 kernel with the inputs `inputs` written, and hands
     /// its result, laid out by [`KernelTape`], to `read` (an empty result
     /// if the tape could not run).
     ///
     /// [`KernelTape`]: crate::mechanism::kernel_tape::KernelTape
-    fn run<R>(
+    pub(super) fn run<R>(
         &self,
         kernel: Kernel,
         inputs: &[(Input, &[f64])],
@@ -444,7 +477,8 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Kernels<M, 
         v: &SVector<D, F>,
     ) -> SVector<D, M> {
         let q = |k: usize| if k < M { u[k] } else { v[k - M] };
-        let values = self.program.psi_dual(&self.fields, &q);
+        let field = |k: usize| D::from(self.fields.get(k).copied().unwrap_or(f64::NAN));
+        let values = self.program.psi_dual(&field, &q);
         SVector::from_fn(|i, _| values.get(i).copied().unwrap_or(D::from(f64::NAN)))
     }
 
@@ -454,7 +488,8 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Kernels<M, 
         v: &SVector<D, F>,
     ) -> impl AsRef<[Vector2<D>]> {
         let q = |k: usize| if k < M { u[k] } else { v[k - M] };
-        let points = self.program.points_dual(&self.fields, &q);
+        let field = |k: usize| D::from(self.fields.get(k).copied().unwrap_or(f64::NAN));
+        let points = self.program.points_dual(&field, &q);
         points
             .into_iter()
             .map(|[x, y]| Vector2::new(x, y))

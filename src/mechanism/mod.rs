@@ -48,12 +48,15 @@ mod kernel_tape;
 mod point_set;
 mod program;
 mod scratch;
+mod sensitive;
 
 pub use error::MechanismError;
 pub use fixed::Fixed;
 pub use linkage_symbolic::diagnostics::{Diagnostic, Diagnostics};
 pub use linkage_symbolic::text::{Equations, Parameter};
 pub use point_set::PointSet;
+
+use sensitive::Columns;
 
 use program::Program;
 use std::sync::Arc;
@@ -175,12 +178,7 @@ impl Mechanism {
         let Some(k) = self.program.field_names.iter().position(|n| *n == name) else {
             return Err(MechanismError::UnknownParameter {
                 name: name.to_owned(),
-                known: self
-                    .program
-                    .field_names
-                    .iter()
-                    .map(|n| n.to_string())
-                    .collect(),
+                known: owned(&self.program.field_names),
             });
         };
         if !value.is_finite() {
@@ -203,6 +201,76 @@ impl Mechanism {
     pub fn fixed_with<const M: usize, const F: usize, const P: usize>(
         &self,
     ) -> Result<Fixed<M, F, P>, MechanismError> {
+        self.view(&[])
+    }
+
+    /// The mechanism at m = `M`, f = `F`, with room for 32 named points and
+    /// its sensitivities by every parameter it is differentiated by
+    /// ([`Mechanism::differentiated`], in that order): `K` must be their
+    /// number. The view implements [`Sensitivities`](crate::Sensitivities),
+    /// so that the sensitivities, the tolerance analyses and the synthesis
+    /// take it.
+    pub fn sensitive<const M: usize, const F: usize, const K: usize>(
+        &self,
+    ) -> Result<Fixed<M, F, 32, K>, MechanismError> {
+        let has = self.program.params.len();
+        if has != K {
+            return Err(MechanismError::Parameters { asked: K, has });
+        }
+        self.view(&(0..has).collect::<Vec<_>>())
+    }
+
+    /// [`Mechanism::sensitive`] by the parameters `names` only, in this
+    /// order, with room for `K` ≥ `names.len()` of them and for `P` named
+    /// points: the columns after the named parameters are zero and their
+    /// names empty. (A caller that learns which parameters at run time, the
+    /// command-line tool, compiles its analyses for a few `K` and takes the
+    /// smallest that holds them; the zero columns change no other column's
+    /// numbers.)
+    pub fn differentiated_by<const M: usize, const F: usize, const P: usize, const K: usize>(
+        &self,
+        names: &[&str],
+    ) -> Result<Fixed<M, F, P, K>, MechanismError> {
+        if names.len() > K {
+            return Err(MechanismError::TooManyParameters {
+                parameters: names.len(),
+                most: K,
+            });
+        }
+        let mut chosen = Vec::with_capacity(names.len());
+        for &name in names {
+            let column =
+                (self.program.params.iter()).position(|&k| self.program.field_names[k] == name);
+            match column {
+                Some(c) if chosen.contains(&c) => {
+                    return Err(MechanismError::RepeatedParameter {
+                        name: name.to_owned(),
+                    });
+                }
+                Some(c) => chosen.push(c),
+                None if self.program.field_names.contains(&name) => {
+                    return Err(MechanismError::NotDifferentiated {
+                        name: name.to_owned(),
+                        differentiated: owned(&self.differentiated()),
+                    });
+                }
+                None => {
+                    return Err(MechanismError::UnknownParameter {
+                        name: name.to_owned(),
+                        known: owned(&self.program.field_names),
+                    });
+                }
+            }
+        }
+        self.view(&chosen)
+    }
+
+    /// The view at the sizes asked for, checked, differentiated by the
+    /// tapes' columns `chosen`.
+    fn view<const M: usize, const F: usize, const P: usize, const K: usize>(
+        &self,
+        chosen: &[usize],
+    ) -> Result<Fixed<M, F, P, K>, MechanismError> {
         if (M, F) != (self.m(), self.f()) {
             return Err(MechanismError::Sizes {
                 asked: (M, F),
@@ -213,10 +281,16 @@ impl Mechanism {
         if points > P {
             return Err(MechanismError::TooManyPoints { points, most: P });
         }
+        let columns = Columns::new(chosen, &self.program.params, self.fields.len());
         Ok(Fixed::new(
             self.program.clone(),
             self.fields.clone(),
-            Vec::new(),
+            columns,
         ))
     }
+}
+
+/// Names as owned strings, for an error.
+fn owned(names: &[&str]) -> Vec<String> {
+    names.iter().map(|n| n.to_string()).collect()
 }

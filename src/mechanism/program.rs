@@ -197,30 +197,41 @@ impl Program {
     }
 
     /// Ψ on any dual number, from its formulas.
-    pub(crate) fn psi_dual<D>(&self, fields: &[f64], q: &dyn Fn(usize) -> D) -> Vec<D>
+    pub(crate) fn psi_dual<D>(&self, field: &dyn Fn(usize) -> D, q: &dyn Fn(usize) -> D) -> Vec<D>
     where
         D: num_dual::DualNum<Primitive = f64> + Copy,
     {
-        self.evaluate(&self.psi, fields, q)
+        self.evaluate(&self.psi, field, q)
     }
 
     /// The points' positions on any dual number, from their formulas.
-    pub(crate) fn points_dual<D>(&self, fields: &[f64], q: &dyn Fn(usize) -> D) -> Vec<[D; 2]>
+    pub(crate) fn points_dual<D>(
+        &self,
+        field: &dyn Fn(usize) -> D,
+        q: &dyn Fn(usize) -> D,
+    ) -> Vec<[D; 2]>
     where
         D: num_dual::DualNum<Primitive = f64> + Copy,
     {
         let roots: Vec<Id> = self.points.iter().flatten().copied().collect();
-        let values = self.evaluate(&roots, fields, q);
+        let values = self.evaluate(&roots, field, q);
         values.chunks_exact(2).map(|xy| [xy[0], xy[1]]).collect()
     }
 
-    fn evaluate<D>(&self, roots: &[Id], fields: &[f64], q: &dyn Fn(usize) -> D) -> Vec<D>
+    /// The formulas `roots`, each parameter's value `field(k)` and each
+    /// coordinate's `q(k)`.
+    fn evaluate<D>(
+        &self,
+        roots: &[Id],
+        field: &dyn Fn(usize) -> D,
+        q: &dyn Fn(usize) -> D,
+    ) -> Vec<D>
     where
         D: num_dual::DualNum<Primitive = f64> + Copy,
     {
         let leaf = |s: Symbol| match s {
             Symbol::Coord(k) => q(k as usize),
-            Symbol::Param(k) => D::from(fields.get(k as usize).copied().unwrap_or(f64::NAN)),
+            Symbol::Param(k) => field(k as usize),
             // Velocities and accelerations appear in no position formula.
             _ => D::from(f64::NAN),
         };

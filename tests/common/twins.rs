@@ -5,6 +5,7 @@
 
 use linkage::mechanism::Fixed;
 use linkage::prelude::*;
+use linkage::{SensitivityKernel, SensitivityTerms};
 
 /// The inside of the attribute `#[linkage::linkage(...)]` (or
 /// `#[crate::linkage(...)]`) on `struct name` in `source`.
@@ -190,4 +191,167 @@ pub fn motions<const M: usize, const F: usize>(count: usize) -> Vec<[Vec<f64>; 6
     (0..count)
         .map(|_| [M, F, M, F, M, F].map(|n| (0..n).map(|_| next()).collect()))
         .collect()
+}
+
+/// Point columns (one set of points per coordinate or parameter), to the
+/// bit.
+fn same_columns<A: AsRef<[Vector2<f64>]>, B: AsRef<[Vector2<f64>]>>(what: &str, a: &[A], b: &[B]) {
+    assert_eq!(a.len(), b.len(), "{what}: the number of columns");
+    for (p, q) in a.iter().zip(b) {
+        same_points(what, p.as_ref(), q.as_ref());
+    }
+}
+
+/// Every term of the sensitivities, to the bit.
+fn same_terms<const M: usize, const K: usize, A, B>(
+    a: &SensitivityTerms<M, K, A>,
+    b: &SensitivityTerms<M, K, B>,
+) where
+    A: AsRef<[Vector2<f64>]>,
+    B: AsRef<[Vector2<f64>]>,
+{
+    same("terms.psi_u", &a.psi_u, &b.psi_u);
+    same("terms.psi_p", &a.psi_p, &b.psi_p);
+    same("terms.psi_u_dot", &a.psi_u_dot, &b.psi_u_dot);
+    same("terms.psi_p_dot", &a.psi_p_dot, &b.psi_p_dot);
+    same("terms.psi_u_ddot", &a.psi_u_ddot, &b.psi_u_ddot);
+    same("terms.psi_p_ddot", &a.psi_p_ddot, &b.psi_p_ddot);
+    same_columns("terms.points_u", &a.points_u, &b.points_u);
+    same_columns("terms.points_p", &a.points_p, &b.points_p);
+    same_columns(
+        "terms.point_velocities_u",
+        &a.point_velocities_u,
+        &b.point_velocities_u,
+    );
+    same_columns(
+        "terms.point_velocities_p",
+        &a.point_velocities_p,
+        &b.point_velocities_p,
+    );
+    same_columns(
+        "terms.point_accelerations_u",
+        &a.point_accelerations_u,
+        &b.point_accelerations_u,
+    );
+    same_columns(
+        "terms.point_accelerations_p",
+        &a.point_accelerations_p,
+        &b.point_accelerations_p,
+    );
+}
+
+/// The same sensitivities (or the same error), to the bit.
+pub fn same_sensitivity<const M: usize, const K: usize, A, B>(
+    a: &Result<Sensitivity<M, K, A>, Error>,
+    b: &Result<Sensitivity<M, K, B>, Error>,
+) where
+    A: AsRef<[Vector2<f64>]>,
+    B: AsRef<[Vector2<f64>]>,
+{
+    match (a, b) {
+        (Ok(a), Ok(b)) => {
+            same("sensitivity.u", &a.u, &b.u);
+            same("sensitivity.udot", &a.udot, &b.udot);
+            same("sensitivity.uddot", &a.uddot, &b.uddot);
+            same_columns("sensitivity.points", &a.points, &b.points);
+            same_columns(
+                "sensitivity.point_velocities",
+                &a.point_velocities,
+                &b.point_velocities,
+            );
+            same_columns(
+                "sensitivity.point_accelerations",
+                &a.point_accelerations,
+                &b.point_accelerations,
+            );
+            assert_eq!(a.rcond.to_bits(), b.rcond.to_bits(), "sensitivity.rcond");
+        }
+        (Err(a), Err(b)) => assert_eq!(format!("{a:?}"), format!("{b:?}")),
+        _ => panic!(
+            "compiled {} run-time {}",
+            a.as_ref().map_or_else(|e| e.to_string(), |_| "Ok".into()),
+            b.as_ref().map_or_else(|e| e.to_string(), |_| "Ok".into())
+        ),
+    }
+}
+
+/// Every kernel of the sensitivities of the two at one pose in motion,
+/// their parameters, and the sensitivities solved from them.
+pub fn every_sensitivity_kernel<L, const M: usize, const F: usize, const K: usize>(
+    compiled: &L,
+    twin: &Fixed<M, F, 32, K>,
+    motion: &Motion<M, F>,
+) where
+    L: Sensitivities<M, F, K>,
+{
+    assert_eq!(compiled.param_names(), twin.param_names());
+    same("params", &compiled.params(), &twin.params());
+    let Motion {
+        u,
+        v,
+        udot,
+        vdot,
+        uddot,
+        vddot,
+    } = motion;
+    same_terms(
+        &compiled.sensitivity_terms(u, v, udot, vdot, uddot, vddot),
+        &twin.sensitivity_terms(u, v, udot, vdot, uddot, vddot),
+    );
+    assert_eq!(compiled.sensitivity_trig_u(), twin.sensitivity_trig_u());
+    assert_eq!(compiled.sensitivity_trig_v(), twin.sensitivity_trig_v());
+    // Sines and cosines other than the coordinates' own: the kernel must
+    // read what it is given.
+    let trig_u: [(f64, f64); M] = std::array::from_fn(|k| (u[k] + 0.25).sin_cos());
+    let trig_v: [(f64, f64); F] = std::array::from_fn(|k| (v[k] - 0.5).sin_cos());
+    same_terms(
+        &compiled.sensitivity_terms_with_trig(u, v, &trig_u, &trig_v, udot, vdot, uddot, vddot),
+        &twin.sensitivity_terms_with_trig(u, v, &trig_u, &trig_v, udot, vdot, uddot, vddot),
+    );
+    same("psi_p", &compiled.psi_p(u, v), &twin.psi_p(u, v));
+    let options = Options::default();
+    same_sensitivity(
+        &compiled.sensitivities(motion, &options),
+        &twin.sensitivities(motion, &options),
+    );
+    // On dual numbers, by the first parameter: to rounding.
+    let seed = |k: usize, x: f64| num_dual::Dual64::new(x, if k == 0 { 1.0 } else { 0.0 });
+    let params = SVector::<_, K>::from_fn(|k, _| seed(k, compiled.params()[k]));
+    let (ud, vd) = (u.map(num_dual::Dual64::from), v.map(num_dual::Dual64::from));
+    let a = compiled.psi_generic_params(&params, &ud, &vd);
+    let b = twin.psi_generic_params(&params, &ud, &vd);
+    let psi_p = compiled.psi_p(u, v);
+    let scale = (compiled.psi_u(u, v).abs().max() + psi_p.abs().max()).max(1.0)
+        * (1.0 + u.abs().max() + compiled.params().abs().max());
+    for (i, (x, y)) in a.iter().zip(b.iter()).enumerate() {
+        assert!(
+            (x.re - y.re).abs() <= 1e-13 * scale,
+            "psi_generic_params: {a} {b}"
+        );
+        assert!(
+            (x.eps - y.eps).abs() <= 1e-13 * scale,
+            "psi_generic_params: {a} {b}"
+        );
+        if K > 0 {
+            assert!(
+                (y.eps - psi_p[(i, 0)]).abs() <= 1e-13 * scale,
+                "the dual part is Ψ_p's column"
+            );
+        }
+    }
+    let a = compiled.point_positions_generic_params(&params, &ud, &vd);
+    let b = twin.point_positions_generic_params(&params, &ud, &vd);
+    assert_eq!(a.as_ref().len(), b.as_ref().len());
+    for (p, q) in a.as_ref().iter().zip(b.as_ref()) {
+        for (x, y) in p.iter().zip(q.iter()) {
+            assert!(
+                (x.re - y.re).abs() <= 1e-13 * scale,
+                "points on duals: {p} {q}"
+            );
+            assert!(
+                (x.eps - y.eps).abs() <= 1e-13 * scale,
+                "points on duals: {p} {q}"
+            );
+        }
+    }
 }

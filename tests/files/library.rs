@@ -233,32 +233,49 @@ fn runs<L: Linkage<M, F>, const M: usize, const F: usize>(
     }
 }
 
-/// The file read at run time is its twin: every kernel at poses in
-/// motion, and the sweep over its drive range from its assembly, to the
-/// bit.
-fn same_at_run_time<L, const M: usize, const F: usize>(name: &str, file: &MechanismFile, model: &L)
-where
-    L: Linkage<M, F>,
+/// The file read at run time is its twin: every kernel and the
+/// sensitivities at poses in motion, and the sweep over its drive range
+/// from its assembly with the sensitivities of every pose, to the bit.
+fn same_at_run_time<L, const M: usize, const F: usize, const K: usize>(
+    name: &str,
+    file: &MechanismFile,
+    model: &L,
+) where
+    L: Linkage<M, F> + Sensitivities<M, F, K>,
 {
     let mechanism = file.mechanism().unwrap_or_else(|e| panic!("{name}: {e}"));
     let run_time = mechanism
         .fixed::<M, F>()
+        .unwrap_or_else(|e| panic!("{name}: {e}"));
+    // By the twin's parameters in the twin's order (a file may list them
+    // in another).
+    let sensitive = mechanism
+        .differentiated_by::<M, F, 32, K>(&model.param_names())
         .unwrap_or_else(|e| panic!("{name}: {e}"));
     for [u, v, udot, vdot, uddot, vddot] in twins::motions::<M, F>(40) {
         let (m, f) = (
             SVector::<f64, M>::from_column_slice,
             SVector::<f64, F>::from_column_slice,
         );
+        let motion = Motion {
+            u: m(&u),
+            v: f(&v),
+            udot: m(&udot),
+            vdot: f(&vdot),
+            uddot: m(&uddot),
+            vddot: f(&vddot),
+        };
         twins::every_kernel(
             model,
             &run_time,
-            &m(&u),
-            &f(&v),
-            &m(&udot),
-            &f(&vdot),
-            &m(&uddot),
-            &f(&vddot),
+            &motion.u,
+            &motion.v,
+            &motion.udot,
+            &motion.vdot,
+            &motion.uddot,
+            &motion.vddot,
         );
+        twins::every_sensitivity_kernel(model, &sensitive, &motion);
     }
     let at = drive(model, file, |d| d.at.value);
     let from = drive(model, file, |d| d.from.value);
@@ -288,6 +305,22 @@ where
             .sweep(&start.u, &drive, &options)
             .unwrap_or_else(|e| panic!("{name}: {e}"));
         twins::same_sweep(&compiled, &read);
+        let mut expected = Vec::new();
+        model
+            .sweep_sensitivities_each(&start.u, &drive, &options, |_, s| expected.push(s))
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        let mut poses = 0;
+        sensitive
+            .sweep_sensitivities_each(&start.u, &drive, &options, |_, s| {
+                twins::same_sensitivity(&expected[poses], &s);
+                poses += 1;
+            })
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!(
+            poses,
+            expected.len(),
+            "{name}: the poses with sensitivities"
+        );
     }
     runs(name, file, &run_time);
 }

@@ -3,9 +3,11 @@
 //! same numbers to the bit — every kernel at random poses and rates, and
 //! the analyses (a pose, a sweep with its singular poses) built on them.
 
-use crate::common::twins::{attribute, every_kernel, same, same_points};
+use crate::common::twins::{
+    attribute, every_kernel, every_sensitivity_kernel, same, same_points, same_sensitivity,
+};
 use crate::models::{BOOM, FIVE_BAR, SIX_BAR, SLIDER_CRANK, STEPHENSON_THREE, WATT_SIX_BAR};
-use linkage::mechanism::{Fixed, Mechanism};
+use linkage::mechanism::{Fixed, Mechanism, MechanismError};
 use linkage::mechanisms::FourBar;
 use linkage::prelude::*;
 use proptest::prelude::*;
@@ -20,13 +22,26 @@ fn twin<L, const M: usize, const F: usize, const K: usize>(
 where
     L: Sensitivities<M, F, K>,
 {
+    read::<L, M, F, K>(compiled, source, name)
+        .fixed::<M, F>()
+        .expect("the compiled sizes")
+}
+
+/// The twin read, before it is seen at sizes.
+fn read<L, const M: usize, const F: usize, const K: usize>(
+    compiled: &L,
+    source: &str,
+    name: &str,
+) -> Mechanism
+where
+    L: Sensitivities<M, F, K>,
+{
     let values = compiled.params();
     let parameters: Vec<(&str, f64)> = (compiled.param_names().iter().copied())
         .zip(values.iter().copied())
         .collect();
-    let mechanism = Mechanism::from_text(name, attribute(source, name), &parameters)
-        .unwrap_or_else(|e| panic!("{name} reads at run time: {e}"));
-    mechanism.fixed::<M, F>().expect("the compiled sizes")
+    Mechanism::from_text(name, attribute(source, name), &parameters)
+        .unwrap_or_else(|e| panic!("{name} reads at run time: {e}"))
 }
 
 /// u, v, u̇, v̇, ü, v̈ as lists.
@@ -59,6 +74,14 @@ macro_rules! twins {
                     &compiled, &twin,
                     &vector(&u), &driver(&v), &vector(&udot), &driver(&vdot), &vector(&uddot), &driver(&vddot),
                 );
+                let sensitive = read::<_, $m, $f, $k>(&compiled, include_str!($source), $name)
+                    .sensitive::<$m, $f, $k>()
+                    .expect("the compiled sizes");
+                let motion = Motion {
+                    u: vector(&u), v: driver(&v), udot: vector(&udot), vdot: driver(&vdot),
+                    uddot: vector(&uddot), vddot: driver(&vddot),
+                };
+                every_sensitivity_kernel(&compiled, &sensitive, &motion);
             }
         }
     )*};
@@ -112,4 +135,142 @@ fn a_sweep_of_the_twin_is_the_compiled_sweep() {
     }
     assert_eq!(a.events.len(), b.events.len());
     assert_eq!(a.complete, b.complete);
+}
+
+/// A view differentiated by some parameters only, in its own order, with
+/// room for more: its columns are the full view's, to the bit, and the
+/// rest zero; its sensitivities along a sweep are the compiled ones'.
+#[test]
+fn a_view_by_chosen_parameters_has_their_columns() {
+    let compiled = FourBar::WORKSHEET;
+    let mechanism = read::<_, 2, 1, 4>(
+        &compiled,
+        include_str!("../../src/mechanisms.rs"),
+        "FourBar",
+    );
+    let full = mechanism.sensitive::<2, 1, 4>().unwrap();
+    let chosen = mechanism
+        .differentiated_by::<2, 1, 32, 6>(&["l3", "l1"])
+        .unwrap();
+    assert_eq!(chosen.param_names(), ["l3", "l1", "", "", "", ""]);
+    same(
+        "params",
+        &chosen.params(),
+        &vector![compiled.l3, compiled.l1, 0.0, 0.0, 0.0, 0.0],
+    );
+    let motion = Motion {
+        u: vector![1.2, -0.9],
+        v: vector![0.35],
+        udot: vector![0.7, -0.2],
+        vdot: vector![41.9],
+        uddot: vector![3.0, 1.5],
+        vddot: vector![0.0],
+    };
+    let options = Options::default();
+    let a = full.sensitivities(&motion, &options).unwrap();
+    let b = chosen.sensitivities(&motion, &options).unwrap();
+    for (view, of_full) in [(0, 2), (1, 0)] {
+        same(
+            "u_p",
+            &a.u.column(of_full).into_owned(),
+            &b.u.column(view).into_owned(),
+        );
+        same(
+            "ü_p",
+            &a.uddot.column(of_full).into_owned(),
+            &b.uddot.column(view).into_owned(),
+        );
+        same_points("dP/dp", a.points[of_full].as_ref(), b.points[view].as_ref());
+    }
+    for view in 2..6 {
+        assert!(b.u.column(view).iter().all(|x| *x == 0.0));
+        assert!(
+            b.points[view]
+                .as_ref()
+                .iter()
+                .all(|p| *p == Vector2::zeros())
+        );
+    }
+    // Setting the parameters sets the chosen ones, in the view's order.
+    let mut moved = chosen.clone();
+    moved.set_params(&vector![0.5, 2.5, 9.0, 9.0, 9.0, 9.0]);
+    assert_eq!(moved.params(), vector![0.5, 2.5, 0.0, 0.0, 0.0, 0.0]);
+    let l = |name: &str| {
+        let k = moved
+            .parameter_names()
+            .iter()
+            .position(|n| *n == name)
+            .unwrap();
+        moved.parameters()[k]
+    };
+    assert_eq!(
+        (l("l1"), l("l2"), l("l3"), l("l4")),
+        (2.5, compiled.l2, 0.5, compiled.l4)
+    );
+
+    // Along a sweep, the sensitivities of every pose are the compiled ones.
+    let drive = Drive::Line {
+        from: vector![0.35],
+        to: vector![0.35 + std::f64::consts::TAU],
+        steps: 180,
+    };
+    let mut expected = Vec::new();
+    compiled
+        .sweep_sensitivities_each(
+            &vector![1.2, -0.9],
+            &drive,
+            &SweepOptions::default(),
+            |_, s| expected.push(s),
+        )
+        .unwrap();
+    let mut poses = 0;
+    full.sweep_sensitivities_each(
+        &vector![1.2, -0.9],
+        &drive,
+        &SweepOptions::default(),
+        |_, s| {
+            same_sensitivity(&expected[poses], &s);
+            poses += 1;
+        },
+    )
+    .unwrap();
+    assert_eq!(poses, expected.len());
+}
+
+/// Views the mechanism cannot give are typed errors that say why.
+#[test]
+fn views_by_parameters_refuse_what_the_mechanism_has_not() {
+    let text = "u = [theta3, theta4], v = [theta2], params = [l2, l3],
+        closure = [
+            l2 * theta2.cos() + l3 * theta3.cos() - l4 * theta4.cos() - l1,
+            l2 * theta2.sin() + l3 * theta3.sin() - l4 * theta4.sin(),
+        ]";
+    let values = [("l1", 4.0), ("l2", 1.0), ("l3", 3.0), ("l4", 3.5)];
+    let mechanism = Mechanism::from_text("Bar", text, &values).unwrap();
+    let message = |r: Result<Fixed<2, 1, 32, 4>, MechanismError>| r.unwrap_err().to_string();
+    assert_eq!(
+        message(mechanism.differentiated_by(&["l4"])),
+        "the mechanism is not differentiated by `l4` (it is not in its `params`); \
+         it is differentiated by: l2, l3"
+    );
+    assert_eq!(
+        message(mechanism.differentiated_by(&["l2", "l2"])),
+        "the parameter `l2` is named twice"
+    );
+    assert!(
+        message(mechanism.differentiated_by(&["l9"]))
+            .starts_with("the mechanism has no parameter `l9`")
+    );
+    assert_eq!(
+        mechanism
+            .differentiated_by::<2, 1, 32, 1>(&["l2", "l3"])
+            .unwrap_err()
+            .to_string(),
+        "2 parameters asked for; this view holds at most 1"
+    );
+    assert_eq!(
+        mechanism.sensitive::<2, 1, 3>().unwrap_err().to_string(),
+        "the mechanism is differentiated by 2 parameters, not 3"
+    );
+    assert!(mechanism.sensitive::<2, 1, 2>().is_ok());
 }

@@ -97,6 +97,46 @@ fn freudenstein_three_precision_points_are_reproduced() {
     assert!((l2 - 0.25).abs() < 1e-13 && (l3 - 0.625).abs() < 1e-13 && (l4 - 0.875).abs() < 1e-13);
 }
 
+/// Freudenstein's problem on the worksheet's four-bar read at run time
+/// from its equations: the closed form's design, to 1e-12.
+#[test]
+fn a_mechanism_read_at_run_time_is_synthesized_as_the_compiled_one() {
+    let design = [1.0, 0.25, 0.625, 0.875];
+    let thetas = [30f64, 60.0, 90.0].map(f64::to_radians);
+    let targets: Vec<(f64, f64)> = thetas
+        .iter()
+        .map(|&t| (t, rocker(design, t) - PI))
+        .collect();
+    let text = "u = [theta3, theta4], v = [theta2],
+        closure = [
+            l2 * theta2.cos() + l3 * theta3.cos() + l4 * theta4.cos() - l1,
+            l2 * theta2.sin() + l3 * theta3.sin() + l4 * theta4.sin(),
+        ]";
+    let start = [("l1", 1.0), ("l2", 0.3), ("l3", 0.7), ("l4", 0.8)];
+    let run_time = linkage::mechanism::Mechanism::from_text("Bar", text, &start)
+        .unwrap()
+        .sensitive::<2, 1, 4>()
+        .unwrap();
+    let problem = Problem::function(run_time, "theta4", &targets)
+        .unwrap()
+        .freed(&[("l2", 0.1, 0.5), ("l3", 0.3, 1.2), ("l4", 0.3, 1.2)])
+        .guess(vector![1.3, -0.8])
+        .precision_points();
+    let search = Search {
+        starts: 16,
+        ..Search::default()
+    };
+    let found = synthesize(&problem, &Requirements::new(Range::Targets), &search).unwrap();
+    assert!(!found.designs.is_empty(), "{found:?}");
+    for candidate in &found.designs {
+        let l = candidate.model.params();
+        assert_eq!(l[0], 1.0, "l1 is not free");
+        let error = (l - vector![1.0, 0.25, 0.625, 0.875]).amax();
+        assert!(error < 1e-12, "{l} against the closed form: {error:e}");
+        assert!(candidate.certificate.is_some(), "certified");
+    }
+}
+
 #[test]
 fn bad_problems_are_typed_errors() {
     let bar = FourBar::WORKSHEET;

@@ -381,3 +381,87 @@ fn monte_carlo_needs_samples_and_known_names() {
 /// Where the linear theory fails, and says so (in this binary, not one of
 /// its own: each test binary links the whole library).
 mod limits;
+
+/// A mechanism read at run time, the Maple worksheet's four-bar from its
+/// file, has the compiled four-bar's tolerance bands over a whole turn, to
+/// the bit, and the same Monte Carlo run, sample by sample.
+#[test]
+fn a_mechanism_read_at_run_time_has_the_compiled_bands() {
+    let file = linkage::file::MechanismFile::parse(include_str!("../../mechanisms/four_bar.toml"))
+        .expect("the library's four-bar reads");
+    let run_time = file.mechanism().unwrap().sensitive::<2, 1, 4>().unwrap();
+    let compiled = FourBar::WORKSHEET;
+    let tolerances = Tolerances::new([
+        Tolerance::Band(0.05),
+        Tolerance::Normal(0.02),
+        Tolerance::Band(0.05),
+        Tolerance::EXACT,
+    ])
+    .unwrap();
+    let drive = Drive::Line {
+        from: vector![0.0],
+        to: vector![TAU],
+        steps: 90,
+    };
+    let outputs = [
+        Output::coordinate("theta4", Of::Position),
+        Output::point("C", Axis::Y, Of::Acceleration),
+        Output::path("C"),
+    ];
+    let u0 = vector![1.2, -1.0];
+    let options = SweepOptions::default();
+    let a = tolerance::cycle(&compiled, &u0, &drive, &options, &outputs, &tolerances).unwrap();
+    let b = tolerance::cycle(&run_time, &u0, &drive, &options, &outputs, &tolerances).unwrap();
+    assert_eq!(a.bands.len(), b.bands.len());
+    for (x, y) in a.bands.iter().zip(&b.bands) {
+        assert_eq!(x.name, y.name);
+        let bits = |g: &Option<SVector<f64, 4>>| g.map(|g| g.map(f64::to_bits));
+        assert_eq!(
+            x.gradient.iter().map(bits).collect::<Vec<_>>(),
+            y.gradient.iter().map(bits).collect::<Vec<_>>(),
+            "{}",
+            x.name
+        );
+        assert_eq!(
+            x.value.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+            y.value.iter().map(|v| v.to_bits()).collect::<Vec<_>>()
+        );
+    }
+    let run = MonteCarlo {
+        samples: 64,
+        random_state: 7,
+    };
+    let a = tolerance::monte_carlo_cycle(
+        &compiled,
+        &u0,
+        &drive,
+        &options,
+        &outputs,
+        &tolerances,
+        &run,
+    )
+    .unwrap();
+    let b = tolerance::monte_carlo_cycle(
+        &run_time,
+        &u0,
+        &drive,
+        &options,
+        &outputs,
+        &tolerances,
+        &run,
+    )
+    .unwrap();
+    assert_eq!(a.failures.len(), b.failures.len());
+    for (x, y) in a
+        .statistics
+        .iter()
+        .flatten()
+        .zip(b.statistics.iter().flatten())
+    {
+        assert_eq!(x.count, y.count);
+        assert_eq!(
+            (x.mean.to_bits(), x.min.to_bits(), x.max.to_bits()),
+            (y.mean.to_bits(), y.min.to_bits(), y.max.to_bits())
+        );
+    }
+}

@@ -12,18 +12,20 @@ pub fn run(input: &Input) -> Result<(), Failure> {
         Some(false) => "the two acceleration methods do NOT expand to the same polynomial",
         None => "the two acceleration methods are too large to expand and compare",
     };
+    let listed = |names: &[&str], one: &str, many: &str| {
+        let noun = if names.len() == 1 { one } else { many };
+        format!("{} {noun} [{}]", names.len(), names.join(", "))
+    };
     let text = format!(
-        "{}: {} is a mechanism of m = {} dependent coordinates [{}], f = {} driving [{}], {} named points [{}] and {} parameters [{}]; {agree}\n",
+        "{}: {} is a mechanism of m = {} dependent coordinates [{}], f = {} driving [{}], {} and {}; {agree}\n",
         loaded.shown,
         m.name(),
         m.m(),
         m.u_names().join(", "),
         m.f(),
         m.v_names().join(", "),
-        m.point_names().len(),
-        m.point_names().join(", "),
-        m.parameter_names().len(),
-        m.parameter_names().join(", "),
+        listed(m.point_names(), "named point", "named points"),
+        listed(m.parameter_names(), "parameter", "parameters"),
     );
     super::emit(input.output.as_deref(), text.as_bytes())
 }

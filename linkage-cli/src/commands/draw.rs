@@ -1,6 +1,6 @@
 //! `linkage draw FILE -o pose.svg`: the mechanism at its `at` pose, drawn
 //! as the file's `[drawing]` says, with the paths its points trace over
-//! the drive range.
+//! the drive range (without `[drawing]`, every named point's path).
 
 use crate::cli::Draw;
 use crate::failure::Failure;
@@ -26,7 +26,7 @@ impl Job for Picture<'_> {
         })?;
         self.loaded
             .file
-            .scene()
+            .scene_of(model.point_names())
             .width(self.width)
             .render(&frame, &cycle)
             .map_err(|e| Failure::Analysis(format!("the drawing: {e}")))

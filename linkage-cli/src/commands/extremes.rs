@@ -5,29 +5,21 @@
 use crate::cli::Extremes;
 use crate::failure::Failure;
 use crate::load::{Loaded, load};
+use crate::quantity::{self, Quantity};
 use crate::sizes::{self, Job};
 use crate::table::Table;
 use linkage::mechanism::Fixed;
 use linkage::prelude::*;
-use linkage::watch::{Axis, FoundKind, Of, Watch, locate};
+use linkage::watch::{FoundKind, Watch, locate};
 
-/// A watch written on the command line: `theta4`, `C.x`, with `'` for the
-/// velocity and `''` for the acceleration.
+/// A watch written on the command line (see [`quantity`]).
 fn parse_watch<const M: usize, const F: usize>(text: &str) -> Result<Watch<'static, M, F>, String> {
-    let (name, of) = if let Some(name) = text.strip_suffix("''") {
-        (name, Of::Acceleration)
-    } else if let Some(name) = text.strip_suffix('\'') {
-        (name, Of::Velocity)
-    } else {
-        (text, Of::Position)
-    };
-    match name.rsplit_once('.') {
-        Some((point, "x")) => Ok(Watch::point(point, Axis::X, of)),
-        Some((point, "y")) => Ok(Watch::point(point, Axis::Y, of)),
-        Some((_, other)) => Err(format!(
-            "`{text}`: a point has the components `.x` and `.y`, not `.{other}`"
+    match quantity::parse(text)? {
+        Quantity::Coordinate(name, of) => Ok(Watch::coordinate(name, of)),
+        Quantity::Point(name, axis, of) => Ok(Watch::point(name, axis, of)),
+        Quantity::Path(_) => Err(format!(
+            "`{text}`: a path's deviation is a quantity of `linkage tolerance`, not one to watch"
         )),
-        None => Ok(Watch::coordinate(name, of)),
     }
 }
 
@@ -89,10 +81,7 @@ impl Job for Find<'_> {
                 FoundKind::Zero { rising: true } => "zero, rising",
                 FoundKind::Zero { rising: false } => "zero, falling",
             };
-            let name = written
-                .get(f.watch / if self.zeros { 2 } else { 1 })
-                .cloned()
-                .unwrap_or_default();
+            let name = watched.get(f.watch).copied().unwrap_or_default();
             let mut row: Vec<f64> = f.v.iter().copied().collect();
             row.push(f.value);
             table.push_named(&format!("{name}: {kind}"), row);

@@ -6,7 +6,10 @@ pub mod check;
 pub mod draw;
 pub mod expand;
 pub mod extremes;
+pub mod sensitivities;
 pub mod sweep;
+pub mod synthesize;
+pub mod tolerance;
 
 use crate::failure::Failure;
 use crate::load::{Loaded, report};
@@ -28,9 +31,9 @@ pub struct Drives<const F: usize> {
 
 /// The drive of `loaded` for `model`: a driving coordinate without its
 /// `[drive.<name>]` table is a mistake in the file.
-pub fn drives<const M: usize, const F: usize>(
+pub fn drives<const M: usize, const F: usize, const K: usize>(
     loaded: &Loaded,
-    model: &Fixed<M, F>,
+    model: &Fixed<M, F, 32, K>,
 ) -> Result<Drives<F>, Failure> {
     let names = model.v_names();
     let mut missing = Diagnostics::new();
@@ -66,9 +69,9 @@ pub fn drives<const M: usize, const F: usize>(
 }
 
 /// The assembly the file picks at the drivers' `at`.
-pub fn assembled<const M: usize, const F: usize>(
+pub fn assembled<const M: usize, const F: usize, const K: usize>(
     loaded: &Loaded,
-    model: &Fixed<M, F>,
+    model: &Fixed<M, F, 32, K>,
     at: &SVector<f64, F>,
 ) -> Result<SVector<f64, M>, Failure> {
     use linkage::assembly::{Assemble, Pick};
@@ -91,13 +94,13 @@ pub fn assembled<const M: usize, const F: usize>(
 /// The file's drive, and the analysis of the pose at its `at` (from the
 /// file's assembly, at the drivers' rates and accelerations).
 #[allow(clippy::type_complexity)]
-pub fn analysed<const M: usize, const F: usize>(
+pub fn analysed<const M: usize, const F: usize, const K: usize>(
     loaded: &Loaded,
-    model: &Fixed<M, F>,
+    model: &Fixed<M, F, 32, K>,
 ) -> Result<
     (
         Drives<F>,
-        Analysis<M, F, <Fixed<M, F> as Kernels<M, F>>::Points>,
+        Analysis<M, F, <Fixed<M, F, 32, K> as Kernels<M, F>>::Points>,
     ),
     Failure,
 > {
@@ -115,15 +118,21 @@ pub fn analysed<const M: usize, const F: usize>(
     Ok((drives, pose))
 }
 
-/// The poses of a sweep over the file's drive range, from the file's
-/// assembly (carried from `at` to `from` first), with `speed` the drivers'
-/// speed along it; each pose is given to `on_pose` with its index.
-pub fn sweep_each<const M: usize, const F: usize>(
+/// The sweep over the file's drive range in `steps` steps: where it
+/// starts (the file's assembly at `at`, carried to `from`), the drive, and
+/// the options (the drivers' speed along it).
+pub struct Swept<const M: usize, const F: usize> {
+    pub start: SVector<f64, M>,
+    pub drive: Drive<F>,
+    pub options: SweepOptions,
+}
+
+/// The file's sweep for `model` in `steps` steps.
+pub fn swept<const M: usize, const F: usize, const K: usize>(
     loaded: &Loaded,
-    model: &Fixed<M, F>,
+    model: &Fixed<M, F, 32, K>,
     steps: usize,
-    on_pose: &mut dyn FnMut(usize, &SweepPose<M, F>),
-) -> Result<SweepSummary<M, F>, Failure> {
+) -> Result<Swept<M, F>, Failure> {
     let drives = drives(loaded, model)?;
     let u_at = assembled(loaded, model, &drives.at)?;
     let mut options = SweepOptions::default();
@@ -154,6 +163,26 @@ pub fn sweep_each<const M: usize, const F: usize>(
         to: drives.to,
         steps,
     };
+    Ok(Swept {
+        start,
+        drive,
+        options,
+    })
+}
+
+/// The poses of the file's sweep ([`swept`]); each pose is given to
+/// `on_pose` with its index.
+pub fn sweep_each<const M: usize, const F: usize, const K: usize>(
+    loaded: &Loaded,
+    model: &Fixed<M, F, 32, K>,
+    steps: usize,
+    on_pose: &mut dyn FnMut(usize, &SweepPose<M, F>),
+) -> Result<SweepSummary<M, F>, Failure> {
+    let Swept {
+        start,
+        drive,
+        options,
+    } = swept(loaded, model, steps)?;
     let mut index = 0;
     model
         .sweep_each(&start, &drive, &options, |pose| {
