@@ -345,6 +345,127 @@ fn mechanisms(c: &mut Criterion) {
     );
 }
 
+/// Poses of the batch of poses, designs of the batch of designs.
+const BATCH_POSES: usize = 10_000;
+const BATCH_DESIGNS: usize = 1_000;
+
+/// Batches of analyses ([`linkage::batch::analyses`]) of the four-bar, on
+/// one thread, compiled and run-time (whose Newton iterations run side by
+/// side on the tapes' lanes): 10⁴ poses of one design round the turn, each
+/// from the pose 0.02 rad ahead (as a batch seeded by a coarser one), and
+/// 10³ designs (couplers of 45 … 55) at θ2 = 20° from the worksheet
+/// design's pose; the time per analysis as throughput.
+fn batches(c: &mut Criterion) {
+    use linkage::batch::{self, AnalysisJob};
+    let source = include_str!("../examples/speed_accuracy/workloads.rs");
+    let mechanism = {
+        let values = FOUR_BAR.params();
+        let parameters: Vec<(&str, f64)> = (FOUR_BAR.param_names().iter().copied())
+            .zip(values.iter().copied())
+            .collect();
+        Mechanism::from_text("FourBar", &attribute_of(source, "FourBar"), &parameters)
+            .expect("the four-bar reads at run time")
+    };
+    // Room for as many points as it has, none.
+    let run_time = mechanism.fixed_with::<2, 1, 0>().expect("m = 2, f = 1");
+    let start = linkage::closed_form::FourBar {
+        l1: 80.0,
+        l2: 20.0,
+        l3: 50.0,
+        l4: 70.0,
+    }
+    .position(0.0, 1.0)
+    .expect("assembles");
+    let turn = Drive::Line {
+        from: vector![0.0],
+        to: vector![std::f64::consts::TAU],
+        steps: BATCH_POSES,
+    };
+    let sweep = FOUR_BAR
+        .sweep(
+            &vector![start[0], start[1]],
+            &turn,
+            &SweepOptions::default(),
+        )
+        .expect("the revolution sweeps");
+    let poses = |k: usize| {
+        let ahead = &sweep.poses[(k + BATCH_POSES / 314) % BATCH_POSES];
+        (ahead.u, sweep.poses[k].v)
+    };
+    let (u20, v20) = pose(&FOUR_BAR, &vector![start[0], start[1]]);
+    let couplers = |k: usize| 45.0 + 10.0 * k as f64 / BATCH_DESIGNS as f64;
+    fn job<L>(model: L, (u_guess, v): (SVector<f64, 2>, SVector<f64, 1>)) -> AnalysisJob<L, 2, 1> {
+        AnalysisJob {
+            model,
+            u_guess,
+            v,
+            vdot: vector![1.0],
+            vddot: vector![0.0],
+        }
+    }
+    let compiled_poses: Vec<_> = (0..BATCH_POSES).map(|k| job(FOUR_BAR, poses(k))).collect();
+    let run_time_poses: Vec<_> = (0..BATCH_POSES)
+        .map(|k| job(run_time.clone(), poses(k)))
+        .collect();
+    let compiled_designs: Vec<_> = (0..BATCH_DESIGNS)
+        .map(|k| {
+            let mut design = FOUR_BAR;
+            design.l3 = couplers(k);
+            job(design, (u20, v20))
+        })
+        .collect();
+    let run_time_designs: Vec<_> = (0..BATCH_DESIGNS)
+        .map(|k| {
+            let mut design = mechanism.clone();
+            design.set_parameter("l3", couplers(k)).expect("l3");
+            job(
+                design.fixed_with::<2, 1, 0>().expect("m = 2, f = 1"),
+                (u20, v20),
+            )
+        })
+        .collect();
+    let options = Options::default();
+    // The same analyses, to the bit.
+    let agree = |a: Vec<Result<Analysis<2, 1, _>, _>>, b: Vec<Result<Analysis<2, 1, _>, _>>| {
+        for (a, b) in a.iter().zip(&b) {
+            let (a, b) = (
+                a.as_ref().expect("assembles"),
+                b.as_ref().expect("assembles"),
+            );
+            assert_eq!((a.u, a.uddot), (b.u, b.uddot), "the twins' batches agree");
+        }
+    };
+    agree(
+        batch::analyses(&compiled_poses, &options),
+        batch::analyses(&run_time_poses, &options),
+    );
+    agree(
+        batch::analyses(&compiled_designs, &options),
+        batch::analyses(&run_time_designs, &options),
+    );
+    let one_thread = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .expect("a pool of one thread");
+    let mut group = c.benchmark_group("four-bar batch");
+    group.sample_size(10);
+    group.throughput(Throughput::Elements(BATCH_POSES as u64));
+    group.bench_function(BenchmarkId::new("poses 10000", "compiled"), |b| {
+        b.iter(|| one_thread.install(|| batch::analyses(black_box(&compiled_poses), &options)))
+    });
+    group.bench_function(BenchmarkId::new("poses 10000", "run-time"), |b| {
+        b.iter(|| one_thread.install(|| batch::analyses(black_box(&run_time_poses), &options)))
+    });
+    group.throughput(Throughput::Elements(BATCH_DESIGNS as u64));
+    group.bench_function(BenchmarkId::new("designs 1000", "compiled"), |b| {
+        b.iter(|| one_thread.install(|| batch::analyses(black_box(&compiled_designs), &options)))
+    });
+    group.bench_function(BenchmarkId::new("designs 1000", "run-time"), |b| {
+        b.iter(|| one_thread.install(|| batch::analyses(black_box(&run_time_designs), &options)))
+    });
+    group.finish();
+}
+
 /// From text to a ready mechanism: the four-bar (the attribute of
 /// `linkage::mechanisms::FourBar`, points and all) and chains of N loops.
 fn from_text(c: &mut Criterion) {
@@ -433,6 +554,6 @@ criterion_group! {
         .warm_up_time(Duration::from_millis(500))
         .measurement_time(Duration::from_secs(2))
         .sample_size(30);
-    targets = mechanisms, from_text
+    targets = mechanisms, batches, from_text
 }
 criterion_main!(run_time);

@@ -47,9 +47,10 @@
 //! }
 //! ```
 
+pub use crate::runtime::AnalysisJob;
 use crate::runtime::{
     Analysis, Drive, Error, Linkage, Options, Sensitivities, Sensitivity, SweepOptions, SweepPose,
-    SweepSummary,
+    SweepSummary, analyze_together,
 };
 use nalgebra::SVector;
 #[cfg(feature = "parallel")]
@@ -65,6 +66,23 @@ fn each<T: Sync>(jobs: &[T]) -> rayon::slice::Iter<'_, T> {
 #[cfg(not(feature = "parallel"))]
 fn each<T>(jobs: &[T]) -> std::slice::Iter<'_, T> {
     jobs.iter()
+}
+
+/// How many analyses run side by side on one thread (see [`analyses`]).
+const SIDE_BY_SIDE: usize = 64;
+
+/// `f` of every run of at most [`SIDE_BY_SIDE`] jobs, on rayon's pool,
+/// the results in the jobs' order.
+#[cfg(feature = "parallel")]
+fn side_by_side<T: Sync, R: Send>(jobs: &[T], f: impl Fn(&[T]) -> Vec<R> + Sync + Send) -> Vec<R> {
+    jobs.par_chunks(SIDE_BY_SIDE).flat_map_iter(f).collect()
+}
+
+/// `f` of every run of at most [`SIDE_BY_SIDE`] jobs, one after the
+/// other (without the `parallel` feature).
+#[cfg(not(feature = "parallel"))]
+fn side_by_side<T, R>(jobs: &[T], f: impl Fn(&[T]) -> Vec<R>) -> Vec<R> {
+    jobs.chunks(SIDE_BY_SIDE).flat_map(f).collect()
 }
 
 /// Runs `f` on every job in parallel, the results in the jobs' order: the
@@ -127,18 +145,12 @@ where
         .collect()
 }
 
-/// One pose of a batch of analyses ([`Linkage::analyze`]).
-#[derive(Clone, Debug, PartialEq)]
-pub struct AnalysisJob<L, const M: usize, const F: usize> {
-    pub model: L,
-    pub u_guess: SVector<f64, M>,
-    pub v: SVector<f64, F>,
-    pub vdot: SVector<f64, F>,
-    pub vddot: SVector<f64, F>,
-}
-
 /// Runs every job's [`Linkage::analyze`] in parallel (see the module
-/// documentation).
+/// documentation). On each thread, runs of jobs are analysed side by side:
+/// their Newton iterations ask for their evaluations together, which a
+/// run-time mechanism ([`crate::mechanism`]) makes on its tapes' lanes,
+/// several poses or designs of one mechanism per pass. Each result equals,
+/// to the bit, what the job's `analyze` gives alone.
 #[allow(clippy::type_complexity)]
 pub fn analyses<L, const M: usize, const F: usize>(
     jobs: &[AnalysisJob<L, M, F>],
@@ -148,12 +160,7 @@ where
     L: Linkage<M, F> + Sync,
     L::Points: Send,
 {
-    each(jobs)
-        .map(|job| {
-            job.model
-                .analyze(&job.u_guess, &job.v, &job.vdot, &job.vddot, options)
-        })
-        .collect()
+    side_by_side(jobs, |jobs| analyze_together(jobs, options))
 }
 
 /// [`sweeps`] with the sensitivities of every pose to the parameters
@@ -199,13 +206,14 @@ where
     L: Sensitivities<M, F, K> + Sync,
     L::Points: Send,
 {
-    each(jobs)
-        .map(|job| {
-            let analysis =
-                job.model
-                    .analyze(&job.u_guess, &job.v, &job.vdot, &job.vddot, options)?;
-            let sensitivity = job.model.sensitivities_of(&analysis, options)?;
-            Ok((analysis, sensitivity))
-        })
-        .collect()
+    side_by_side(jobs, |jobs| {
+        let analyses = analyze_together(jobs, options);
+        (jobs.iter().zip(analyses))
+            .map(|(job, analysis)| {
+                let analysis = analysis?;
+                let sensitivity = job.model.sensitivities_of(&analysis, options)?;
+                Ok((analysis, sensitivity))
+            })
+            .collect()
+    })
 }

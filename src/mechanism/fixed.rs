@@ -9,9 +9,9 @@
 
 use crate::mechanism::point_set::PointSet;
 use crate::mechanism::program::Program;
-use crate::mechanism::scratch;
+use crate::mechanism::scratch::{self, LANES};
 use crate::mechanism::sensitive::Columns;
-use crate::runtime::{Inverse, Kernels, Kinematics, Linkage, invert};
+use crate::runtime::{FusedRequest, Inverse, Kernels, Kinematics, Linkage, invert};
 use linkage_symbolic::plan::{Formula, Kernel};
 use linkage_symbolic::tape::{Input, Registers};
 use nalgebra::{SMatrix, SVector, Vector2};
@@ -255,6 +255,123 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
     }
 }
 
+impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F, P, K> {
+    /// `kinematics_with_trig` of each request, those of one program in a
+    /// row run together on [`LANES`] lanes (see
+    /// [`Kernels::kinematics_with_trig_each`]).
+    fn kinematics_each(
+        requests: &[FusedRequest<'_, Self, M, F>],
+        take: &mut impl FnMut(usize, Kinematics<M, F>),
+    ) {
+        let mut start = 0;
+        while let Some(first) = requests.get(start) {
+            let program = &first.model.program;
+            let same = (requests[start..].iter().take(LANES))
+                .take_while(|r| Arc::ptr_eq(&r.model.program, program))
+                .count();
+            let run = &requests[start..start + same];
+            if let [one] = run {
+                let kinematics = (one.model).kinematics_of(
+                    Some((one.trig_u, one.trig_v)),
+                    one.u,
+                    one.v,
+                    one.vdot,
+                    one.vddot,
+                );
+                take(start, kinematics);
+            } else {
+                Self::kinematics_on_lanes(run, &mut |l, k| take(start + l, k));
+            }
+            start += same;
+        }
+    }
+
+    /// `kinematics_of` with given sines and cosines, for up to [`LANES`]
+    /// requests of one program at once: each lane does what one does, the
+    /// operations in the same order, so each result is its own evaluation's,
+    /// bit for bit. Lanes without a request repeat the first one.
+    fn kinematics_on_lanes(
+        run: &[FusedRequest<'_, Self, M, F>],
+        take: &mut impl FnMut(usize, Kinematics<M, F>),
+    ) {
+        let Some(first) = run.first() else {
+            return;
+        };
+        let program = &first.model.program;
+        let Ok(kernel) = program.kernel(Kernel::Kinematics { with_trig: true }) else {
+            (0..run.len()).for_each(|l| take(l, unevaluated()));
+            return;
+        };
+        let lane = |l: usize| run.get(l).unwrap_or(first);
+        let set_lane = |registers: &mut Registers<LANES>, input, l, values: &[f64]| {
+            let _ = registers.set_lane(input, l, values);
+        };
+        scratch::with_lanes(program.id, kernel, |registers, results| {
+            for l in 0..LANES {
+                let r = lane(l);
+                set_lane(registers, Input::Fields, l, &r.model.fields);
+                set_lane(registers, Input::U, l, r.u.as_slice());
+                set_lane(registers, Input::V, l, r.v.as_slice());
+                set_lane(registers, Input::Vdot, l, r.vdot.as_slice());
+                set_lane(registers, Input::TrigU, l, flat(r.trig_u).as_flattened());
+                set_lane(registers, Input::TrigV, l, flat(r.trig_v).as_flattened());
+            }
+            let [first, second, ..] = results else {
+                (0..run.len()).for_each(|l| take(l, unevaluated()));
+                return;
+            };
+            if kernel.run_lanes(0, registers, first).is_err() {
+                (0..run.len()).for_each(|l| take(l, unevaluated()));
+                return;
+            }
+            // Each lane as `kinematics_of` goes on: Ψ, Ψ_u, Ψ_v, the
+            // inverse and u̇; then γ on every lane; then ü.
+            let (len0, len1) = (kernel.len(0), kernel.len(1));
+            let mut solved = [None; LANES];
+            for (l, slot) in solved.iter_mut().enumerate() {
+                let result = first.get(l * len0..).unwrap_or_default();
+                let psi: SVector<f64, M> = block(result, kernel.start(0, 0));
+                let psi_u: SMatrix<f64, M, M> = block(result, kernel.start(0, 1));
+                let psi_v: SMatrix<f64, M, F> = block(result, kernel.start(0, 2));
+                let inverse = invert(&psi_u);
+                let udot = -(inverse.inverse * (psi_v * lane(l).vdot));
+                set_lane(registers, Input::Udot, l, udot.as_slice());
+                *slot = Some((psi, psi_u, psi_v, inverse, udot));
+            }
+            let gammas = kernel.run_lanes(1, registers, second).is_ok();
+            for (l, slot) in solved.into_iter().enumerate().take(run.len()) {
+                let Some((psi, psi_u, psi_v, inverse, udot)) = slot else {
+                    continue;
+                };
+                let gamma: SVector<f64, M> = match gammas {
+                    true => block(
+                        second.get(l * len1..).unwrap_or_default(),
+                        kernel.start(1, 0),
+                    ),
+                    false => SVector::repeat(f64::NAN),
+                };
+                let Inverse {
+                    inverse,
+                    rcond,
+                    det,
+                } = inverse;
+                let uddot = -(inverse * (psi_v * run[l].vddot + gamma));
+                let kinematics = Kinematics {
+                    psi,
+                    psi_u,
+                    psi_v,
+                    inverse,
+                    rcond,
+                    det,
+                    udot,
+                    uddot,
+                };
+                take(l, kinematics);
+            }
+        });
+    }
+}
+
 /// What a kernel gives when its tape could not run: not numbers, which
 /// the runtime's checks turn into a typed error.
 fn unevaluated<const M: usize, const F: usize>() -> Kinematics<M, F> {
@@ -434,6 +551,13 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Kernels<M, 
         vddot: &SVector<f64, F>,
     ) -> Kinematics<M, F> {
         self.kinematics_of(Some((trig_u, trig_v)), u, v, vdot, vddot)
+    }
+
+    fn kinematics_with_trig_each(
+        requests: &[FusedRequest<'_, Self, M, F>],
+        mut take: impl FnMut(usize, Kinematics<M, F>),
+    ) {
+        Self::kinematics_each(requests, &mut take);
     }
 
     fn point_positions(&self, u: &SVector<f64, M>, v: &SVector<f64, F>) -> PointSet<P> {

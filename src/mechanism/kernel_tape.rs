@@ -74,9 +74,18 @@ impl KernelTape {
         }
     }
 
-    /// A buffer for each phase's result, every entry zero.
-    pub(crate) fn results(&self) -> Vec<Vec<f64>> {
-        self.phases.iter().map(|p| vec![0.0; p.len]).collect()
+    /// A buffer for each phase's result on `lanes` lanes (their results
+    /// end to end), every entry zero.
+    pub(crate) fn results(&self, lanes: usize) -> Vec<Vec<f64>> {
+        self.phases
+            .iter()
+            .map(|p| vec![0.0; p.len * lanes])
+            .collect()
+    }
+
+    /// How long a phase's result is on one lane.
+    pub(crate) fn len(&self, phase: usize) -> usize {
+        self.phases.get(phase).map_or(0, |p| p.len)
     }
 
     /// Runs a phase, its outputs written into their places in `result`
@@ -89,6 +98,20 @@ impl KernelTape {
     ) -> Result<(), TapeError> {
         let places = self.phases.get(phase).map_or(&[][..], |p| &p.places);
         self.tape.run_to(phase, registers, result, places)
+    }
+
+    /// [`KernelTape::run`] on every lane: lane l's result is the l-th of
+    /// `results`, each [`KernelTape::len`] long.
+    pub(crate) fn run_lanes<const L: usize>(
+        &self,
+        phase: usize,
+        registers: &mut Registers<L>,
+        results: &mut [f64],
+    ) -> Result<(), TapeError> {
+        let places = self.phases.get(phase).map_or(&[][..], |p| &p.places);
+        let stride = self.len(phase);
+        self.tape
+            .run_lanes_to(phase, registers, results, stride, places)
     }
 
     /// Where part `part` of a phase's result starts (`usize::MAX` if it

@@ -1,7 +1,9 @@
 //! The register files a thread evaluates tapes in: made once per tape and
 //! thread, then reused, so that evaluating a kernel allocates nothing.
 //! A small direct-mapped cache: each (program, kernel) has one slot; a
-//! program that meets another in its slot makes its file again.
+//! program that meets another in its slot makes its file again. Files of
+//! one lane serve single evaluations, files of [`LANES`] lanes the
+//! evaluations a batch asks for together.
 
 use crate::mechanism::kernel_tape::KernelTape;
 use linkage_symbolic::tape::Registers;
@@ -9,15 +11,22 @@ use std::cell::RefCell;
 
 const SLOTS: usize = 128;
 
-struct Slot {
+/// How many evaluations run together on a file of lanes.
+pub(crate) const LANES: usize = 8;
+
+struct Slot<const L: usize> {
     key: u64,
-    registers: Registers,
-    /// One buffer per phase for its result (see [`KernelTape::results`]).
+    registers: Registers<L>,
+    /// One buffer per phase for its result (see [`KernelTape::results`]),
+    /// the lanes' results end to end.
     results: Vec<Vec<f64>>,
 }
 
+type Files<const L: usize> = RefCell<Vec<Option<Slot<L>>>>;
+
 thread_local! {
-    static FILES: RefCell<Vec<Option<Slot>>> = RefCell::new((0..SLOTS).map(|_| None).collect());
+    static FILES: Files<1> = RefCell::new((0..SLOTS).map(|_| None).collect());
+    static LANE_FILES: Files<LANES> = RefCell::new((0..SLOTS).map(|_| None).collect());
 }
 
 /// Runs `work` on this thread's register file for `kernel` of the program
@@ -28,21 +37,38 @@ pub(crate) fn with_registers<R>(
     kernel: &KernelTape,
     work: impl FnOnce(&mut Registers, &mut [Vec<f64>]) -> R,
 ) -> R {
+    FILES.with(|files| in_slot(files, program, kernel, work))
+}
+
+/// [`with_registers`] on a file of [`LANES`] lanes, each phase's buffer
+/// holding the lanes' results end to end.
+pub(crate) fn with_lanes<R>(
+    program: u64,
+    kernel: &KernelTape,
+    work: impl FnOnce(&mut Registers<LANES>, &mut [Vec<f64>]) -> R,
+) -> R {
+    LANE_FILES.with(|files| in_slot(files, program, kernel, work))
+}
+
+fn in_slot<const L: usize, R>(
+    files: &Files<L>,
+    program: u64,
+    kernel: &KernelTape,
+    work: impl FnOnce(&mut Registers<L>, &mut [Vec<f64>]) -> R,
+) -> R {
     let key = program.wrapping_mul(64).wrapping_add(kernel.index as u64);
-    FILES.with(|files| {
-        let mut files = files.borrow_mut();
-        let slot = &mut files[(key.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 57) as usize % SLOTS];
-        if slot.as_ref().is_none_or(|s| s.key != key) {
-            *slot = Some(Slot {
-                key,
-                registers: kernel.tape.registers::<1>(),
-                results: kernel.results(),
-            });
-        }
-        match slot {
-            Some(s) => work(&mut s.registers, &mut s.results),
-            // Just filled.
-            None => work(&mut kernel.tape.registers::<1>(), &mut kernel.results()),
-        }
-    })
+    let mut files = files.borrow_mut();
+    let slot = &mut files[(key.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 57) as usize % SLOTS];
+    if slot.as_ref().is_none_or(|s| s.key != key) {
+        *slot = Some(Slot {
+            key,
+            registers: kernel.tape.registers::<L>(),
+            results: kernel.results(L),
+        });
+    }
+    match slot {
+        Some(s) => work(&mut s.registers, &mut s.results),
+        // Just filled.
+        None => work(&mut kernel.tape.registers::<L>(), &mut kernel.results(L)),
+    }
 }

@@ -145,6 +145,25 @@ pub trait Kernels<const M: usize, const F: usize> {
         let _ = (trig_u, trig_v);
         self.kinematics(u, v, vdot, vddot)
     }
+    /// [`Kernels::kinematics_with_trig`] at many poses, each of its own
+    /// model: `take(k, kinematics)` for each request k, in order, bit for
+    /// bit what `requests[k].model.kinematics_with_trig(…)` gives. A batch
+    /// of analyses asks for its poses' evaluations together; the default
+    /// makes them one after the other, and a run-time mechanism runs the
+    /// requests of one program together on its tapes' lanes.
+    #[doc(hidden)]
+    fn kinematics_with_trig_each(
+        requests: &[FusedRequest<'_, Self, M, F>],
+        mut take: impl FnMut(usize, Kinematics<M, F>),
+    ) where
+        Self: Sized,
+    {
+        for (k, r) in requests.iter().enumerate() {
+            let kinematics =
+                (r.model).kinematics_with_trig(r.u, r.v, r.trig_u, r.trig_v, r.vdot, r.vddot);
+            take(k, kinematics);
+        }
+    }
     /// P(q)
     fn point_positions(&self, u: &SVector<f64, M>, v: &SVector<f64, F>) -> Self::Points;
     /// Ṗ = P_q q̇
@@ -178,4 +197,18 @@ pub trait Kernels<const M: usize, const F: usize> {
         u: &SVector<D, M>,
         v: &SVector<D, F>,
     ) -> impl AsRef<[Vector2<D>]>;
+}
+
+/// One evaluation of a batch's fused kernels
+/// ([`Kernels::kinematics_with_trig_each`]): the arguments of
+/// [`Kernels::kinematics_with_trig`], and the model to evaluate.
+#[doc(hidden)]
+pub struct FusedRequest<'a, L, const M: usize, const F: usize> {
+    pub model: &'a L,
+    pub u: &'a SVector<f64, M>,
+    pub v: &'a SVector<f64, F>,
+    pub trig_u: &'a [(f64, f64); M],
+    pub trig_v: &'a [(f64, f64); F],
+    pub vdot: &'a SVector<f64, F>,
+    pub vddot: &'a SVector<f64, F>,
 }

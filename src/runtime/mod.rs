@@ -46,13 +46,14 @@ mod symbolic;
 mod trig;
 
 pub use error::{Error, Stage};
-pub use kernels::Kernels;
+pub use kernels::{FusedRequest, Kernels};
 pub use linalg::{Inverse, determinant, invert, scaled_svd};
 pub use linkage::Linkage;
 pub use options::{AccelerationMethod, JacobianSource, Options};
-pub use results::{Analysis, Iterate, Kinematics, Position, Velocity};
+pub use results::{Analysis, AnalysisJob, Iterate, Kinematics, Position, Velocity};
 #[doc(hidden)]
 pub use sensitivities::SensitivityKernel;
 pub use sensitivities::{Motion, Sensitivities, Sensitivity, SensitivityTerms};
+pub(crate) use solve::analyze_together;
 pub use sweep::{Drive, Event, EventKind, Sweep, SweepOptions, SweepPose, SweepSummary};
 pub use symbolic::{SymbolicMatrix, SymbolicTable};

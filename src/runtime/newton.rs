@@ -17,7 +17,7 @@ use crate::runtime::linalg::{factor, invert};
 use crate::runtime::options::Options;
 use crate::runtime::results::{Iterate, Kinematics, Position};
 use crate::runtime::sources::psi_and_psi_u;
-use crate::runtime::trig::{PoseTrig, TrigCarrier};
+use crate::runtime::trig::{PoseTrig, SinCos, TrigCarrier};
 use nalgebra::{SMatrix, SVector};
 
 /// Ψ_uᵀΨ below this fraction of ‖Ψ_u‖·‖Ψ‖ is a stationary point of ‖Ψ‖².
@@ -156,67 +156,180 @@ pub(crate) fn solve_fused<L: Kernels<M, F> + ?Sized, const M: usize, const F: us
     vddot: &SVector<f64, F>,
     options: &Options,
 ) -> Result<Converged<M, F>, Error> {
-    check_input("u0", u0.as_slice())?;
-    check_input("v", v.as_slice())?;
-    options.check()?;
-    // The sines and cosines carried from iterate to iterate, but computed
-    // exactly where the evaluation may confirm convergence: a returned pose
-    // closes to its residual as `psi` computes it, to the bit.
-    let mut trig = TrigCarrier::new();
-    let mut evaluate = |u: &SVector<f64, M>, exact: bool| -> Result<Kinematics<M, F>, Error> {
-        let (trig_u, trig_v) = if exact {
-            trig.exactly_at(&model.trig_u(), &model.trig_v(), u, v)
-        } else {
-            trig.at(&model.trig_u(), &model.trig_v(), u, v)
+    let mut newton = FusedNewton::start(model, u0, v, options)?;
+    loop {
+        let (u, trig_u, trig_v) = newton.pose();
+        let k = model.kinematics_with_trig(u, v, trig_u, trig_v, vdot, vddot);
+        if let Progress::Done(result) = newton.advance(model, k, options) {
+            return result;
+        }
+    }
+}
+
+/// [`solve_fused`] one evaluation at a time: the iteration asks for the
+/// fused kernel at a pose ([`FusedNewton::pose`]), is given it
+/// ([`FusedNewton::advance`]), and says whether it wants another. A batch
+/// runs many at once, each pose's evaluations made together with the
+/// others' (on a run-time mechanism's lanes), each ending as it would
+/// alone.
+pub(crate) struct FusedNewton<const M: usize, const F: usize> {
+    v: SVector<f64, F>,
+    /// The iterate the evaluation asked for is at.
+    u: SVector<f64, M>,
+    /// The sines and cosines carried from iterate to iterate, but computed
+    /// exactly where the evaluation may confirm convergence: a returned
+    /// pose closes to its residual as `psi` computes it, to the bit.
+    trig: TrigCarrier<M, F>,
+    /// Those of the evaluation asked for.
+    trig_u: SinCos<M>,
+    trig_v: SinCos<F>,
+    /// The steps taken.
+    iteration: usize,
+    step: f64,
+    previous_step: f64,
+    asked: Asked,
+}
+
+/// Why the evaluation was asked for.
+#[derive(Clone, Copy)]
+enum Asked {
+    /// At the first guess.
+    Start,
+    /// After a step; `last` if the step passed the step test.
+    Step { last: bool },
+    /// Again, on exact sines, at an iterate where Ψ is exactly 0.
+    Exactly,
+}
+
+/// What the iteration wants after an evaluation.
+pub(crate) enum Progress<const M: usize, const F: usize> {
+    /// The fused kernel at its new [`FusedNewton::pose`].
+    Evaluate,
+    /// Nothing more: it ended, so.
+    Done(Result<Converged<M, F>, Error>),
+}
+
+impl<const M: usize, const F: usize> FusedNewton<M, F> {
+    /// The iteration from `u0`, its inputs checked, asking for its first
+    /// evaluation.
+    #[inline]
+    pub(crate) fn start<L: Kernels<M, F> + ?Sized>(
+        model: &L,
+        u0: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        options: &Options,
+    ) -> Result<Self, Error> {
+        check_input("u0", u0.as_slice())?;
+        check_input("v", v.as_slice())?;
+        options.check()?;
+        let mut newton = FusedNewton {
+            v: *v,
+            u: *u0,
+            trig: TrigCarrier::new(),
+            trig_u: [(0.0, 1.0); M],
+            trig_v: [(0.0, 1.0); F],
+            iteration: 0,
+            step: f64::INFINITY,
+            previous_step: f64::INFINITY,
+            asked: Asked::Start,
         };
-        let k = model.kinematics_with_trig(u, v, &trig_u, &trig_v, vdot, vddot);
+        newton.ask(model, true);
+        Ok(newton)
+    }
+
+    /// Where the evaluation asked for is: u and the sines and cosines of u
+    /// and v to give the fused kernel.
+    #[inline]
+    pub(crate) fn pose(&self) -> (&SVector<f64, M>, &SinCos<M>, &SinCos<F>) {
+        (&self.u, &self.trig_u, &self.trig_v)
+    }
+
+    /// The sines and cosines for an evaluation at `self.u`.
+    #[inline(always)]
+    fn ask<L: Kernels<M, F> + ?Sized>(&mut self, model: &L, exact: bool) {
+        (self.trig_u, self.trig_v) = if exact {
+            (self.trig).exactly_at(&model.trig_u(), &model.trig_v(), &self.u, &self.v)
+        } else {
+            (self.trig).at(&model.trig_u(), &model.trig_v(), &self.u, &self.v)
+        };
+    }
+
+    /// Takes the fused kernel's evaluation `k` at [`FusedNewton::pose`]:
+    /// the iteration ends there, or takes its next step and asks for the
+    /// evaluation there.
+    #[inline]
+    pub(crate) fn advance<L: Kernels<M, F> + ?Sized>(
+        &mut self,
+        model: &L,
+        k: Kinematics<M, F>,
+        options: &Options,
+    ) -> Progress<M, F> {
+        match self.advance_or_fail(model, k, options) {
+            Ok(progress) => progress,
+            Err(error) => Progress::Done(Err(error)),
+        }
+    }
+
+    #[inline(always)]
+    fn advance_or_fail<L: Kernels<M, F> + ?Sized>(
+        &mut self,
+        model: &L,
+        k: Kinematics<M, F>,
+        options: &Options,
+    ) -> Result<Progress<M, F>, Error> {
         check_value(Stage::Position, "Ψ", k.psi.as_slice())?;
         check_value(Stage::Position, "Ψ_u", k.psi_u.as_slice())?;
-        Ok(k)
-    };
-    let mut u = *u0;
-    let mut k = evaluate(&u, true)?;
-    let mut residual = k.psi.amax();
-    let mut step = f64::INFINITY;
-    let mut previous_step = f64::INFINITY;
-    for iteration in 1..=options.max_iterations {
+        let residual = k.psi.amax();
+        let stepped = match self.asked {
+            Asked::Start => false,
+            // Only a step that passes the step test, or an exact zero of
+            // Ψ, ends the iteration; the latter is confirmed on exact
+            // sines.
+            Asked::Step { last: false } if residual == 0.0 => {
+                self.ask(model, true);
+                self.asked = Asked::Exactly;
+                return Ok(Progress::Evaluate);
+            }
+            Asked::Step { .. } | Asked::Exactly => true,
+        };
+        if stepped {
+            let (u, step, previous_step) = (&self.u, self.step, self.previous_step);
+            if converged(u, step, previous_step, residual, options) {
+                let position = Position {
+                    u: *u,
+                    iterations: self.iteration,
+                    residual,
+                    psi_u: k.psi_u,
+                };
+                // Those of the evaluation that confirmed convergence, exact.
+                let (sin_cos_u, sin_cos_v) = self.trig.anchored();
+                let pose_trig = PoseTrig {
+                    u: *u,
+                    sin_cos_u,
+                    sin_cos_v,
+                };
+                return Ok(Progress::Done(Ok((position, k, pose_trig))));
+            }
+            self.previous_step = step;
+        }
+        if self.iteration >= options.max_iterations {
+            return Err(Error::NotConverged {
+                iterations: options.max_iterations,
+                residual,
+                step: self.step,
+            });
+        }
+        self.iteration += 1;
         options.require_accuracy(Stage::Position, k.rcond)?;
         let delta = -(k.inverse * k.psi);
-        u += delta;
-        step = delta.amax();
-        check_value(Stage::Position, "u", u.as_slice())?;
-        // Only a step that passes the step test, or an exact zero of Ψ,
-        // ends the iteration; the latter is confirmed on exact sines.
-        let last = step_is_final(&u, step, previous_step, options);
-        k = evaluate(&u, last)?;
-        residual = k.psi.amax();
-        if !last && residual == 0.0 {
-            k = evaluate(&u, true)?;
-            residual = k.psi.amax();
-        }
-        if converged(&u, step, previous_step, residual, options) {
-            let position = Position {
-                u,
-                iterations: iteration,
-                residual,
-                psi_u: k.psi_u,
-            };
-            // Those of the evaluation that confirmed convergence, exact.
-            let (sin_cos_u, sin_cos_v) = trig.anchored();
-            let pose_trig = PoseTrig {
-                u,
-                sin_cos_u,
-                sin_cos_v,
-            };
-            return Ok((position, k, pose_trig));
-        }
-        previous_step = step;
+        self.u += delta;
+        self.step = delta.amax();
+        check_value(Stage::Position, "u", self.u.as_slice())?;
+        let last = step_is_final(&self.u, self.step, self.previous_step, options);
+        self.ask(model, last);
+        self.asked = Asked::Step { last };
+        Ok(Progress::Evaluate)
     }
-    Err(Error::NotConverged {
-        iterations: options.max_iterations,
-        residual,
-        step,
-    })
 }
 
 /// Whether the iterate `u`, reached by a step of size `step` after one of

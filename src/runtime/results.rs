@@ -130,3 +130,13 @@ impl<const M: usize, const F: usize, P: PartialEq> PartialEq for Analysis<M, F, 
             && *vddot == other.vddot
     }
 }
+
+/// One pose of a batch of analyses ([`Linkage::analyze`](crate::runtime::Linkage::analyze)).
+#[derive(Clone, Debug, PartialEq)]
+pub struct AnalysisJob<L, const M: usize, const F: usize> {
+    pub model: L,
+    pub u_guess: SVector<f64, M>,
+    pub v: SVector<f64, F>,
+    pub vdot: SVector<f64, F>,
+    pub vddot: SVector<f64, F>,
+}

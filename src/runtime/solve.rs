@@ -5,11 +5,13 @@
 
 use crate::runtime::checks::{check_input, check_result, check_scale, check_value};
 use crate::runtime::error::{Error, Stage};
-use crate::runtime::kernels::Kernels;
+use crate::runtime::kernels::{FusedRequest, Kernels};
 use crate::runtime::linalg::{augmented_condition, factor, invert};
+use crate::runtime::newton::Progress;
 use crate::runtime::options::{AccelerationMethod, JacobianSource, Options};
 use crate::runtime::powers_of_two::power_of_two_near;
-use crate::runtime::results::{Analysis, Kinematics, Velocity};
+use crate::runtime::results::{Analysis, AnalysisJob, Kinematics, Position, Velocity};
+use crate::runtime::trig::PoseTrig;
 use crate::runtime::{newton, sources};
 use nalgebra::{SMatrix, SVector};
 
@@ -27,28 +29,155 @@ pub(crate) fn analyze<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>
     vddot: &SVector<f64, F>,
     options: &Options,
 ) -> Result<Analysis<M, F, L::Points>, Error> {
+    let fused_serves = fused_serves(vdot, vddot, options)?;
+    if fused_serves && !options.damped {
+        let converged = newton::solve_fused(model, u_guess, v, vdot, vddot, options)?;
+        return finish_fused(model, converged, v, vdot, vddot, options);
+    }
+    let position = newton::solve(model, u_guess, v, options, &mut |_| {})?;
+    let fused = if fused_serves {
+        let k = model.kinematics(&position.u, v, vdot, vddot);
+        fused_kinematics(&k, vdot, vddot, options)?
+    } else {
+        None
+    };
+    finish(model, position, fused, None, v, vdot, vddot, options)
+}
+
+/// [`analyze`] of every job, in order, each result bit for bit the one it
+/// gives alone: the Newton iterations of the jobs on the fused kernel
+/// (the defaults) run side by side, each round's evaluations asked for
+/// together ([`Kernels::kinematics_with_trig_each`]: on a run-time
+/// mechanism's lanes), each job ending when it would alone.
+pub(crate) fn analyze_together<L: Kernels<M, F>, const M: usize, const F: usize>(
+    jobs: &[AnalysisJob<L, M, F>],
+    options: &Options,
+) -> Vec<Result<Analysis<M, F, L::Points>, Error>> {
+    // Every slot is written: by a job that runs alone, or by one of the
+    // iterations, each of which ends (within `max_iterations` steps).
+    let mut results: Vec<Result<Analysis<M, F, L::Points>, Error>> = (jobs.iter())
+        .map(|_| {
+            Err(Error::NotConverged {
+                iterations: 0,
+                residual: f64::NAN,
+                step: f64::NAN,
+            })
+        })
+        .collect();
+    let mut running = Vec::with_capacity(jobs.len());
+    for (index, job) in jobs.iter().enumerate() {
+        let fused_serves = match fused_serves(&job.vdot, &job.vddot, options) {
+            Ok(serves) => serves,
+            Err(error) => {
+                results[index] = Err(error);
+                continue;
+            }
+        };
+        if !fused_serves || options.damped {
+            results[index] = analyze(
+                &job.model,
+                &job.u_guess,
+                &job.v,
+                &job.vdot,
+                &job.vddot,
+                options,
+            );
+            continue;
+        }
+        match newton::FusedNewton::start(&job.model, &job.u_guess, &job.v, options) {
+            Ok(newton) => running.push((index, newton)),
+            Err(error) => results[index] = Err(error),
+        }
+    }
+    let mut evaluations = Vec::with_capacity(running.len());
+    while !running.is_empty() {
+        evaluations.clear();
+        let requests: Vec<FusedRequest<'_, L, M, F>> = (running.iter())
+            .map(|(index, newton)| {
+                let job: &AnalysisJob<L, M, F> = &jobs[*index];
+                let (u, trig_u, trig_v) = newton.pose();
+                FusedRequest {
+                    model: &job.model,
+                    u,
+                    v: &job.v,
+                    trig_u,
+                    trig_v,
+                    vdot: &job.vdot,
+                    vddot: &job.vddot,
+                }
+            })
+            .collect();
+        L::kinematics_with_trig_each(&requests, |_, k| evaluations.push(k));
+        drop(requests);
+        let mut evaluated = evaluations.drain(..);
+        running.retain_mut(|(index, newton)| {
+            let job = &jobs[*index];
+            let Some(k) = evaluated.next() else {
+                return true;
+            };
+            match newton.advance(&job.model, k, options) {
+                Progress::Evaluate => true,
+                Progress::Done(ended) => {
+                    results[*index] = ended.and_then(|converged| {
+                        finish_fused(
+                            &job.model, converged, &job.v, &job.vdot, &job.vddot, options,
+                        )
+                    });
+                    false
+                }
+            }
+        });
+    }
+    results
+}
+
+/// Whether the fused kernel serves for these drivers' rates (its numbers
+/// ordinary, with the generated Jacobians and the fused γ), the rates
+/// checked.
+fn fused_serves<const F: usize>(
+    vdot: &SVector<f64, F>,
+    vddot: &SVector<f64, F>,
+    options: &Options,
+) -> Result<bool, Error> {
     check_input("vdot", vdot.as_slice())?;
     check_input("vddot", vddot.as_slice())?;
     // The fused kernel where its numbers are ordinary; the separate
     // solves, which scale γ and check for underflow, at the extremes.
-    let fused_serves = options.jacobian == JacobianSource::Generated
+    Ok(options.jacobian == JacobianSource::Generated
         && options.method == AccelerationMethod::Fused
         && ordinary(vdot.amax(), true)
-        && ordinary(vddot.amax(), true);
-    let (position, fused, trig) = if fused_serves && !options.damped {
-        let (position, k, trig) = newton::solve_fused(model, u_guess, v, vdot, vddot, options)?;
-        let fused = fused_kinematics(&k, vdot, vddot, options)?;
-        (position, fused, Some(trig))
-    } else {
-        let position = newton::solve(model, u_guess, v, options, &mut |_| {})?;
-        let fused = if fused_serves {
-            let k = model.kinematics(&position.u, v, vdot, vddot);
-            fused_kinematics(&k, vdot, vddot, options)?
-        } else {
-            None
-        };
-        (position, fused, None)
-    };
+        && ordinary(vddot.amax(), true))
+}
+
+/// The analysis of a pose Newton found on the fused kernel: its
+/// velocities and accelerations from the evaluation that confirmed it.
+fn finish_fused<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
+    model: &L,
+    (position, k, trig): newton::Converged<M, F>,
+    v: &SVector<f64, F>,
+    vdot: &SVector<f64, F>,
+    vddot: &SVector<f64, F>,
+    options: &Options,
+) -> Result<Analysis<M, F, L::Points>, Error> {
+    let fused = fused_kinematics(&k, vdot, vddot, options)?;
+    finish(model, position, fused, Some(trig), v, vdot, vddot, options)
+}
+
+/// The analysis of a pose found: the velocities and accelerations (those
+/// of the fused kernel, `fused`, or by the separate solves), then the
+/// points.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn finish<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
+    model: &L,
+    position: Position<M>,
+    fused: Option<(Velocity<M, F>, SVector<f64, M>)>,
+    trig: Option<PoseTrig<M, F>>,
+    v: &SVector<f64, F>,
+    vdot: &SVector<f64, F>,
+    vddot: &SVector<f64, F>,
+    options: &Options,
+) -> Result<Analysis<M, F, L::Points>, Error> {
     let u = position.u;
     let (velocity, uddot) = if let Some(fused) = fused {
         fused

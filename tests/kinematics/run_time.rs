@@ -137,6 +137,109 @@ fn a_sweep_of_the_twin_is_the_compiled_sweep() {
     assert_eq!(a.complete, b.complete);
 }
 
+/// A batch of analyses of run-time mechanisms, whose Newton iterations
+/// run side by side on the tapes' lanes: every result the job's own
+/// `analyze`, to the bit, and the compiled twin's — designs of one
+/// mechanism (couplers of 40 … 59, one that assembles nowhere) at poses
+/// round the turn, a second mechanism's jobs between them (a run of
+/// lanes ends there), rates so small the separate solves take over, a
+/// guess not finite; plain and damped Newton.
+#[test]
+fn a_batch_on_lanes_is_each_job_alone() {
+    use linkage::batch::{self, AnalysisJob};
+    let compiled = FourBar::WORKSHEET;
+    let read = read::<_, 2, 1, 4>(
+        &compiled,
+        include_str!("../../src/mechanisms.rs"),
+        "FourBar",
+    );
+    let other = twin::<_, 2, 1, 3>(
+        &SLIDER_CRANK,
+        include_str!("../models/slider_crank.rs"),
+        "SliderCrank",
+    );
+    let mut jobs = Vec::new();
+    let mut twins = Vec::new();
+    for k in 0..60 {
+        let mut design = read.clone();
+        let mut bar = compiled;
+        bar.l3 = 40.0 + (k % 20) as f64;
+        if k % 20 == 7 {
+            bar.l2 = 500.0;
+        }
+        design.set_parameter("l3", bar.l3).unwrap();
+        design.set_parameter("l2", bar.l2).unwrap();
+        let model = design.fixed::<2, 1>().unwrap();
+        let vdot = match k {
+            13 => 1e-70,
+            _ => 41.9,
+        };
+        let u_guess = match k {
+            29 => vector![f64::INFINITY, 0.0],
+            _ => vector![1.2, -0.8],
+        };
+        let v = vector![(7.0 * k as f64).to_radians()];
+        twins.push(AnalysisJob {
+            model: bar,
+            u_guess,
+            v,
+            vdot: vector![vdot],
+            vddot: vector![5.0],
+        });
+        jobs.push(AnalysisJob {
+            model,
+            u_guess,
+            v,
+            vdot: vector![vdot],
+            vddot: vector![5.0],
+        });
+    }
+    for options in [Options::default(), Options::damped()] {
+        let batch = batch::analyses(&jobs, &options);
+        let compiled = batch::analyses(&twins, &options);
+        for (k, ((job, result), twin)) in jobs.iter().zip(&batch).zip(&compiled).enumerate() {
+            let alone = job
+                .model
+                .analyze(&job.u_guess, &job.v, &job.vdot, &job.vddot, &options);
+            assert_eq!(result, &alone, "job {k}");
+            match (result, twin) {
+                (Ok(a), Ok(b)) => {
+                    same("u", &a.u, &b.u);
+                    same("udot", &a.udot, &b.udot);
+                    same("uddot", &a.uddot, &b.uddot);
+                    same_points("points", a.points.as_ref(), b.points.as_ref());
+                    assert_eq!(a.iterations, b.iterations);
+                }
+                (Err(a), Err(b)) => assert_eq!(a, b, "job {k}"),
+                _ => panic!("job {k}: {result:?} at run time, {twin:?} compiled"),
+            }
+        }
+        assert!(batch[7].is_err() && batch[29].is_err() && batch[0].is_ok() && batch[13].is_ok());
+    }
+    // Another mechanism's jobs between the four-bar's: every third job.
+    let mixed: Vec<_> = (0..30)
+        .map(|k| match k % 3 {
+            2 => AnalysisJob {
+                model: other.clone(),
+                u_guess: vector![0.3, 0.1],
+                v: vector![0.7 * k as f64],
+                vdot: vector![3.0],
+                vddot: vector![0.0],
+            },
+            _ => jobs[k].clone(),
+        })
+        .collect();
+    let options = Options::default();
+    let batch = batch::analyses(&mixed, &options);
+    for (k, (job, result)) in mixed.iter().zip(&batch).enumerate() {
+        let alone = job
+            .model
+            .analyze(&job.u_guess, &job.v, &job.vdot, &job.vddot, &options);
+        assert_eq!(result, &alone, "job {k}");
+    }
+    assert!(batch[2].is_ok() && batch[5].is_ok());
+}
+
 /// A view differentiated by some parameters only, in its own order, with
 /// room for more: its columns are the full view's, to the bit, and the
 /// rest zero; its sensitivities along a sweep are the compiled ones'.

@@ -236,6 +236,37 @@ impl Tape {
         Ok(())
     }
 
+    /// Runs a phase on every lane and writes output k of lane l to
+    /// `out[l * stride + places[k]]`: each lane's outputs straight into
+    /// its own result, laid out as in [`Tape::run_to`] (a place at or
+    /// beyond `stride`, or outside `out`, is skipped).
+    pub fn run_lanes_to<const L: usize>(
+        &self,
+        phase: usize,
+        registers: &mut Registers<L>,
+        out: &mut [f64],
+        stride: usize,
+        places: &[u32],
+    ) -> Result<(), TapeError> {
+        let outputs = self.check(phase, registers.tape, places.len())?;
+        let values = &mut registers.values;
+        self.execute(phase, values);
+        let mask = values.len().wrapping_sub(1);
+        for (&place, &r) in places.iter().zip(outputs) {
+            let place = place as usize;
+            if place >= stride {
+                continue;
+            }
+            let lanes = values[r as usize & mask];
+            for (l, value) in lanes.into_iter().enumerate() {
+                if let Some(o) = out.get_mut(l * stride + place) {
+                    *o = value;
+                }
+            }
+        }
+        Ok(())
+    }
+
     /// Runs a phase on every lane: `out[k][l]` is output k of lane l.
     pub fn run_lanes<const L: usize>(
         &self,
@@ -434,6 +465,27 @@ mod tests {
             }
             assert_eq!(second[0][l].to_bits(), next[0].to_bits());
         }
+    }
+
+    #[test]
+    fn each_lane_goes_to_its_own_result() {
+        let tape = example();
+        let mut lanes = tape.registers::<2>();
+        for (l, u) in [0.7, -0.2].into_iter().enumerate() {
+            lanes.set_lane(Input::U, l, &[u]).unwrap();
+            lanes.set_lane(Input::Fields, l, &[3.0]).unwrap();
+        }
+        let mut listed = [[0.0; 2]; 3];
+        tape.run_lanes(0, &mut lanes, &mut listed).unwrap();
+        // Two results of stride 4, the second cut short: place 2 of lane
+        // 1 is outside it, place 9 beyond the stride.
+        let mut placed = [-1.0; 6];
+        tape.run_lanes_to(0, &mut lanes, &mut placed, 4, &[2, 0, 9])
+            .unwrap();
+        assert_eq!(
+            placed,
+            [listed[1][0], -1.0, listed[0][0], -1.0, listed[1][1], -1.0]
+        );
     }
 
     #[test]
