@@ -22,8 +22,9 @@
 //! ## The method
 //!
 //! 1. **The mechanism's size, from its equations.** The coordinates that
-//!    are angles are those under a sine or cosine of which Ψ is
-//!    2π-periodic (checked); the others are lengths. Each equation's size
+//!    are angles are those under a sine or cosine (`theta.cos()`, or
+//!    `(theta + beta).cos()`) of which Ψ is 2π-periodic (checked at sample
+//!    poses); the others are lengths. Each equation's size
 //!    sᵢ is the largest, over eight sample poses (angles spread over a
 //!    turn, lengths 0), of |Ψᵢ| + Σ_(j angle) |∂Ψᵢ/∂uⱼ|, and residuals are
 //!    judged scale-free, as max |Ψᵢ|/sᵢ.
