@@ -3,6 +3,7 @@
 //! before it, each whole root classified and the modes ordered.
 
 use super::error::AssemblyError;
+use super::grid::MOST_ROOTS;
 use super::modes::{Classified, Modes, classify, coordinate_order, mode_order};
 use super::newton::BlockSystem;
 use super::scale::{pattern, scale};
@@ -10,6 +11,11 @@ use super::settings::Search;
 use super::structure::blocks;
 use crate::runtime::{Error, Linkage};
 use nalgebra::SVector;
+
+/// The most poses of the blocks solved so far the next block is searched
+/// from: enough for eight loops of two assemblies each, and for 64 roots
+/// of a block searched from four poses.
+const MOST_POSES: usize = 4 * MOST_ROOTS;
 
 /// Every real assembly of `model` at the driver `v` the search finds, each
 /// regular one a [`Mode`](super::Mode) with its branch signs, the singular
@@ -65,6 +71,12 @@ pub fn modes<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
             runs += found.runs;
             least = least.min(found.least_residual);
             next.extend(found.roots);
+        }
+        // Too many to search the next block from each: a search gone
+        // wrong (see `MOST_ROOTS`), cut short and said to be unstable.
+        if next.len() > MOST_POSES {
+            next.truncate(MOST_POSES);
+            stable = false;
         }
         poses = next;
         if poses.is_empty() {

@@ -25,6 +25,20 @@ fn a_coordinate_turning_inside_a_sum_is_an_angle() {
     assert!(found.stable);
 }
 
+/// A coordinate that turns but is not 2π-periodic, `(q / 2).sin()`, is
+/// searched as a length, with a root every 4π: the search keeps at most
+/// 64, and says it was cut short.
+#[test]
+fn a_search_with_a_root_every_turn_is_cut_short() {
+    let text =
+        "u = [q, s], v = [t], closure = [s - l1 * (q * 0.5).cos() - l0 - t, (q * 0.5).sin() - 0.3]";
+    let model = mechanism(text).fixed::<2, 1>().unwrap();
+    let found = modes(&model, &vector![0.0], &Search::default()).unwrap();
+    assert_eq!(found.angle, [false, false]);
+    assert!(!found.stable);
+    assert!(found.modes.len() <= 64, "{}", found.modes.len());
+}
+
 /// A power of a sum nested ten deep, `((x.sin() + y).powi(2)).powi(2)…`:
 /// within every limit of the text, but the proof that the two
 /// acceleration methods agree multiplied it out term by term, 7 s for
@@ -38,4 +52,31 @@ fn a_proof_too_long_to_do_is_abandoned() {
     let mechanism = Mechanism::from_text("Found", &text, &[("l0", 2.0)]).unwrap();
     assert_eq!(mechanism.methods_agree(), None);
     eprintln!("built in {:.2} s", started.elapsed().as_secs_f64());
+}
+
+/// Ten coordinates coupled in one block: the first grid, 3¹⁰ = 59 049
+/// Newton runs, ran whatever its size (1.4 s; 3¹⁶, for the largest
+/// mechanisms the tool takes, hours). It is now as fine as
+/// `Search::max_cells` allows, and the search says it is not stable.
+#[test]
+fn a_large_block_starts_on_a_grid_within_the_limit() {
+    const M: usize = 10;
+    let u: Vec<String> = (0..M).map(|k| format!("x{k}")).collect();
+    let closure: Vec<String> = (0..M)
+        .map(|k| format!("x{k} + 0.5 * x{}.sin() - t", (k + 1) % M))
+        .collect();
+    let text = format!(
+        "u = [{}], v = [t], closure = [{}]",
+        u.join(", "),
+        closure.join(", ")
+    );
+    let model = Mechanism::from_text("Found", &text, &[])
+        .unwrap()
+        .fixed::<M, 1>()
+        .unwrap();
+    let found = modes(&model, &vector![0.3], &Search::default()).unwrap();
+    assert_eq!(found.blocks.len(), 1);
+    assert!(found.runs <= Search::default().max_cells, "{}", found.runs);
+    assert!(!found.stable);
+    assert_eq!(found.modes.len(), 1);
 }
