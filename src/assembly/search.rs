@@ -9,7 +9,7 @@ use super::newton::BlockSystem;
 use super::scale::{pattern, scale};
 use super::settings::Search;
 use super::structure::blocks;
-use crate::runtime::{Error, Linkage};
+use crate::runtime::{Error, Linkage, Stage};
 use nalgebra::SVector;
 
 /// The most poses of the blocks solved so far the next block is searched
@@ -23,8 +23,8 @@ const MOST_POSES: usize = 4 * MOST_ROOTS;
 ///
 /// Errors: [`AssemblyError::NoAssembly`] if there is none (the mechanism
 /// cannot be assembled at `v`); [`AssemblyError::Input`] for a `v` not
-/// finite, settings out of range, or equations not finite at every pose
-/// tried.
+/// finite, settings out of range, equations not finite at every pose
+/// tried, or a named point not finite at an assembly found.
 ///
 /// ```
 /// use linkage::assembly::{Search, Sign, modes};
@@ -96,6 +96,19 @@ pub fn modes<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
             Classified::Mode(mode) => modes.push(mode),
             Classified::DeadCentre(dead_centre) => dead_centres.push(dead_centre),
         }
+    }
+    // A named point not finite at an assembly (`(theta3 - 1.0).sqrt()`
+    // where θ3 < 1): the points are outside their domain there, as an
+    // analysis of that pose would find.
+    let finite = |points: &[nalgebra::Vector2<f64>]| {
+        points.iter().all(|p| p.x.is_finite() && p.y.is_finite())
+    };
+    if !(modes.iter().all(|m| finite(&m.points)) && dead_centres.iter().all(|d| finite(&d.points)))
+    {
+        return Err(AssemblyError::Input(Error::NonFiniteValue {
+            stage: Stage::Points,
+            quantity: "P",
+        }));
     }
     modes.sort_by(mode_order);
     dead_centres.sort_by(|a, b| coordinate_order(&a.u, &b.u));

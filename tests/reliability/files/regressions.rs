@@ -1,9 +1,10 @@
 //! What the campaigns over mechanism texts and files found, each kept as
 //! the smallest text that shows it.
 
-use linkage::assembly::{Search, modes};
+use linkage::assembly::{Assemble, AssemblyError, Pick, Search, modes};
 use linkage::mechanism::Mechanism;
 use linkage::prelude::*;
+use linkage::{Error, Stage};
 
 /// The mechanism of `text` with parameters `l0` = 178.67 and `l1` = 2.17.
 fn mechanism(text: &str) -> Mechanism {
@@ -37,6 +38,30 @@ fn a_search_with_a_root_every_turn_is_cut_short() {
     assert_eq!(found.angle, [false, false]);
     assert!(!found.stable);
     assert!(found.modes.len() <= 64, "{}", found.modes.len());
+}
+
+/// An assembly whose named point is outside its domain there
+/// (`(x - 2.0).sqrt()` at x = 1) came back `Ok` with NaN in its points;
+/// the analysis of the same pose said `NonFiniteValue`. Now the search
+/// says so too.
+#[test]
+fn an_assembly_whose_point_is_not_finite_is_an_error() {
+    let text = "u = [x], v = [t], points = [P = ((x - 2.0).sqrt(), x)], closure = [x - t]";
+    let model = Mechanism::from_text("Found", text, &[])
+        .unwrap()
+        .fixed::<1, 1>()
+        .unwrap();
+    let error = model.assemble(&vector![1.0], &Pick::Index(0)).unwrap_err();
+    assert_eq!(
+        error,
+        AssemblyError::Input(Error::NonFiniteValue {
+            stage: Stage::Points,
+            quantity: "P"
+        })
+    );
+    // Where the point is finite, the same mechanism assembles.
+    let mode = model.assemble(&vector![3.0], &Pick::Index(0)).unwrap();
+    assert_eq!(mode.points[0].x, 1.0);
 }
 
 /// A power of a sum nested ten deep, `((x.sin() + y).powi(2)).powi(2)…`:
