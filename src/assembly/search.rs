@@ -8,7 +8,7 @@ use super::modes::{Classified, Modes, classify, coordinate_order, mode_order};
 use super::newton::BlockSystem;
 use super::scale::{pattern, scale};
 use super::settings::Search;
-use super::structure::blocks;
+use super::structure::{blocks, perfect};
 use crate::runtime::{Error, Linkage, Stage};
 use nalgebra::SVector;
 
@@ -24,7 +24,9 @@ const MOST_POSES: usize = 4 * MOST_ROOTS;
 /// Errors: [`AssemblyError::NoAssembly`] if there is none (the mechanism
 /// cannot be assembled at `v`); [`AssemblyError::Input`] for a `v` not
 /// finite, settings out of range, equations not finite at every pose
-/// tried, or a named point not finite at an assembly found.
+/// tried, or a named point not finite at an assembly found;
+/// [`AssemblyError::SingularEverywhere`] if Ψ_u is singular at every pose
+/// sampled (no assembly can be regular).
 ///
 /// ```
 /// use linkage::assembly::{Search, Sign, modes};
@@ -52,7 +54,18 @@ pub fn modes<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     }
     search.check::<M>()?;
     let scale = scale(model, v, &search.lengths)?;
-    let blocks = blocks(&pattern(model, v, &scale));
+    let nonzero = pattern(model, v, &scale);
+    // Ψ_u singular wherever it was looked at (a link of length 0): every
+    // root would be a dead centre, found, if at all, by searching a grid
+    // of every coordinate at once to its largest size (a second for six
+    // coordinates, for nothing).
+    if !perfect(&nonzero) {
+        let idle = (0..M)
+            .filter(|&j| nonzero.iter().all(|row| !row[j]))
+            .collect();
+        return Err(AssemblyError::SingularEverywhere { idle });
+    }
+    let blocks = blocks(&nonzero);
     // The poses solved so far: the blocks before, the others at the box's
     // centre (no earlier block's equation involves them).
     let mut poses = vec![(scale.lower + scale.upper) * 0.5];

@@ -105,3 +105,28 @@ fn a_large_block_starts_on_a_grid_within_the_limit() {
     assert!(!found.stable);
     assert_eq!(found.modes.len(), 1);
 }
+
+/// A link of length 0 (Jansen's leg with j = 0): its angle moves no
+/// equation, Ψ_u is singular everywhere, and the search ran every grid of
+/// the six coordinates together to its largest, 1.2 s, to find nothing.
+/// Now it says so at once.
+#[test]
+fn a_link_of_length_zero_is_singular_everywhere() {
+    let text = "u = [theta3, theta4], v = [theta2],
+        closure = [
+            l2 * theta2.cos() + l3 * theta3.cos() + l4 * theta4.cos() - l1,
+            l2 * theta2.sin() + l3 * theta3.sin() + l4 * theta4.sin(),
+        ]";
+    let parameters = [("l1", 80.0), ("l2", 20.0), ("l3", 0.0), ("l4", 70.0)];
+    let model = Mechanism::from_text("Found", text, &parameters)
+        .unwrap()
+        .fixed::<2, 1>()
+        .unwrap();
+    let error = modes(&model, &vector![0.3], &Search::default()).unwrap_err();
+    assert_eq!(error, AssemblyError::SingularEverywhere { idle: vec![0] });
+    assert!(
+        error
+            .to_string()
+            .contains("no equation moves the coordinates [0]")
+    );
+}
