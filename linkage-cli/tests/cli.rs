@@ -164,7 +164,8 @@ fn exit_statuses_say_what_failed() {
     assert_eq!(run(&["check", "/no/such/file.toml"]).status.code(), Some(4));
     assert_eq!(run(&["analyze"]).status.code(), Some(2));
     assert_eq!(run(&["frobnicate", "x"]).status.code(), Some(2));
-    // A mechanism that does not assemble at its `at`: the analysis fails.
+    // A mechanism that does not assemble at its `at`: the analysis fails,
+    // and says where in the file.
     let dir = std::env::temp_dir().join(format!("linkage-cli-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("apart.toml");
@@ -175,7 +176,15 @@ fn exit_statuses_say_what_failed() {
     .unwrap();
     let out = run(&["analyze", path.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(3), "{}", text(&out.stderr));
-    assert!(text(&out.stderr).starts_with("error:"));
+    let said = text(&out.stderr);
+    assert!(
+        said.starts_with(
+            "error: the mechanism does not assemble at the drivers' `at` (theta2 = 0)"
+        ),
+        "{said}"
+    );
+    // Located at the drive's `from` (its `at`, not written).
+    assert!(said.contains("apart.toml:16:8"), "{said}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
@@ -193,3 +202,4 @@ fn expand_writes_the_attribute_with_the_files_values() {
         assert!(rust.contains(&line), "{line} in {rust}");
     }
 }
+
