@@ -126,22 +126,28 @@ impl Tally {
         }
     }
 
-    /// Prints what was found — the table's row, then the outcomes — and
-    /// fails if anything broke a property.
+    /// Prints what was found — the table's row (campaign, cases, `Ok`,
+    /// typed errors, panics, hangs — cases over a second, or past the
+    /// watchdog —, NaN in `Ok`,
+    /// errors without a place, internal errors, median and slowest case),
+    /// the outcomes by stage and kind — and fails if anything broke a
+    /// property.
     fn report(mut self, name: &str, started: Instant) {
         self.times.sort();
         let n = self.times.len();
         let median = self.times.get(n / 2).copied().unwrap_or_default();
         let max = self.times.last().copied().unwrap_or_default();
-        let ok: usize = (self.kinds.iter())
-            .filter(|(k, _)| k.starts_with("Ok"))
-            .map(|(_, n)| n)
-            .sum();
+        let count = |f: &dyn Fn(&str) -> bool| -> usize {
+            (self.kinds.iter())
+                .filter(|(k, _)| f(k))
+                .map(|(_, n)| n)
+                .sum()
+        };
+        let ok = count(&|k| k.starts_with("Ok"));
+        let errors = count(&|k| !k.starts_with("Ok") && k != "panicked" && k != "hung");
         eprintln!(
-            "| {name} | {n} | {ok} | {} | {} | {} | {} | {} | {} | {} | {:.2} ms | {:.0} ms |",
-            n - ok - self.panics.len() - self.hangs.len(),
+            "| {name} | {n} | {ok} | {errors} | {} | {} | {} | {} | {} | {:.2} ms | {:.0} ms |",
             self.panics.len(),
-            self.hangs.len(),
             self.slow.len(),
             self.lies.len(),
             self.unlocated.len(),
@@ -149,6 +155,13 @@ impl Tally {
             median.as_secs_f64() * 1e3,
             max.as_secs_f64() * 1e3,
         );
+        let mut stages: BTreeMap<&str, usize> = BTreeMap::new();
+        for (kind, k) in &self.kinds {
+            *stages
+                .entry(kind.split(':').next().unwrap_or(kind))
+                .or_default() += k;
+        }
+        eprintln!("    by stage: {stages:?}");
         eprintln!("    ({:.1} s in all)", started.elapsed().as_secs_f64());
         let mut kinds: Vec<(String, usize)> = self.kinds.into_iter().collect();
         kinds.sort_by(|a, b| b.1.cmp(&a.1).then(a.0.cmp(&b.0)));
