@@ -640,6 +640,7 @@ fn the_module_opens_no_path_but_the_one_it_is_given() {
         ("drive.rs", include_str!("drive.rs")),
         ("equations.rs", include_str!("equations.rs")),
         ("error.rs", include_str!("error.rs")),
+        ("lines.rs", include_str!("lines.rs")),
         ("mechanism.rs", include_str!("mechanism.rs")),
         ("mod.rs", include_str!("mod.rs")),
         ("names.rs", include_str!("names.rs")),
