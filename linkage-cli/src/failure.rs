@@ -12,6 +12,9 @@ pub enum Failure {
     Malformed(String),
     /// The analysis failed.
     Analysis(String),
+    /// The analysis failed at a place in the file (already written to
+    /// standard error, located there).
+    AnalysisAt,
     /// A file could not be read or written.
     Io(String),
 }
@@ -21,7 +24,7 @@ impl Failure {
     pub fn code(&self) -> u8 {
         match self {
             Failure::Mistakes | Failure::Malformed(_) => 1,
-            Failure::Analysis(_) => 3,
+            Failure::Analysis(_) | Failure::AnalysisAt => 3,
             Failure::Io(_) => 4,
         }
     }
@@ -32,6 +35,7 @@ impl fmt::Display for Failure {
         match self {
             Failure::Mistakes => f.write_str("the mechanism file has mistakes"),
             Failure::Analysis(why) | Failure::Malformed(why) => write!(f, "{why}"),
+            Failure::AnalysisAt => f.write_str("the analysis failed"),
             Failure::Io(why) => write!(f, "{why}"),
         }
     }

@@ -33,7 +33,10 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(failure) => {
-            if !matches!(failure, failure::Failure::Mistakes) {
+            if !matches!(
+                failure,
+                failure::Failure::Mistakes | failure::Failure::AnalysisAt
+            ) {
                 eprintln!("error: {failure}");
             }
             ExitCode::from(failure.code())

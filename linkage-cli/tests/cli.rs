@@ -214,7 +214,8 @@ fn exit_statuses_say_what_failed() {
     assert_eq!(run(&["check", "/no/such/file.toml"]).status.code(), Some(4));
     assert_eq!(run(&["analyze"]).status.code(), Some(2));
     assert_eq!(run(&["frobnicate", "x"]).status.code(), Some(2));
-    // A mechanism that does not assemble at its `at`: the analysis fails.
+    // A mechanism that does not assemble at its `at`: the analysis fails,
+    // and says where in the file.
     let dir = std::env::temp_dir().join(format!("linkage-cli-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("apart.toml");
@@ -225,7 +226,15 @@ fn exit_statuses_say_what_failed() {
     .unwrap();
     let out = run(&["analyze", path.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(3), "{}", text(&out.stderr));
-    assert!(text(&out.stderr).starts_with("error:"));
+    let said = text(&out.stderr);
+    assert!(
+        said.starts_with(
+            "error: the mechanism does not assemble at the drivers' `at` (theta2 = 0)"
+        ),
+        "{said}"
+    );
+    // Located at the drive's `from` (its `at`, not written).
+    assert!(said.contains("apart.toml:16:8"), "{said}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
@@ -439,4 +448,157 @@ fn synthesis_finds_the_dimensions_that_traced_the_targets() {
     assert_eq!(out.status.code(), Some(2));
     assert!(text(&out.stderr).contains("the lower bound must be below the upper"));
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A folder of its own for one test, removed at the end.
+struct Folder(PathBuf);
+
+impl Folder {
+    fn new(name: &str) -> Folder {
+        let path = std::env::temp_dir().join(format!("linkage-cli-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&path);
+        std::fs::create_dir_all(path.join("work")).unwrap();
+        Folder(path)
+    }
+
+    /// Every entry under the folder, with the contents of its files.
+    fn listing(&self) -> Vec<(String, Option<Vec<u8>>)> {
+        fn walk(dir: &Path, root: &Path, out: &mut Vec<(String, Option<Vec<u8>>)>) {
+            for entry in std::fs::read_dir(dir).unwrap() {
+                let entry = entry.unwrap();
+                let path = entry.path();
+                let kind = entry.file_type().unwrap();
+                let name = path.strip_prefix(root).unwrap().display().to_string();
+                if kind.is_dir() {
+                    out.push((format!("{name}/"), None));
+                    walk(&path, root, out);
+                } else if kind.is_file() {
+                    out.push((name, Some(std::fs::read(&path).unwrap())));
+                } else {
+                    out.push((name, None));
+                }
+            }
+        }
+        let mut out = Vec::new();
+        walk(&self.0, &self.0, &mut out);
+        out.sort();
+        out
+    }
+}
+
+impl Drop for Folder {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// Runs the tool in `dir` and waits at most a minute for it (a tool that
+/// opened the named pipe would wait for a writer forever).
+fn run_in(dir: &Path, args: &[&str]) -> Output {
+    let mut child = tool()
+        .args(args)
+        .current_dir(dir)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let started = std::time::Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        if started.elapsed() > std::time::Duration::from_secs(60) {
+            child.kill().unwrap();
+            panic!("linkage {args:?} did not end: it opened something it was not given");
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    child.wait_with_output().unwrap()
+}
+
+/// The tool reads the file it is given and writes `--output`, nothing
+/// else, whatever the file says: a title, units, values, unknown keys and
+/// tables that are paths — to a named pipe beside it (which would block a
+/// reader), to a file that must stay as it is, to one that must not
+/// appear, to /etc/passwd — are text. Every command, on a valid file and
+/// on one with mistakes; afterwards the folder holds the file, the
+/// outputs asked for, and what was there before, unchanged.
+#[test]
+fn a_file_makes_the_tool_read_and_write_only_its_paths() {
+    let folder = Folder::new("paths");
+    let work = folder.0.join("work");
+    std::fs::write(folder.0.join("kept.txt"), "as it was\n").unwrap();
+    // A named pipe where there is mkfifo; a plain file elsewhere.
+    let made = Command::new("mkfifo").arg(folder.0.join("pipe")).status();
+    if !made.is_ok_and(|s| s.success()) {
+        std::fs::write(folder.0.join("pipe"), "a pipe\n").unwrap();
+    }
+    let four_bar = include_str!("../../mechanisms/four_bar.toml");
+    let valid = four_bar
+        .replace(
+            "title = \"The four-bar of the Maple worksheet\"",
+            "title = \"../pipe\\n}\\nfn main() { std::fs::write(\\\"../written.txt\\\", \\\"\\\").unwrap(); }\"",
+        )
+        .replace("[drawing]", "[drawing]\n# ../kept.txt /etc/passwd");
+    std::fs::write(work.join("m.toml"), &valid).unwrap();
+    let wrong = format!(
+        "include = \"../pipe\"\noutput = \"../written.txt\"\n{}",
+        valid
+            .replace("length_unit = \"mm\"", "length_unit = \"/etc/passwd\"")
+            .replace("l1 = \"80 mm\"", "l1 = \"../kept.txt\"")
+            .replace(
+                "[drawing]",
+                "[paths]\npath = \"/etc/passwd\"\n[drawing]\nfile = \"../written.txt\""
+            )
+    );
+    std::fs::write(work.join("wrong.toml"), &wrong).unwrap();
+    let before = folder.listing();
+    let commands: [&[&str]; 7] = [
+        &["check", "m.toml", "-o", "check.txt"],
+        &["analyze", "m.toml", "-o", "analyze.txt"],
+        &["sweep", "m.toml", "--steps", "12", "-o", "sweep.txt"],
+        &["extremes", "m.toml", "-o", "extremes.txt"],
+        &["draw", "m.toml", "-o", "m.svg"],
+        &["expand", "m.toml", "-o", "m.rs"],
+        &["check", "m.toml"],
+    ];
+    let mut written = Vec::new();
+    for args in commands {
+        let out = run_in(&work, args);
+        assert!(
+            out.status.success(),
+            "linkage {args:?}: {}",
+            text(&out.stderr)
+        );
+        if let Some(k) = args.iter().position(|a| *a == "-o") {
+            written.push(format!("work/{}", args[k + 1]));
+        }
+    }
+    for command in ["check", "analyze", "sweep", "extremes", "draw", "expand"] {
+        let out = run_in(&work, &[command, "wrong.toml", "-o", "wrong.out"]);
+        assert_eq!(
+            out.status.code(),
+            Some(1),
+            "{command}: {}",
+            text(&out.stderr)
+        );
+        assert!(
+            text(&out.stderr).contains("wrong.toml:1:1"),
+            "{}",
+            text(&out.stderr)
+        );
+    }
+    // The title, in the Rust `expand` writes, is comment: each of its
+    // lines a comment line, none of them code.
+    let rust = std::fs::read_to_string(work.join("m.rs")).unwrap();
+    assert!(rust.contains("/// fn main() { std::fs::write("), "{rust}");
+    assert!(!rust.lines().any(|l| l.starts_with("fn main")), "{rust}");
+    let after = folder.listing();
+    let mut expected: Vec<String> = before.iter().map(|(n, _)| n.clone()).collect();
+    expected.extend(written);
+    expected.sort();
+    let names: Vec<String> = after.iter().map(|(n, _)| n.clone()).collect();
+    assert_eq!(names, expected);
+    for (name, contents) in &before {
+        let now = after.iter().find(|(n, _)| n == name).map(|(_, c)| c);
+        assert_eq!(now, Some(contents), "{name} changed");
+    }
 }

@@ -197,9 +197,12 @@ impl Derivatives {
                 gamma_b.push(dag.sum(b));
             }
             let mut agree = Some(true);
+            // One budget for the whole proof: its time is bounded, however
+            // many equations.
+            let mut budget = crate::normal::Budget::default();
             for i in 0..m {
                 let expanded = [gamma_a[i], gamma_b[i], gamma.entries[i]]
-                    .map(|g| crate::normal::expand(dag, g));
+                    .map(|g| crate::normal::expand_within(dag, g, &mut budget));
                 match expanded {
                     [Some(a), Some(b), Some(c)] => {
                         if !crate::normal::same(&a, &b) || !crate::normal::same(&a, &c) {

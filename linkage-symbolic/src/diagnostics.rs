@@ -28,10 +28,20 @@
 //! function is needed.
 
 use codespan_reporting::diagnostic as codespan;
-use codespan_reporting::files::SimpleFile;
+use codespan_reporting::files::{self, Files};
 use codespan_reporting::term::{self, Chars, Config};
 use std::fmt;
 use std::ops::Range;
+
+/// A line of a snippet longer than this (bytes) is shown cut to the part
+/// around the places on it, with `...` where it is cut: a file of one long
+/// line with many mistakes renders in time and space in proportion to the
+/// mistakes, not to the mistakes times the line.
+const LONG_LINE: usize = 160;
+/// How much of a cut line is shown either side of its places (bytes).
+const MARGIN: usize = 60;
+/// The most mistakes [`Diagnostics::render`] draws; it counts the rest.
+pub const MOST_RENDERED: usize = 100;
 
 /// One mistake: a message, where it is (a byte range of the file, if the
 /// mistake has a place), other places it names, and notes.
@@ -111,8 +121,32 @@ impl Diagnostic {
 
     /// Rendered alone, as [`Diagnostics::render`] renders each.
     pub fn render(&self, file_name: &str, file_text: &str, colour: bool) -> String {
-        let file = SimpleFile::new(file_name, file_text);
-        let diagnostic = self.to_codespan(file_text);
+        let starts: Vec<usize> = files::line_starts(file_text).collect();
+        self.render_with(file_name, file_text, &starts, colour)
+    }
+
+    /// Rendered against the lines of the file its places are on (`starts`:
+    /// where each line of `file_text` starts), the long ones cut.
+    fn render_with(
+        &self,
+        file_name: &str,
+        file_text: &str,
+        starts: &[usize],
+        colour: bool,
+    ) -> String {
+        // Every range clamped to the text and to its characters'
+        // boundaries: a range from another version of the file is drawn at
+        // the nearest place rather than refused.
+        let primary = self.range.as_ref().map(|r| clamp(r, file_text));
+        let labels: Vec<Range<usize>> = (self.labels.iter())
+            .map(|label| clamp(&label.range, file_text))
+            .collect();
+        let places: Vec<Range<usize>> = primary.iter().chain(&labels).cloned().collect();
+        let excerpt = Excerpt::new(file_name, file_text, starts, &places);
+        let diagnostic = self.to_codespan(
+            primary.map(|r| excerpt.range(&r)),
+            labels.iter().map(|r| excerpt.range(r)).collect(),
+        );
         let config = Config {
             chars: Chars::ascii(),
             ..Config::default()
@@ -121,30 +155,31 @@ impl Diagnostic {
             let mut buffer = term::termcolor::Buffer::ansi();
             let styles = term::Styles::default();
             let mut writer = term::StylesWriter::new(&mut buffer, &styles);
-            term::emit_to_write_style(&mut writer, &config, &file, &diagnostic)
+            term::emit_to_write_style(&mut writer, &config, &excerpt, &diagnostic)
                 .map(|()| String::from_utf8_lossy(buffer.as_slice()).into_owned())
         } else {
-            term::emit_into_string(&config, &file, &diagnostic)
+            term::emit_into_string(&config, &excerpt, &diagnostic)
         };
         // The ranges are clamped to the text, so the renderer has nothing
         // to refuse; should it refuse all the same, the message stays.
         rendered.unwrap_or_else(|_| format!("error: {}\n", self.message))
     }
 
-    /// The renderer's diagnostic, every range clamped to `text` and to its
-    /// characters' boundaries (a range from another version of the file
-    /// is drawn at the nearest place rather than refused).
-    fn to_codespan(&self, text: &str) -> codespan::Diagnostic<()> {
-        let mut labels: Vec<codespan::Label<()>> = Vec::new();
-        if let Some(range) = &self.range {
-            labels.push(codespan::Label::primary((), clamp(range, text)));
+    /// The renderer's diagnostic, its primary place and its labels' at
+    /// `primary` and `labels` (ranges of the excerpt rendered).
+    fn to_codespan(
+        &self,
+        primary: Option<Range<usize>>,
+        labels: Vec<Range<usize>>,
+    ) -> codespan::Diagnostic<()> {
+        let mut drawn: Vec<codespan::Label<()>> = Vec::new();
+        if let Some(range) = primary {
+            drawn.push(codespan::Label::primary((), range));
         }
-        for label in &self.labels {
-            labels.push(
-                codespan::Label::secondary((), clamp(&label.range, text))
-                    .with_message(&label.message),
-            );
+        for (label, range) in self.labels.iter().zip(labels) {
+            drawn.push(codespan::Label::secondary((), range).with_message(&label.message));
         }
+        let labels = drawn;
         codespan::Diagnostic::error()
             .with_message(&self.message)
             .with_labels(labels)
@@ -159,15 +194,191 @@ impl Diagnostic {
 
 /// `range` inside `text`, its ends moved back to characters' boundaries.
 fn clamp(range: &Range<usize>, text: &str) -> Range<usize> {
-    let boundary = |mut at: usize| {
-        at = at.min(text.len());
-        while !text.is_char_boundary(at) {
-            at -= 1;
+    let start = floor(text, range.start);
+    start..floor(text, range.end).max(start)
+}
+
+/// The last character boundary of `text` at or before `at`.
+fn floor(text: &str, at: usize) -> usize {
+    let mut at = at.min(text.len());
+    while !text.is_char_boundary(at) {
+        at -= 1;
+    }
+    at
+}
+
+/// The first character boundary of `text` at or after `at`.
+fn ceil(text: &str, at: usize) -> usize {
+    let mut at = at.min(text.len());
+    while !text.is_char_boundary(at) {
+        at += 1;
+    }
+    at
+}
+
+/// One line of an [`Excerpt`].
+struct ExcerptLine {
+    /// Its bytes in the excerpt, without the newline.
+    at: Range<usize>,
+    /// The line in the file, without the newline.
+    line: Range<usize>,
+    /// The part of it shown...
+    shown: Range<usize>,
+    /// ... which starts here in the excerpt.
+    shown_at: usize,
+}
+
+/// The lines of a file a diagnostic draws: those its places are on and
+/// the few around them the renderer shows, each cut to the part around
+/// its places if it is long; the other lines of the span empty. The
+/// renderer reads it as the file: lines are numbered, and columns counted,
+/// as in the file.
+struct Excerpt<'t> {
+    name: &'t str,
+    text: &'t str,
+    source: String,
+    /// The index in the file of the excerpt's first line.
+    first: usize,
+    lines: Vec<ExcerptLine>,
+}
+
+impl<'t> Excerpt<'t> {
+    fn new(name: &'t str, text: &'t str, starts: &[usize], places: &[Range<usize>]) -> Self {
+        let line_of = |at: usize| starts.partition_point(|&s| s <= at).saturating_sub(1);
+        let line_range = |k: usize| {
+            let start = starts[k];
+            let end = starts.get(k + 1).map_or(text.len(), |&next| next - 1);
+            // A line ends before its newline (and a `\r` before it).
+            let end = if text.as_bytes().get(end.wrapping_sub(1)) == Some(&b'\r') && end > start {
+                end - 1
+            } else {
+                end
+            };
+            start..end.max(start)
+        };
+        let last_line = starts.len().saturating_sub(1);
+        // The lines drawn: each place's first line and three after it, its
+        // last and the one before, and a line either side (a gap of one
+        // line is drawn, not elided).
+        let mut shown: Vec<Range<usize>> = Vec::new();
+        for place in places {
+            let (a, b) = (line_of(place.start), line_of(place.end));
+            shown.push(a.saturating_sub(1)..(a + 4).min(last_line));
+            shown.push(b.saturating_sub(2)..(b + 1).min(last_line));
         }
-        at
-    };
-    let start = boundary(range.start);
-    start..boundary(range.end).max(start)
+        let first = shown.iter().map(|r| r.start).min().unwrap_or(0);
+        let last = shown.iter().map(|r| r.end).max().unwrap_or(0);
+        let mut source = String::new();
+        let mut lines = Vec::new();
+        for k in first..=last {
+            let line = line_range(k);
+            let start = source.len();
+            let drawn = shown.iter().any(|r| r.contains(&k) || r.end == k);
+            let points: Vec<usize> = (places.iter())
+                .flat_map(|p| [p.start, p.end])
+                .filter(|&p| line.start <= p && p <= line.end)
+                .collect();
+            let part = if !drawn {
+                line.start..line.start
+            } else if line.len() <= LONG_LINE {
+                line.clone()
+            } else if let (Some(&low), Some(&high)) = (points.iter().min(), points.iter().max()) {
+                ceil(text, low.saturating_sub(MARGIN).max(line.start)).min(floor(text, low))
+                    ..ceil(text, (high + MARGIN).min(line.end))
+            } else {
+                line.start..floor(text, line.start + LONG_LINE)
+            };
+            let part = part.start.max(line.start)..part.end.min(line.end).max(part.start);
+            if drawn && part.start > line.start {
+                source.push_str("...");
+            }
+            let shown_at = source.len();
+            source.push_str(&text[part.clone()]);
+            if drawn && part.end < line.end {
+                source.push_str("...");
+            }
+            lines.push(ExcerptLine {
+                at: start..source.len(),
+                line,
+                shown: part,
+                shown_at,
+            });
+            source.push('\n');
+        }
+        Excerpt {
+            name,
+            text,
+            source,
+            first,
+            lines,
+        }
+    }
+
+    /// The excerpt's line of the file's line `k`.
+    fn line(&self, k: usize) -> Option<&ExcerptLine> {
+        self.lines.get(k.checked_sub(self.first)?)
+    }
+
+    /// Where the file's byte `at` is in the excerpt.
+    fn offset(&self, at: usize) -> usize {
+        let k = self
+            .lines
+            .partition_point(|l| l.line.start <= at)
+            .saturating_sub(1);
+        match self.lines.get(k) {
+            Some(l) => {
+                let within = at.clamp(l.shown.start, l.shown.end) - l.shown.start;
+                l.shown_at + within
+            }
+            None => 0,
+        }
+    }
+
+    /// A range of the file, in the excerpt.
+    fn range(&self, range: &Range<usize>) -> Range<usize> {
+        let start = self.offset(range.start);
+        start..self.offset(range.end).max(start)
+    }
+}
+
+impl<'a> Files<'a> for Excerpt<'_> {
+    type FileId = ();
+    type Name = &'a str;
+    type Source = &'a str;
+
+    fn name(&'a self, (): ()) -> Result<&'a str, files::Error> {
+        Ok(self.name)
+    }
+
+    fn source(&'a self, (): ()) -> Result<&'a str, files::Error> {
+        Ok(&self.source)
+    }
+
+    /// The file's index of the line holding the excerpt's byte `at`.
+    fn line_index(&'a self, (): (), at: usize) -> Result<usize, files::Error> {
+        let k = self
+            .lines
+            .partition_point(|l| l.at.start <= at)
+            .saturating_sub(1);
+        Ok(self.first + k)
+    }
+
+    /// The file's column of the excerpt's byte `at`.
+    fn column_number(&'a self, (): (), k: usize, at: usize) -> Result<usize, files::Error> {
+        let Some(l) = self.line(k) else {
+            return Ok(1);
+        };
+        let within = at.saturating_sub(l.shown_at).min(l.shown.len());
+        Ok(files::column_index(self.text, l.line.clone(), l.shown.start + within) + 1)
+    }
+
+    fn line_range(&'a self, (): (), k: usize) -> Result<Range<usize>, files::Error> {
+        let l = self.line(k).ok_or(files::Error::LineTooLarge {
+            given: k,
+            max: self.first + self.lines.len(),
+        })?;
+        Ok(l.at.start..l.at.end + 1)
+    }
 }
 
 impl fmt::Display for Diagnostic {
@@ -219,11 +430,21 @@ impl Diagnostics {
     /// Every mistake as a compiler prints it, `file_name` in each `-->`
     /// line, the snippets taken from `file_text` (the whole file the
     /// ranges are in); with ANSI colours if `colour`. Each mistake ends
-    /// with a blank line.
+    /// with a blank line. The first [`MOST_RENDERED`] are drawn, and the
+    /// others counted; a long line is shown cut to the part around the
+    /// places on it.
     pub fn render(&self, file_name: &str, file_text: &str, colour: bool) -> String {
-        (self.0.iter())
-            .map(|diagnostic| diagnostic.render(file_name, file_text, colour))
-            .collect()
+        let starts: Vec<usize> = files::line_starts(file_text).collect();
+        let mut rendered: String = (self.0.iter().take(MOST_RENDERED))
+            .map(|diagnostic| diagnostic.render_with(file_name, file_text, &starts, colour))
+            .collect();
+        if self.0.len() > MOST_RENDERED {
+            rendered.push_str(&format!(
+                "error: {} more mistakes, not drawn (the first {MOST_RENDERED} are)\n\n",
+                self.0.len() - MOST_RENDERED
+            ));
+        }
+        rendered
     }
 }
 
@@ -337,6 +558,72 @@ mod tests {
         }
         let d = Diagnostic::error("about the file", None);
         assert_eq!(d.render("f", FILE, false), "error: about the file\n\n");
+    }
+
+    /// A long line is shown cut to the part around the place, `...`
+    /// where it is cut, at the file's line and column.
+    #[test]
+    fn a_long_line_is_cut_around_its_place() {
+        let line = format!("x = [{}oops{}]", "a, ".repeat(2000), ", b".repeat(2000));
+        let file = format!("first\n{line}\nlast\n");
+        let at = file.find("oops").unwrap();
+        let d = Diagnostic::error("no `oops`", Some(at..at + 4));
+        let text = d.render("long.toml", &file, false);
+        let column = line.find("oops").unwrap() + 1;
+        assert!(
+            text.contains(&format!("--> long.toml:2:{column}")),
+            "{text}"
+        );
+        assert!(text.len() < 600, "{} bytes: {text}", text.len());
+        let drawn = text.lines().find(|l| l.starts_with("2 |")).unwrap();
+        assert!(
+            drawn.starts_with("2 | ...") && drawn.ends_with("..."),
+            "{drawn}"
+        );
+        let caret = text.lines().find(|l| l.contains('^')).unwrap();
+        assert_eq!(caret.find('^'), drawn.find("oops"), "{text}");
+        // The line before and after, short, as they are.
+        let label = Diagnostic::error("no `oops`", Some(at..at + 4)).with_label(0..5, "here");
+        let text = label.render("long.toml", &file, false);
+        assert!(text.contains("1 | first"), "{text}");
+        // Places far apart on one long line: shown from the first to the
+        // last.
+        let end = file.find("]\n").unwrap();
+        let both = Diagnostic::error("wide", Some(at..at + 4)).with_label(end..end + 1, "end");
+        let text = both.render("long.toml", &file, false);
+        assert!(text.contains("oops") && text.contains("end"), "{text}");
+    }
+
+    /// Thousands of mistakes on one long line: the first hundred drawn,
+    /// each cut, the rest counted.
+    #[test]
+    fn many_mistakes_render_in_proportion() {
+        let text = "65536, ".repeat(3000);
+        let all: Diagnostics = (0..3000)
+            .map(|k| Diagnostic::error("no entry", Some(7 * k..7 * k + 5)))
+            .collect();
+        let rendered = all.render("many.toml", &text, false);
+        assert_eq!(rendered.matches("error: no entry").count(), MOST_RENDERED);
+        assert!(
+            rendered.contains("error: 2900 more mistakes, not drawn"),
+            "{rendered}"
+        );
+        assert!(rendered.len() < MOST_RENDERED * 500, "{}", rendered.len());
+        assert!(rendered.contains("--> many.toml:1:694\n"), "{rendered}");
+    }
+
+    /// Lines ending in CRLF, a place at a line's end and past the text.
+    #[test]
+    fn places_at_the_ends_render() {
+        let file = format!("a = 1\r\nb = {}\r\n", "2".repeat(400));
+        for range in [5..7, 6..7, file.len() - 1..file.len(), 8..file.len()] {
+            let d = Diagnostic::error("here", Some(range.clone()));
+            let text = d.render("crlf.toml", &file, false);
+            assert!(
+                text.starts_with("error: here\n  --> crlf.toml:"),
+                "{range:?}: {text}"
+            );
+        }
     }
 
     #[test]

@@ -11,13 +11,47 @@ use std::collections::HashMap;
 /// Expansions larger than this many monomials are abandoned.
 const LIMIT: usize = 20_000;
 
+/// The work an expansion may do, in monomials multiplied or copied: past
+/// it, the expansion is abandoned. The size limit alone bounds each
+/// product, not how many there are: `(x.sin() + y).powi(1024)` is 1023
+/// products of up to a thousand terms each, and γ holds several such —
+/// seconds (7 s for a run-time mechanism), for a proof that is then too
+/// large to use. The 13 mechanism files each prove A = B with at most 534;
+/// this much takes about 0.2 s.
+pub const WORK: usize = 100_000;
+
+/// What is left of the work an expansion (or several, sharing it) may do.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Budget(pub usize);
+
+impl Budget {
+    /// Takes `n` units of work, or `None` if there is not that much left.
+    fn spend(&mut self, n: usize) -> Option<()> {
+        self.0 = self.0.checked_sub(n)?;
+        Some(())
+    }
+}
+
+impl Default for Budget {
+    fn default() -> Budget {
+        Budget(WORK)
+    }
+}
+
 /// A polynomial: monomial → coefficient, sorted by monomial.
 pub type Polynomial = Vec<(Id, f64)>;
 
-/// The normal form of `id`, or `None` if it exceeds the size limit.
+/// The normal form of `id`, or `None` if it exceeds the size limit or the
+/// work allowed.
 pub fn expand(dag: &mut Dag, id: Id) -> Option<Polynomial> {
+    expand_within(dag, id, &mut Budget::default())
+}
+
+/// [`expand`], the work taken from `budget` (shared by several
+/// expansions: what they may do together).
+pub fn expand_within(dag: &mut Dag, id: Id, budget: &mut Budget) -> Option<Polynomial> {
     let mut memo = HashMap::new();
-    let terms = terms(dag, id, &mut memo)?;
+    let terms = terms(dag, id, &mut memo, budget)?;
     collect(terms)
 }
 
@@ -66,8 +100,14 @@ fn collect(terms: Vec<(f64, Id)>) -> Option<Polynomial> {
     Some(out)
 }
 
-fn terms(dag: &mut Dag, id: Id, memo: &mut HashMap<Id, Vec<(f64, Id)>>) -> Option<Vec<(f64, Id)>> {
+fn terms(
+    dag: &mut Dag,
+    id: Id,
+    memo: &mut HashMap<Id, Vec<(f64, Id)>>,
+    budget: &mut Budget,
+) -> Option<Vec<(f64, Id)>> {
     if let Some(t) = memo.get(&id) {
+        budget.spend(t.len())?;
         return Some(t.clone());
     }
     let out = match dag.node(id).clone() {
@@ -77,7 +117,7 @@ fn terms(dag: &mut Dag, id: Id, memo: &mut HashMap<Id, Vec<(f64, Id)>>) -> Optio
         Node::Sum(ts) => {
             let mut out = Vec::new();
             for (c, t) in ts {
-                for (ci, mi) in terms(dag, t, memo)? {
+                for (ci, mi) in terms(dag, t, memo, budget)? {
                     out.push((finite_coefficient(c.get() * ci)?, mi));
                 }
             }
@@ -87,12 +127,12 @@ fn terms(dag: &mut Dag, id: Id, memo: &mut HashMap<Id, Vec<(f64, Id)>>) -> Optio
             let mut acc = vec![(1.0, Dag::ONE)];
             for (f, e) in factors {
                 let factor = if e > 0 {
-                    let base = terms(dag, f, memo)?;
-                    power(dag, &base, e)?
+                    let base = terms(dag, f, memo, budget)?;
+                    power(dag, &base, e, budget)?
                 } else {
                     vec![(1.0, dag.powi(f, e))]
                 };
-                acc = multiply(dag, &acc, &factor)?;
+                acc = multiply(dag, &acc, &factor, budget)?;
             }
             acc
         }
@@ -100,16 +140,23 @@ fn terms(dag: &mut Dag, id: Id, memo: &mut HashMap<Id, Vec<(f64, Id)>>) -> Optio
     if out.len() > LIMIT {
         return None;
     }
+    budget.spend(out.len())?;
     memo.insert(id, out.clone());
     Some(out)
 }
 
 /// The product of two expanded polynomials, collected, or `None` past the
-/// size limit.
-fn multiply(dag: &mut Dag, a: &[(f64, Id)], b: &[(f64, Id)]) -> Option<Vec<(f64, Id)>> {
+/// size limit or the work left.
+fn multiply(
+    dag: &mut Dag,
+    a: &[(f64, Id)],
+    b: &[(f64, Id)],
+    budget: &mut Budget,
+) -> Option<Vec<(f64, Id)>> {
     if a.len() * b.len() > LIMIT {
         return None;
     }
+    budget.spend(a.len() * b.len())?;
     let mut next = Vec::with_capacity(a.len() * b.len());
     for &(ca, ma) in a {
         for &(cb, mb) in b {
@@ -133,7 +180,7 @@ fn finite_coefficient(c: f64) -> Option<f64> {
 /// repeated multiplication — abandoned at once if `e` exceeds the size
 /// limit, since a sum of two or more terms to the `e`-th power has at
 /// least `e + 1` of them.
-fn power(dag: &mut Dag, base: &[(f64, Id)], e: i32) -> Option<Vec<(f64, Id)>> {
+fn power(dag: &mut Dag, base: &[(f64, Id)], e: i32, budget: &mut Budget) -> Option<Vec<(f64, Id)>> {
     if e < 1 {
         return None;
     }
@@ -151,7 +198,7 @@ fn power(dag: &mut Dag, base: &[(f64, Id)], e: i32) -> Option<Vec<(f64, Id)>> {
     }
     let mut acc = base.to_vec();
     for _ in 1..e {
-        acc = multiply(dag, &acc, base)?;
+        acc = multiply(dag, &acc, base, budget)?;
     }
     Some(acc)
 }
@@ -240,6 +287,27 @@ mod tests {
         let x50 = dag.powi(x, 50);
         let ends = p.iter().find(|&&(m, _)| m == x50).map(|&(_, c)| c);
         assert_eq!(ends, Some(1.0));
+    }
+
+    /// Within the size limit but past the work: `(x + y)^1024` has 1025
+    /// terms, and 1023 products to make them, half a million monomials;
+    /// abandoned. A budget shared by two expansions is spent by the first.
+    #[test]
+    fn long_work_is_abandoned() {
+        let mut dag = Dag::new();
+        let x = dag.sym(Symbol::Coord(0));
+        let y = dag.sym(Symbol::Coord(1));
+        let s = dag.add(x, y);
+        let long = dag.powi(s, 1024);
+        assert!(expand(&mut dag, long).is_none());
+        let mut budget = Budget(WORK);
+        let p300 = dag.powi(s, 300);
+        assert_eq!(
+            expand_within(&mut dag, p300, &mut budget).map(|p| p.len()),
+            Some(301)
+        );
+        assert!(budget.0 < WORK / 2);
+        assert!(expand_within(&mut dag, p300, &mut budget).is_none());
     }
 
     #[test]

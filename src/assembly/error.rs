@@ -41,6 +41,12 @@ pub enum AssemblyError {
         /// assembly may have been missed.
         stable: bool,
     },
+    /// Ψ_u is singular at every pose the search samples (its pattern
+    /// there, the entries not 0 at one pose or another, has no perfect
+    /// matching): no assembly can be regular, and none is searched for.
+    /// `idle` are the coordinates no equation moves, if any — a coordinate
+    /// whose every term has a factor 0, such as a link of length 0.
+    SingularEverywhere { idle: Vec<usize> },
     /// A pick among assemblies none of which is regular: the mechanism is
     /// at a dead centre (Ψ_u singular), where two assemblies meet and
     /// cannot be told apart.
@@ -69,6 +75,16 @@ crate::error::error_impls! {
              in [{lower:?}, {upper:?}] (the closest it came leaves a scale-free residual of \
              {least_residual:.3e}), but the search stopped at Search::max_cells before its \
              grids stabilised: raise it to search further"
+        ),
+        Self::SingularEverywhere { idle } => (
+            "Ψ_u is singular at every pose tried, so no assembly can be regular{}",
+            if idle.is_empty() {
+                String::new()
+            } else {
+                format!(
+                    ": no equation moves the coordinates {idle:?} of u (a link of length 0?)"
+                )
+            }
         ),
         Self::AtDeadCentre { dead_centres } => (
             "the mechanism is at a dead centre: {dead_centres} singular assemblies (Ψ_u singular) \

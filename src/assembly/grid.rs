@@ -21,6 +21,12 @@ const SAME_SINGULAR_ROOT: f64 = 1e-5;
 /// has a reciprocal condition number below this is singular: a dead
 /// centre, or within about this of one.
 pub(crate) const SINGULAR_RCOND: f64 = 1e-6;
+/// The most roots a block's search keeps from one pose of the blocks
+/// before it: then it stops, and says it is not stable. A loop has a
+/// handful; more are a coordinate that turns but is not 2π-periodic
+/// (`(theta / 2).cos()`, searched as a length: a root every turn of its
+/// box), whose every root deflation would slow the search of the next.
+pub(crate) const MOST_ROOTS: usize = 64;
 
 /// The roots of a block, and how the search for them went.
 pub(crate) struct BlockRoots<const M: usize> {
@@ -50,14 +56,23 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> BlockSystem<'_, 
         let mut runs = 0;
         let mut least = f64::INFINITY;
         let mut quiet = 0;
-        let mut cells = search.first_cells;
-        let stable = loop {
-            let Some(count) = u32::try_from(d)
+        let grid = |cells: usize| {
+            u32::try_from(d)
                 .ok()
                 .and_then(|d| cells.checked_pow(d))
-                // The first grid runs whatever its size.
-                .filter(|&count| cells == search.first_cells || count <= search.max_cells)
-            else {
+                .filter(|&count| count <= search.max_cells)
+        };
+        // The first grid as asked, or as fine as `max_cells` allows (at
+        // least one cell: 3¹⁶ starts would take hours): then the search
+        // is not what was asked, and not stable.
+        let mut cells = (1..=search.first_cells)
+            .rev()
+            .find(|&n| grid(n).is_some())
+            .unwrap_or(1);
+        let coarser = cells < search.first_cells;
+        let first = cells;
+        let stable = loop {
+            let Some(count) = grid(cells) else {
                 break false;
             };
             let before = found.len();
@@ -72,13 +87,16 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> BlockSystem<'_, 
                     first_start.resize(found.len(), None);
                     first_start[index].get_or_insert(start);
                 }
+                if found.len() >= MOST_ROOTS {
+                    break;
+                }
             }
             // Deflation: from each root's first start, the roots found so
             // far pushed away, while it finds new ones.
             let mut k = 0;
-            while k < first_start.len() {
+            while k < first_start.len() && found.len() < MOST_ROOTS {
                 if let Some(start) = first_start[k] {
-                    loop {
+                    while found.len() < MOST_ROOTS {
                         let known: Vec<SVector<f64, M>> = found.iter().map(|f| f.u).collect();
                         let run = self.solve(&start, &known);
                         runs += 1;
@@ -96,8 +114,11 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> BlockSystem<'_, 
                 }
                 k += 1;
             }
+            if found.len() >= MOST_ROOTS {
+                break false;
+            }
             // Only a refinement that finds nothing new confirms the set.
-            let refinement = cells > search.first_cells;
+            let refinement = cells > first;
             quiet = if found.len() > before || !refinement {
                 0
             } else {
@@ -110,7 +131,7 @@ impl<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize> BlockSystem<'_, 
         };
         BlockRoots {
             roots: found.into_iter().map(|f| f.u).collect(),
-            stable,
+            stable: stable && !coarser,
             runs,
             least_residual: least,
         }

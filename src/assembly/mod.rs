@@ -22,8 +22,9 @@
 //! ## The method
 //!
 //! 1. **The mechanism's size, from its equations.** The coordinates that
-//!    are angles are those under a sine or cosine of which Ψ is
-//!    2π-periodic (checked); the others are lengths. Each equation's size
+//!    are angles are those under a sine or cosine (`theta.cos()`, or
+//!    `(theta + beta).cos()`) of which Ψ is 2π-periodic (checked at sample
+//!    poses); the others are lengths. Each equation's size
 //!    sᵢ is the largest, over eight sample poses (angles spread over a
 //!    turn, lengths 0), of |Ψᵢ| + Σ_(j angle) |∂Ψᵢ/∂uⱼ|, and residuals are
 //!    judged scale-free, as max |Ψᵢ|/sᵢ.
@@ -45,6 +46,12 @@
 //!    there). The grid is refined (n + 1) until two refinements in a row
 //!    find no new root ([`Search::confirmations`]). A run may end at a
 //!    root outside the box: it is an assembly, and kept.
+//!
+//!    The work is bounded whatever the equations: no grid has more than
+//!    [`Search::max_cells`] cells (a block of many coordinates starts on a
+//!    coarser grid), a block keeps at most 64 roots from one pose of the
+//!    blocks before it and the next block is searched from at most 256;
+//!    a search cut short so says it is not [`Modes::stable`].
 //! 5. **The roots.** Each is polished by plain Newton steps to full
 //!    precision and kept if its scale-free residual is below 1e-12; two
 //!    are one if they differ by less than 1e-8 (angles up to whole turns

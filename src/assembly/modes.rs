@@ -166,7 +166,9 @@ pub struct Modes<const M: usize, const F: usize> {
     /// Whether every grid's set of roots stood
     /// [`Search::confirmations`](super::Search::confirmations) refinements
     /// (false: a grid would have exceeded
-    /// [`Search::max_cells`](super::Search::max_cells) first).
+    /// [`Search::max_cells`](super::Search::max_cells) first, or a block
+    /// had more roots than a loop has — 64 from one pose, 256 in all — and
+    /// the search was cut short).
     pub stable: bool,
     /// Newton's runs, all blocks together.
     pub runs: usize,

@@ -17,8 +17,9 @@ const PERIODIC: f64 = 1e-9;
 /// What the search needs to know of a mechanism's size.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct Scale<const M: usize> {
-    /// Whether each coordinate is an angle: under a sine or cosine
-    /// (`TRIG_U`) and Ψ unchanged by a whole turn of it.
+    /// Whether each coordinate is an angle: Ψ unchanged by a whole turn
+    /// of it (checked at two poses; for a coordinate whose sine or cosine
+    /// is not written, `TRIG_U`, Ψ finite and moving with it there).
     pub angle: [bool; M],
     /// Each equation's size sᵢ: its residual is judged as |Ψᵢ|/sᵢ.
     pub equations: SVector<f64, M>,
@@ -142,7 +143,8 @@ fn equation_sizes<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
 }
 
 /// Whether Ψ is unchanged by a whole turn of coordinate `k` at two
-/// sample poses (lengths at the mechanism's size `length`).
+/// sample poses (lengths at the mechanism's size `length`). A pose where
+/// Ψ is not finite says nothing (`unknown`: what it is taken for).
 fn periodic<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     model: &L,
     v: &SVector<f64, F>,
@@ -150,15 +152,21 @@ fn periodic<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     k: usize,
     sizes: &SVector<f64, M>,
     length: f64,
+    unknown: bool,
 ) -> bool {
     (0..2).all(|s| {
         let u = pose(angle, s, length);
         let mut turned = u;
         turned[k] += TAU;
-        let (Some((a, _)), Some((b, _))) = (evaluate(model, &u, v), evaluate(model, &turned, v))
+        let (Some((a, psi_u)), Some((b, _))) =
+            (evaluate(model, &u, v), evaluate(model, &turned, v))
         else {
-            return true;
+            return unknown;
         };
+        // A coordinate Ψ does not move with here says nothing either.
+        if psi_u.column(k).iter().all(|&x| x == 0.0) {
+            return unknown;
+        }
         ((a - b).component_div(sizes)).amax() <= PERIODIC
     })
 }
@@ -175,9 +183,16 @@ pub(crate) fn scale<L: Linkage<M, F> + ?Sized, const M: usize, const F: usize>(
     let size: f64 = sizes.sum();
     let candidates = angle;
     for (k, &candidate) in candidates.iter().enumerate() {
-        if candidate && !periodic(model, v, &candidates, k, &sizes, size) {
-            angle[k] = false;
-        }
+        angle[k] = if candidate {
+            // Its sine or cosine written: an angle unless Ψ shows otherwise.
+            periodic(model, v, &candidates, k, &sizes, size, true)
+        } else {
+            // Under a sine or cosine only in a sum or a product
+            // (`(theta + beta).cos()`): an angle if Ψ shows it, finite
+            // and moving with it at both poses. (Searched as a length, a
+            // turning coordinate has a root every turn of its box.)
+            periodic(model, v, &candidates, k, &sizes, size, false)
+        };
     }
     if angle != candidates {
         sizes = equation_sizes(model, v, &angle)?;

@@ -55,10 +55,12 @@ pub struct Search {
     /// Refinements in a row that must find no new assembly before the set
     /// found is taken as complete (at least 1).
     pub confirmations: usize,
-    /// The most cells (Newton starts) of a refined grid: a search that
-    /// would need a larger one stops, and says it is not
-    /// [`stable`](super::Modes::stable). (The first grid runs whatever its
-    /// size: 3ᵈ cells for a block of d coordinates.)
+    /// The most cells (Newton starts) of a grid: a search that would need
+    /// a larger one stops, and says it is not
+    /// [`stable`](super::Modes::stable). A first grid larger than this
+    /// (`first_cells`ᵈ for a block of d coordinates: 3¹⁰ = 59 049) is made
+    /// coarser until it fits, down to one cell, and the search is not
+    /// stable either.
     pub max_cells: usize,
 }
 

@@ -103,6 +103,12 @@ pub(crate) fn blocks<const M: usize>(nonzero: &[[bool; M]; M]) -> Vec<Block> {
 /// A perfect matching of equations to coordinates (`column_of[i]` the
 /// coordinate of equation i), by augmenting paths tried in index order;
 /// `None` if there is none.
+/// Whether the pattern has a perfect matching: whether a matrix of it can
+/// be regular at all.
+pub(crate) fn perfect<const M: usize>(nonzero: &[[bool; M]; M]) -> bool {
+    matching(nonzero).is_some()
+}
+
 fn matching<const M: usize>(nonzero: &[[bool; M]; M]) -> Option<[usize; M]> {
     fn augment<const M: usize>(
         i: usize,

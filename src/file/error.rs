@@ -2,6 +2,7 @@
 //! byte range in the file, all of a file's mistakes together in
 //! [`FileErrors`], and [`ReadError`] for a file that cannot be read.
 
+use super::lines::Lines;
 use std::fmt;
 use std::ops::Range;
 use std::path::PathBuf;
@@ -29,7 +30,15 @@ pub struct FileError {
 impl FileError {
     /// A mistake at `at` in `text`, without labels.
     pub(super) fn new(text: &str, at: Range<usize>, message: impl Into<String>) -> FileError {
-        let (line, column) = line_col(text, at.start);
+        FileError::at_line(at.clone(), Lines::new(text).line_col(at.start), message)
+    }
+
+    /// A mistake at `at`, whose start is at `line` and `column`.
+    pub(super) fn at_line(
+        at: Range<usize>,
+        (line, column): (usize, usize),
+        message: impl Into<String>,
+    ) -> FileError {
         FileError {
             message: message.into(),
             at,
@@ -68,23 +77,8 @@ impl FileError {
     /// );
     /// ```
     pub fn line_col(&self, text: &str) -> (usize, usize) {
-        line_col(text, self.at.start)
+        Lines::new(text).line_col(self.at.start)
     }
-}
-
-/// The line and column (from 1; the column in characters) of the byte
-/// `offset` of `text` (an offset inside a character, or past the end,
-/// counts from the character's start, or the end).
-fn line_col(text: &str, offset: usize) -> (usize, usize) {
-    let mut offset = offset.min(text.len());
-    while !text.is_char_boundary(offset) {
-        offset -= 1;
-    }
-    let before = &text[..offset];
-    let line_start = before.rfind('\n').map_or(0, |k| k + 1);
-    let line = before.matches('\n').count() + 1;
-    let column = before[line_start..].chars().count() + 1;
-    (line, column)
 }
 
 impl fmt::Display for FileError {
@@ -167,18 +161,6 @@ impl std::error::Error for ReadError {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn lines_and_columns_count_characters_from_one() {
-        let text = "ab\nθ = 1\n";
-        assert_eq!(line_col(text, 0), (1, 1));
-        assert_eq!(line_col(text, 3), (2, 1));
-        // After θ (two bytes): the second character.
-        assert_eq!(line_col(text, 5), (2, 2));
-        // Inside θ: its start; past the end: the end.
-        assert_eq!(line_col(text, 4), (2, 1));
-        assert_eq!(line_col(text, 999), (3, 1));
-    }
 
     #[test]
     fn display_says_where_and_what() {

@@ -126,6 +126,7 @@ mod drawing;
 mod drive;
 mod equations;
 mod error;
+mod lines;
 mod mechanism;
 mod names;
 mod parameters;

@@ -4,6 +4,7 @@
 //! once. (A derived deserializer stops at the first.)
 
 use super::error::FileError;
+use super::lines::Lines;
 use super::suggest::did_you_mean;
 use std::ops::Range;
 use toml::Spanned;
@@ -16,6 +17,8 @@ pub(super) type Value<'i> = Spanned<DeValue<'i>>;
 pub(super) struct Reader<'t> {
     pub(super) text: &'t str,
     errors: Vec<FileError>,
+    /// Where the text's lines start, once a mistake needs it.
+    lines: std::cell::OnceCell<Lines<'t>>,
 }
 
 impl<'t> Reader<'t> {
@@ -23,12 +26,19 @@ impl<'t> Reader<'t> {
         Reader {
             text,
             errors: Vec::new(),
+            lines: std::cell::OnceCell::new(),
         }
+    }
+
+    /// Where the text's lines start.
+    pub(super) fn lines(&self) -> &Lines<'t> {
+        self.lines.get_or_init(|| Lines::new(self.text))
     }
 
     /// A mistake at `at` (to push, after labels if any).
     pub(super) fn mistake(&self, at: Range<usize>, message: impl Into<String>) -> FileError {
-        FileError::new(self.text, at, message)
+        let place = self.lines().line_col(at.start);
+        FileError::at_line(at, place, message)
     }
 
     /// Records a mistake.

@@ -1,5 +1,6 @@
 //! The file as TOML: parsed, or its syntax errors, one per line.
 
+use super::lines::Lines;
 use super::reader::Reader;
 use toml::Spanned;
 use toml::de::DeTable;
@@ -13,7 +14,10 @@ pub(super) fn document<'t>(reader: &mut Reader<'t>) -> Option<Spanned<DeTable<'t
     let text = reader.text;
     let (document, mut errors) = DeTable::parse_recoverable(text);
     errors.sort_by_key(|e| e.span().map_or(0, |s| s.start));
-    let mut lines = Vec::new();
+    // The line reported last: the errors are in the order of the text,
+    // and one a line is kept (a line of thousands of mistakes is one
+    // mistake, found in time in proportion to the file).
+    let mut last_line = None;
     // The body of the last table written twice.
     let mut table_twice = 0..0;
     for error in &errors {
@@ -22,14 +26,16 @@ pub(super) fn document<'t>(reader: &mut Reader<'t>) -> Option<Spanned<DeTable<'t
         if twice && table_twice.contains(&at.start) {
             continue;
         }
-        if twice && is_header(line_of(text, at.start)) {
-            table_twice = at.end..next_header(text, at.end);
+        let lines = reader.lines();
+        let (line, _) = lines.line_col(at.start);
+        if twice && is_header(lines.line_of(at.start)) {
+            table_twice = at.end..next_header(lines, text.len(), at.end);
         }
-        let mistake = reader.mistake(at.clone(), message(text, error.message(), &at));
-        if lines.contains(&mistake.line) {
+        if last_line == Some(line) {
             continue;
         }
-        lines.push(mistake.line);
+        last_line = Some(line);
+        let mistake = reader.mistake(at.clone(), message(text, error.message(), &at));
         reader.push(mistake);
     }
     errors.is_empty().then_some(document)
@@ -40,34 +46,17 @@ fn is_header(line: &str) -> bool {
     line.trim_start().starts_with('[')
 }
 
-/// The offset of the first header after `offset` (or the text's end).
-fn next_header(text: &str, offset: usize) -> usize {
-    let mut at = text
-        .get(offset..)
-        .and_then(|rest| rest.find('\n'))
-        .map_or(text.len(), |k| offset + k + 1);
-    while at < text.len() {
-        let line = line_of(text, at);
-        if is_header(line) {
+/// The offset of the first header after the line of `offset` (or the
+/// text's end, `end`).
+fn next_header(lines: &Lines, end: usize, offset: usize) -> usize {
+    let mut at = lines.next_line(offset);
+    while at < end {
+        if is_header(lines.line_of(at)) {
             return at;
         }
-        at += line.len() + 1;
+        at = lines.next_line(at);
     }
-    text.len()
-}
-
-/// The line of `text` that holds the byte `offset`.
-fn line_of(text: &str, offset: usize) -> &str {
-    let offset = offset.min(text.len());
-    let start = text.as_bytes()[..offset]
-        .iter()
-        .rposition(|&b| b == b'\n')
-        .map_or(0, |k| k + 1);
-    let end = text.as_bytes()[offset..]
-        .iter()
-        .position(|&b| b == b'\n')
-        .map_or(text.len(), |k| offset + k);
-    text.get(start..end).unwrap_or_default()
+    end
 }
 
 /// The parser's message, with the key named where it says "duplicate key".

@@ -625,3 +625,63 @@ fn the_modules_example_file_reads() {
     assert_eq!(file.parameter("l3"), Some(50.0));
     assert_eq!(file.parameter("l4"), Some(70.0));
 }
+
+/// No key of a mechanism file is a path: the module reaches the file
+/// system once, in `MechanismFile::read`, for the path it is given. (What
+/// a file holds — a title, names, units, values, keys it does not know —
+/// is read as text and never opened; `tests/files/paths.rs` runs files
+/// whose every string is a path.)
+#[test]
+fn the_module_opens_no_path_but_the_one_it_is_given() {
+    let sources = [
+        ("assembly.rs", include_str!("assembly.rs")),
+        ("decimal.rs", include_str!("decimal.rs")),
+        ("drawing.rs", include_str!("drawing.rs")),
+        ("drive.rs", include_str!("drive.rs")),
+        ("equations.rs", include_str!("equations.rs")),
+        ("error.rs", include_str!("error.rs")),
+        ("lines.rs", include_str!("lines.rs")),
+        ("mechanism.rs", include_str!("mechanism.rs")),
+        ("mod.rs", include_str!("mod.rs")),
+        ("names.rs", include_str!("names.rs")),
+        ("parameters.rs", include_str!("parameters.rs")),
+        ("quantity.rs", include_str!("quantity.rs")),
+        ("reader.rs", include_str!("reader.rs")),
+        ("scene.rs", include_str!("scene.rs")),
+        ("suggest.rs", include_str!("suggest.rs")),
+        ("syntax.rs", include_str!("syntax.rs")),
+        ("units.rs", include_str!("units.rs")),
+    ];
+    // Every source of the module is read here.
+    let folder = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src/file");
+    for entry in std::fs::read_dir(folder).unwrap() {
+        let name = entry.unwrap().file_name().into_string().unwrap();
+        if name.ends_with(".rs") && name != "tests.rs" {
+            assert!(
+                sources.iter().any(|(n, _)| *n == name),
+                "{name} is not read here"
+            );
+        }
+    }
+    let reaches = [
+        "std::fs",
+        "fs::",
+        "File::open",
+        "File::create",
+        "OpenOptions",
+        "std::env",
+        "std::process",
+        "std::net",
+    ];
+    let mut found = Vec::new();
+    for (name, source) in sources {
+        for (k, line) in source.lines().enumerate() {
+            let code = line.split("//").next().unwrap_or("");
+            if reaches.iter().any(|r| code.contains(r)) {
+                found.push(format!("{name}:{}: {}", k + 1, line.trim()));
+            }
+        }
+    }
+    assert_eq!(found.len(), 1, "{found:#?}");
+    assert!(found[0].contains("std::fs::read(path)"), "{found:#?}");
+}

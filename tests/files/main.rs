@@ -11,3 +11,5 @@ mod models;
 mod twins;
 
 mod library;
+/// No string of a file is a path.
+mod paths;

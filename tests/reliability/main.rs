@@ -37,6 +37,9 @@ mod bit_patterns;
 /// The same through the machine, the cam, the diagrams and the scenes.
 #[cfg(feature = "draw")]
 mod facade;
+/// Mechanism texts and files, mutated and made up, read and run.
+#[cfg(feature = "files")]
+mod files;
 mod four_bar_sweeps;
 mod four_bars;
 mod harness;

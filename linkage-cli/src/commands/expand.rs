@@ -14,9 +14,15 @@ pub fn run(input: &Input) -> Result<(), Failure> {
     let name = &file.name.text;
     let mut rust = String::new();
     let title = file.title.as_deref().unwrap_or(name);
+    // The title and the path are text of the file's, inside comments:
+    // each of their lines its own comment line, so that no line of them
+    // is ever code.
+    for line in title.lines() {
+        rust.push_str(&format!("/// {}\n", line.replace('\r', " ")));
+    }
+    let shown = loaded.shown.replace(['\n', '\r'], " ");
     rust.push_str(&format!(
-        "/// {title}\n///\n/// Promoted from the mechanism file `{}`",
-        loaded.shown
+        "///\n/// Promoted from the mechanism file `{shown}`"
     ));
     rust.push_str(&format!(" (lengths in {}).\n", file.length_unit));
     rust.push_str("#[linkage::linkage(\n");

@@ -85,10 +85,32 @@ pub fn assembled<const M: usize, const F: usize, const K: usize>(
             }
         },
     };
-    model
-        .assemble(at, &pick)
-        .map(|mode| mode.u)
-        .map_err(|e| Failure::Analysis(format!("at the drivers' `at` ({at:?}): {e}")))
+    model.assemble(at, &pick).map(|mode| mode.u).map_err(|e| {
+        let why = format!(
+            "the mechanism does not assemble at the drivers' `at` ({}): {e}",
+            analyze::at_text(&model.v_names(), at.as_slice())
+        );
+        at_the_drive(loaded, &model.v_names(), why, "the drive")
+    })
+}
+
+/// A failure of the analysis at the drivers' `at`, written to standard
+/// error located at the first driver's `at` (its `from`, if `at` is not
+/// written), the others' labelled.
+fn at_the_drive(loaded: &Loaded, names: &[&str], why: String, label: &str) -> Failure {
+    let places: Vec<std::ops::Range<usize>> = (names.iter())
+        .filter_map(|name| loaded.file.driver(name))
+        .filter_map(|d| d.at.span.clone().or_else(|| d.from.span.clone()))
+        .collect();
+    let Some((first, others)) = places.split_first() else {
+        return Failure::Analysis(why);
+    };
+    let mut diagnostic = Diagnostic::error(why, Some(first.clone()));
+    for place in others {
+        diagnostic = diagnostic.with_label(place.clone(), label);
+    }
+    report(&diagnostic.into(), &loaded.shown, &loaded.text);
+    Failure::AnalysisAt
 }
 
 /// The file's drive, and the analysis of the pose at its `at` (from the
@@ -147,13 +169,17 @@ pub fn swept<const M: usize, const F: usize, const K: usize>(
             to: drives.from,
             steps: 100,
         };
-        let carried = model
-            .sweep(&u_at, &back, &options)
-            .map_err(|e| Failure::Analysis(format!("from `at` back to `from`: {e}")))?;
+        let carried = model.sweep(&u_at, &back, &options).map_err(|e| {
+            let why = format!("from `at` back to `from`: {e}");
+            at_the_drive(loaded, &model.v_names(), why, "the drive")
+        })?;
         if !carried.complete {
-            return Err(Failure::Analysis(
-                "the assembly at `at` does not reach `from` (a limit position between them)"
-                    .to_owned(),
+            let why = "the assembly at `at` does not reach `from` (a limit position between them)";
+            return Err(at_the_drive(
+                loaded,
+                &model.v_names(),
+                why.to_owned(),
+                "the drive",
             ));
         }
         carried.poses.last().map_or(u_at, |p| p.u)

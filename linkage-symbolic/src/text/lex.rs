@@ -45,12 +45,18 @@ impl Equations<'_> {
 /// The tokens of `equations`, or why they cannot be read.
 pub(super) fn lex(equations: Equations<'_>) -> Result<TokenStream, Diagnostic> {
     if equations.text.len() > MAX_BYTES {
+        // From the character the limit falls in: a place on a character's
+        // boundary, which a renderer can cut the text at.
+        let start = (0..=MAX_BYTES)
+            .rev()
+            .find(|&k| equations.text.is_char_boundary(k))
+            .unwrap_or(0);
         return Err(Diagnostic::error(
             format!(
                 "the equations are {} bytes long; the most this reads is {MAX_BYTES}",
                 equations.text.len()
             ),
-            Some(equations.in_file(MAX_BYTES..equations.text.len())),
+            Some(equations.in_file(start..equations.text.len())),
         ));
     }
     let tokens = TokenStream::from_str(equations.text)
@@ -248,6 +254,13 @@ mod tests {
     fn too_large_or_too_deep_is_refused() {
         let long = "a + ".repeat(MAX_BYTES / 4 + 1);
         assert!(refusal(&long).message().contains("bytes long"));
+        // The limit inside a character: the place starts at the
+        // character, on a boundary of the text.
+        let wide = format!("{}θθ", "a".repeat(MAX_BYTES - 1));
+        let d = refusal(&wide);
+        let at = d.range().unwrap().start - 100;
+        assert_eq!(at, MAX_BYTES - 1);
+        assert!(wide.is_char_boundary(at));
         let many = "a + a, ".repeat(MAX_TOKENS / 4 + 1);
         assert!(
             refusal(&many)
