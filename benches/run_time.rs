@@ -76,8 +76,13 @@ fn attribute_of(source: &str, name: &str) -> String {
 }
 
 /// The run-time twin of a compiled mechanism: its attribute text read at
-/// run time, with the compiled mechanism's parameter values.
-fn twin<L, const M: usize, const K: usize>(compiled: &L, source: &str, name: &str) -> Fixed<M, 1>
+/// run time, with the compiled mechanism's parameter values, seen with
+/// room for `P` named points (as many as it has: an analysis copies them).
+fn twin<L, const M: usize, const K: usize, const P: usize>(
+    compiled: &L,
+    source: &str,
+    name: &str,
+) -> Fixed<M, 1, P>
 where
     L: Sensitivities<M, 1, K>,
 {
@@ -87,7 +92,7 @@ where
         .collect();
     Mechanism::from_text(name, &attribute_of(source, name), &parameters)
         .unwrap_or_else(|e| panic!("{name} reads at run time: {e}"))
-        .fixed::<M, 1>()
+        .fixed_with::<M, 1, P>()
         .expect("the compiled sizes")
 }
 
@@ -303,7 +308,7 @@ fn mechanisms(c: &mut Criterion) {
         c,
         "four-bar",
         &FOUR_BAR,
-        &twin(&FOUR_BAR, source, "FourBar"),
+        &twin::<_, 2, 4, 0>(&FOUR_BAR, source, "FourBar"),
         vector![four_bar[0], four_bar[1]],
         Rows::All,
     );
@@ -312,7 +317,7 @@ fn mechanisms(c: &mut Criterion) {
         c,
         "slider-crank",
         &SLIDER_CRANK,
-        &twin(&SLIDER_CRANK, source, "SliderCrank"),
+        &twin::<_, 2, 3, 0>(&SLIDER_CRANK, source, "SliderCrank"),
         vector![0.050_020_857, 0.249_749_844],
         Rows::All,
     );
@@ -320,7 +325,7 @@ fn mechanisms(c: &mut Criterion) {
         c,
         "six-bar",
         &SIX_BAR,
-        &twin(&SIX_BAR, source, "SixBar"),
+        &twin::<_, 4, 10, 2>(&SIX_BAR, source, "SixBar"),
         vector![1.369_438_4, -0.775_193_4, 2.237_243_8, -3.043_485_2],
         Rows::All,
     );
