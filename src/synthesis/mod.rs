@@ -43,7 +43,7 @@ pub use certify::{
 };
 pub use problem::{Problem, Timing};
 pub use residuals::Evaluated;
-pub use search::{Candidate, Closest, Search, Synthesis, synthesize};
+pub use search::{Candidate, Closest, Search, Synthesis, synthesize, synthesize_observed};
 
 use crate::error::UnknownName;
 use crate::runtime::Error;

@@ -199,6 +199,20 @@ pub fn synthesize<L, const M: usize, const K: usize>(
 where
     L: Sensitivities<M, 1, K> + Clone + Sync + Send,
 {
+    synthesize_observed(problem, requirements, search, &|| {})
+}
+
+/// [`synthesize`], calling `on_start` as each start ends (solved and
+/// judged, or failed), from whichever thread ran it: for a progress bar.
+pub fn synthesize_observed<L, const M: usize, const K: usize>(
+    problem: &Problem<L, M, K>,
+    requirements: &Requirements<'_, L, M>,
+    search: &Search,
+    on_start: &(dyn Fn() + Sync),
+) -> Result<Synthesis<L, M>, SynthesisError>
+where
+    L: Sensitivities<M, 1, K> + Clone + Sync + Send,
+{
     problem.check()?;
     search
         .options
@@ -237,10 +251,14 @@ where
             (synthesis.starts..search.starts.min(synthesis.starts + round)).collect();
         // Solved and certified in parallel; kept in the starts' order.
         let outcomes = batch::map(&starts, |&start| {
-            let mut candidate = solve(problem, search, requirements.steps_per_radian, start)?;
-            let verdict = verdict(problem, &candidate, requirements, &search.options);
-            candidate.certificate = verdict.as_ref().ok().copied();
-            Some((candidate, verdict.map(|_| ())))
+            let solved = solve(problem, search, requirements.steps_per_radian, start);
+            let outcome = solved.map(|mut candidate| {
+                let verdict = verdict(problem, &candidate, requirements, &search.options);
+                candidate.certificate = verdict.as_ref().ok().copied();
+                (candidate, verdict.map(|_| ()))
+            });
+            on_start();
+            outcome
         });
         synthesis.starts += starts.len();
         for outcome in outcomes {

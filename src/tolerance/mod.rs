@@ -76,7 +76,9 @@ pub use cycle::{Band, Cycle, cycle};
 pub use grashof::{GrashofMargin, grashof_margin};
 pub use limit::{LimitMargin, limit_margin, limit_measure};
 pub use located::{Located, at_found, extreme_values, extremes};
-pub use monte_carlo::{CycleSamples, Failure, MonteCarlo, monte_carlo, monte_carlo_cycle};
+pub use monte_carlo::{
+    CycleSamples, Failure, MonteCarlo, monte_carlo, monte_carlo_cycle, monte_carlo_cycle_observed,
+};
 pub use output::{Output, TolerancePose};
 pub use range::{Range, RangeSamples, monte_carlo_range, range};
 pub use statistics::Statistics;

@@ -147,6 +147,25 @@ pub fn monte_carlo_cycle<L, const M: usize, const F: usize, const K: usize>(
 where
     L: Sensitivities<M, F, K> + Clone + Sync,
 {
+    monte_carlo_cycle_observed(model, u0, drive, options, outputs, tolerances, run, &|| {})
+}
+
+/// [`monte_carlo_cycle`], calling `on_sample` as each sample's sweep ends
+/// (or fails), from whichever thread ran it: for a progress bar.
+#[allow(clippy::too_many_arguments)]
+pub fn monte_carlo_cycle_observed<L, const M: usize, const F: usize, const K: usize>(
+    model: &L,
+    u0: &SVector<f64, M>,
+    drive: &Drive<F>,
+    options: &SweepOptions,
+    outputs: &[Output<'_, M, F, K>],
+    tolerances: &Tolerances<K>,
+    run: &MonteCarlo,
+    on_sample: &(dyn Fn() + Sync),
+) -> Result<CycleSamples<M, F>, ToleranceError>
+where
+    L: Sensitivities<M, F, K> + Clone + Sync,
+{
     if run.samples == 0 {
         return Err(ToleranceError::NoSamples);
     }
@@ -171,7 +190,7 @@ where
     for chunk in indices.chunks(CHUNK) {
         let values = batch::map(chunk, |&i| {
             let sample = run.sample(model, tolerances, i);
-            sample_values(
+            let values = sample_values(
                 &sample,
                 u0,
                 drive,
@@ -179,7 +198,9 @@ where
                 &resolved,
                 &nominal,
                 sweep.events.len(),
-            )
+            );
+            on_sample();
+            values
         });
         for (&i, values) in chunk.iter().zip(values) {
             match values {

@@ -126,7 +126,26 @@ fn a_mechanism_read_at_run_time_is_synthesized_as_the_compiled_one() {
         starts: 16,
         ..Search::default()
     };
-    let found = synthesize(&problem, &Requirements::new(Range::Targets), &search).unwrap();
+    // Observed: every start reported once, and the same designs.
+    let ended = std::sync::atomic::AtomicUsize::new(0);
+    let found = linkage::synthesis::synthesize_observed(
+        &problem,
+        &Requirements::new(Range::Targets),
+        &search,
+        &|| {
+            ended.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        },
+    )
+    .unwrap();
+    assert_eq!(ended.into_inner(), search.starts);
+    let again = synthesize(&problem, &Requirements::new(Range::Targets), &search).unwrap();
+    let designs =
+        |s: &linkage::synthesis::Synthesis<linkage::mechanism::Fixed<2, 1, 32, 4>, 2>| -> Vec<_> {
+            (s.designs.iter())
+                .map(|c| (c.model.params(), c.rms_error.to_bits()))
+                .collect()
+        };
+    assert_eq!(designs(&found), designs(&again));
     assert!(!found.designs.is_empty(), "{found:?}");
     for candidate in &found.designs {
         let l = candidate.model.params();

@@ -251,9 +251,22 @@ fn monte_carlo_confirms_the_linear_spreads_of_the_worksheets_four_bar() {
         random_state: 11,
     };
     let cycle = tolerance::cycle(&bar, &u0, &drive, &options, &outputs, &tolerances).unwrap();
-    let samples =
-        tolerance::monte_carlo_cycle(&bar, &u0, &drive, &options, &outputs, &tolerances, &run)
-            .unwrap();
+    // Observed: every sample reported once.
+    let ended = std::sync::atomic::AtomicUsize::new(0);
+    let samples = tolerance::monte_carlo_cycle_observed(
+        &bar,
+        &u0,
+        &drive,
+        &options,
+        &outputs,
+        &tolerances,
+        &run,
+        &|| {
+            ended.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        },
+    )
+    .unwrap();
+    assert_eq!(ended.into_inner(), run.samples);
     assert!(samples.failures.is_empty());
     assert_eq!(
         samples.names,

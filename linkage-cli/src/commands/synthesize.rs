@@ -8,6 +8,7 @@
 use crate::cli::{SynthesizeArgs, Timing};
 use crate::failure::Failure;
 use crate::load::{Loaded, load};
+use crate::progress::Progress;
 use crate::sizes::{self, DesignJob, PARAMETERS};
 use crate::table::Table;
 use linkage::mechanism::Fixed;
@@ -103,8 +104,13 @@ impl DesignJob for Design<'_> {
             starts: args.starts,
             ..Search::default()
         };
+        let progress = Progress::new(args.starts as u64, "starts");
         let found =
-            synthesis::synthesize(&problem, &Requirements::new(over), &search).map_err(failed)?;
+            synthesis::synthesize_observed(&problem, &Requirements::new(over), &search, &|| {
+                progress.tick()
+            });
+        progress.finish();
+        let found = found.map_err(failed)?;
         if found.designs.is_empty() {
             let why = found
                 .best()

@@ -7,6 +7,7 @@
 use crate::cli::ToleranceArgs;
 use crate::failure::Failure;
 use crate::load::{Loaded, load};
+use crate::progress::Progress;
 use crate::quantity::{self, Quantity};
 use crate::sizes::{self, PARAMETERS, SensitivityJob};
 use crate::table::Table;
@@ -65,7 +66,8 @@ impl SensitivityJob for Spread<'_> {
                     samples: args.samples,
                     random_state: args.random_state,
                 };
-                tolerance::monte_carlo_cycle(
+                let progress = Progress::new(args.samples as u64, "samples");
+                let samples = tolerance::monte_carlo_cycle_observed(
                     &model,
                     start,
                     drive,
@@ -73,8 +75,10 @@ impl SensitivityJob for Spread<'_> {
                     &outputs,
                     &tolerances,
                     &run,
-                )
-                .map_err(|e| Failure::Analysis(e.to_string()))
+                    &|| progress.tick(),
+                );
+                progress.finish();
+                samples.map_err(|e| Failure::Analysis(e.to_string()))
             })
             .transpose()?;
         if let Some(limit) = cycle.limit.as_ref().filter(|l| l.reaches_limit()) {
