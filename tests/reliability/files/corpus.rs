@@ -481,7 +481,7 @@ pub(crate) fn made_file(rng: &mut Rng) -> String {
         }
         let x = generate::value(rng);
         let written = if !x.is_finite() {
-            format!("{}", rng.pick(&["nan", "inf", "-inf", "\"nan mm\""]))
+            rng.pick(&["nan", "inf", "-inf", "\"nan mm\""]).to_string()
         } else if rng.one_in(2) {
             format!("\"{x} mm\"")
         } else {

@@ -94,7 +94,7 @@ fn loop_term(rng: &mut Rng, length: &str, angle: &str) -> (String, String) {
             format!("{length} * ({angle} + 0.5).sin()"),
         ),
         2 => (angle.to_string(), "0.0".to_string()),
-        _ => (format!("{length} * {angle}"), format!("{length}")),
+        _ => (format!("{length} * {angle}"), length.to_string()),
     }
 }
 

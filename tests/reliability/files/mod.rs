@@ -366,6 +366,8 @@ fn run_text(case: &TextCase) -> Report {
     run::text_case(case)
 }
 
+// The campaign hands each case to its runner as `&C`, here `&String`.
+#[allow(clippy::ptr_arg)]
 fn run_file(text: &String) -> Report {
     run::file_case(text)
 }

@@ -212,7 +212,7 @@ fn finite<'a>(xs: impl IntoIterator<Item = &'a f64>) -> bool {
 
 fn finite_mode<const M: usize>(mode: &Mode<M>) -> bool {
     finite(&mode.u)
-        && mode.points.iter().all(|p| finite(p))
+        && mode.points.iter().all(finite)
         && mode.rcond.is_finite()
         && mode.residual.is_finite()
 }
@@ -277,8 +277,7 @@ fn analyses<const M: usize, const F: usize>(
             return;
         }
     };
-    let points =
-        |set: &<Fixed<M, F> as Kernels<M, F>>::Points| set.as_ref().iter().all(|p| finite(p));
+    let points = |set: &<Fixed<M, F> as Kernels<M, F>>::Points| set.as_ref().iter().all(finite);
     report.lie(
         "the analysis",
         finite(&pose.u)
