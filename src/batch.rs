@@ -146,11 +146,11 @@ where
 }
 
 /// Runs every job's [`Linkage::analyze`] in parallel (see the module
-/// documentation). On each thread, runs of jobs are analysed side by side:
-/// their Newton iterations ask for their evaluations together, which a
-/// run-time mechanism ([`crate::mechanism`]) makes on its tapes' lanes,
-/// several poses or designs of one mechanism per pass. Each result equals,
-/// to the bit, what the job's `analyze` gives alone.
+/// documentation). For a run-time mechanism ([`crate::mechanism`]), runs
+/// of jobs are analysed side by side on each thread: their Newton
+/// iterations ask for their evaluations together, which it makes on its
+/// tapes' lanes, several poses or designs of one mechanism per pass. Each
+/// result equals, to the bit, what the job's `analyze` gives alone.
 #[allow(clippy::type_complexity)]
 pub fn analyses<L, const M: usize, const F: usize>(
     jobs: &[AnalysisJob<L, M, F>],
@@ -160,7 +160,18 @@ where
     L: Linkage<M, F> + Sync,
     L::Points: Send,
 {
-    side_by_side(jobs, |jobs| analyze_together(jobs, options))
+    if L::evaluates_together() {
+        return side_by_side(jobs, |jobs| analyze_together(jobs, options));
+    }
+    each(jobs).map(|job| analyze(job, options)).collect()
+}
+
+/// One job's analysis, alone.
+fn analyze<L: Linkage<M, F>, const M: usize, const F: usize>(
+    job: &AnalysisJob<L, M, F>,
+    options: &Options,
+) -> Result<Analysis<M, F, L::Points>, Error> {
+    (job.model).analyze(&job.u_guess, &job.v, &job.vdot, &job.vddot, options)
 }
 
 /// [`sweeps`] with the sensitivities of every pose to the parameters
@@ -206,14 +217,20 @@ where
     L: Sensitivities<M, F, K> + Sync,
     L::Points: Send,
 {
-    side_by_side(jobs, |jobs| {
-        let analyses = analyze_together(jobs, options);
-        (jobs.iter().zip(analyses))
-            .map(|(job, analysis)| {
-                let analysis = analysis?;
-                let sensitivity = job.model.sensitivities_of(&analysis, options)?;
-                Ok((analysis, sensitivity))
-            })
-            .collect()
-    })
+    let with_sensitivities = |job: &AnalysisJob<L, M, F>, analysis| {
+        let analysis = analysis?;
+        let sensitivity = job.model.sensitivities_of(&analysis, options)?;
+        Ok((analysis, sensitivity))
+    };
+    if L::evaluates_together() {
+        return side_by_side(jobs, |jobs| {
+            let analyses = analyze_together(jobs, options);
+            (jobs.iter().zip(analyses))
+                .map(|(job, analysis)| with_sensitivities(job, analysis))
+                .collect()
+        });
+    }
+    each(jobs)
+        .map(|job| with_sensitivities(job, analyze(job, options)))
+        .collect()
 }

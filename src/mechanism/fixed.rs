@@ -553,6 +553,10 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Kernels<M, 
         self.kinematics_of(Some((trig_u, trig_v)), u, v, vdot, vddot)
     }
 
+    fn evaluates_together() -> bool {
+        true
+    }
+
     fn kinematics_with_trig_each(
         requests: &[FusedRequest<'_, Self, M, F>],
         mut take: impl FnMut(usize, Kinematics<M, F>),

@@ -145,6 +145,16 @@ pub trait Kernels<const M: usize, const F: usize> {
         let _ = (trig_u, trig_v);
         self.kinematics(u, v, vdot, vddot)
     }
+    /// Whether [`Kernels::kinematics_with_trig_each`] makes its requests
+    /// together faster than one after the other: a batch then runs its
+    /// analyses side by side (else each alone, as `analyze` does).
+    #[doc(hidden)]
+    fn evaluates_together() -> bool
+    where
+        Self: Sized,
+    {
+        false
+    }
     /// [`Kernels::kinematics_with_trig`] at many poses, each of its own
     /// model: `take(k, kinematics)` for each request k, in order, bit for
     /// bit what `requests[k].model.kinematics_with_trig(…)` gives. A batch

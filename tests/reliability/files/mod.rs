@@ -146,14 +146,15 @@ impl Tally {
         let ok = count(&|k| k.starts_with("Ok"));
         let errors = count(&|k| !k.starts_with("Ok") && k != "panicked" && k != "hung");
         eprintln!(
-            "| {name} | {n} | {ok} | {errors} | {} | {} | {} | {} | {} | {:.2} ms | {:.0} ms |",
+            "| {name} | {n} | {ok} | {errors} | {} | {} | {} | {} | {} | {:.2} ms | {:.0} ms | ({} slower than 1 s)",
             self.panics.len(),
-            self.slow.len(),
+            self.hangs.len(),
             self.lies.len(),
             self.unlocated.len(),
             self.internal.len(),
             median.as_secs_f64() * 1e3,
             max.as_secs_f64() * 1e3,
+            self.slow.len(),
         );
         let mut stages: BTreeMap<&str, usize> = BTreeMap::new();
         for (kind, k) in &self.kinds {
@@ -168,6 +169,8 @@ impl Tally {
         for (kind, count) in &kinds {
             eprintln!("    {count:>8}  {kind}");
         }
+        // The slowest 20, slowest first.
+        self.slow.sort_by(|a, b| b.1.cmp(&a.1));
         for (index, t, kind) in self.slow.iter().take(20) {
             eprintln!("    slow: case {index}, {:.2} s, {kind}", t.as_secs_f64());
         }
