@@ -170,7 +170,7 @@ impl Tally {
             eprintln!("    {count:>8}  {kind}");
         }
         // The slowest 20, slowest first.
-        self.slow.sort_by(|a, b| b.1.cmp(&a.1));
+        self.slow.sort_by_key(|s| std::cmp::Reverse(s.1));
         for (index, t, kind) in self.slow.iter().take(20) {
             eprintln!("    slow: case {index}, {:.2} s, {kind}", t.as_secs_f64());
         }
