@@ -49,8 +49,20 @@ pub enum Command {
     /// trace over the drive range (SVG).
     Draw(Draw),
     /// The Rust that makes the file a compiled mechanism: the attribute on
-    /// a struct, and its parameters' values.
-    Expand(Input),
+    /// a struct, and its parameters' values (with `--expanded`, the code
+    /// the attribute generates).
+    Expand(ExpandArgs),
+}
+
+/// `expand`'s arguments.
+#[derive(Debug, Args)]
+pub struct ExpandArgs {
+    #[command(flatten)]
+    pub input: Input,
+    /// Write the code the attribute generates, expanded and formatted,
+    /// instead of the attribute.
+    #[arg(long)]
+    pub expanded: bool,
 }
 
 /// The mechanism file.

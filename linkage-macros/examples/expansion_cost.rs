@@ -12,10 +12,8 @@
 //! prints the table (`docs/refresh.sh` refreshes the committed ones). `--no-compile` skips the (slow) compile-time column.
 #![allow(dead_code)]
 
-// The macro's item assembly, compiled into this program (a proc-macro
-// crate exports nothing else); the engine is the linkage-symbolic crate.
-#[path = "../src/expand/mod.rs"]
-mod expand;
+// The macro's item assembly: the engine's `generate`.
+use linkage_symbolic::generate as expand;
 // The mechanisms measured, shared with the tapes' cost.
 #[path = "common/cases.rs"]
 mod cases;

@@ -28,7 +28,7 @@
 //!
 //!     LINKAGE_FUZZ_CASES=1000000 cargo test --release -p linkage-macros fuzz -- --nocapture
 
-use crate::expand::{expand, run};
+use linkage_symbolic::generate::{expand, run};
 use proc_macro2::{Delimiter, Group, Ident, Literal, Punct, Spacing, Span, TokenStream, TokenTree};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed, TestCaseError, TestRunner};

@@ -4,14 +4,13 @@
 //!
 //! A thin shell around the symbolic engine, `linkage-symbolic` (parse,
 //! DAG, derivatives, normal form, shared subexpressions, emitted
-//! statements): `expand` assembles the engine's statements into documented
-//! items.
+//! statements, and their assembly into documented items in its
+//! `generate`).
 //!
 //! Use it through the `linkage` crate, which documents the attribute.
 
 #![forbid(unsafe_code)]
 
-mod expand;
 #[cfg(test)]
 mod fuzz;
 #[cfg(test)]
@@ -25,5 +24,5 @@ use proc_macro::TokenStream;
 // (docs/attribute.md).
 #[proc_macro_attribute]
 pub fn linkage(attr: TokenStream, item: TokenStream) -> TokenStream {
-    expand::expand(attr.into(), item.into()).into()
+    linkage_symbolic::generate::expand(attr.into(), item.into()).into()
 }

@@ -434,7 +434,7 @@ proptest! {
         let expr: syn::Expr = syn::parse_str(&source(&t, &mut style)).expect("the source parses");
         let attr = quote::quote!(u = [w], v = [x, y], closure = [w - k * (#expr)]);
         let item = quote::quote!(pub struct Random { pub k: f64 });
-        let expansion = crate::expand::expand(attr, item);
+        let expansion = linkage_symbolic::generate::expand(attr, item);
         let file: syn::File = syn::parse2(expansion.clone()).expect("the expansion parses");
         prop_assume!(!expansion.to_string().contains("compile_error"));
         let fields = std::collections::HashMap::from([("k".to_owned(), 1.0)]);

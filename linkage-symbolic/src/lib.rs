@@ -15,10 +15,11 @@
 //!    statements emitted;
 //! 5. [`display`]: formulas as a textbook prints them, for documentation.
 //!
-//! [`build`] runs stages 1–3. The `#[linkage::linkage(...)]` attribute
-//! (crate `linkage-macros`) is a thin shell around this crate: it assembles
-//! the emitted statements into documented items, each f64 function from
-//! its [`plan`]. A [`tape`] is the same statements compiled into a
+//! [`build`] runs stages 1–3. [`generate`] assembles the emitted
+//! statements into documented items, each f64 function from its [`plan`]:
+//! the code of the `#[linkage::linkage(...)]` attribute (crate
+//! `linkage-macros`, a thin shell around it), and of `linkage expand
+//! --expanded`. A [`tape`] is the same statements compiled into a
 //! register program that gives the compiled function's numbers without a
 //! compiler (its interpreter needs no feature, its compiler `syntax`).
 //!
@@ -47,6 +48,8 @@ pub mod display;
 pub mod emit;
 #[cfg(feature = "syntax")]
 pub mod errors;
+#[cfg(feature = "syntax")]
+pub mod generate;
 mod hasher;
 #[cfg(any(test, feature = "eval"))]
 pub mod interp;

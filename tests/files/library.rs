@@ -326,7 +326,7 @@ fn same_at_run_time<L, const M: usize, const F: usize, const K: usize>(
 }
 
 /// Every check of one file against its twin.
-fn twin<L, const M: usize, const F: usize, const K: usize>(name: &str, model: &L)
+pub(crate) fn twin<L, const M: usize, const F: usize, const K: usize>(name: &str, model: &L)
 where
     L: Linkage<M, F> + Sensitivities<M, F, K>,
 {

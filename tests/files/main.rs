@@ -10,6 +10,8 @@ mod models;
 #[path = "../common/twins.rs"]
 mod twins;
 
+/// The code `linkage expand --expanded` prints, compiled.
+mod expanded;
 mod library;
 /// No string of a file is a path.
 mod paths;

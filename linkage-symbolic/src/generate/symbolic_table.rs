@@ -3,9 +3,9 @@
 
 use super::Generator;
 use super::quantities::{QUANTITIES, Shape, Source};
-use linkage_symbolic::dag::{Dag, Id};
-use linkage_symbolic::derivatives::Matrix;
-use linkage_symbolic::names::subscript;
+use crate::dag::{Dag, Id};
+use crate::derivatives::Matrix;
+use crate::names::subscript;
 use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 

@@ -2,8 +2,8 @@
 //! matrices, prose wrapped at 90 columns.
 
 use super::Generator;
-use linkage_symbolic::derivatives::Matrix;
-use linkage_symbolic::display::Formatter;
+use crate::derivatives::Matrix;
+use crate::display::Formatter;
 use proc_macro2::TokenStream;
 use quote::quote;
 

@@ -5,9 +5,9 @@ use super::Generator;
 use super::constants::TRIG;
 use super::docs::doc_attributes;
 use super::function::{assemble, reaches};
-use linkage_symbolic::dag::Symbol;
-use linkage_symbolic::emit::Mode;
-use linkage_symbolic::plan::{Kernel, Plan, PlannedPart};
+use crate::dag::Symbol;
+use crate::emit::Mode;
+use crate::plan::{Kernel, Plan, PlannedPart};
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 

@@ -8,8 +8,8 @@ use super::docs::doc_attributes;
 use super::function::{assemble, reads};
 use super::quantities::{Arg, Quantity};
 use super::signature;
-use linkage_symbolic::emit::{Body, Mode};
-use linkage_symbolic::plan::{Formula, Kernel};
+use crate::emit::{Body, Mode};
+use crate::plan::{Formula, Kernel};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 

@@ -6,10 +6,10 @@ use super::Generator;
 use super::docs::doc_attributes;
 use super::quantities::{Arg, Quantity};
 use super::signature;
-use linkage_symbolic::dag::{Id, Node, Symbol};
-use linkage_symbolic::emit::{Body, Mode, Reads};
-use linkage_symbolic::plan::{Kernel, free_name};
-use linkage_symbolic::tape::{Form, Part};
+use crate::dag::{Id, Node, Symbol};
+use crate::emit::{Body, Mode, Reads};
+use crate::plan::{Kernel, free_name};
+use crate::tape::{Form, Part};
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 
@@ -169,7 +169,7 @@ pub fn point_columns<'v>(
 }
 
 /// Whether any of `roots` depends on the symbol.
-pub fn reaches(dag: &linkage_symbolic::dag::Dag, roots: &[Id], symbol: Symbol) -> bool {
+pub fn reaches(dag: &crate::dag::Dag, roots: &[Id], symbol: Symbol) -> bool {
     let mut seen = std::collections::HashSet::new();
     let mut stack: Vec<Id> = roots.to_vec();
     while let Some(id) = stack.pop() {
@@ -178,7 +178,7 @@ pub fn reaches(dag: &linkage_symbolic::dag::Dag, roots: &[Id], symbol: Symbol) -
         }
         match dag.node(id) {
             Node::Sym(s) if *s == symbol => return true,
-            node => stack.extend(linkage_symbolic::dag::children(node)),
+            node => stack.extend(crate::dag::children(node)),
         }
     }
     false

@@ -1,5 +1,6 @@
-//! The items the attribute emits, assembled with `quote!` from the table of
-//! quantities (`quantities.rs`): the inherent functions (`function.rs`,
+//! The items the attribute emits — and `linkage expand --expanded` prints
+//! — assembled with `quote!` from the table of quantities
+//! (`quantities.rs`): the inherent functions (`function.rs`,
 //! `kinematics.rs`, `generic.rs`), the `Kernels` and `Linkage` impls
 //! (`trait_impl.rs`), the symbolic table (`symbolic_table.rs`), the
 //! associated constants (`constants.rs`) and, when the attribute has
@@ -11,20 +12,20 @@ mod fallback;
 mod function;
 mod generic;
 mod kinematics;
-pub mod quantities;
+mod quantities;
 mod sensitivity;
 mod signature;
 mod symbolic_table;
 mod trait_impl;
 
-use linkage_symbolic::Unbuilt;
-use linkage_symbolic::ast::Input;
-use linkage_symbolic::dag::Dag;
-use linkage_symbolic::derivatives::Derivatives;
-use linkage_symbolic::display::Formatter;
-use linkage_symbolic::errors::Errors;
-use linkage_symbolic::names::SymbolNames;
-use linkage_symbolic::plan::Kernel;
+use crate::Unbuilt;
+use crate::ast::Input;
+use crate::dag::Dag;
+use crate::derivatives::Derivatives;
+use crate::display::Formatter;
+use crate::errors::Errors;
+use crate::names::SymbolNames;
+use crate::plan::Kernel;
 use proc_macro2::TokenStream;
 use quantities::{DocContext, QUANTITIES, Quantity, Scalar, Source};
 use quote::{format_ident, quote};
@@ -64,16 +65,15 @@ pub fn run(attr: TokenStream, item: TokenStream) -> Run {
     let mut errors = Errors::default();
     let input = Input::parse(attr, item, &mut errors);
     let mut unbuilt = Unbuilt::default();
-    let generated =
-        input
-            .as_ref()
-            .and_then(|input| match linkage_symbolic::build(input, &mut errors) {
-                Ok(model) => Some(Generator::new(input, &model).items()),
-                Err(partial) => {
-                    unbuilt = partial;
-                    None
-                }
-            });
+    let generated = input
+        .as_ref()
+        .and_then(|input| match crate::build(input, &mut errors) {
+            Ok(model) => Some(Generator::new(input, &model).items()),
+            Err(partial) => {
+                unbuilt = partial;
+                None
+            }
+        });
     let result = match (errors.combined(), generated) {
         (None, Some(tokens)) => Ok(tokens),
         (Some(error), _) => Err(error),
@@ -224,8 +224,8 @@ impl<'a> Generator<'a> {
             .filter(|q| q.function)
             .map(|q| self.inherent(q, &context));
         let (u_names, v_names) = (&self.input.u.items, &self.input.v.items);
-        let u_names: Vec<String> = u_names.iter().map(linkage_symbolic::ast::unraw).collect();
-        let v_names: Vec<String> = v_names.iter().map(linkage_symbolic::ast::unraw).collect();
+        let u_names: Vec<String> = u_names.iter().map(crate::ast::unraw).collect();
+        let v_names: Vec<String> = v_names.iter().map(crate::ast::unraw).collect();
         let point_names: Vec<&str> = self.model.points.iter().map(|p| p.name.as_str()).collect();
         let param_names = self.names.params_code();
         let dims = self.dims();
@@ -247,7 +247,11 @@ impl<'a> Generator<'a> {
             const _: () = {
                 use ::linkage::nalgebra::{SMatrix, SVector, Vector2};
 
-                #[automatically_derived]
+                // The generated functions are the mechanism's interface: a
+                // program uses those it needs (and `automatically_derived`
+                // is for trait impls: pasted from `linkage expand
+                // --expanded`, rustc warns of it on this one).
+                #[allow(dead_code)]
                 impl #impl_generics #ty #ty_generics #where_clause {
                     #(#names)*
                     #point_indices
@@ -503,10 +507,10 @@ mod tests {
 
     /// The f64 functions of the table are the plan's kernels, in the same
     /// order and under the same names: what each computes is planned in
-    /// one place (`linkage_symbolic::plan`), which the tapes compile too.
+    /// one place (`crate::plan`), which the tapes compile too.
     #[test]
     fn the_tables_kernels_are_the_plans() {
-        use linkage_symbolic::plan::Kernel;
+        use crate::plan::Kernel;
         let kernels: Vec<Kernel> = QUANTITIES.iter().filter_map(|q| q.kernel()).collect();
         assert_eq!(kernels, Kernel::ALL);
         for q in QUANTITIES {
@@ -548,7 +552,7 @@ mod tests {
     /// The expansion of the worksheet's four-bar, formatted with
     /// prettyplease, against the committed snapshot: any change to the
     /// generated code shows up here for review. After a deliberate change,
-    /// `LINKAGE_BLESS=1 cargo test -p linkage-macros snapshot` rewrites it.
+    /// `LINKAGE_BLESS=1 cargo test -p linkage-symbolic snapshot` rewrites it.
     #[test]
     fn fourbar_expansion_matches_the_snapshot() {
         let text = fourbar_expansion();

@@ -7,7 +7,7 @@ pub struct FourBar {
 }
 const _: () = {
     use ::linkage::nalgebra::{SMatrix, SVector, Vector2};
-    #[automatically_derived]
+    #[allow(dead_code)]
     impl FourBar {
         /// The dependent coordinates u, in order.
         pub const U_NAMES: [&'static str; 2] = ["theta3", "theta4"];

@@ -3,9 +3,9 @@
 //! from and where it appears: the inherent items, the `Kernels` impl, the
 //! error-path fallback and the symbolic table are all generated from this
 //! table, so adding a quantity is one entry here (plus its formula in
-//! `linkage_symbolic::derivatives`).
+//! `crate::derivatives`).
 
-use linkage_symbolic::plan::{Formula, Kernel};
+use crate::plan::{Formula, Kernel};
 
 /// An argument of a generated function, after `&self`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -167,7 +167,7 @@ pub struct Quantity {
 impl Quantity {
     /// The kernel of straight-line f64 code behind its function, if it has
     /// one: what the function computes is the kernel's plan
-    /// (`linkage_symbolic::plan`), which the tapes compile too.
+    /// (`crate::plan`), which the tapes compile too.
     pub fn kernel(&self) -> Option<Kernel> {
         if !self.function || self.scalar != Scalar::F64 {
             return None;

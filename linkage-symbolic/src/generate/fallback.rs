@@ -22,8 +22,8 @@
 use super::constants;
 use super::quantities::{QUANTITIES, Scalar, Shape, Trait};
 use super::signature::{self, Dim, Dims};
-use linkage_symbolic::Unbuilt;
-use linkage_symbolic::ast::Input;
+use crate::Unbuilt;
+use crate::ast::Input;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
@@ -38,7 +38,7 @@ fn dims(input: &Input, unbuilt: &Unbuilt) -> Dims {
     );
     let f = Dim::known_or_generic(given(input.v.meant(&input.u.items)), &f);
     let n = Dim::known_or_generic(m.value().zip(f.value()).map(|(m, f)| m + f), &n);
-    let k = linkage_symbolic::params::count_as_written(input, unbuilt.params);
+    let k = crate::params::count_as_written(input, unbuilt.params);
     let k = Dim::known_or_generic(k, &k_name);
     Dims {
         m,

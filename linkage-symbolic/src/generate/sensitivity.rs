@@ -9,9 +9,9 @@ use super::docs::doc_attributes;
 use super::function::{assemble, point_columns, reads};
 use super::quantities::Quantity;
 use super::signature;
-use linkage_symbolic::emit::Mode;
-use linkage_symbolic::plan::{Kernel, Plan};
-use linkage_symbolic::tape::{Form, Part};
+use crate::emit::Mode;
+use crate::plan::{Kernel, Plan};
+use crate::tape::{Form, Part};
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 
