@@ -46,3 +46,6 @@ mod harness;
 mod regressions;
 mod six_bars;
 mod slider_cranks;
+/// The watchdog of the campaigns over the facade and over files.
+#[cfg(any(feature = "draw", feature = "files"))]
+mod watchdog;

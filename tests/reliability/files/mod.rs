@@ -42,10 +42,10 @@ mod random;
 mod regressions;
 mod run;
 
+use crate::watchdog::{Ended, watched};
 use random::Rng;
 use run::{Report, TextCase};
 use std::collections::BTreeMap;
-use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
 fn cases() -> u64 {
@@ -60,17 +60,6 @@ fn only() -> Option<u64> {
     std::env::var("LINKAGE_CASE")
         .ok()
         .and_then(|s| s.parse().ok())
-}
-
-/// The longest a case may take before it counts as hung
-/// (`LINKAGE_TIME_LIMIT` seconds, default 120: far beyond any legitimate
-/// one, even unoptimised).
-fn time_limit() -> Duration {
-    let seconds = std::env::var("LINKAGE_TIME_LIMIT")
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(120);
-    Duration::from_secs(seconds)
 }
 
 /// A case slower than this is reported as slow.
@@ -90,7 +79,7 @@ struct Tally {
 }
 
 impl Tally {
-    fn record(&mut self, index: u64, elapsed: Duration, ended: Ended) {
+    fn record(&mut self, index: u64, elapsed: Duration, ended: Ended<Report>) {
         self.times.push(elapsed);
         if elapsed > SLOW {
             let kind = match &ended {
@@ -191,33 +180,6 @@ impl Tally {
             }
         }
         assert!(broken.is_empty(), "{name}: {}", broken.join("\n"));
-    }
-}
-
-enum Ended {
-    Done(Report),
-    Panicked(String),
-    Hung,
-}
-
-/// Runs `f` on a thread of its own (the default 2 MiB stack of a spawned
-/// thread, not the main thread's 8) and waits at most [`time_limit`].
-fn watched(f: impl FnOnce() -> Report + Send + 'static) -> Ended {
-    let (send, receive) = mpsc::channel();
-    std::thread::spawn(move || {
-        let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(f));
-        let _ = send.send(outcome);
-    });
-    match receive.recv_timeout(time_limit()) {
-        Ok(Ok(report)) => Ended::Done(report),
-        Ok(Err(payload)) => Ended::Panicked(
-            payload
-                .downcast_ref::<&str>()
-                .map(|s| s.to_string())
-                .or_else(|| payload.downcast_ref::<String>().cloned())
-                .unwrap_or_default(),
-        ),
-        Err(_) => Ended::Hung,
     }
 }
 

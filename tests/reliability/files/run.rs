@@ -6,7 +6,7 @@
 //! of an `Ok` for being finite.
 
 use linkage::assembly::{Assemble, Mode, Pick};
-use linkage::file::MechanismFile;
+use linkage::file::{Drives, MechanismFile};
 use linkage::mechanism::{Diagnostic, Diagnostics, Fixed, Mechanism, MechanismError};
 use linkage::prelude::*;
 
@@ -182,16 +182,6 @@ pub(crate) fn family(message: &str) -> &'static str {
         }
     }
     "other mistake"
-}
-
-/// The drive of a case at the mechanism's sizes.
-pub(crate) struct Drives {
-    pub(crate) at: Vec<f64>,
-    pub(crate) from: Vec<f64>,
-    pub(crate) to: Vec<f64>,
-    pub(crate) rate: Vec<f64>,
-    pub(crate) acceleration: Vec<f64>,
-    pub(crate) steps: usize,
 }
 
 /// The steps of the short sweeps: a few, whatever the file says.
@@ -534,39 +524,13 @@ pub(crate) fn file_case(text: &str) -> Report {
     let _ = mechanism.methods_agree();
     // A driving coordinate without its table: a mistake at the file's
     // name, as the tool reports it.
-    let names = mechanism.v_names();
-    let mut missing = Diagnostics::new();
-    for name in names {
-        if file.driver(name).is_none() {
-            missing.push(Diagnostic::error(
-                format!("`{name}` is a driving coordinate without its table `[drive.{name}]`"),
-                Some(file.name.span.clone()),
-            ));
+    let drives = match file.drives(mechanism.v_names()) {
+        Ok(drives) => drives,
+        Err(missing) => {
+            located(&mut report, &missing, text, &[]);
+            report.kind = "drive: a driver without its table".into();
+            return report;
         }
-    }
-    if !missing.is_empty() {
-        located(&mut report, &missing, text, &[]);
-        report.kind = "drive: a driver without its table".into();
-        return report;
-    }
-    let of = |f: &dyn Fn(&linkage::file::Driver) -> f64| -> Vec<f64> {
-        names
-            .iter()
-            .map(|n| file.driver(n).map_or(0.0, f))
-            .collect()
-    };
-    let steps = (names.iter())
-        .filter_map(|n| file.driver(n))
-        .map(|d| d.steps)
-        .max()
-        .unwrap_or(linkage::file::DEFAULT_STEPS);
-    let drives = Drives {
-        at: of(&|d| d.at.value),
-        from: of(&|d| d.from.value),
-        to: of(&|d| d.to.value),
-        rate: of(&|d| d.rate.value),
-        acceleration: of(&|d| d.acceleration.value),
-        steps,
     };
     let choice = FileChoice {
         file: &file,
