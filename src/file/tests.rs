@@ -638,6 +638,7 @@ fn the_module_opens_no_path_but_the_one_it_is_given() {
         ("decimal.rs", include_str!("decimal.rs")),
         ("drawing.rs", include_str!("drawing.rs")),
         ("drive.rs", include_str!("drive.rs")),
+        ("drives.rs", include_str!("drives.rs")),
         ("equations.rs", include_str!("equations.rs")),
         ("error.rs", include_str!("error.rs")),
         ("lines.rs", include_str!("lines.rs")),

@@ -13,7 +13,7 @@ pub mod tolerance;
 
 use crate::failure::Failure;
 use crate::load::{Loaded, report};
-use linkage::mechanism::{Diagnostic, Diagnostics, Fixed};
+use linkage::mechanism::{Diagnostic, Fixed};
 use linkage::prelude::*;
 use std::io::Write;
 use std::path::Path;
@@ -35,36 +35,18 @@ pub fn drives<const M: usize, const F: usize, const K: usize>(
     loaded: &Loaded,
     model: &Fixed<M, F, 32, K>,
 ) -> Result<Drives<F>, Failure> {
-    let names = model.v_names();
-    let mut missing = Diagnostics::new();
-    for name in names {
-        if loaded.file.driver(name).is_none() {
-            missing.push(Diagnostic::error(
-                format!("`{name}` is a driving coordinate without its table `[drive.{name}]`: give its `from` and `to`"),
-                Some(loaded.file.name.span.clone()),
-            ));
-        }
-    }
-    if !missing.is_empty() {
+    let drives = (loaded.file).drives(&model.v_names()).map_err(|missing| {
         report(&missing, &loaded.shown, &loaded.text);
-        return Err(Failure::Mistakes);
-    }
-    let of = |f: &dyn Fn(&linkage::file::Driver) -> f64| {
-        SVector::<f64, F>::from_fn(|k, _| loaded.file.driver(names[k]).map_or(0.0, f))
-    };
-    let steps = names
-        .iter()
-        .filter_map(|n| loaded.file.driver(n))
-        .map(|d| d.steps)
-        .max()
-        .unwrap_or(linkage::file::DEFAULT_STEPS);
+        Failure::Mistakes
+    })?;
+    let vector = |values: &[f64]| SVector::<f64, F>::from_fn(|k, _| values[k]);
     Ok(Drives {
-        at: of(&|d| d.at.value),
-        from: of(&|d| d.from.value),
-        to: of(&|d| d.to.value),
-        rate: of(&|d| d.rate.value),
-        acceleration: of(&|d| d.acceleration.value),
-        steps,
+        at: vector(&drives.at),
+        from: vector(&drives.from),
+        to: vector(&drives.to),
+        rate: vector(&drives.rate),
+        acceleration: vector(&drives.acceleration),
+        steps: drives.steps,
     })
 }
 
