@@ -75,14 +75,9 @@ fn attribute_of(source: &str, name: &str) -> String {
     panic!("the attribute of {name} does not end")
 }
 
-/// The run-time twin of a compiled mechanism: its attribute text read at
-/// run time, with the compiled mechanism's parameter values, seen with
-/// room for `P` named points (as many as it has: an analysis copies them).
-fn twin<L, const M: usize, const K: usize, const P: usize>(
-    compiled: &L,
-    source: &str,
-    name: &str,
-) -> Fixed<M, 1, P>
+/// A compiled mechanism's attribute text read at run time, with the
+/// compiled mechanism's parameter values.
+fn read<L, const M: usize, const K: usize>(compiled: &L, source: &str, name: &str) -> Mechanism
 where
     L: Sensitivities<M, 1, K>,
 {
@@ -92,6 +87,19 @@ where
         .collect();
     Mechanism::from_text(name, &attribute_of(source, name), &parameters)
         .unwrap_or_else(|e| panic!("{name} reads at run time: {e}"))
+}
+
+/// The run-time twin of a compiled mechanism ([`read`]), seen with room
+/// for `P` named points (as many as it has: an analysis copies them).
+fn twin<L, const M: usize, const K: usize, const P: usize>(
+    compiled: &L,
+    source: &str,
+    name: &str,
+) -> Fixed<M, 1, P>
+where
+    L: Sensitivities<M, 1, K>,
+{
+    read(compiled, source, name)
         .fixed_with::<M, 1, P>()
         .expect("the compiled sizes")
 }
@@ -363,14 +371,7 @@ const BATCH_DESIGNS: usize = 1_000;
 fn batches(c: &mut Criterion) {
     use linkage::batch::{self, AnalysisJob};
     let source = include_str!("../examples/speed_accuracy/workloads.rs");
-    let mechanism = {
-        let values = FOUR_BAR.params();
-        let parameters: Vec<(&str, f64)> = (FOUR_BAR.param_names().iter().copied())
-            .zip(values.iter().copied())
-            .collect();
-        Mechanism::from_text("FourBar", &attribute_of(source, "FourBar"), &parameters)
-            .expect("the four-bar reads at run time")
-    };
+    let mechanism = read(&FOUR_BAR, source, "FourBar");
     // Room for as many points as it has, none.
     let run_time = mechanism.fixed_with::<2, 1, 0>().expect("m = 2, f = 1");
     let start = linkage::closed_form::FourBar {

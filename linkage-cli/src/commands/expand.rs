@@ -22,10 +22,19 @@ pub fn run(args: &ExpandArgs) -> Result<(), Failure> {
 
 /// The struct with its documentation, the attribute on it.
 fn attributed(loaded: &Loaded) -> String {
+    format!(
+        "{}#[linkage::linkage(\n{})]\n{}",
+        documentation(loaded),
+        attribute(loaded),
+        structure(loaded)
+    )
+}
+
+/// The struct's documentation: the file's title and where it comes from.
+fn documentation(loaded: &Loaded) -> String {
     let file = &loaded.file;
-    let name = &file.name.text;
     let mut rust = String::new();
-    let title = file.title.as_deref().unwrap_or(name);
+    let title = file.title.as_deref().unwrap_or(&file.name.text);
     // The title and the path are text of the file's, inside comments:
     // each of their lines its own comment line, so that no line of them
     // is ever code.
@@ -34,13 +43,9 @@ fn attributed(loaded: &Loaded) -> String {
     }
     let shown = loaded.shown.replace(['\n', '\r'], " ");
     rust.push_str(&format!(
-        "///\n/// Promoted from the mechanism file `{shown}`"
+        "///\n/// Promoted from the mechanism file `{shown}` (lengths in {}).\n",
+        file.length_unit
     ));
-    rust.push_str(&format!(" (lengths in {}).\n", file.length_unit));
-    rust.push_str("#[linkage::linkage(\n");
-    rust.push_str(&attribute(loaded));
-    rust.push_str(")]\n");
-    rust.push_str(&structure(loaded));
     rust
 }
 
@@ -89,14 +94,8 @@ fn values(loaded: &Loaded) -> String {
 /// documentation, and every item the attribute adds), then the constant
 /// of its values, formatted.
 fn expanded(loaded: &Loaded) -> Result<String, Failure> {
-    // The struct's documentation as attributes: written as `///`
-    // comments, each line of it a comment line, and read back as
-    // `#[doc = "…"]`, an escaped string.
-    let with_docs = attributed(loaded);
-    let item_text = match with_docs.split_once("#[linkage::linkage(") {
-        Some((docs, _)) => format!("{docs}{}", structure(loaded)),
-        None => structure(loaded),
-    };
+    // The documentation's `///` lines read back as `#[doc = "…"]`.
+    let item_text = format!("{}{}", documentation(loaded), structure(loaded));
     let tokens = |text: &str, what: &str| {
         proc_macro2::TokenStream::from_str(text)
             .map_err(|e| Failure::Analysis(format!("the {what} does not read as Rust: {e}")))
