@@ -7,6 +7,7 @@
 //! same nalgebra operations in the same order), so that the numbers are
 //! the compiled mechanism's, bit for bit.
 
+use crate::mechanism::kernel_tape::KernelTape;
 use crate::mechanism::point_set::PointSet;
 use crate::mechanism::program::Program;
 use crate::mechanism::scratch::{self, LANES};
@@ -35,15 +36,34 @@ pub struct Fixed<const M: usize, const F: usize, const P: usize = 32, const K: u
     trig_v: [bool; F],
 }
 
-/// The R × C matrix of a result laid out by [`KernelTape`] that starts
-/// at `start` (NaN where the result is shorter: a tape that did not run).
-///
-/// [`KernelTape`]: crate::mechanism::kernel_tape::KernelTape
-fn block<const R: usize, const C: usize>(result: &[f64], start: usize) -> SMatrix<f64, R, C> {
-    // Sliced to a length known at compile time: copied in line.
-    match result.get(start..).and_then(|rest| rest.get(..R * C)) {
-        Some(entries) => SMatrix::from_column_slice(entries),
-        None => SMatrix::repeat(f64::NAN),
+/// The result of a kernel's phase 0, left in its registers: read as
+/// matrices straight from them, or whole into a buffer.
+pub(super) struct Output<'a> {
+    /// The kernel and its registers, if its tape ran.
+    ran: Option<(&'a KernelTape, &'a Registers)>,
+    buffer: &'a mut Vec<f64>,
+}
+
+impl Output<'_> {
+    /// The R × C matrix that starts at `start` (NaN if the tape did not
+    /// run).
+    #[inline(always)]
+    pub(super) fn block<const R: usize, const C: usize>(&self, start: usize) -> SMatrix<f64, R, C> {
+        match self.ran {
+            Some((kernel, registers)) => kernel.block(registers, 0, start, 0),
+            None => SMatrix::repeat(f64::NAN),
+        }
+    }
+
+    /// The whole result, laid out by [`KernelTape`] (empty if the tape did
+    /// not run).
+    pub(super) fn entries(&mut self) -> &[f64] {
+        let Some((kernel, registers)) = self.ran else {
+            return &[];
+        };
+        self.buffer.resize(kernel.len(0), 0.0);
+        kernel.read(registers, 0, 0, self.buffer);
+        self.buffer
     }
 }
 
@@ -136,31 +156,29 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
     }
 
     /// Runs one phase-0 kernel with the inputs `inputs` written, and hands
-    /// its result, laid out by [`KernelTape`], to `read` (an empty result
-    /// if the tape could not run).
-    ///
-    /// [`KernelTape`]: crate::mechanism::kernel_tape::KernelTape
+    /// its result to `read`.
     pub(super) fn run<R>(
         &self,
         kernel: Kernel,
         inputs: &[(Input, &[f64])],
-        read: impl FnOnce(&[f64]) -> R,
+        read: impl FnOnce(Output<'_>) -> R,
     ) -> R {
         let Ok(kernel) = self.program.kernel(kernel) else {
-            return read(&[]);
+            return read(Output {
+                ran: None,
+                buffer: &mut Vec::new(),
+            });
         };
-        scratch::with_registers(self.program.id, kernel, |registers, results| {
+        scratch::with_registers(self.program.id, kernel, |registers, buffer| {
             set(registers, Input::Fields, &self.fields);
             for (input, values) in inputs {
                 set(registers, *input, values);
             }
-            match results.first_mut() {
-                Some(result) => match kernel.run(0, registers, result) {
-                    Ok(()) => read(result),
-                    Err(_) => read(&[]),
-                },
-                None => read(&[]),
-            }
+            let ran = kernel.run(0, registers).is_ok();
+            read(Output {
+                ran: ran.then_some((kernel, &*registers)),
+                buffer,
+            })
         })
     }
 
@@ -170,7 +188,7 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
         formula: Formula,
         inputs: &[(Input, &[f64])],
     ) -> SMatrix<f64, R, C> {
-        self.run(Kernel::Formula(formula), inputs, |result| block(result, 0))
+        self.run(Kernel::Formula(formula), inputs, |result| result.block(0))
     }
 
     /// A kernel of the points (none to run if the mechanism has none).
@@ -181,12 +199,8 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
             return points;
         }
         self.run(Kernel::Points(level), inputs, |result| {
-            let slots = points.as_mut();
-            if result.len() < 2 * slots.len() {
-                slots.fill(Vector2::repeat(f64::NAN));
-            }
-            for (point, xy) in slots.iter_mut().zip(result.chunks_exact(2)) {
-                *point = Vector2::new(xy[0], xy[1]);
+            for (k, point) in points.as_mut().iter_mut().enumerate() {
+                *point = result.block(2 * k);
             }
         });
         points
@@ -196,6 +210,7 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
     /// gives Ψ, Ψ_u and Ψ_v; then, as the generated function does, the
     /// inverse and u̇ = −Ψ_u⁻¹(Ψ_v v̇); phase 1 gives γ at that u̇; and
     /// ü = −Ψ_u⁻¹(Ψ_v v̈ + γ).
+    #[inline(always)]
     fn kinematics_of(
         &self,
         trig: Option<Given<'_, M, F>>,
@@ -210,7 +225,7 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
         let Ok(kernel) = self.program.kernel(kernel) else {
             return unevaluated();
         };
-        scratch::with_registers(self.program.id, kernel, |registers, results| {
+        scratch::with_registers(self.program.id, kernel, |registers, _| {
             set(registers, Input::Fields, &self.fields);
             set(registers, Input::U, u.as_slice());
             set(registers, Input::V, v.as_slice());
@@ -219,16 +234,13 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
                 set(registers, Input::TrigU, flat(trig_u).as_flattened());
                 set(registers, Input::TrigV, flat(trig_v).as_flattened());
             }
-            let [first, second, ..] = results else {
-                return unevaluated();
-            };
-            if kernel.run(0, registers, first).is_err() {
+            if kernel.run(0, registers).is_err() {
                 return unevaluated();
             }
             // The parts in the order the program checked: Ψ, Ψ_u, Ψ_v; γ.
-            let psi: SVector<f64, M> = block(first, kernel.start(0, 0));
-            let psi_u: SMatrix<f64, M, M> = block(first, kernel.start(0, 1));
-            let psi_v: SMatrix<f64, M, F> = block(first, kernel.start(0, 2));
+            let psi: SVector<f64, M> = kernel.block(registers, 0, kernel.start(0, 0), 0);
+            let psi_u: SMatrix<f64, M, M> = kernel.block(registers, 0, kernel.start(0, 1), 0);
+            let psi_v: SMatrix<f64, M, F> = kernel.block(registers, 0, kernel.start(0, 2), 0);
             let Inverse {
                 inverse,
                 rcond,
@@ -236,8 +248,8 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
             } = invert(&psi_u);
             let udot = -(inverse * (psi_v * vdot));
             set(registers, Input::Udot, udot.as_slice());
-            let gamma: SVector<f64, M> = match kernel.run(1, registers, second) {
-                Ok(()) => block(second, kernel.start(1, 0)),
+            let gamma: SVector<f64, M> = match kernel.run(1, registers) {
+                Ok(()) => kernel.block(registers, 1, kernel.start(1, 0), 0),
                 Err(_) => SVector::repeat(f64::NAN),
             };
             let uddot = -(inverse * (psi_v * vddot + gamma));
@@ -289,7 +301,8 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
     /// `kinematics_of` with given sines and cosines, for up to [`LANES`]
     /// requests of one program at once: each lane does what one does, the
     /// operations in the same order, so each result is its own evaluation's,
-    /// bit for bit. Lanes without a request repeat the first one.
+    /// bit for bit. The lanes after the requests' run on what they last
+    /// held, and nothing reads them.
     fn kinematics_on_lanes(
         run: &[FusedRequest<'_, Self, M, F>],
         take: &mut impl FnMut(usize, Kinematics<M, F>),
@@ -302,13 +315,11 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
             (0..run.len()).for_each(|l| take(l, unevaluated()));
             return;
         };
-        let lane = |l: usize| run.get(l).unwrap_or(first);
         let set_lane = |registers: &mut Registers<LANES>, input, l, values: &[f64]| {
             let _ = registers.set_lane(input, l, values);
         };
-        scratch::with_lanes(program.id, kernel, |registers, results| {
-            for l in 0..LANES {
-                let r = lane(l);
+        scratch::with_lanes(program.id, kernel, |registers, _| {
+            for (l, r) in run.iter().enumerate().take(LANES) {
                 set_lane(registers, Input::Fields, l, &r.model.fields);
                 set_lane(registers, Input::U, l, r.u.as_slice());
                 set_lane(registers, Input::V, l, r.v.as_slice());
@@ -316,38 +327,29 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
                 set_lane(registers, Input::TrigU, l, flat(r.trig_u).as_flattened());
                 set_lane(registers, Input::TrigV, l, flat(r.trig_v).as_flattened());
             }
-            let [first, second, ..] = results else {
-                (0..run.len()).for_each(|l| take(l, unevaluated()));
-                return;
-            };
-            if kernel.run_lanes(0, registers, first).is_err() {
+            if kernel.run(0, registers).is_err() {
                 (0..run.len()).for_each(|l| take(l, unevaluated()));
                 return;
             }
             // Each lane as `kinematics_of` goes on: Ψ, Ψ_u, Ψ_v, the
             // inverse and u̇; then γ on every lane; then ü.
-            let (len0, len1) = (kernel.len(0), kernel.len(1));
             let mut solved = [None; LANES];
-            for (l, slot) in solved.iter_mut().enumerate() {
-                let result = first.get(l * len0..).unwrap_or_default();
-                let psi: SVector<f64, M> = block(result, kernel.start(0, 0));
-                let psi_u: SMatrix<f64, M, M> = block(result, kernel.start(0, 1));
-                let psi_v: SMatrix<f64, M, F> = block(result, kernel.start(0, 2));
+            for ((l, slot), r) in solved.iter_mut().enumerate().zip(run) {
+                let psi: SVector<f64, M> = kernel.block(registers, 0, kernel.start(0, 0), l);
+                let psi_u: SMatrix<f64, M, M> = kernel.block(registers, 0, kernel.start(0, 1), l);
+                let psi_v: SMatrix<f64, M, F> = kernel.block(registers, 0, kernel.start(0, 2), l);
                 let inverse = invert(&psi_u);
-                let udot = -(inverse.inverse * (psi_v * lane(l).vdot));
+                let udot = -(inverse.inverse * (psi_v * r.vdot));
                 set_lane(registers, Input::Udot, l, udot.as_slice());
                 *slot = Some((psi, psi_u, psi_v, inverse, udot));
             }
-            let gammas = kernel.run_lanes(1, registers, second).is_ok();
+            let gammas = kernel.run(1, registers).is_ok();
             for (l, slot) in solved.into_iter().enumerate().take(run.len()) {
                 let Some((psi, psi_u, psi_v, inverse, udot)) = slot else {
                     continue;
                 };
                 let gamma: SVector<f64, M> = match gammas {
-                    true => block(
-                        second.get(l * len1..).unwrap_or_default(),
-                        kernel.start(1, 0),
-                    ),
+                    true => kernel.block(registers, 1, kernel.start(1, 0), l),
                     false => SVector::repeat(f64::NAN),
                 };
                 let Inverse {
@@ -433,7 +435,7 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Kernels<M, 
         let inputs = [(Input::U, u.as_slice()), (Input::V, v.as_slice())];
         // The parts in the order the program checked: Ψ, Ψ_u.
         self.run(Kernel::PsiAndPsiU, &inputs, |result| {
-            (block(result, 0), block(result, M))
+            (result.block(0), result.block(M))
         })
     }
 

@@ -1,13 +1,14 @@
 //! A kernel of a run-time mechanism ready to run: its tape, its place
-//! among the kernels (the key of its register files), and where each of
-//! its outputs goes in the result the views read — each part's matrix
-//! column by column (nalgebra's order), the points as (x, y) pairs, the
-//! parts of a phase end to end. Worked out once per kernel, so that a call
-//! writes its outputs straight into place and reads its matrices as
-//! slices, with no search and no zeroing: the entries no output fills are
-//! structural zeros, written once when the result's buffer is made.
+//! among the kernels (the key of its register files), and the register
+//! each entry of a phase's result is read from — the result laid out as
+//! the views read it: each part's matrix column by column (nalgebra's
+//! order), the points as (x, y) pairs, the parts of a phase end to end.
+//! Worked out once per kernel, so that a call reads its matrices straight
+//! from the registers, with no search and no copy in between; an entry no
+//! output fills is a structural zero.
 
 use linkage_symbolic::tape::{Form, Part, Registers, Tape, TapeError};
+use nalgebra::SMatrix;
 
 /// A kernel's tape and the layout of its results.
 #[derive(Debug)]
@@ -18,11 +19,12 @@ pub(crate) struct KernelTape {
     phases: Vec<Layout>,
 }
 
-/// Where a phase's outputs go.
+/// Where a phase's result is read from.
 #[derive(Debug)]
 struct Layout {
-    /// The place of each output, in order.
-    places: Vec<u32>,
+    /// The register of each entry of the result ([`ZERO`] for an entry no
+    /// output fills).
+    sources: Vec<u32>,
     /// Where each part starts.
     starts: Vec<usize>,
     /// How long the result is: every entry of every part.
@@ -38,24 +40,30 @@ fn place(part: &Part, (i, j): (usize, usize)) -> usize {
     }
 }
 
+/// The source of a structural zero: no register (the registers' `get`
+/// finds none there).
+const ZERO: u32 = u32::MAX;
+
 impl Layout {
-    fn of(parts: &[Part]) -> Layout {
-        let mut places = Vec::new();
+    /// The layout of a phase's parts, whose outputs are in `outputs`.
+    fn of(parts: &[Part], outputs: &[u32]) -> Layout {
+        let len = parts.iter().map(|p| p.rows * p.cols).sum();
+        let mut sources = vec![ZERO; len];
         let mut starts = Vec::with_capacity(parts.len());
-        let mut len = 0;
+        let mut start = 0;
+        let mut registers = outputs.iter();
         for part in parts {
-            starts.push(len);
-            for &entry in &part.entries {
-                let inside = entry.0 < part.rows && entry.1 < part.cols;
-                let at = (len + place(part, entry)) as u32;
-                // An entry outside its part goes nowhere (`run_to` skips
-                // places outside the result).
-                places.push(if inside { at } else { u32::MAX });
+            starts.push(start);
+            for (&entry, &register) in part.entries.iter().zip(registers.by_ref()) {
+                // An entry outside its part is read by no one.
+                if entry.0 < part.rows && entry.1 < part.cols {
+                    sources[start + place(part, entry)] = register;
+                }
             }
-            len += part.rows * part.cols;
+            start += part.rows * part.cols;
         }
         Layout {
-            places,
+            sources,
             starts,
             len,
         }
@@ -65,7 +73,10 @@ impl Layout {
 impl KernelTape {
     pub(crate) fn new(index: usize, tape: Tape) -> KernelTape {
         let phases = (0..tape.phases())
-            .map(|p| Layout::of(tape.parts(p)))
+            .map(|p| {
+                let outputs = tape.phase(p).map_or(&[][..], |phase| &phase.outputs);
+                Layout::of(tape.parts(p), outputs)
+            })
             .collect();
         KernelTape {
             index,
@@ -74,44 +85,60 @@ impl KernelTape {
         }
     }
 
-    /// A buffer for each phase's result on `lanes` lanes (their results
-    /// end to end), every entry zero.
-    pub(crate) fn results(&self, lanes: usize) -> Vec<Vec<f64>> {
-        self.phases
-            .iter()
-            .map(|p| vec![0.0; p.len * lanes])
-            .collect()
-    }
-
-    /// How long a phase's result is on one lane.
+    /// How long a phase's result is.
     pub(crate) fn len(&self, phase: usize) -> usize {
         self.phases.get(phase).map_or(0, |p| p.len)
     }
 
-    /// Runs a phase, its outputs written into their places in `result`
-    /// (a buffer of [`KernelTape::results`]).
-    pub(crate) fn run(
-        &self,
-        phase: usize,
-        registers: &mut Registers,
-        result: &mut [f64],
-    ) -> Result<(), TapeError> {
-        let places = self.phases.get(phase).map_or(&[][..], |p| &p.places);
-        self.tape.run_to(phase, registers, result, places)
-    }
-
-    /// [`KernelTape::run`] on every lane: lane l's result is the l-th of
-    /// `results`, each [`KernelTape::len`] long.
-    pub(crate) fn run_lanes<const L: usize>(
+    /// Runs a phase on every lane; its result stays in the registers, read
+    /// with [`KernelTape::block`] or [`KernelTape::read`].
+    #[inline(always)]
+    pub(crate) fn run<const L: usize>(
         &self,
         phase: usize,
         registers: &mut Registers<L>,
-        results: &mut [f64],
     ) -> Result<(), TapeError> {
-        let places = self.phases.get(phase).map_or(&[][..], |p| &p.places);
-        let stride = self.len(phase);
-        self.tape
-            .run_lanes_to(phase, registers, results, stride, places)
+        self.tape.run_phase(phase, registers)
+    }
+
+    /// The R × C matrix of the phase's result that starts at `start`, on
+    /// lane `lane` (NaN where the result is shorter).
+    #[inline(always)]
+    pub(crate) fn block<const R: usize, const C: usize, const L: usize>(
+        &self,
+        registers: &Registers<L>,
+        phase: usize,
+        start: usize,
+        lane: usize,
+    ) -> SMatrix<f64, R, C> {
+        let sources = (self.phases.get(phase))
+            .and_then(|p| p.sources.get(start..))
+            .and_then(|rest| rest.get(..R * C));
+        match sources {
+            Some(sources) => SMatrix::from_fn(|i, j| {
+                registers
+                    .get(sources[j * R + i])
+                    .map_or(0.0, |lanes| lanes.get(lane).copied().unwrap_or(f64::NAN))
+            }),
+            None => SMatrix::repeat(f64::NAN),
+        }
+    }
+
+    /// The phase's whole result on lane `lane`, into `out` (as long as
+    /// [`KernelTape::len`]; an entry beyond `out` is left out).
+    pub(crate) fn read<const L: usize>(
+        &self,
+        registers: &Registers<L>,
+        phase: usize,
+        lane: usize,
+        out: &mut [f64],
+    ) {
+        let sources = self.phases.get(phase).map_or(&[][..], |p| &p.sources);
+        for (o, &register) in out.iter_mut().zip(sources) {
+            *o = registers
+                .get(register)
+                .map_or(0.0, |lanes| lanes.get(lane).copied().unwrap_or(f64::NAN));
+        }
     }
 
     /// Where part `part` of a phase's result starts (`usize::MAX` if it
@@ -154,12 +181,15 @@ mod tests {
             part(Form::Points, 2, 2, vec![(0, 0), (0, 1), (1, 0), (1, 1)]),
             part(Form::Matrix, 1, 1, vec![(3, 0)]),
         ];
-        let layout = Layout::of(&parts);
+        let outputs: Vec<u32> = (100..110).collect();
+        let layout = Layout::of(&parts, &outputs);
         assert_eq!(layout.starts, [0, 2, 6, 10]);
         assert_eq!(layout.len, 11);
+        // Output k in register 100 + k; the matrix's (0, 0) is a
+        // structural zero, and the last part's entry is outside it.
         assert_eq!(
-            layout.places,
-            [0, 1, 2 + 2, 2 + 1, 2 + 3, 6, 7, 8, 9, u32::MAX]
+            layout.sources,
+            [100, 101, ZERO, 103, 102, 104, 105, 106, 107, 108, ZERO]
         );
     }
 }

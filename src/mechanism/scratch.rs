@@ -17,9 +17,8 @@ pub(crate) const LANES: usize = 8;
 struct Slot<const L: usize> {
     key: u64,
     registers: Registers<L>,
-    /// One buffer per phase for its result (see [`KernelTape::results`]),
-    /// the lanes' results end to end.
-    results: Vec<Vec<f64>>,
+    /// A buffer a result may be read into.
+    buffer: Vec<f64>,
 }
 
 type Files<const L: usize> = RefCell<Vec<Option<Slot<L>>>>;
@@ -30,31 +29,32 @@ thread_local! {
 }
 
 /// Runs `work` on this thread's register file for `kernel` of the program
-/// `program`, with a buffer for each phase's result. `work` must not
-/// evaluate another kernel.
+/// `program`, with a buffer to read a result into (its length as the last
+/// call left it). `work` must not evaluate another kernel.
+#[inline(always)]
 pub(crate) fn with_registers<R>(
     program: u64,
     kernel: &KernelTape,
-    work: impl FnOnce(&mut Registers, &mut [Vec<f64>]) -> R,
+    work: impl FnOnce(&mut Registers, &mut Vec<f64>) -> R,
 ) -> R {
     FILES.with(|files| in_slot(files, program, kernel, work))
 }
 
-/// [`with_registers`] on a file of [`LANES`] lanes, each phase's buffer
-/// holding the lanes' results end to end.
+/// [`with_registers`] on a file of [`LANES`] lanes.
 pub(crate) fn with_lanes<R>(
     program: u64,
     kernel: &KernelTape,
-    work: impl FnOnce(&mut Registers<LANES>, &mut [Vec<f64>]) -> R,
+    work: impl FnOnce(&mut Registers<LANES>, &mut Vec<f64>) -> R,
 ) -> R {
     LANE_FILES.with(|files| in_slot(files, program, kernel, work))
 }
 
+#[inline(always)]
 fn in_slot<const L: usize, R>(
     files: &Files<L>,
     program: u64,
     kernel: &KernelTape,
-    work: impl FnOnce(&mut Registers<L>, &mut [Vec<f64>]) -> R,
+    work: impl FnOnce(&mut Registers<L>, &mut Vec<f64>) -> R,
 ) -> R {
     let key = program.wrapping_mul(64).wrapping_add(kernel.index as u64);
     let mut files = files.borrow_mut();
@@ -63,12 +63,12 @@ fn in_slot<const L: usize, R>(
         *slot = Some(Slot {
             key,
             registers: kernel.tape.registers::<L>(),
-            results: kernel.results(L),
+            buffer: Vec::new(),
         });
     }
     match slot {
-        Some(s) => work(&mut s.registers, &mut s.results),
+        Some(s) => work(&mut s.registers, &mut s.buffer),
         // Just filled.
-        None => work(&mut kernel.tape.registers::<L>(), &mut kernel.results(L)),
+        None => work(&mut kernel.tape.registers::<L>(), &mut Vec::new()),
     }
 }

@@ -130,7 +130,8 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
                 .collect(),
             Err(_) => Vec::new(),
         };
-        self.run(kernel, inputs, |result| {
+        self.run(kernel, inputs, |mut output| {
+            let result = output.entries();
             let mut terms = SensitivityTerms {
                 psi_u: SMatrix::zeros(),
                 psi_p: SMatrix::zeros(),
@@ -275,7 +276,8 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Sensitiviti
     fn psi_p(&self, u: &SVector<f64, M>, v: &SVector<f64, F>) -> SMatrix<f64, M, K> {
         let columns = self.columns();
         let inputs = [(Input::U, u.as_slice()), (Input::V, v.as_slice())];
-        self.run(Kernel::Formula(Formula::PsiP), &inputs, |result| {
+        self.run(Kernel::Formula(Formula::PsiP), &inputs, |mut output| {
+            let result = output.entries();
             if result.is_empty() {
                 return SMatrix::repeat(f64::NAN);
             }

@@ -211,59 +211,24 @@ impl Tape {
         Ok(())
     }
 
-    /// Runs a phase on one lane and writes output k to `out[places[k]]`:
-    /// straight into a result laid out as its reader reads it (a matrix
-    /// column by column, say), whose other entries are left as they are
-    /// (a place outside `out` is skipped).
-    pub fn run_to(
-        &self,
-        phase: usize,
-        registers: &mut Registers,
-        out: &mut [f64],
-        places: &[u32],
-    ) -> Result<(), TapeError> {
-        let outputs = self.check(phase, registers.tape, places.len())?;
-        let values = &mut registers.values;
-        self.execute(phase, values);
-        // A power of two (see `execute`): the outputs, inside the file,
-        // read through its mask.
-        let mask = values.len().wrapping_sub(1);
-        for (&place, &r) in places.iter().zip(outputs) {
-            if let Some(o) = out.get_mut(place as usize) {
-                *o = values[r as usize & mask][0];
-            }
-        }
-        Ok(())
-    }
-
-    /// Runs a phase on every lane and writes output k of lane l to
-    /// `out[l * stride + places[k]]`: each lane's outputs straight into
-    /// its own result, laid out as in [`Tape::run_to`] (a place at or
-    /// beyond `stride`, or outside `out`, is skipped).
-    pub fn run_lanes_to<const L: usize>(
+    /// Runs a phase on every lane and leaves its outputs in the registers
+    /// (those of [`Phase::outputs`], read with [`Registers::get`]).
+    #[inline]
+    pub fn run_phase<const L: usize>(
         &self,
         phase: usize,
         registers: &mut Registers<L>,
-        out: &mut [f64],
-        stride: usize,
-        places: &[u32],
     ) -> Result<(), TapeError> {
-        let outputs = self.check(phase, registers.tape, places.len())?;
-        let values = &mut registers.values;
-        self.execute(phase, values);
-        let mask = values.len().wrapping_sub(1);
-        for (&place, &r) in places.iter().zip(outputs) {
-            let place = place as usize;
-            if place >= stride {
-                continue;
-            }
-            let lanes = values[r as usize & mask];
-            for (l, value) in lanes.into_iter().enumerate() {
-                if let Some(o) = out.get_mut(l * stride + place) {
-                    *o = value;
-                }
-            }
+        if registers.tape != self.id {
+            return Err(TapeError::ForeignRegisters);
         }
+        if phase >= self.phases.len() {
+            return Err(TapeError::Phase {
+                phase,
+                phases: self.phases.len(),
+            });
+        }
+        self.execute(phase, &mut registers.values);
         Ok(())
     }
 
@@ -342,6 +307,23 @@ impl<const L: usize> Registers<L> {
     }
 }
 
+impl<const L: usize> Registers<L> {
+    /// The value of a register on every lane (`None` outside the file).
+    #[inline(always)]
+    pub fn get(&self, register: u32) -> Option<&[f64; L]> {
+        self.values.get(register as usize)
+    }
+
+    /// The registers of the inputs, every lane, laid out by [`Slots`]
+    /// (see [`Slots::range`]): written in place, the way a caller that
+    /// knows the layout writes them fastest.
+    #[inline(always)]
+    pub fn inputs_mut(&mut self) -> &mut [[f64; L]] {
+        let total = self.slots.total();
+        &mut self.values[..total]
+    }
+}
+
 impl Registers<1> {
     /// Writes an input.
     #[inline]
@@ -415,24 +397,37 @@ mod tests {
     }
 
     #[test]
-    fn outputs_go_to_their_places() {
+    fn a_phase_run_leaves_its_outputs_in_their_registers() {
         let tape = example();
         let mut r = tape.registers::<1>();
         r.set(Input::U, &[0.7]).unwrap();
         r.set(Input::Fields, &[3.0]).unwrap();
         let mut listed = [0.0; 3];
         tape.run(0, &mut r, &mut listed).unwrap();
-        // Backwards, one place left alone and one outside.
-        let mut placed = [-1.0; 4];
-        tape.run_to(0, &mut r, &mut placed, &[2, 1, 9]).unwrap();
-        assert_eq!(placed, [-1.0, listed[1], listed[0], -1.0]);
+        // The inputs written in place, on two lanes.
+        let mut lanes = tape.registers::<2>();
+        let range = |input| tape.slots().range(input);
+        lanes.inputs_mut()[range(Input::U)][0] = [0.7, -0.2];
+        lanes.inputs_mut()[range(Input::Fields)][0] = [3.0, 3.0];
+        tape.run_phase(0, &mut lanes).unwrap();
+        let outputs = &tape.phase(0).unwrap().outputs;
+        for (k, &register) in outputs.iter().enumerate() {
+            let value = lanes.get(register).unwrap();
+            assert_eq!(value[0].to_bits(), listed[k].to_bits());
+        }
+        assert_ne!(lanes.get(outputs[0]).unwrap()[1], listed[0]);
+        assert_eq!(lanes.get(u32::MAX), None);
         assert_eq!(
-            tape.run_to(0, &mut r, &mut placed, &[0]),
-            Err(TapeError::OutputLength {
-                phase: 0,
-                expected: 3,
-                found: 1
+            tape.run_phase(2, &mut lanes),
+            Err(TapeError::Phase {
+                phase: 2,
+                phases: 2
             })
+        );
+        let mut foreign = example().registers::<2>();
+        assert_eq!(
+            tape.run_phase(0, &mut foreign),
+            Err(TapeError::ForeignRegisters)
         );
     }
 
@@ -465,27 +460,6 @@ mod tests {
             }
             assert_eq!(second[0][l].to_bits(), next[0].to_bits());
         }
-    }
-
-    #[test]
-    fn each_lane_goes_to_its_own_result() {
-        let tape = example();
-        let mut lanes = tape.registers::<2>();
-        for (l, u) in [0.7, -0.2].into_iter().enumerate() {
-            lanes.set_lane(Input::U, l, &[u]).unwrap();
-            lanes.set_lane(Input::Fields, l, &[3.0]).unwrap();
-        }
-        let mut listed = [[0.0; 2]; 3];
-        tape.run_lanes(0, &mut lanes, &mut listed).unwrap();
-        // Two results of stride 4, the second cut short: place 2 of lane
-        // 1 is outside it, place 9 beyond the stride.
-        let mut placed = [-1.0; 6];
-        tape.run_lanes_to(0, &mut lanes, &mut placed, 4, &[2, 0, 9])
-            .unwrap();
-        assert_eq!(
-            placed,
-            [listed[1][0], -1.0, listed[0][0], -1.0, listed[1][1], -1.0]
-        );
     }
 
     #[test]
