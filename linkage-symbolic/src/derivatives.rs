@@ -13,6 +13,7 @@
 //!   (which are the time derivatives of Ψ_u and Ψ_p: Ψ̇_u, Ψ̇_p, Ψ̈_u, Ψ̈_p),
 //!   and likewise of every point's P, Ṗ and P̈.
 
+use crate::blocks::Blocks;
 use crate::dag::{Dag, Id, Symbol};
 use crate::lower::Lowered;
 
@@ -94,6 +95,8 @@ pub struct Derivatives {
     /// Whether γ by method A, by method B and the fused γ reduce to the same
     /// polynomial in q̇ (`None`: too large to expand).
     pub methods_agree: Option<bool>,
+    /// The diagonal blocks of Ψ_u, in solve order.
+    pub blocks: Blocks,
 }
 
 impl Derivatives {
@@ -176,6 +179,10 @@ impl Derivatives {
         }
 
         let det_psi_u = (m <= 4).then(|| determinant(dag, &psi_u));
+        let incidence: Vec<Vec<bool>> = (0..m)
+            .map(|i| (0..m).map(|k| psi_u.get(i, k) != Dag::ZERO).collect())
+            .collect();
+        let blocks = Blocks::of(&incidence);
 
         let methods_agree = {
             let mut gamma_a = Vec::with_capacity(m);
@@ -238,6 +245,7 @@ impl Derivatives {
             points,
             det_psi_u,
             methods_agree,
+            blocks,
         }
     }
 

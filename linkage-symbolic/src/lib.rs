@@ -37,6 +37,7 @@
 
 #[cfg(feature = "syntax")]
 pub mod ast;
+pub mod blocks;
 pub mod dag;
 #[cfg(feature = "syntax")]
 pub mod derivatives;

@@ -146,32 +146,7 @@ pub fn check_structure(input: &Input, lowered: &mut Lowered, errors: &mut Errors
 /// equations N(S) than coordinates (Hall's condition violated): both sorted.
 fn hall_violator(incidence: &[Vec<bool>]) -> Option<(Vec<usize>, Vec<usize>)> {
     let m = incidence.len();
-    let mut row_of_col: Vec<Option<usize>> = vec![None; m];
-    fn augment(
-        row: usize,
-        incidence: &[Vec<bool>],
-        row_of_col: &mut [Option<usize>],
-        visited: &mut [bool],
-    ) -> bool {
-        for col in 0..incidence.len() {
-            if incidence[row][col] && !visited[col] {
-                visited[col] = true;
-                let free = match row_of_col[col] {
-                    None => true,
-                    Some(r) => augment(r, incidence, row_of_col, visited),
-                };
-                if free {
-                    row_of_col[col] = Some(row);
-                    return true;
-                }
-            }
-        }
-        false
-    }
-    for row in 0..m {
-        let mut visited = vec![false; m];
-        augment(row, incidence, &mut row_of_col, &mut visited);
-    }
+    let row_of_col = crate::blocks::maximum_matching(incidence);
     let unmatched = (0..m).find(|&c| row_of_col[c].is_none())?;
     // Alternating search from the unmatched column: column → its rows →
     // the columns those rows are matched to.

@@ -52,6 +52,7 @@ mod sensitive;
 
 pub use error::MechanismError;
 pub use fixed::Fixed;
+pub use linkage_symbolic::blocks::{Block, Blocks};
 pub use linkage_symbolic::diagnostics::{Diagnostic, Diagnostics};
 pub use linkage_symbolic::text::{Equations, Parameter};
 pub use point_set::PointSet;
@@ -171,6 +172,13 @@ impl Mechanism {
     /// in q̇ (`None`: too large to expand).
     pub fn methods_agree(&self) -> Option<bool> {
         self.program.methods_agree
+    }
+
+    /// Ψ_u's diagonal blocks in the order they are solved, found from which
+    /// of its entries are not identically zero (its `Display` is the
+    /// sentence of the compiled mechanism's symbolic table).
+    pub fn blocks(&self) -> &Blocks {
+        &self.program.blocks
     }
 
     /// Sets a parameter's value.

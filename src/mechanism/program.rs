@@ -12,6 +12,7 @@
 use crate::mechanism::error::MechanismError;
 use crate::mechanism::interned;
 use crate::mechanism::kernel_tape::KernelTape;
+use linkage_symbolic::blocks::Blocks;
 use linkage_symbolic::dag::{Dag, Id, Symbol};
 use linkage_symbolic::derivatives::Derivatives;
 use linkage_symbolic::plan::{Formula, Kernel};
@@ -76,6 +77,8 @@ pub(crate) struct Program {
     points: Vec<[Id; 2]>,
     /// Whether the two acceleration methods expand to the same polynomial.
     pub(crate) methods_agree: Option<bool>,
+    /// Ψ_u's diagonal blocks, in solve order.
+    pub(crate) blocks: Blocks,
 }
 
 /// A kernel's tape, compiled.
@@ -145,6 +148,7 @@ impl Program {
             psi: derivatives.psi.entries.clone(),
             points: derivatives.points.iter().map(|p| p.position).collect(),
             methods_agree: derivatives.methods_agree,
+            blocks: derivatives.blocks.clone(),
         };
         for (kernel, names) in READ_IN_ORDER {
             if !program.kernel(kernel).is_ok_and(|k| k.has_parts(names)) {

@@ -33,6 +33,10 @@ pub struct SymbolicTable {
     /// that method A and method B give the same γ (`None`: too large to
     /// expand).
     pub methods_agree: Option<bool>,
+    /// How Ψ_u splits into diagonal blocks solved one after another ("Ψ_u
+    /// is block lower triangular: 32 blocks of 2×2."), found from which of
+    /// its entries are not identically zero.
+    pub structure: &'static str,
 }
 
 impl SymbolicTable {
@@ -152,6 +156,9 @@ impl fmt::Display for SymbolicTable {
             self.u.join(", "),
             self.v.join(", ")
         )?;
+        if !self.structure.is_empty() {
+            writeln!(f, "{}", self.structure)?;
+        }
         for m in self.matrices {
             writeln!(f)?;
             write!(f, "{m}")?;

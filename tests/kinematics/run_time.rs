@@ -6,7 +6,10 @@
 use crate::common::twins::{
     attribute, every_kernel, every_sensitivity_kernel, same, same_points, same_sensitivity,
 };
-use crate::models::{BOOM, FIVE_BAR, SIX_BAR, SLIDER_CRANK, STEPHENSON_THREE, WATT_SIX_BAR};
+use crate::models::{
+    BOOM, FIVE_BAR, SIX_BAR, SLIDER_CRANK, STEPHENSON_THREE, SixBar, SliderCrank, StephensonThree,
+    WATT_SIX_BAR, WattSixBar,
+};
 use linkage::mechanism::{Fixed, Mechanism, MechanismError};
 use linkage::mechanisms::FourBar;
 use linkage::prelude::*;
@@ -376,4 +379,64 @@ fn views_by_parameters_refuse_what_the_mechanism_has_not() {
         "the mechanism is differentiated by 2 parameters, not 3"
     );
     assert!(mechanism.sensitive::<2, 1, 2>().is_ok());
+}
+
+/// Ψ_u's diagonal blocks, found from which entries are not identically
+/// zero: the compiled table and the twin read from the same text say the
+/// same, and a Watt six-bar is a four-bar driving a dyad (two blocks), a
+/// Stephenson III one coupled block.
+#[test]
+fn psi_u_splits_into_the_same_blocks_compiled_and_at_run_time() {
+    fn same_blocks<L: Sensitivities<M, F, K>, const M: usize, const F: usize, const K: usize>(
+        compiled: &L,
+        table: &SymbolicTable,
+        source: &str,
+        name: &str,
+    ) -> String {
+        let twin = read::<_, M, F, K>(compiled, source, name);
+        let sentence = twin.blocks().to_string();
+        assert!(
+            table.structure.starts_with(&sentence),
+            "{name}: `{}` against `{sentence}`",
+            table.structure
+        );
+        sentence
+    }
+    let four_bar = same_blocks::<_, 2, 1, 4>(
+        &FourBar::WORKSHEET,
+        &FourBar::SYMBOLIC,
+        include_str!("../../src/mechanisms.rs"),
+        "FourBar",
+    );
+    assert_eq!(four_bar, "Ψ_u is one dense block of 2×2");
+    let slider = same_blocks::<_, 2, 1, 3>(
+        &SLIDER_CRANK,
+        &SliderCrank::SYMBOLIC,
+        include_str!("../models/slider_crank.rs"),
+        "SliderCrank",
+    );
+    assert_eq!(slider, "Ψ_u is block lower triangular: 2 blocks of 1×1");
+    same_blocks::<_, 4, 1, 10>(
+        &SIX_BAR,
+        &SixBar::SYMBOLIC,
+        include_str!("../models/six_bar.rs"),
+        "SixBar",
+    );
+    same_blocks::<_, 4, 1, 10>(
+        &WATT_SIX_BAR,
+        &WattSixBar::SYMBOLIC,
+        include_str!("../models/watt_six_bar.rs"),
+        "WattSixBar",
+    );
+    assert_eq!(
+        WattSixBar::SYMBOLIC.structure,
+        "Ψ_u is block lower triangular: 2 blocks of 2×2, solved in the order [θ3, θ4], [θ5, θ6]."
+    );
+    let stephenson = same_blocks::<_, 4, 1, 11>(
+        &STEPHENSON_THREE,
+        &StephensonThree::SYMBOLIC,
+        include_str!("../models/stephenson_three.rs"),
+        "StephensonThree",
+    );
+    assert_eq!(stephenson, "Ψ_u is one dense block of 4×4");
 }

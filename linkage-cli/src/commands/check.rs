@@ -16,8 +16,12 @@ pub fn run(input: &Input) -> Result<(), Failure> {
         let noun = if names.len() == 1 { one } else { many };
         format!("{} {noun} [{}]", names.len(), names.join(", "))
     };
+    let u_names = m.u_names();
+    let structure = m
+        .blocks()
+        .describe(|k| u_names.get(k).map_or("?", |n| n).to_owned());
     let text = format!(
-        "{}: {} is a mechanism of m = {} dependent coordinates [{}], f = {} driving [{}], {} and {}; {agree}\n",
+        "{}: {} is a mechanism of m = {} dependent coordinates [{}], f = {} driving [{}], {} and {}; {agree}\n{structure}\n",
         loaded.shown,
         m.name(),
         m.m(),

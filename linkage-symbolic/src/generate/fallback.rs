@@ -155,6 +155,7 @@ pub fn fallback(input: &Input, unbuilt: &Unbuilt) -> TokenStream {
                     v: &[],
                     matrices: &[],
                     methods_agree: ::core::option::Option::None,
+                    structure: "",
                 };
                 #(#inherent)*
             }

@@ -168,6 +168,7 @@ impl<'a> Generator<'a> {
             p_list: self.names.params_display().join(", "),
             k: self.k,
             agreement: agreement.to_owned(),
+            structure: (self.model.blocks).describe(|k| self.names.coord(k).to_string()),
         }
     }
 

@@ -141,6 +141,8 @@ pub struct DocContext {
     pub k: usize,
     /// Whether the two acceleration methods expand to the same polynomial.
     pub agreement: String,
+    /// Ψ_u's diagonal blocks (see [`crate::blocks::Blocks::describe`]).
+    pub structure: String,
 }
 
 /// One generated quantity.
@@ -250,8 +252,9 @@ pub const QUANTITIES: &[Quantity] = &[
     },
     formula("psi_u", "Ψ_u", U_V, Shape::Square, Formula::PsiU, |c| {
         format!(
-            "Ψ_u = ∂Ψ/∂u, the {m}×{m} Jacobian with respect to u = [{}].",
+            "Ψ_u = ∂Ψ/∂u, the {m}×{m} Jacobian with respect to u = [{}]. {}",
             c.u_list,
+            c.structure,
             m = c.m
         )
     }),

@@ -95,6 +95,7 @@ impl Generator<'_> {
             Some(b) => quote!(::core::option::Option::Some(#b)),
             None => quote!(::core::option::Option::None),
         };
+        let structure = (model.blocks).describe(|k| u_labels[k].clone());
         quote! {
             ::linkage::SymbolicTable {
                 name: #name,
@@ -102,6 +103,7 @@ impl Generator<'_> {
                 v: &[#(#v_labels),*],
                 matrices: &[#(#entries),*],
                 methods_agree: #agree,
+                structure: #structure,
             }
         }
     }

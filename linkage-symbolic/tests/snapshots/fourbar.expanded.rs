@@ -78,7 +78,7 @@ const _: () = {
             psi_q[(1, 2)] = l2 * c_theta2;
             psi_q
         }
-        /// Ψ_u = ∂Ψ/∂u, the 2×2 Jacobian with respect to u = [θ3, θ4].
+        /// Ψ_u = ∂Ψ/∂u, the 2×2 Jacobian with respect to u = [θ3, θ4]. Ψ_u is one dense block of 2×2.
         ///
         /// ```text
         /// [ -l3·sin θ3   -l4·sin θ4 ]
@@ -1804,6 +1804,7 @@ const _: () = {
                 },
             ],
             methods_agree: ::core::option::Option::Some(true),
+            structure: "Ψ_u is one dense block of 2×2.",
         };
     }
     #[automatically_derived]

@@ -87,7 +87,8 @@ const _: () = {
             psi_q[(3, 2)] = rod * c_phi4;
             psi_q
         }
-        /// Ψ_u = ∂Ψ/∂u, the 4×4 Jacobian with respect to u = [φ3, s, φ4, x_r].
+        /// Ψ_u = ∂Ψ/∂u, the 4×4 Jacobian with respect to u = [φ3, s, φ4, x_r]. Ψ_u is block lower
+        /// triangular: 3 blocks: 2×2, 1×1, 1×1, solved in the order [φ3, s], [φ4], [x_r].
         ///
         /// ```text
         /// [  s·sin φ3       -cos φ3    0             0 ]
@@ -1650,6 +1651,7 @@ const _: () = {
                 },
             ],
             methods_agree: ::core::option::Option::Some(true),
+            structure: "Ψ_u is block lower triangular: 3 blocks: 2×2, 1×1, 1×1, solved in the order [φ3, s], [φ4], [x_r].",
         };
     }
     #[automatically_derived]
