@@ -49,6 +49,47 @@ fn a_four_bar_from_text() {
     assert_eq!(built.input.item.ident, "FourBar");
 }
 
+/// A chain of 32 four-bar loops, each crank keyed to the rocker of the
+/// loop before: Ψ_u splits into a 2×2 block per loop, solved loop by loop.
+#[test]
+fn a_chain_of_loops_splits_into_a_block_per_loop() {
+    let loops = 32;
+    let crank = |k: usize| match k {
+        1 => "t".to_owned(),
+        _ => format!("(b{} + d)", k - 1),
+    };
+    let u: Vec<String> = (1..=loops).map(|k| format!("a{k}, b{k}")).collect();
+    let closure: Vec<String> = (1..=loops)
+        .map(|k| {
+            let c = crank(k);
+            format!(
+                "l2 * {c}.cos() + l3 * a{k}.cos() + l4 * b{k}.cos() - l1, \
+                 l2 * {c}.sin() + l3 * a{k}.sin() + l4 * b{k}.sin()"
+            )
+        })
+        .collect();
+    let text = format!(
+        "u = [{}], v = [t], closure = [{}]",
+        u.join(", "),
+        closure.join(", ")
+    );
+    let built = build(
+        "Chain",
+        Equations::new(&text),
+        &parameters(&["l1", "l2", "l3", "l4", "d"]),
+    )
+    .unwrap_or_else(|d| panic!("{d}"));
+    let blocks = &built.derivatives.blocks;
+    assert_eq!(
+        blocks.to_string(),
+        "Ψ_u is block lower triangular: 32 blocks of 2×2"
+    );
+    for (l, block) in blocks.blocks().iter().enumerate() {
+        assert_eq!(block.coordinates, [2 * l, 2 * l + 1]);
+        assert_eq!(block.equations, [2 * l, 2 * l + 1]);
+    }
+}
+
 /// proc-macro2's memory of the texts is dropped after every build; the
 /// next build's places are its own, whatever came before.
 #[test]
