@@ -87,9 +87,8 @@ impl Blocks {
         };
         // Coordinate k depends on coordinate j when the equation matched
         // to k involves j.
-        let matched_ref = &matched;
         let depends = |k: usize| {
-            let row = &incidence[matched_ref[k]];
+            let row = &incidence[matched[k]];
             (0..m).filter(move |&j| j != k && row[j])
         };
         let components = strongly_connected(m, depends);

@@ -313,15 +313,6 @@ impl<const L: usize> Registers<L> {
     pub fn get(&self, register: u32) -> Option<&[f64; L]> {
         self.values.get(register as usize)
     }
-
-    /// The registers of the inputs, every lane, laid out by [`Slots`]
-    /// (see [`Slots::range`]): written in place, the way a caller that
-    /// knows the layout writes them fastest.
-    #[inline(always)]
-    pub fn inputs_mut(&mut self) -> &mut [[f64; L]] {
-        let total = self.slots.total();
-        &mut self.values[..total]
-    }
 }
 
 impl Registers<1> {
@@ -404,11 +395,12 @@ mod tests {
         r.set(Input::Fields, &[3.0]).unwrap();
         let mut listed = [0.0; 3];
         tape.run(0, &mut r, &mut listed).unwrap();
-        // The inputs written in place, on two lanes.
+        // On two lanes, the first as above.
         let mut lanes = tape.registers::<2>();
-        let range = |input| tape.slots().range(input);
-        lanes.inputs_mut()[range(Input::U)][0] = [0.7, -0.2];
-        lanes.inputs_mut()[range(Input::Fields)][0] = [3.0, 3.0];
+        for (l, u) in [0.7, -0.2].into_iter().enumerate() {
+            lanes.set_lane(Input::U, l, &[u]).unwrap();
+            lanes.set_lane(Input::Fields, l, &[3.0]).unwrap();
+        }
         tape.run_phase(0, &mut lanes).unwrap();
         let outputs = &tape.phase(0).unwrap().outputs;
         for (k, &register) in outputs.iter().enumerate() {
