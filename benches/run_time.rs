@@ -28,52 +28,14 @@ use std::time::Duration;
 mod workloads;
 use workloads::{FOUR_BAR, SIX_BAR, SLIDER_CRANK};
 
-#[path = "run_time/chain.rs"]
-mod chain;
+#[path = "chains/mod.rs"]
+mod chains;
+#[path = "chains/n32.rs"]
+mod n32;
+use chains::{attribute_of, chain_pose, chain_text};
 
 /// Poses of the benchmarked sweeps: one revolution of the crank.
 const SWEEP_STEPS: usize = 10_000;
-
-/// The chain's parameters: every loop the worksheet's crank-rocker, its
-/// coupler point 30 from B at 0.5 rad, each crank keyed 0.3 rad past the
-/// previous rocker.
-const CHAIN_PARAMETERS: [(&str, f64); 7] = [
-    ("l1", 80.0),
-    ("l2", 20.0),
-    ("l3", 50.0),
-    ("l4", 70.0),
-    ("e", 30.0),
-    ("beta", 0.5),
-    ("delta", 0.3),
-];
-
-const CHAIN: chain::Chain = chain::Chain {
-    l1: 80.0,
-    l2: 20.0,
-    l3: 50.0,
-    l4: 70.0,
-    e: 30.0,
-    beta: 0.5,
-    delta: 0.3,
-};
-
-/// The text inside `#[...linkage(` … `)]` of the struct `name` in `source`.
-fn attribute_of(source: &str, name: &str) -> String {
-    let at = source
-        .find(&format!("pub struct {name} "))
-        .unwrap_or_else(|| panic!("no struct {name}"));
-    let start = source[..at].rfind("linkage(").expect("an attribute") + "linkage(".len();
-    let mut depth = 0;
-    for (k, c) in source[start..at].char_indices() {
-        match c {
-            '(' | '[' | '{' => depth += 1,
-            ')' if depth == 0 => return source[start..start + k].to_owned(),
-            ')' | ']' | '}' => depth -= 1,
-            _ => {}
-        }
-    }
-    panic!("the attribute of {name} does not end")
-}
 
 /// A compiled mechanism's attribute text read at run time, with the
 /// compiled mechanism's parameter values.
@@ -102,70 +64,6 @@ where
     read(compiled, source, name)
         .fixed_with::<M, 1, P>()
         .expect("the compiled sizes")
-}
-
-/// N four-bar loops in a chain, as `linkage-macros/examples/expansion_cost.rs`
-/// writes them: the crank of loop k is keyed to the rocker of loop k − 1
-/// (at the angle `delta`), its ground pivots shifted along x; each loop
-/// has a coupler point. m = 2N.
-fn chain_text(n: usize) -> String {
-    let mut u = Vec::new();
-    let mut points = Vec::new();
-    let mut closure = Vec::new();
-    for k in 1..=n {
-        u.push(format!("a{k}"));
-        u.push(format!("b{k}"));
-        let crank = if k == 1 {
-            "t".to_owned()
-        } else {
-            format!("(b{} + delta)", k - 1)
-        };
-        let x0 = format!("{}.0 * l1", k - 1);
-        points.push(format!(
-            "P{k} = ({x0} + l2 * {crank}.cos() + e * (a{k} + beta).cos(), l2 * {crank}.sin() + e * (a{k} + beta).sin())"
-        ));
-        closure.push(format!(
-            "l2 * {crank}.cos() + l3 * a{k}.cos() + l4 * b{k}.cos() - l1"
-        ));
-        closure.push(format!(
-            "l2 * {crank}.sin() + l3 * a{k}.sin() + l4 * b{k}.sin()"
-        ));
-    }
-    format!(
-        "u = [{}], v = [t], points = [{}], closure = [{}]",
-        u.join(", "),
-        points.join(", "),
-        closure.join(", ")
-    )
-}
-
-/// A text without its layout: no white space, no trailing commas.
-fn tokens_of(text: &str) -> String {
-    let bare: String = text.chars().filter(|c| !c.is_whitespace()).collect();
-    bare.replace(",]", "]")
-        .replace(",)", ")")
-        .trim_end_matches(',')
-        .to_owned()
-}
-
-/// The chain's pose at crank angle `t`, loop by loop from the closed form
-/// (the branch of the four-bar's benchmarks).
-fn chain_pose<const M: usize>(t: f64) -> SVector<f64, M> {
-    let four_bar = linkage::closed_form::FourBar {
-        l1: CHAIN.l1,
-        l2: CHAIN.l2,
-        l3: CHAIN.l3,
-        l4: CHAIN.l4,
-    };
-    let mut u = SVector::<f64, M>::zeros();
-    let mut crank = t;
-    for k in 0..M / 2 {
-        let [a, b] = four_bar.position(crank, 1.0).expect("a crank-rocker turns");
-        u[2 * k] = a;
-        u[2 * k + 1] = b;
-        crank = b + CHAIN.delta;
-    }
-    u
 }
 
 /// A converged pose at θ2 = 20° (from a sweep, so on the benchmarks'
@@ -337,21 +235,15 @@ fn mechanisms(c: &mut Criterion) {
         vector![1.369_438_4, -0.775_193_4, 2.237_243_8, -3.043_485_2],
         Rows::All,
     );
-    let chain_source = include_str!("run_time/chain.rs");
-    let attribute = attribute_of(chain_source, "Chain");
-    assert_eq!(
-        tokens_of(&attribute),
-        tokens_of(&chain_text(32)),
-        "the compiled chain is the generator's"
-    );
-    let run_time = Mechanism::from_text("Chain", &attribute, &CHAIN_PARAMETERS)
+    let attribute = chains::check_compiled(include_str!("chains/n32.rs"), 32);
+    let run_time = Mechanism::from_text("Chain", &attribute, &chains::PARAMETERS)
         .expect("the chain reads at run time")
         .fixed::<64, 1>()
         .expect("m = 64, f = 1");
     side_by_side(
         c,
         "chain N = 32",
-        &CHAIN,
+        &chain!(n32),
         &run_time,
         chain_pose::<64>(0.0),
         Rows::Analyses,
@@ -477,7 +369,7 @@ fn batches(c: &mut Criterion) {
 fn from_text(c: &mut Criterion) {
     let four_bar = attribute_of(include_str!("../src/mechanisms.rs"), "FourBar");
     let four_bar_parameters = [("l1", 80.0), ("l2", 20.0), ("l3", 50.0), ("l4", 70.0)];
-    let chains: Vec<(usize, String)> = [1, 2, 4, 8, 16, 32]
+    let texts: Vec<(usize, String)> = [1, 2, 4, 8, 16, 32]
         .into_iter()
         .map(|n| (n, chain_text(n)))
         .collect();
@@ -489,13 +381,13 @@ fn from_text(c: &mut Criterion) {
                 .expect("reads")
         })
     });
-    for (n, text) in &chains {
+    for (n, text) in &texts {
         if *n >= 8 {
             group.sample_size(10);
         }
         group.bench_function(BenchmarkId::new("chain", n), |b| {
             b.iter(|| {
-                Mechanism::from_text("Chain", black_box(text), &CHAIN_PARAMETERS).expect("reads")
+                Mechanism::from_text("Chain", black_box(text), &chains::PARAMETERS).expect("reads")
             })
         });
     }
@@ -514,7 +406,7 @@ fn from_text(c: &mut Criterion) {
             four_bar.clone(),
             names(&four_bar_parameters),
         ),
-        ("chain 32", chains[5].1.clone(), names(&CHAIN_PARAMETERS)),
+        ("chain 32", texts[5].1.clone(), names(&chains::PARAMETERS)),
     ];
     for (what, text, parameters) in &cases {
         if what.starts_with("chain") {

@@ -1,8 +1,4 @@
-//! The chain of 32 four-bar loops of `linkage-macros/examples/expansion_cost.rs`
-//! (`fn chain`), compiled: the crank of loop k keyed to the rocker of loop
-//! k − 1 at the angle `delta`, a coupler point per loop; m = 64. Written
-//! out as a user writes a mechanism; `run_time.rs` checks that its text is
-//! the generator's.
+//! The chain of 32 four-bar loops (`super::chain_text(32)`), compiled; m = 64.
 
 #[linkage::linkage(
     u = [
