@@ -27,6 +27,15 @@ pub struct Blocks {
     blocks: Vec<Block>,
 }
 
+/// [`Blocks::order`]: the blocks' equations and coordinates in solve order,
+/// and the end of each block in both.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct BlockOrder {
+    pub equations: Vec<usize>,
+    pub coordinates: Vec<usize>,
+    pub ends: Vec<usize>,
+}
+
 /// A maximum matching of equations (rows) to coordinates (columns): for
 /// each column, the row matched to it, if any. Augmenting paths from each
 /// row in turn (Kuhn's algorithm, without recursion).
@@ -112,6 +121,19 @@ impl Blocks {
     /// The blocks, in the order they are solved.
     pub fn blocks(&self) -> &[Block] {
         &self.blocks
+    }
+
+    /// The blocks flattened as the runtime takes them
+    /// (`linkage::PsiUBlocks::new`): every equation and every coordinate,
+    /// block after block, and where each block ends in both lists.
+    pub fn order(&self) -> BlockOrder {
+        let mut order = BlockOrder::default();
+        for block in &self.blocks {
+            order.equations.extend(&block.equations);
+            order.coordinates.extend(&block.coordinates);
+            order.ends.push(order.equations.len());
+        }
+        order
     }
 
     /// Whether Ψ_u has more than one block.

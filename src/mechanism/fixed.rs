@@ -12,7 +12,9 @@ use crate::mechanism::point_set::PointSet;
 use crate::mechanism::program::Program;
 use crate::mechanism::scratch::{self, LANES};
 use crate::mechanism::sensitive::Columns;
-use crate::runtime::{FusedRequest, Inverse, Kernels, Kinematics, Linkage, invert};
+use crate::runtime::{
+    FusedRequest, Inverse, Kernels, Kinematics, Linkage, PsiUBlocks, invert_in_blocks,
+};
 use linkage_symbolic::plan::{Formula, Kernel};
 use linkage_symbolic::tape::{Input, Registers};
 use nalgebra::{SMatrix, SVector, Vector2};
@@ -245,7 +247,7 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
                 inverse,
                 rcond,
                 det,
-            } = invert(&psi_u);
+            } = invert_in_blocks(&psi_u, self.psi_u_blocks());
             let udot = -(inverse * (psi_v * vdot));
             set(registers, Input::Udot, udot.as_slice());
             let gamma: SVector<f64, M> = match kernel.run(1, registers) {
@@ -338,7 +340,7 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
                 let psi: SVector<f64, M> = kernel.block(registers, 0, kernel.start(0, 0), l);
                 let psi_u: SMatrix<f64, M, M> = kernel.block(registers, 0, kernel.start(0, 1), l);
                 let psi_v: SMatrix<f64, M, F> = kernel.block(registers, 0, kernel.start(0, 2), l);
-                let inverse = invert(&psi_u);
+                let inverse = invert_in_blocks(&psi_u, r.model.psi_u_blocks());
                 let udot = -(inverse.inverse * (psi_v * r.vdot));
                 set_lane(registers, Input::Udot, l, udot.as_slice());
                 *slot = Some((psi, psi_u, psi_v, inverse, udot));
@@ -404,6 +406,10 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Kernels<M, 
 
     fn point_names(&self) -> &'static [&'static str] {
         self.program.point_names
+    }
+
+    fn psi_u_blocks(&self) -> PsiUBlocks<'_> {
+        self.program.psi_u_blocks.borrow()
     }
 
     fn psi(&self, u: &SVector<f64, M>, v: &SVector<f64, F>) -> SVector<f64, M> {

@@ -12,6 +12,7 @@
 use crate::mechanism::error::MechanismError;
 use crate::mechanism::interned;
 use crate::mechanism::kernel_tape::KernelTape;
+use crate::runtime::PsiUBlocksBuf;
 use linkage_symbolic::blocks::Blocks;
 use linkage_symbolic::dag::{Dag, Id, Symbol};
 use linkage_symbolic::derivatives::Derivatives;
@@ -79,6 +80,8 @@ pub(crate) struct Program {
     pub(crate) methods_agree: Option<bool>,
     /// Ψ_u's diagonal blocks, in solve order.
     pub(crate) blocks: Blocks,
+    /// The same as the runtime inverts Ψ_u by them.
+    pub(crate) psi_u_blocks: PsiUBlocksBuf,
 }
 
 /// A kernel's tape, compiled.
@@ -149,6 +152,10 @@ impl Program {
             points: derivatives.points.iter().map(|p| p.position).collect(),
             methods_agree: derivatives.methods_agree,
             blocks: derivatives.blocks.clone(),
+            psi_u_blocks: {
+                let order = derivatives.blocks.order();
+                PsiUBlocksBuf::new(order.equations, order.coordinates, order.ends)
+            },
         };
         for (kernel, names) in READ_IN_ORDER {
             if !program.kernel(kernel).is_ok_and(|k| k.has_parts(names)) {

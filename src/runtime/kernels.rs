@@ -4,6 +4,7 @@
 //! analyses call. The analyses themselves are the provided methods of
 //! [`Linkage`](crate::runtime::Linkage), a trait on top of this one.
 
+use crate::runtime::blocks::PsiUBlocks;
 use crate::runtime::results::Kinematics;
 use nalgebra::{SMatrix, SVector, Vector2};
 use num_dual::DualNum;
@@ -38,6 +39,14 @@ pub trait Kernels<const M: usize, const F: usize> {
     /// constants, `FourBar::C`, give it at compile time).
     fn point_index(&self, name: &str) -> Option<usize> {
         self.point_names().iter().position(|n| *n == name)
+    }
+
+    /// Ψ_u's diagonal blocks in the order they are solved: the generated
+    /// constant `PSI_U_BLOCKS` where Ψ_u is block lower triangular, one
+    /// dense block (the default) where it is not. The analyses invert Ψ_u
+    /// block by block in this order ([`invert_in_blocks`](crate::runtime::invert_in_blocks)).
+    fn psi_u_blocks(&self) -> PsiUBlocks<'_> {
+        PsiUBlocks::DENSE
     }
 
     /// Ψ

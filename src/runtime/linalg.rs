@@ -1,8 +1,6 @@
 //! Small dense linear algebra without allocation: the inverse of Ψ_u with its
 //! reciprocal condition number, in closed form for m ≤ 3.
 
-use crate::runtime::error::{Error, Stage};
-use crate::runtime::options::Options;
 use crate::runtime::powers_of_two::{pow2, power_of_two_near};
 use nalgebra::{SMatrix, SVector};
 
@@ -32,18 +30,7 @@ pub struct Inverse<const M: usize> {
 /// even where its magnitude leaves the range of f64.
 #[inline(always)]
 pub fn invert<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
-    const LOW: f64 = pow2(-300);
-    const HIGH: f64 = pow2(300);
-    // Plain comparisons (a NaN entry is skipped here and caught below):
-    // this runs at every evaluation of a sweep.
-    let mut scale = 0.0_f64;
-    for x in a.iter() {
-        let x = x.abs();
-        if x > scale {
-            scale = x;
-        }
-    }
-    let ordinary = (LOW..=HIGH).contains(&scale);
+    let (scale, ordinary) = scale_of(a);
     let extreme = !ordinary && scale > 0.0 && scale.is_finite();
     if M > 3 {
         return if extreme {
@@ -74,6 +61,24 @@ pub fn invert<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
     }
 }
 
+/// The largest magnitude of `a`'s entries, and whether it lies in the
+/// ordinary range [2⁻³⁰⁰, 2³⁰⁰] where no scaling is needed. Plain
+/// comparisons (a NaN entry is skipped here and caught by the inversion):
+/// this runs at every evaluation of a sweep.
+#[inline(always)]
+pub(crate) fn scale_of<const M: usize>(a: &SMatrix<f64, M, M>) -> (f64, bool) {
+    const LOW: f64 = pow2(-300);
+    const HIGH: f64 = pow2(300);
+    let mut scale = 0.0_f64;
+    for x in a.iter() {
+        let x = x.abs();
+        if x > scale {
+            scale = x;
+        }
+    }
+    (scale, (LOW..=HIGH).contains(&scale))
+}
+
 /// [`invert`] for m > 3 at an extreme scale, out of line: Gauss–Jordan
 /// elimination costs enough that the merged result's round trip through
 /// memory does not show, and in line the six-bar's fused kernel was slower
@@ -94,7 +99,7 @@ fn invert_scaled<const M: usize>(a: &SMatrix<f64, M, M>, scale: f64) -> Inverse<
 /// exact: A·(1/p) and A₁⁻¹·(1/p) are the very numbers of A/p and A₁⁻¹/p.
 #[cold]
 #[inline(never)]
-fn power_of_two_and_reciprocal(scale: f64) -> (f64, f64) {
+pub(crate) fn power_of_two_and_reciprocal(scale: f64) -> (f64, f64) {
     let p = power_of_two_near(scale);
     (p, 1.0 / p)
 }
@@ -103,7 +108,7 @@ fn power_of_two_and_reciprocal(scale: f64) -> (f64, f64) {
 /// leaves the range of f64 (the smallest subnormal then).
 #[cold]
 #[inline(never)]
-fn scaled_determinant<const M: usize>(inner: f64, p: f64) -> f64 {
+pub(crate) fn scaled_determinant<const M: usize>(inner: f64, p: f64) -> f64 {
     let mut det = inner;
     for _ in 0..M {
         det *= p;
@@ -115,7 +120,7 @@ fn scaled_determinant<const M: usize>(inner: f64, p: f64) -> f64 {
 }
 
 #[inline(always)]
-fn invert_at_scale<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
+pub(crate) fn invert_at_scale<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
     let singular = |det: f64| Inverse {
         inverse: SMatrix::zeros(),
         rcond: 0.0,
@@ -153,20 +158,6 @@ fn invert_at_scale<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
     } else {
         singular(det)
     }
-}
-
-/// `a` inverted, or [`Error::Singular`] in `stage` if its reciprocal
-/// condition number is 0 or does not keep the requested accuracy there
-/// ([`Options::keeps_accuracy`]).
-#[inline(always)]
-pub(crate) fn factor<const M: usize>(
-    a: &SMatrix<f64, M, M>,
-    stage: Stage,
-    options: &Options,
-) -> Result<Inverse<M>, Error> {
-    let inv = invert(a);
-    options.require_accuracy(stage, inv.rcond)?;
-    Ok(inv)
 }
 
 /// adj A and det A for m ≤ 3 (the adjugate is the transpose of the
@@ -210,7 +201,10 @@ fn adjugate<const M: usize>(a: &SMatrix<f64, M, M>) -> (SMatrix<f64, M, M>, f64)
 /// scaled to unit 1-norm (rows are not scaled: a row that shrinks is how a
 /// singular pose shows itself). With B = adj A it is that times |det A|.
 #[inline(always)]
-fn equilibrated_norm<const M: usize>(a: &SMatrix<f64, M, M>, b: &SMatrix<f64, M, M>) -> f64 {
+pub(crate) fn equilibrated_norm<const M: usize>(
+    a: &SMatrix<f64, M, M>,
+    b: &SMatrix<f64, M, M>,
+) -> f64 {
     let mut col = [0.0; M];
     for (j, c) in col.iter_mut().enumerate() {
         *c = a.column(j).iter().map(|x| x.abs()).sum::<f64>();

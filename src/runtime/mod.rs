@@ -14,6 +14,7 @@
 //   powers_of_two  exact scale factors
 //   options   the solvers' settings
 //   linalg    small matrices: inversion, factorisation, conditioning
+//   blocks    Ψ_u inverted block by block in its block triangular order
 //   checks    finite inputs and outputs, numbers in the normal range
 //   trig      sines and cosines carried from pose to pose
 //   results   what the analyses return
@@ -29,6 +30,7 @@
 //             methods are the entry points, delegating to the modules above
 //   sensitivities  the derivatives by the parameters: a trait on top of
 //             Linkage, its provided methods delegating to its own solve
+mod blocks;
 mod checks;
 mod error;
 mod kernels;
@@ -45,6 +47,8 @@ mod sweep;
 mod symbolic;
 mod trig;
 
+pub(crate) use blocks::PsiUBlocksBuf;
+pub use blocks::{PsiUBlocks, invert_in_blocks};
 pub use error::{Error, Stage};
 pub use kernels::{FusedRequest, Kernels};
 pub use linalg::{Inverse, determinant, invert, scaled_svd};

@@ -10,10 +10,11 @@
 //! vector of Ψ_u; at a minimum the mechanism cannot be assembled, and the
 //! error says how far it is from closing.
 
+use crate::runtime::blocks::factor;
 use crate::runtime::checks::{check_input, check_value};
 use crate::runtime::error::{Error, Stage};
 use crate::runtime::kernels::Kernels;
-use crate::runtime::linalg::{factor, invert};
+use crate::runtime::linalg::invert;
 use crate::runtime::options::Options;
 use crate::runtime::results::{Iterate, Kinematics, Position};
 use crate::runtime::sources::psi_and_psi_u;
@@ -104,7 +105,7 @@ pub(crate) fn solve<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
                 }
             }
         } else {
-            let inv = factor(&psi_u, Stage::Position, options)?;
+            let inv = factor(&psi_u, model.psi_u_blocks(), Stage::Position, options)?;
             -(inv.inverse * psi)
         };
         u += delta;

@@ -3,10 +3,11 @@
 //! or overflows), the fused one-pass kernel where it serves, and the
 //! conditioning each needs to keep [`Options::accuracy`].
 
+use crate::runtime::blocks::{factor, invert_in_blocks};
 use crate::runtime::checks::{check_input, check_result, check_scale, check_value};
 use crate::runtime::error::{Error, Stage};
 use crate::runtime::kernels::{FusedRequest, Kernels};
-use crate::runtime::linalg::{augmented_condition, factor, invert};
+use crate::runtime::linalg::augmented_condition;
 use crate::runtime::newton::Progress;
 use crate::runtime::options::{AccelerationMethod, JacobianSource, Options};
 use crate::runtime::powers_of_two::power_of_two_near;
@@ -283,7 +284,7 @@ fn velocity_with<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
     let psi_v = sources::psi_v(model, options.jacobian, u, v);
     check_value(Stage::Velocity, "Ψ_v", psi_v.as_slice())?;
     check_scale(Stage::Velocity, psi_u, &psi_v)?;
-    let inv = factor(psi_u, Stage::Velocity, options)?;
+    let inv = factor(psi_u, model.psi_u_blocks(), Stage::Velocity, options)?;
     let ratios = inv.inverse * psi_v;
     let udot = -(ratios * vdot);
     check_value(Stage::Velocity, "u̇", udot.as_slice())?;
@@ -357,7 +358,7 @@ fn acceleration_with<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
     vddot: &SVector<f64, F>,
     options: &Options,
 ) -> Result<SVector<f64, M>, Error> {
-    let inv = invert(psi_u);
+    let inv = invert_in_blocks(psi_u, model.psi_u_blocks());
     let psi_v = sources::psi_v(model, options.jacobian, u, v);
     check_value(Stage::Acceleration, "Ψ_v", psi_v.as_slice())?;
     check_scale(Stage::Acceleration, psi_u, &psi_v)?;

@@ -27,7 +27,7 @@
 
 use super::{Spread, Tolerances, distance, gradient, with_gradient};
 use crate::numerics::minimize;
-use crate::runtime::{Options, Sensitivities, Sweep, determinant, invert};
+use crate::runtime::{Options, Sensitivities, Sweep, determinant, invert_in_blocks};
 use nalgebra::{ComplexField, DMatrix, SMatrix, SVector};
 use num_dual::{Dual, DualNum, DualSVec64};
 
@@ -251,7 +251,7 @@ pub(super) fn position_sensitivity<L, const M: usize, const F: usize, const K: u
 where
     L: Sensitivities<M, F, K>,
 {
-    let inverse = invert(&model.psi_u(u, v));
+    let inverse = invert_in_blocks(&model.psi_u(u, v), model.psi_u_blocks());
     (inverse.rcond > 0.0).then(|| -(inverse.inverse * model.psi_p(u, v)))
 }
 

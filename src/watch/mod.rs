@@ -49,7 +49,7 @@ pub use path::PathPose;
 use crate::error::UnknownName;
 use crate::numerics::root;
 use crate::quantity::{Names, Quantity, Resolved};
-use crate::runtime::{Error, Linkage, Options, Stage, Sweep, invert};
+use crate::runtime::{Error, Linkage, Options, Stage, Sweep, invert_in_blocks};
 use nalgebra::SVector;
 use num_dual::Dual64;
 
@@ -285,7 +285,7 @@ fn node<L: Linkage<M, F>, const M: usize, const F: usize>(
     options: &Options,
 ) -> Result<Node<M, F>, WatchError> {
     let psi_u = model.psi_u(u, v);
-    let inverse = invert(&psi_u);
+    let inverse = invert_in_blocks(&psi_u, model.psi_u_blocks());
     if !options.keeps_accuracy(Stage::Acceleration, inverse.rcond) {
         return Err(WatchError::Kinematics(Error::Singular {
             stage: Stage::Acceleration,

@@ -131,6 +131,9 @@ pub const SENSITIVITY_TRIG: [Constant; 2] = [
 /// The symbolic table, `Self::SYMBOLIC`: a constant of its own type.
 pub const SYMBOLIC: &str = "SYMBOLIC";
 
+/// Ψ_u's diagonal blocks, `Self::PSI_U_BLOCKS` (where it has more than one).
+pub const PSI_U_BLOCKS: &str = "PSI_U_BLOCKS";
+
 /// Every array constant of the table.
 pub fn all() -> impl Iterator<Item = &'static Constant> {
     NAMES.iter().chain(&TRIG).chain(&SENSITIVITY_TRIG)
@@ -138,7 +141,7 @@ pub fn all() -> impl Iterator<Item = &'static Constant> {
 
 /// Whether a generated constant is called `name`.
 pub fn taken(name: &str) -> bool {
-    name == SYMBOLIC || all().any(|c| c.name == name)
+    name == SYMBOLIC || name == PSI_U_BLOCKS || all().any(|c| c.name == name)
 }
 
 impl Constant {

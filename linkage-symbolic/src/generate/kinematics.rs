@@ -2,7 +2,7 @@
 //! solve, γ and the acceleration solve in one pass of straight-line code.
 
 use super::Generator;
-use super::constants::TRIG;
+use super::constants::{self, TRIG};
 use super::docs::doc_attributes;
 use super::function::{assemble, reaches};
 use crate::dag::Symbol;
@@ -12,6 +12,36 @@ use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 
 impl Generator<'_> {
+    /// `PSI_U_BLOCKS`, the constant of Ψ_u's diagonal blocks in solve order
+    /// that `kinematics` and the `Kernels` impl use, where Ψ_u has more than
+    /// one block (nothing where it has one).
+    pub(super) fn psi_u_blocks_constant(&self) -> TokenStream {
+        let blocks = &self.model.blocks;
+        if !blocks.is_triangular() {
+            return quote!();
+        }
+        let order = blocks.order();
+        let list = |v: &[usize]| {
+            let v = v.iter().map(|&x| Literal::usize_unsuffixed(x));
+            quote!(&[#(#v),*])
+        };
+        let (equations, coordinates, ends) = (
+            list(&order.equations),
+            list(&order.coordinates),
+            list(&order.ends),
+        );
+        let name = format_ident!("{}", constants::PSI_U_BLOCKS);
+        let doc = format!(
+            " {}. Its blocks' equations and coordinates in solve order, and where each block ends (`Kernels::psi_u_blocks`).",
+            blocks
+        );
+        quote! {
+            #[doc = #doc]
+            pub const #name: ::linkage::PsiUBlocks<'static> =
+                ::linkage::PsiUBlocks::new(#equations, #coordinates, #ends);
+        }
+    }
+
     /// `kinematics`: Ψ, Ψ_u, Ψ_v, the velocity solve and γ in one pass, every
     /// sine, cosine and common subexpression computed once.
     pub(super) fn kinematics_function(&self, with_trig: bool, doc: &[String]) -> TokenStream {
@@ -106,6 +136,13 @@ impl Generator<'_> {
             ("uddot", &uddot),
         ]
         .map(|(name, local)| field(name, local));
+        // Block by block where Ψ_u has more than one block.
+        let invert = if model.blocks.is_triangular() {
+            let blocks = format_ident!("{}", constants::PSI_U_BLOCKS);
+            quote!(::linkage::invert_in_blocks(&#psi_u, Self::#blocks))
+        } else {
+            quote!(::linkage::invert(&#psi_u))
+        };
         let prologue = &phased.prologue;
         let reads = phased.reads;
         let arg = |used: bool, name: &str| {
@@ -124,7 +161,7 @@ impl Generator<'_> {
             #psi_bind
             #psi_u_bind
             #psi_v_bind
-            let ::linkage::Inverse { #inverse_pattern } = ::linkage::invert(&#psi_u);
+            let ::linkage::Inverse { #inverse_pattern } = #invert;
             let #udot = -(#inverse * (#psi_v * vdot));
             #velocity_bind
             #(#second_statements)*

@@ -243,6 +243,7 @@ impl<'a> Generator<'a> {
         let symbolic = self.symbolic_table();
         let trait_impl = self.trait_impl();
         let symbolic_name = format_ident!("{}", constants::SYMBOLIC);
+        let psi_u_blocks = self.psi_u_blocks_constant();
         quote! {
             #item
             const _: () = {
@@ -256,6 +257,7 @@ impl<'a> Generator<'a> {
                 impl #impl_generics #ty #ty_generics #where_clause {
                     #(#names)*
                     #point_indices
+                    #psi_u_blocks
 
                     #(#functions)*
 

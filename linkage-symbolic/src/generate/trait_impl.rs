@@ -4,7 +4,9 @@
 //! methods, the analyses, are all provided).
 
 use super::Generator;
-use super::constants::{PARAM_NAMES, POINT_NAMES, SENSITIVITY_TRIG, TRIG, U_NAMES, V_NAMES};
+use super::constants::{
+    PARAM_NAMES, POINT_NAMES, PSI_U_BLOCKS, SENSITIVITY_TRIG, TRIG, U_NAMES, V_NAMES,
+};
 use super::quantities::{QUANTITIES, Source, Trait};
 use super::signature;
 use proc_macro2::{Literal, TokenStream};
@@ -67,6 +69,17 @@ impl Generator<'_> {
             functions(Trait::Sensitivities),
         );
         let names = [U_NAMES, V_NAMES, POINT_NAMES].map(|c| c.trait_method(&dims, false));
+        let psi_u_blocks = if self.model.blocks.is_triangular() {
+            let name = format_ident!("{}", PSI_U_BLOCKS);
+            quote! {
+                #[inline]
+                fn psi_u_blocks(&self) -> ::linkage::PsiUBlocks<'_> {
+                    Self::#name
+                }
+            }
+        } else {
+            quote!()
+        };
         let param_names = PARAM_NAMES.trait_method(&dims, false);
         let lowered = &self.model.lowered;
         let param_idents: Vec<_> = lowered
@@ -80,6 +93,7 @@ impl Generator<'_> {
             impl #impl_generics ::linkage::Kernels<#m, #f> for #ty #ty_generics #where_clause {
                 type Points = [Vector2<f64>; #np];
                 #(#names)*
+                #psi_u_blocks
                 #(#kinematics)*
             }
 

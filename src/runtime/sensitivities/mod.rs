@@ -122,7 +122,7 @@ pub trait Sensitivities<const M: usize, const F: usize, const K: usize>:
         motion: &Motion<M, F>,
         options: &Options,
     ) -> Result<Sensitivity<M, K, Self::Points>, Error> {
-        solve::sensitivities(motion, options, |m| {
+        solve::sensitivities(motion, self.psi_u_blocks(), options, |m| {
             self.sensitivity_terms(&m.u, &m.v, &m.udot, &m.vdot, &m.uddot, &m.vddot)
         })
     }
@@ -197,7 +197,7 @@ fn with_trig<L, const M: usize, const F: usize, const K: usize>(
 where
     L: SensitivityKernel<M, F, K> + ?Sized,
 {
-    solve::sensitivities(motion, options, |m| {
+    solve::sensitivities(motion, model.psi_u_blocks(), options, |m| {
         model.sensitivity_terms_with_trig(
             &m.u, &m.v, trig_u, trig_v, &m.udot, &m.vdot, &m.uddot, &m.vddot,
         )

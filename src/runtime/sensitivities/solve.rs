@@ -35,9 +35,9 @@
 //! "Measurements behind the code").
 
 use super::results::{Motion, Sensitivity, SensitivityTerms};
+use crate::runtime::blocks::{PsiUBlocks, factor};
 use crate::runtime::checks::{all_finite, all_finite_in, check_input, check_value};
 use crate::runtime::error::{Error, Stage};
-use crate::runtime::linalg::factor;
 use crate::runtime::options::Options;
 use nalgebra::{SMatrix, Vector2};
 
@@ -47,6 +47,7 @@ use nalgebra::{SMatrix, Vector2};
 #[inline(always)]
 pub(crate) fn sensitivities<const M: usize, const F: usize, const K: usize, P>(
     motion: &Motion<M, F>,
+    blocks: PsiUBlocks<'_>,
     options: &Options,
     terms: impl FnOnce(&Motion<M, F>) -> SensitivityTerms<M, K, P>,
 ) -> Result<Sensitivity<M, K, P>, Error>
@@ -80,7 +81,7 @@ where
         }
     }
     options.check()?;
-    from_terms(&terms(motion), options)
+    from_terms(&terms(motion), blocks, options)
 }
 
 /// The sensitivities from the generated terms at a pose: `Singular` where
@@ -89,6 +90,7 @@ where
 #[inline(always)]
 pub(crate) fn from_terms<const M: usize, const K: usize, P>(
     terms: &SensitivityTerms<M, K, P>,
+    blocks: PsiUBlocks<'_>,
     options: &Options,
 ) -> Result<Sensitivity<M, K, P>, Error>
 where
@@ -99,7 +101,7 @@ where
     // them reaches u_p, u̇_p or ü_p (IEEE: ∞·0 is NaN, and Ψ_u's makes the
     // inverse fail), so only a failure scans them, in order, to name the
     // first — the errors of a scan up front, for one pass less.
-    let inv = match factor(&terms.psi_u, stage, options) {
+    let inv = match factor(&terms.psi_u, blocks, stage, options) {
         Ok(inv) => inv,
         Err(singular) => {
             name_non_finite_term(*terms)?;
@@ -357,7 +359,7 @@ mod tests {
     #[test]
     fn from_terms_gives_the_formulas_numbers() {
         let t = terms();
-        let ours = from_terms(&t, &Options::default()).expect("regular");
+        let ours = from_terms(&t, PsiUBlocks::DENSE, &Options::default()).expect("regular");
         assert_eq!(ours, plainly(&t));
     }
 
@@ -378,7 +380,7 @@ mod tests {
     }
 
     fn error(t: &SensitivityTerms<2, 2, Points>) -> Option<&'static str> {
-        match from_terms(t, &Options::default()) {
+        match from_terms(t, PsiUBlocks::DENSE, &Options::default()) {
             Err(Error::NonFiniteValue {
                 stage: Stage::Sensitivity,
                 quantity,

@@ -2,9 +2,9 @@
 
 use super::SweepOptions;
 use super::state::State;
+use crate::runtime::blocks::invert_in_blocks;
 use crate::runtime::error::{Error, Stage};
 use crate::runtime::kernels::Kernels;
-use crate::runtime::linalg::invert;
 use crate::runtime::options::{AccelerationMethod, JacobianSource, Options};
 use crate::runtime::results::Kinematics;
 use crate::runtime::{newton, sources};
@@ -90,7 +90,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         let jacobian = self.options.options.jacobian;
         let psi_u = sources::psi_and_psi_u(self.model, jacobian, u, v).1;
         let psi_v = sources::psi_v(self.model, jacobian, u, v);
-        let inv = invert(&psi_u);
+        let inv = invert_in_blocks(&psi_u, self.model.psi_u_blocks());
         if inv.rcond <= 0.0 {
             return (None, inv.det, inv.rcond);
         }

@@ -30,6 +30,12 @@ const _: () = {
         /// The index of the point `R`: `pose.points[Self::R]`.
         #[allow(non_upper_case_globals)]
         pub const R: usize = 2usize;
+        /// Ψ_u is block lower triangular: 3 blocks: 2×2, 1×1, 1×1. Its blocks' equations and coordinates in solve order, and where each block ends (`Kernels::psi_u_blocks`).
+        pub const PSI_U_BLOCKS: ::linkage::PsiUBlocks<'static> = ::linkage::PsiUBlocks::new(
+            &[0, 1, 3, 2],
+            &[0, 1, 2, 3],
+            &[2, 3, 4],
+        );
         /// Ψ(u, v): the closure equations, zero at every assembled pose.
         ///
         /// ```text
@@ -513,7 +519,10 @@ const _: () = {
             let mut psi_v = SVector::<f64, 4>::zeros();
             psi_v[0] = -r_s_theta;
             psi_v[1] = r_c_theta;
-            let ::linkage::Inverse { inverse, rcond, det } = ::linkage::invert(&psi_u);
+            let ::linkage::Inverse { inverse, rcond, det } = ::linkage::invert_in_blocks(
+                &psi_u,
+                Self::PSI_U_BLOCKS,
+            );
             let udot = -(inverse * (psi_v * vdot));
             let (phi3_dot, s_dot, phi4_dot) = (udot[0], udot[1], udot[2]);
             let mut gamma = SVector::<f64, 4>::zeros();
@@ -594,7 +603,10 @@ const _: () = {
             let mut psi_v = SVector::<f64, 4>::zeros();
             psi_v[0] = -r_s_theta;
             psi_v[1] = r_c_theta;
-            let ::linkage::Inverse { inverse, rcond, det } = ::linkage::invert(&psi_u);
+            let ::linkage::Inverse { inverse, rcond, det } = ::linkage::invert_in_blocks(
+                &psi_u,
+                Self::PSI_U_BLOCKS,
+            );
             let udot = -(inverse * (psi_v * vdot));
             let (phi3_dot, s_dot, phi4_dot) = (udot[0], udot[1], udot[2]);
             let mut gamma = SVector::<f64, 4>::zeros();
@@ -1668,6 +1680,10 @@ const _: () = {
         #[inline]
         fn point_names(&self) -> &'static [&'static str] {
             &Self::POINT_NAMES
+        }
+        #[inline]
+        fn psi_u_blocks(&self) -> ::linkage::PsiUBlocks<'_> {
+            Self::PSI_U_BLOCKS
         }
         #[inline]
         fn psi(&self, u: &SVector<f64, 4>, v: &SVector<f64, 1>) -> SVector<f64, 4> {
