@@ -39,6 +39,11 @@ $PY casadi_c_errors.py build/carried.csv "$ns" "CasADi generated C, sin/cos carr
 ./build/pose_harness ours build/ours.csv $start > build/ours.out
 read -r ns _ < build/ours.out
 $PY casadi_c_errors.py build/ours.csv "$ns" "CasADi generated C, sin/cos carried + linkage's lagged predictor and chord step" --max $floor_bounds >> "$out"
+echo "The closed form in C, swept ..." >&2
+gcc -O3 closed_form.c -lm -o build/closed_form
+./build/closed_form build/closed_form.csv > build/closed_form.out
+read -r ns _ < build/closed_form.out
+$PY casadi_c_errors.py build/closed_form.csv "$ns" "closed form in C, swept: sin/cos carried, sqrt, 2 reciprocals, angles followed by series" --max $floor_bounds >> "$out"
 cat "$out"
 # The single-pose job of `analyze` (warm from the converged pose at
 # θ2 = 20°, cold from the README's guess), for the analyze table.
