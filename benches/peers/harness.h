@@ -8,7 +8,7 @@
 #define STRIDE 280
 
 /* θ2 of sample k, computed as the reference script computes it. */
-static double theta2(long k) { return (6.283185307179586 * (double)k) / (double)N; }
+static inline double theta2(long k) { return (6.283185307179586 * (double)k) / (double)N; }
 
 static double now(void) {
   struct timespec t;

@@ -3,7 +3,9 @@
 # `cargo run --release --example speed_accuracy`: the worksheet's four-bar over a
 # revolution of the dense grid, positions, velocities and accelerations, errors
 # against tests/data/bench_fourbar.csv. Sets up its own Python environment
-# from PyPI (benches/peers/.venv) and writes benches/results/peers.csv.
+# from PyPI (benches/peers/.venv) and writes benches/results/peers.csv, the
+# single pose (benches/results/casadi_pose.csv) and the floor of linkage's
+# sweep (benches/results/floor.csv).
 set -euo pipefail
 cd "$(dirname "$0")"
 if [ ! -x .venv/bin/python ]; then
@@ -56,3 +58,17 @@ pose=$($PY -c 'from common import pose20; print(*pose20())')
   echo "cold,$cold,$iterations"
 } > ../results/casadi_pose.csv
 cat ../results/casadi_pose.csv
+# The floor of linkage's sweep (floor.c): every operation of a pose in a
+# bare loop, and the chain from one pose to the next alone.
+echo "The floor ..." >&2
+gcc -O3 floor.c -lm -o build/floor
+./build/floor build/floor.csv $start > build/floor.out
+read -r pose chain ghz < build/floor.out
+{
+  echo "# Written by benches/peers/run.sh on $(date -u +%Y-%m-%d): the floor of linkage's sweep (benches/peers/floor.c), median ns per pose,"
+  awk -v p="$pose" -v c="$chain" -v g="$ghz" 'BEGIN { printf "# worst relative errors against tests/data/bench_fourbar.csv; clock %.2f GHz by dependent additions: %.0f and %.0f cycles per pose.\n", g, p * g, c * g }'
+  echo "workload,method,ns_per_sample,error_positions,error_velocities,error_accelerations,samples"
+  $PY casadi_c_errors.py build/floor.csv "$pose" "floor: every operation of linkage's sweep per pose in a bare C loop" --max $floor_bounds
+  printf "four-bar,floor: the chain from one pose to the next alone (latency bound),%.2f,,,,1008000\n" "$chain"
+} > ../results/floor.csv
+cat ../results/floor.csv
