@@ -12,11 +12,11 @@
 
 use crate::runtime::error::{Error, Stage};
 use crate::runtime::linalg::{
-    Inverse, equilibrated_norm, invert, invert_at_scale, power_of_two_and_reciprocal, scale_of,
+    Inverse, adjugate, equilibrated_norm, invert, power_of_two_and_reciprocal, scale_of,
     scaled_determinant,
 };
 use crate::runtime::options::Options;
-use nalgebra::{SMatrix, SVector};
+use nalgebra::SMatrix;
 
 /// Ψ_u's diagonal blocks in the order they are solved: `equations` and
 /// `coordinates` list every equation and every coordinate, block after
@@ -45,10 +45,11 @@ impl PsiUBlocks<'static> {
 
 impl<'a> PsiUBlocks<'a> {
     /// The blocks, if `equations` and `coordinates` both order 0 … n − 1
-    /// and `ends` rises to n; [`PsiUBlocks::DENSE`] otherwise.
+    /// and `ends` rises to n in more than one step; [`PsiUBlocks::DENSE`]
+    /// otherwise (one block is the dense matrix).
     pub const fn new(equations: &'a [usize], coordinates: &'a [usize], ends: &'a [usize]) -> Self {
         let n = equations.len();
-        let mut rising = !ends.is_empty() && ends[ends.len() - 1] == n && ends[0] > 0;
+        let mut rising = ends.len() > 1 && ends[ends.len() - 1] == n && ends[0] > 0;
         let mut b = 1;
         while b < ends.len() {
             rising &= ends[b] > ends[b - 1];
@@ -208,7 +209,9 @@ fn in_blocks_at_scale<const M: usize>(
     // X[coordinates of i, equations of j], zero above the diagonal.
     let mut x = SMatrix::<f64, M, M>::zeros();
     let mut det = blocks.sign;
-    let mut column = SVector::<f64, M>::zeros();
+    // The entries of A that couple a block to the blocks before it, as
+    // (row of the block, coordinate, value), at most M at a time.
+    let mut couplings = [(0_usize, 0_usize, 0.0_f64); M];
     let mut start = 0;
     for (equations, coordinates) in blocks.blocks() {
         let (regular, block_det) = invert_diagonal_block(a, equations, coordinates, &mut x);
@@ -222,33 +225,35 @@ fn in_blocks_at_scale<const M: usize>(
         if earlier_equations.is_empty() {
             continue;
         }
-        // T = Σ_l A[block's equations, coordinates of l] X[coordinates of
-        // l, earlier equations] over the earlier blocks l, row t of T (of
-        // the block's equation t) kept for now in X's row of the block's
-        // coordinate t: only the entries of A that are not zero count.
-        for (&equation, &row) in equations.iter().zip(coordinates) {
+        // T = Σ A[block's equations, q] X[q, earlier equations] over the
+        // earlier coordinates q whose entry is not zero, row t of T (the
+        // block's equation t) kept for now in X's row of its coordinate t;
+        // column by column of X, which is contiguous.
+        let flush = |couplings: &[(usize, usize, f64)], x: &mut SMatrix<f64, M, M>| {
+            for &c in earlier_equations {
+                let column = &mut x.as_mut_slice()[c * M..(c + 1) * M];
+                for &(t, q, value) in couplings {
+                    column[coordinates[t]] += value * column[q];
+                }
+            }
+        };
+        let mut found = 0;
+        for (t, &equation) in equations.iter().enumerate() {
             for &q in earlier_coordinates {
-                let coupling = a[(equation, q)];
-                if coupling != 0.0 {
-                    for &c in earlier_equations {
-                        x[(row, c)] += coupling * x[(q, c)];
+                let value = a[(equation, q)];
+                if value != 0.0 {
+                    couplings[found] = (t, q, value);
+                    found += 1;
+                    if found == M {
+                        flush(&couplings, &mut x);
+                        found = 0;
                     }
                 }
             }
         }
+        flush(&couplings[..found], &mut x);
         // X[block's coordinates, c] = −D⁻¹ T[·, c], D⁻¹ in X's diagonal block.
-        for &c in earlier_equations {
-            for (t, &row) in coordinates.iter().enumerate() {
-                column[t] = x[(row, c)];
-            }
-            for &row in coordinates {
-                let mut sum = 0.0;
-                for (t, &equation) in equations.iter().enumerate() {
-                    sum += x[(row, equation)] * column[t];
-                }
-                x[(row, c)] = -sum;
-            }
-        }
+        apply_inverse(&mut x, equations, coordinates, earlier_equations);
     }
     if !x.iter().all(|v| v.is_finite()) {
         return singular(det);
@@ -262,6 +267,66 @@ fn in_blocks_at_scale<const M: usize>(
         }
     } else {
         singular(det)
+    }
+}
+
+/// X[coordinates, c] = −D⁻¹ X[coordinates, c] for each column c of
+/// `columns`, D⁻¹ = X[coordinates, equations] (the block's inverse, in
+/// place): fixed sizes for blocks of up to 3, which are most.
+fn apply_inverse<const M: usize>(
+    x: &mut SMatrix<f64, M, M>,
+    equations: &[usize],
+    coordinates: &[usize],
+    columns: &[usize],
+) {
+    fn fixed<const K: usize, const M: usize>(
+        x: &mut SMatrix<f64, M, M>,
+        equations: &[usize],
+        coordinates: &[usize],
+        columns: &[usize],
+    ) {
+        let mut inverse = [[0.0; K]; K];
+        for (s, row) in inverse.iter_mut().enumerate() {
+            for (t, entry) in row.iter_mut().enumerate() {
+                *entry = x[(coordinates[s], equations[t])];
+            }
+        }
+        let rows: [usize; K] = std::array::from_fn(|s| coordinates[s]);
+        for &c in columns {
+            let column = &mut x.as_mut_slice()[c * M..(c + 1) * M];
+            let t: [f64; K] = std::array::from_fn(|s| column[rows[s]]);
+            for (s, &row) in rows.iter().enumerate() {
+                let mut sum = 0.0;
+                for (d, value) in inverse[s].iter().zip(&t) {
+                    sum += d * value;
+                }
+                column[row] = -sum;
+            }
+        }
+    }
+    match equations.len() {
+        1 => fixed::<1, M>(x, equations, coordinates, columns),
+        2 => fixed::<2, M>(x, equations, coordinates, columns),
+        3 => fixed::<3, M>(x, equations, coordinates, columns),
+        k => {
+            let inverse: Vec<f64> = (0..k * k)
+                .map(|i| x[(coordinates[i / k], equations[i % k])])
+                .collect();
+            let mut t = vec![0.0; k];
+            for &c in columns {
+                let column = &mut x.as_mut_slice()[c * M..(c + 1) * M];
+                for (value, &row) in t.iter_mut().zip(coordinates) {
+                    *value = column[row];
+                }
+                for (s, &row) in coordinates.iter().enumerate() {
+                    let mut sum = 0.0;
+                    for (d, value) in inverse[s * k..(s + 1) * k].iter().zip(&t) {
+                        sum += d * value;
+                    }
+                    column[row] = -sum;
+                }
+            }
+        }
     }
 }
 
@@ -281,16 +346,19 @@ fn invert_diagonal_block<const M: usize>(
         x: &mut SMatrix<f64, M, M>,
     ) -> (bool, f64) {
         let d = SMatrix::<f64, K, K>::from_fn(|r, s| a[(equations[r], coordinates[s])]);
-        let inverse = invert_at_scale(&d);
-        if inverse.rcond == 0.0 {
-            return (false, inverse.det);
+        let (adjugate, det) = adjugate(&d);
+        let inverse = adjugate * (1.0 / det);
+        // A zero or non-finite det, or an overflow, makes the sum non-finite.
+        let finite = inverse.sum().abs() <= f64::MAX;
+        if !finite {
+            return (false, det);
         }
         for (s, &row) in coordinates.iter().enumerate() {
             for (t, &c) in equations.iter().enumerate() {
-                x[(row, c)] = inverse.inverse[(s, t)];
+                x[(row, c)] = inverse[(s, t)];
             }
         }
-        (true, inverse.det)
+        (true, det)
     }
     match equations.len() {
         1 => small::<1, M>(a, equations, coordinates, x),

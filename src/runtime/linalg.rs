@@ -120,7 +120,7 @@ pub(crate) fn scaled_determinant<const M: usize>(inner: f64, p: f64) -> f64 {
 }
 
 #[inline(always)]
-pub(crate) fn invert_at_scale<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
+fn invert_at_scale<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
     let singular = |det: f64| Inverse {
         inverse: SMatrix::zeros(),
         rcond: 0.0,
@@ -163,7 +163,7 @@ pub(crate) fn invert_at_scale<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse
 /// adj A and det A for m ≤ 3 (the adjugate is the transpose of the
 /// cofactors).
 #[inline(always)]
-fn adjugate<const M: usize>(a: &SMatrix<f64, M, M>) -> (SMatrix<f64, M, M>, f64) {
+pub(crate) fn adjugate<const M: usize>(a: &SMatrix<f64, M, M>) -> (SMatrix<f64, M, M>, f64) {
     let mut adj = SMatrix::<f64, M, M>::zeros();
     let det = match M {
         1 => {

@@ -400,6 +400,15 @@ fn psi_u_splits_into_the_same_blocks_compiled_and_at_run_time() {
             "{name}: `{}` against `{sentence}`",
             table.structure
         );
+        // The order the analyses invert Ψ_u by: the generated constant and
+        // the run-time program's, the same lists.
+        let fixed = twin.fixed::<M, F>().expect("the compiled sizes");
+        assert_eq!(compiled.psi_u_blocks(), fixed.psi_u_blocks(), "{name}");
+        assert_eq!(
+            compiled.psi_u_blocks().len(),
+            twin.blocks().blocks().len().max(1),
+            "{name}"
+        );
         sentence
     }
     let four_bar = same_blocks::<_, 2, 1, 4>(
@@ -409,6 +418,10 @@ fn psi_u_splits_into_the_same_blocks_compiled_and_at_run_time() {
         "FourBar",
     );
     assert_eq!(four_bar, "Ψ_u is one dense block of 2×2");
+    assert_eq!(
+        FourBar::WORKSHEET.psi_u_blocks(),
+        linkage::PsiUBlocks::DENSE
+    );
     let slider = same_blocks::<_, 2, 1, 3>(
         &SLIDER_CRANK,
         &SliderCrank::SYMBOLIC,
@@ -431,6 +444,11 @@ fn psi_u_splits_into_the_same_blocks_compiled_and_at_run_time() {
     assert_eq!(
         WattSixBar::SYMBOLIC.structure,
         "Ψ_u is block lower triangular: 2 blocks of 2×2, solved in the order [θ3, θ4], [θ5, θ6]."
+    );
+    let watt: Vec<_> = WattSixBar::PSI_U_BLOCKS.blocks().collect();
+    assert_eq!(
+        watt,
+        [(&[0, 1][..], &[0, 1][..]), (&[2, 3][..], &[2, 3][..])]
     );
     let stephenson = same_blocks::<_, 4, 1, 11>(
         &STEPHENSON_THREE,

@@ -165,6 +165,7 @@ fn orders_that_are_no_permutation_are_dense() {
         PsiUBlocks::DENSE
     );
     assert_eq!(PsiUBlocks::new(&[0, 1], &[0, 1], &[1]), PsiUBlocks::DENSE);
+    assert_eq!(PsiUBlocks::new(&[1, 0], &[0, 1], &[2]), PsiUBlocks::DENSE);
     assert_eq!(
         PsiUBlocks::new(&[0, 1], &[0, 1], &[0, 2]),
         PsiUBlocks::DENSE
