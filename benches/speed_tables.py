@@ -25,6 +25,7 @@ WHAT = {
     "CasADi generated C as its users write it (sin/cos per sample)": "predictor, one Newton correction, analogs; `sin` and `cos` per sample",
     "CasADi generated C, sin/cos carried (its own predictor)": "the same kernel on carried sines and cosines",
     "CasADi generated C, sin/cos carried + linkage's lagged predictor and chord step": "linkage's sweep algorithm in a bare C loop, CasADi's kernel, no checks",
+    "closed form in C, swept: sin/cos carried, sqrt, 2 reciprocals, angles followed by series": "the four-bar's closed form tuned by hand: L² from cos θ2, `sqrt`, one reciprocal of L and one of sin(θ3 − θ4), θ3 and θ4 followed by a division-free series, 16 samples side by side",
     "CasADi SX mapaccum in its VM": "the step function iterated in CasADi's virtual machine",
     "SymPy lambdify + NumPy Newton in a Python loop": "lambdified Ψ, Ψ_u, γ; Newton in Python",
 }
