@@ -157,7 +157,9 @@ const fn parity(order: &[usize]) -> Option<bool> {
 }
 
 /// `a` (Ψ_u) inverted block by block in the order of `blocks`: [`invert`]
-/// itself for one block or blocks of another size. As [`invert`] does, a
+/// itself for one block, blocks of another size, or a matrix that is not
+/// block lower triangular in their order (checked: every entry of a
+/// block's equations beyond its own coordinates must be zero). As [`invert`] does, a
 /// matrix at an extreme scale is scaled by a power of two first, exactly,
 /// and `rcond` is 0 (the inverse meaningless) when a diagonal block is
 /// singular or the inverse is not finite.
@@ -170,10 +172,12 @@ pub fn invert_in_blocks<const M: usize>(
     }
     let (scale, ordinary) = scale_of(a);
     if ordinary || !(scale > 0.0 && scale.is_finite()) {
-        return in_blocks_at_scale(a, blocks);
+        return in_blocks_at_scale(a, blocks).unwrap_or_else(|| invert(a));
     }
     let (p, reciprocal) = power_of_two_and_reciprocal(scale);
-    let inner = in_blocks_at_scale(&(a * reciprocal), blocks);
+    let Some(inner) = in_blocks_at_scale(&(a * reciprocal), blocks) else {
+        return invert(a);
+    };
     Inverse {
         inverse: inner.inverse * reciprocal,
         rcond: inner.rcond,
@@ -196,10 +200,14 @@ pub(crate) fn factor<const M: usize>(
     Ok(inv)
 }
 
+/// [`invert_in_blocks`] at an ordinary scale; `None` if `a` is not block
+/// lower triangular in the order of `blocks` (an entry of a block's
+/// equations outside its own and the earlier blocks' coordinates is not
+/// zero: blocks that are not this matrix's), which is then inverted whole.
 fn in_blocks_at_scale<const M: usize>(
     a: &SMatrix<f64, M, M>,
     blocks: PsiUBlocks<'_>,
-) -> Inverse<M> {
+) -> Option<Inverse<M>> {
     let singular = |det: f64| Inverse {
         inverse: SMatrix::zeros(),
         rcond: 0.0,
@@ -214,14 +222,21 @@ fn in_blocks_at_scale<const M: usize>(
     let mut couplings = [(0_usize, 0_usize, 0.0_f64); M];
     let mut start = 0;
     for (equations, coordinates) in blocks.blocks() {
-        let (regular, block_det) = invert_diagonal_block(a, equations, coordinates, &mut x);
-        det *= block_det;
-        if !regular {
-            return singular(det);
-        }
         let (earlier_equations, earlier_coordinates) =
             (&blocks.equations[..start], &blocks.coordinates[..start]);
         start += equations.len();
+        let later_coordinates = &blocks.coordinates[start..];
+        for &equation in equations {
+            // (A NaN is not zero either: inverted whole, it is singular.)
+            if later_coordinates.iter().any(|&q| a[(equation, q)] != 0.0) {
+                return None;
+            }
+        }
+        let (regular, block_det) = invert_diagonal_block(a, equations, coordinates, &mut x);
+        det *= block_det;
+        if !regular {
+            return Some(singular(det));
+        }
         if earlier_equations.is_empty() {
             continue;
         }
@@ -256,10 +271,10 @@ fn in_blocks_at_scale<const M: usize>(
         apply_inverse(&mut x, equations, coordinates, earlier_equations);
     }
     if !x.iter().all(|v| v.is_finite()) {
-        return singular(det);
+        return Some(singular(det));
     }
     let norm = equilibrated_norm(a, &x);
-    if norm.is_finite() && norm > 0.0 {
+    Some(if norm.is_finite() && norm > 0.0 {
         Inverse {
             inverse: x,
             rcond: (1.0 / norm).min(1.0),
@@ -267,7 +282,7 @@ fn in_blocks_at_scale<const M: usize>(
         }
     } else {
         singular(det)
-    }
+    })
 }
 
 /// X[coordinates, c] = −D⁻¹ X[coordinates, c] for each column c of

@@ -197,3 +197,23 @@ fn large_blocks_invert_by_elimination() {
     let blocks = PsiUBlocks::new(&[0, 1, 2, 3, 4, 5], &[0, 1, 2, 3, 4, 5], &[1, 6]);
     agrees(&a, blocks);
 }
+
+#[test]
+fn blocks_that_are_not_the_matrixs_invert_it_whole() {
+    let mut numbers = Numbers(5);
+    for _ in 0..50 {
+        let (mut a, equations, coordinates, ends) = random_case::<7>(&mut numbers);
+        let blocks = PsiUBlocks::new(&equations, &coordinates, &ends);
+        // An entry of the first block's equation in the last block's
+        // coordinate: no longer triangular in this order.
+        let (first, _) = blocks.blocks().next().unwrap();
+        let (_, last) = blocks.blocks().last().unwrap();
+        a[(first[0], last[0])] = 0.5;
+        let whole = invert(&a);
+        let by_blocks = invert_in_blocks(&a, blocks);
+        assert_eq!(by_blocks.inverse, whole.inverse);
+        assert_eq!((by_blocks.rcond, by_blocks.det), (whole.rcond, whole.det));
+        let huge = invert_in_blocks(&(a * 2f64.powi(700)), blocks);
+        assert_eq!(huge.rcond, invert(&(a * 2f64.powi(700))).rcond);
+    }
+}
