@@ -159,10 +159,10 @@ const fn parity(order: &[usize]) -> Option<bool> {
 /// `a` (Ψ_u) inverted block by block in the order of `blocks`: [`invert`]
 /// itself for one block, blocks of another size, or a matrix that is not
 /// block lower triangular in their order (checked: every entry of a
-/// block's equations beyond its own coordinates must be zero). As [`invert`] does, a
-/// matrix at an extreme scale is scaled by a power of two first, exactly,
-/// and `rcond` is 0 (the inverse meaningless) when a diagonal block is
-/// singular or the inverse is not finite.
+/// block's equations beyond its own coordinates must be zero). As
+/// [`invert`] does, a matrix at an extreme scale is scaled by a power of
+/// two first, exactly, and `rcond` is 0 (the inverse meaningless) when a
+/// diagonal block is singular or the inverse is not finite.
 pub fn invert_in_blocks<const M: usize>(
     a: &SMatrix<f64, M, M>,
     blocks: PsiUBlocks<'_>,
