@@ -156,10 +156,13 @@ const fn parity(order: &[usize]) -> Option<bool> {
     Some(odd)
 }
 
+/// Up to this size Ψ_u is inverted whole ([`invert_in_blocks`]).
+const SMALL: usize = 4;
+
 /// `a` (Ψ_u) inverted block by block in the order of `blocks`: [`invert`]
-/// itself for one block, blocks of another size, or a matrix that is not
-/// block lower triangular in their order (checked: every entry of a
-/// block's equations beyond its own coordinates must be zero). As
+/// itself up to m = 4, for one block, blocks of another size, or a matrix
+/// that is not block lower triangular in their order (checked: every entry
+/// of a block's equations beyond its own coordinates must be zero). As
 /// [`invert`] does, a matrix at an extreme scale is scaled by a power of
 /// two first, exactly, and `rcond` is 0 (the inverse meaningless) when a
 /// diagonal block is singular or the inverse is not finite.
@@ -167,7 +170,10 @@ pub fn invert_in_blocks<const M: usize>(
     a: &SMatrix<f64, M, M>,
     blocks: PsiUBlocks<'_>,
 ) -> Inverse<M> {
-    if blocks.ends.len() <= 1 || blocks.equations.len() != M {
+    // Up to 4×4 the whole matrix is inverted as before: no faster by
+    // blocks within the noise, and the numbers of the mechanisms of the
+    // accuracy tables (m ≤ 4) stay the very numbers they were.
+    if blocks.ends.len() <= 1 || blocks.equations.len() != M || M <= SMALL {
         return invert(a);
     }
     let (scale, ordinary) = scale_of(a);

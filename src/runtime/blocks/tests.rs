@@ -99,13 +99,32 @@ fn random_block_triangular_matrices_invert_as_whole_ones() {
 
 #[test]
 fn the_determinant_keeps_the_sign_of_the_orders() {
-    // Anti-diagonal 3×3 in three 1×1 blocks: det = −a₀₂·a₁₁·a₂₀.
-    let a = SMatrix::<f64, 3, 3>::new(0.0, 0.0, 2.0, 0.0, 3.0, 1.0, 5.0, 1.0, 1.0);
-    let blocks = PsiUBlocks::new(&[0, 1, 2], &[2, 1, 0], &[1, 2, 3]);
+    // Anti-diagonal 6×6 in six 1×1 blocks, coordinates in reverse (an odd
+    // permutation: 15 inversions), one coupling below: det = −2·3·…·7.
+    let mut a = SMatrix::<f64, 6, 6>::zeros();
+    for i in 0..6 {
+        a[(i, 5 - i)] = (i + 2) as f64;
+    }
+    a[(2, 5)] = 1.0;
+    let blocks = PsiUBlocks::new(
+        &[0, 1, 2, 3, 4, 5],
+        &[5, 4, 3, 2, 1, 0],
+        &[1, 2, 3, 4, 5, 6],
+    );
     let inverse = invert_in_blocks(&a, blocks);
-    assert_eq!(inverse.det, determinant(&a));
-    assert_eq!(inverse.det, -30.0);
+    assert_eq!(inverse.det, -5040.0);
+    assert!((determinant(&a) + 5040.0).abs() < 1e-9);
     agrees(&a, blocks);
+}
+
+#[test]
+fn small_matrices_are_inverted_whole() {
+    let mut numbers = Numbers(13);
+    let (a, equations, coordinates, ends) = random_case::<4>(&mut numbers);
+    let blocks = PsiUBlocks::new(&equations, &coordinates, &ends);
+    let (by_blocks, whole) = (invert_in_blocks(&a, blocks), invert(&a));
+    assert_eq!(by_blocks.inverse, whole.inverse);
+    assert_eq!((by_blocks.rcond, by_blocks.det), (whole.rcond, whole.det));
 }
 
 #[test]
