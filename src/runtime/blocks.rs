@@ -330,21 +330,18 @@ fn apply_inverse<const M: usize>(
         2 => fixed::<2, M>(x, equations, coordinates, columns),
         3 => fixed::<3, M>(x, equations, coordinates, columns),
         k => {
-            let inverse: Vec<f64> = (0..k * k)
-                .map(|i| x[(coordinates[i / k], equations[i % k])])
-                .collect();
-            let mut t = vec![0.0; k];
+            // D⁻¹ read in place (its columns are not the earlier ones).
+            let mut t = nalgebra::SVector::<f64, M>::zeros();
             for &c in columns {
-                let column = &mut x.as_mut_slice()[c * M..(c + 1) * M];
                 for (value, &row) in t.iter_mut().zip(coordinates) {
-                    *value = column[row];
+                    *value = x[(row, c)];
                 }
-                for (s, &row) in coordinates.iter().enumerate() {
+                for &row in coordinates {
                     let mut sum = 0.0;
-                    for (d, value) in inverse[s * k..(s + 1) * k].iter().zip(&t) {
-                        sum += d * value;
+                    for (&equation, value) in equations.iter().zip(&t.as_slice()[..k]) {
+                        sum += x[(row, equation)] * value;
                     }
-                    column[row] = -sum;
+                    x[(row, c)] = -sum;
                 }
             }
         }
@@ -386,13 +383,24 @@ fn invert_diagonal_block<const M: usize>(
         2 => small::<2, M>(a, equations, coordinates, x),
         3 => small::<3, M>(a, equations, coordinates, x),
         k => {
-            let mut work: Vec<f64> = (0..k * k)
-                .map(|i| a[(equations[i / k], coordinates[i % k])])
-                .collect();
-            let (inverse, det) = gauss_jordan_rows(&mut work, k);
-            let Some(inverse) = inverse else {
-                return (false, det);
+            // On the stack up to 8×8; a larger block is dense work that a
+            // heap allocation does not weigh on.
+            let (mut small_work, mut small_inverse) = ([0.0; 64], [0.0; 64]);
+            let (mut large_work, mut large_inverse) = (Vec::new(), Vec::new());
+            let (work, inverse) = if k * k <= 64 {
+                (&mut small_work[..k * k], &mut small_inverse[..k * k])
+            } else {
+                large_work.resize(k * k, 0.0);
+                large_inverse.resize(k * k, 0.0);
+                (&mut large_work[..], &mut large_inverse[..])
             };
+            for (i, w) in work.iter_mut().enumerate() {
+                *w = a[(equations[i / k], coordinates[i % k])];
+            }
+            let (regular, det) = gauss_jordan_rows(work, inverse, k);
+            if !regular {
+                return (false, det);
+            }
             for (s, &row) in coordinates.iter().enumerate() {
                 for (t, &c) in equations.iter().enumerate() {
                     x[(row, c)] = inverse[s * k + t];
@@ -403,11 +411,12 @@ fn invert_diagonal_block<const M: usize>(
     }
 }
 
-/// The inverse of the k×k matrix `work` (row by row) and its determinant,
-/// by Gauss–Jordan elimination with partial pivoting; no inverse (and det
-/// 0, or NaN) on a zero or non-finite pivot. `work` is spent.
-fn gauss_jordan_rows(work: &mut [f64], k: usize) -> (Option<Vec<f64>>, f64) {
-    let mut inverse = vec![0.0; k * k];
+/// The inverse of the k×k matrix `work` (row by row) into `inverse`, and
+/// its determinant, by Gauss–Jordan elimination with partial pivoting;
+/// false (and det 0, or NaN) on a zero or non-finite pivot. `work` is
+/// spent.
+fn gauss_jordan_rows(work: &mut [f64], inverse: &mut [f64], k: usize) -> (bool, f64) {
+    inverse.fill(0.0);
     for i in 0..k {
         inverse[i * k + i] = 1.0;
     }
@@ -418,7 +427,7 @@ fn gauss_jordan_rows(work: &mut [f64], k: usize) -> (Option<Vec<f64>>, f64) {
             .unwrap_or(col);
         let p = work[pivot * k + col];
         if p == 0.0 || !p.is_finite() {
-            return (None, if p == 0.0 { 0.0 } else { f64::NAN });
+            return (false, if p == 0.0 { 0.0 } else { f64::NAN });
         }
         if pivot != col {
             for j in 0..k {
@@ -443,7 +452,7 @@ fn gauss_jordan_rows(work: &mut [f64], k: usize) -> (Option<Vec<f64>>, f64) {
             }
         }
     }
-    (Some(inverse), det)
+    (true, det)
 }
 
 #[cfg(test)]
