@@ -1,12 +1,16 @@
 //! Chains of N four-bar loops, the benchmarks' mechanism that grows: the
 //! crank of loop k keyed to the rocker of loop k − 1 at the angle `delta`,
 //! its ground pivots shifted along x, a coupler point per loop; m = 2N.
-//! `chain_text` writes one as the attribute's text (as
-//! `linkage-macros/examples/expansion_cost.rs` does), and the files beside
+//! `chain_text` writes one as the attribute's text, and the files beside
 //! this one are the chains of 1, 2, 4, 8, 16 and 32 loops written out as a
 //! user writes a mechanism; [`check_compiled`] holds each to the text.
 
 use linkage::prelude::*;
+
+// The mechanisms of the macro's cost examples; the chain is the one used here.
+#[allow(dead_code)]
+#[path = "../../linkage-macros/examples/common/cases.rs"]
+mod cases;
 
 /// Every loop the worksheet's crank-rocker, its coupler point 30 from B at
 /// 0.5 rad, each crank keyed 0.3 rad past the previous rocker.
@@ -47,36 +51,11 @@ macro_rules! chain {
     };
 }
 
-/// N four-bar loops in a chain, as the attribute's text. m = 2N.
+/// N four-bar loops in a chain, as the attribute's text: the chain whose
+/// expansion cost `linkage-macros/examples/expansion_cost.rs` measures.
+/// m = 2N.
 pub fn chain_text(n: usize) -> String {
-    let mut u = Vec::new();
-    let mut points = Vec::new();
-    let mut closure = Vec::new();
-    for k in 1..=n {
-        u.push(format!("a{k}"));
-        u.push(format!("b{k}"));
-        let crank = if k == 1 {
-            "t".to_owned()
-        } else {
-            format!("(b{} + delta)", k - 1)
-        };
-        let x0 = format!("{}.0 * l1", k - 1);
-        points.push(format!(
-            "P{k} = ({x0} + l2 * {crank}.cos() + e * (a{k} + beta).cos(), l2 * {crank}.sin() + e * (a{k} + beta).sin())"
-        ));
-        closure.push(format!(
-            "l2 * {crank}.cos() + l3 * a{k}.cos() + l4 * b{k}.cos() - l1"
-        ));
-        closure.push(format!(
-            "l2 * {crank}.sin() + l3 * a{k}.sin() + l4 * b{k}.sin()"
-        ));
-    }
-    format!(
-        "u = [{}], v = [t], points = [{}], closure = [{}]",
-        u.join(", "),
-        points.join(", "),
-        closure.join(", ")
-    )
+    cases::chain(n).attr
 }
 
 /// The text inside `#[...linkage(` … `)]` of the struct `name` in `source`.
