@@ -161,13 +161,7 @@ int main(int argc, char **argv) {
     sink += revolution(u0, lagged, NULL, NULL);
     times[r] = (now() - t0) / N;
   }
-  FILE *f = fopen(argv[2], "w");
-  if (!f) return 1;
-  for (long i = 0; i < N / STRIDE; i++) {
-    double *o = out + 7 * i;
-    fprintf(f, "%.0f,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", o[0], o[1], o[2], o[3], o[4], o[5], o[6]);
-  }
-  fclose(f);
+  if (write_analogs(argv[2], out)) return 1;
   printf("%.3f %g\n", median7(times), sink);
   /* The carried sines and cosines within about an ulp of sin and cos over
    * the whole revolution (as linkage's own test of its carrier asks). */

@@ -207,13 +207,7 @@ int main(int argc, char **argv) {
     sink += revolution(NULL, NULL);
     times[r] = (now() - t0) / N;
   }
-  FILE *f = fopen(argv[1], "w");
-  if (!f) return 1;
-  for (long i = 0; i < N / STRIDE; i++) {
-    double *o = out + 7 * i;
-    fprintf(f, "%.0f,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", o[0], o[1], o[2], o[3], o[4], o[5], o[6]);
-  }
-  fclose(f);
+  if (write_analogs(argv[1], out)) return 1;
   printf("%.3f %g\n", median7(times), sink);
   fprintf(stderr, "closed form: carried sin/cos worst absolute error %.2e, followed angles %.2e from atan2\n",
           check.trig, check.angle);

@@ -256,13 +256,7 @@ int main(int argc, char **argv) {
     additions[r] = addition_ns(20 * N);
   }
   double pose_ns = median7(pose), chain_ns = median7(links), ghz = 3.0 / median7(additions);
-  FILE *f = fopen(argv[1], "w");
-  if (!f) return 1;
-  for (long i = 0; i < N / STRIDE; i++) {
-    double *o = out + 7 * i;
-    fprintf(f, "%.0f,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", o[0], o[1], o[2], o[3], o[4], o[5], o[6]);
-  }
-  fclose(f);
+  if (write_analogs(argv[1], out)) return 1;
   printf("%.3f %.3f %.3f\n", pose_ns, chain_ns, ghz);
   fprintf(stderr, "floor: the pose loop %.2f ns (%.1f cycles), the chain alone %.2f ns (%.1f cycles) per pose at %.2f GHz%s\n",
           pose_ns, pose_ns * ghz, chain_ns, chain_ns * ghz, ghz, sink == 1.2345 ? "!" : "");
