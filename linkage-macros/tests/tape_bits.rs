@@ -372,7 +372,7 @@ macro_rules! mechanism {
                 for (&(i, _), &value) in tape.parts(1)[0].entries.iter().zip(&second) {
                     gamma[i] = value;
                 }
-                let uddot = -(k.inverse * (k.psi_v * vddot + gamma));
+                let uddot = -k.factors.solve(&(k.psi_v * vddot + gamma));
                 for i in 0..$m {
                     prop_assert!(
                         same_bits(uddot[i], k.uddot[i]),

@@ -25,15 +25,22 @@ pub struct Block {
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Blocks {
     blocks: Vec<Block>,
+    /// For each block, the first position in the solve order of the
+    /// coordinates (the block's own start if it involves none before it)
+    /// that its equations involve: everything Ψ_u has in the block's rows
+    /// lies between it and the block's end.
+    reach: Vec<usize>,
 }
 
 /// [`Blocks::order`]: the blocks' equations and coordinates in solve order,
-/// and the end of each block in both.
+/// the end of each block in both, and where each block's reach begins
+/// (the first position of a coordinate its equations involve).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct BlockOrder {
     pub equations: Vec<usize>,
     pub coordinates: Vec<usize>,
     pub ends: Vec<usize>,
+    pub reach: Vec<usize>,
 }
 
 /// A maximum matching of equations (rows) to coordinates (columns): for
@@ -103,7 +110,7 @@ impl Blocks {
         let components = strongly_connected(m, depends);
         // Tarjan's algorithm finishes a component after every component it
         // depends on: its order is the solve order.
-        let blocks = components
+        let blocks: Vec<Block> = components
             .into_iter()
             .map(|mut coordinates| {
                 coordinates.sort_unstable();
@@ -115,7 +122,24 @@ impl Blocks {
                 }
             })
             .collect();
-        Blocks { blocks }
+        let mut position = vec![0; m];
+        for (p, &k) in blocks.iter().flat_map(|b| &b.coordinates).enumerate() {
+            position[k] = p;
+        }
+        let mut start = 0;
+        let reach = (blocks.iter())
+            .map(|block| {
+                let first = (block.equations.iter())
+                    .flat_map(|&e| (0..m).filter(move |&k| incidence[e][k]))
+                    .map(|k| position[k])
+                    .min()
+                    .unwrap_or(start)
+                    .min(start);
+                start += block.coordinates.len();
+                first
+            })
+            .collect();
+        Blocks { blocks, reach }
     }
 
     /// The blocks, in the order they are solved.
@@ -133,6 +157,7 @@ impl Blocks {
             order.coordinates.extend(&block.coordinates);
             order.ends.push(order.equations.len());
         }
+        order.reach.clone_from(&self.reach);
         order
     }
 
@@ -265,9 +290,20 @@ mod tests {
 
     /// Every block's equations involve only its coordinates and those of
     /// the blocks before it; the blocks partition the equations and the
-    /// coordinates.
+    /// coordinates; each block's reach is the first position in the solve
+    /// order of a coordinate its equations involve.
     fn lower_triangular(incidence: &[Vec<bool>], blocks: &Blocks) -> bool {
         let m = incidence.len();
+        let order = blocks.order();
+        let mut start = 0;
+        for (b, block) in blocks.blocks().iter().enumerate() {
+            let first = (order.coordinates.iter())
+                .position(|&k| block.equations.iter().any(|&e| incidence[e][k]));
+            if Some(order.reach[b]) != first.map(|p| p.min(start)) {
+                return false;
+            }
+            start += block.coordinates.len();
+        }
         let mut solved = vec![false; m];
         let mut equations = vec![false; m];
         for block in blocks.blocks() {
@@ -319,6 +355,7 @@ mod tests {
             "Ψ_u is block lower triangular: 3 blocks of 2×2"
         );
         assert!(lower_triangular(&incidence, &blocks));
+        assert_eq!(blocks.order().reach, [0, 0, 2]);
         assert_eq!(blocks.blocks()[0].coordinates, [4, 5]);
         assert_eq!(blocks.blocks()[2].coordinates, [0, 1]);
         assert_eq!(
@@ -338,6 +375,7 @@ mod tests {
             "Ψ_u is block lower triangular: 3 blocks: 1×1, 2×2, 1×1"
         );
         assert!(lower_triangular(&incidence, &blocks));
+        assert_eq!(blocks.order().reach, [0, 0, 2]);
     }
 
     #[test]

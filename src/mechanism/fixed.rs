@@ -12,9 +12,7 @@ use crate::mechanism::point_set::PointSet;
 use crate::mechanism::program::Program;
 use crate::mechanism::scratch::{self, LANES};
 use crate::mechanism::sensitive::Columns;
-use crate::runtime::{
-    FusedRequest, Inverse, Kernels, Kinematics, Linkage, PsiUBlocks, invert_in_blocks,
-};
+use crate::runtime::{Factors, FusedRequest, Kernels, Kinematics, Linkage, PsiUBlocks};
 use linkage_symbolic::plan::{Formula, Kernel};
 use linkage_symbolic::tape::{Input, Registers};
 use nalgebra::{SMatrix, SVector, Vector2};
@@ -243,23 +241,20 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
             let psi: SVector<f64, M> = kernel.block(registers, 0, kernel.start(0, 0), 0);
             let psi_u: SMatrix<f64, M, M> = kernel.block(registers, 0, kernel.start(0, 1), 0);
             let psi_v: SMatrix<f64, M, F> = kernel.block(registers, 0, kernel.start(0, 2), 0);
-            let Inverse {
-                inverse,
-                rcond,
-                det,
-            } = invert_in_blocks(&psi_u, self.psi_u_blocks());
-            let udot = -(inverse * (psi_v * vdot));
+            let factors = Factors::of(&psi_u, self.psi_u_blocks());
+            let (rcond, det) = (factors.rcond(), factors.det());
+            let udot = -factors.solve(&(psi_v * vdot));
             set(registers, Input::Udot, udot.as_slice());
             let gamma: SVector<f64, M> = match kernel.run(1, registers) {
                 Ok(()) => kernel.block(registers, 1, kernel.start(1, 0), 0),
                 Err(_) => SVector::repeat(f64::NAN),
             };
-            let uddot = -(inverse * (psi_v * vddot + gamma));
+            let uddot = -factors.solve(&(psi_v * vddot + gamma));
             Kinematics {
                 psi,
                 psi_u,
                 psi_v,
-                inverse,
+                factors,
                 rcond,
                 det,
                 udot,
@@ -340,31 +335,27 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
                 let psi: SVector<f64, M> = kernel.block(registers, 0, kernel.start(0, 0), l);
                 let psi_u: SMatrix<f64, M, M> = kernel.block(registers, 0, kernel.start(0, 1), l);
                 let psi_v: SMatrix<f64, M, F> = kernel.block(registers, 0, kernel.start(0, 2), l);
-                let inverse = invert_in_blocks(&psi_u, r.model.psi_u_blocks());
-                let udot = -(inverse.inverse * (psi_v * r.vdot));
+                let factors = Factors::of(&psi_u, r.model.psi_u_blocks());
+                let udot = -factors.solve(&(psi_v * r.vdot));
                 set_lane(registers, Input::Udot, l, udot.as_slice());
-                *slot = Some((psi, psi_u, psi_v, inverse, udot));
+                *slot = Some((psi, psi_u, psi_v, factors, udot));
             }
             let gammas = kernel.run(1, registers).is_ok();
             for (l, slot) in solved.into_iter().enumerate().take(run.len()) {
-                let Some((psi, psi_u, psi_v, inverse, udot)) = slot else {
+                let Some((psi, psi_u, psi_v, factors, udot)) = slot else {
                     continue;
                 };
                 let gamma: SVector<f64, M> = match gammas {
                     true => kernel.block(registers, 1, kernel.start(1, 0), l),
                     false => SVector::repeat(f64::NAN),
                 };
-                let Inverse {
-                    inverse,
-                    rcond,
-                    det,
-                } = inverse;
-                let uddot = -(inverse * (psi_v * run[l].vddot + gamma));
+                let (rcond, det) = (factors.rcond(), factors.det());
+                let uddot = -factors.solve(&(psi_v * run[l].vddot + gamma));
                 let kinematics = Kinematics {
                     psi,
                     psi_u,
                     psi_v,
-                    inverse,
+                    factors,
                     rcond,
                     det,
                     udot,
@@ -383,7 +374,7 @@ fn unevaluated<const M: usize, const F: usize>() -> Kinematics<M, F> {
         psi: SVector::repeat(f64::NAN),
         psi_u: SMatrix::repeat(f64::NAN),
         psi_v: SMatrix::repeat(f64::NAN),
-        inverse: SMatrix::repeat(f64::NAN),
+        factors: Factors::whole(&SMatrix::repeat(f64::NAN)),
         rcond: f64::NAN,
         det: f64::NAN,
         udot: SVector::repeat(f64::NAN),

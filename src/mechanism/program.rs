@@ -154,7 +154,7 @@ impl Program {
             blocks: derivatives.blocks.clone(),
             psi_u_blocks: {
                 let order = derivatives.blocks.order();
-                PsiUBlocksBuf::new(order.equations, order.coordinates, order.ends)
+                PsiUBlocksBuf::new(order.equations, order.coordinates, order.ends, order.reach)
             },
         };
         for (kernel, names) in READ_IN_ORDER {

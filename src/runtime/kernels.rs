@@ -43,8 +43,10 @@ pub trait Kernels<const M: usize, const F: usize> {
 
     /// Ψ_u's diagonal blocks in the order they are solved: the generated
     /// constant `PSI_U_BLOCKS` where Ψ_u is block lower triangular, one
-    /// dense block (the default) where it is not. The analyses invert Ψ_u
-    /// block by block in this order ([`invert_in_blocks`](crate::runtime::invert_in_blocks)).
+    /// dense block (the default) where it is not. The analyses factor and
+    /// solve with Ψ_u block by block in this order
+    /// ([`Factors::of`](crate::runtime::Factors::of)), which must be Ψ_u's
+    /// structure: entries outside the blocks' reach are never read.
     fn psi_u_blocks(&self) -> PsiUBlocks<'_> {
         PsiUBlocks::DENSE
     }

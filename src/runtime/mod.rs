@@ -14,7 +14,8 @@
 //   powers_of_two  exact scale factors
 //   options   the solvers' settings
 //   linalg    small matrices: inversion, factorisation, conditioning
-//   blocks    Ψ_u inverted block by block in its block triangular order
+//   blocks    the structure of Ψ_u: its block triangular order
+//   factors   Ψ_u factored for solving, block by block in that order
 //   checks    finite inputs and outputs, numbers in the normal range
 //   trig      sines and cosines carried from pose to pose
 //   results   what the analyses return
@@ -33,6 +34,7 @@
 mod blocks;
 mod checks;
 mod error;
+mod factors;
 mod kernels;
 mod linalg;
 mod linkage;
@@ -47,9 +49,10 @@ mod sweep;
 mod symbolic;
 mod trig;
 
+pub use blocks::PsiUBlocks;
 pub(crate) use blocks::PsiUBlocksBuf;
-pub use blocks::{PsiUBlocks, invert_in_blocks};
 pub use error::{Error, Stage};
+pub use factors::Factors;
 pub use kernels::{FusedRequest, Kernels};
 pub use linalg::{Inverse, determinant, invert, scaled_svd};
 pub use linkage::Linkage;

@@ -10,9 +10,9 @@
 //! vector of Ψ_u; at a minimum the mechanism cannot be assembled, and the
 //! error says how far it is from closing.
 
-use crate::runtime::blocks::factor;
 use crate::runtime::checks::{check_input, check_value};
 use crate::runtime::error::{Error, Stage};
+use crate::runtime::factors::factor;
 use crate::runtime::kernels::Kernels;
 use crate::runtime::linalg::invert;
 use crate::runtime::options::Options;
@@ -105,8 +105,8 @@ pub(crate) fn solve<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
                 }
             }
         } else {
-            let inv = factor(&psi_u, model.psi_u_blocks(), Stage::Position, options)?;
-            -(inv.inverse * psi)
+            let factors = factor(&psi_u, model.psi_u_blocks(), Stage::Position, options)?;
+            -factors.solve(&psi)
         };
         u += delta;
         step = delta.amax();
@@ -322,7 +322,7 @@ impl<const M: usize, const F: usize> FusedNewton<M, F> {
         }
         self.iteration += 1;
         options.require_accuracy(Stage::Position, k.rcond)?;
-        let delta = -(k.inverse * k.psi);
+        let delta = -k.factors.solve(&k.psi);
         self.u += delta;
         self.step = delta.amax();
         check_value(Stage::Position, "u", self.u.as_slice())?;

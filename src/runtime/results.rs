@@ -1,6 +1,7 @@
 //! What the analyses return: a pose, a Newton iterate, velocities, the
 //! one-pass kinematics, and the whole analysis of a pose.
 
+use crate::runtime::factors::Factors;
 use crate::runtime::trig::PoseTrig;
 use nalgebra::{SMatrix, SVector};
 
@@ -48,9 +49,12 @@ pub struct Kinematics<const M: usize, const F: usize> {
     pub psi: SVector<f64, M>,
     pub psi_u: SMatrix<f64, M, M>,
     pub psi_v: SMatrix<f64, M, F>,
-    /// Ψ_u⁻¹ (meaningless if `rcond` is 0).
-    pub inverse: SMatrix<f64, M, M>,
-    /// The column-equilibrated reciprocal condition number of Ψ_u.
+    /// Ψ_u factored for solving with it, by its diagonal blocks where it
+    /// has more than one, with no explicit inverse (meaningless if `rcond`
+    /// is 0).
+    pub factors: Factors<M>,
+    /// The column-equilibrated reciprocal condition number of Ψ_u
+    /// ([`Factors::rcond`]).
     pub rcond: f64,
     /// det Ψ_u
     pub det: f64,

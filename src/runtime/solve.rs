@@ -3,9 +3,9 @@
 //! or overflows), the fused one-pass kernel where it serves, and the
 //! conditioning each needs to keep [`Options::accuracy`].
 
-use crate::runtime::blocks::{factor, invert_in_blocks};
 use crate::runtime::checks::{check_input, check_result, check_scale, check_value};
 use crate::runtime::error::{Error, Stage};
+use crate::runtime::factors::{Factors, factor};
 use crate::runtime::kernels::{FusedRequest, Kernels};
 use crate::runtime::linalg::augmented_condition;
 use crate::runtime::newton::Progress;
@@ -284,8 +284,8 @@ fn velocity_with<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
     let psi_v = sources::psi_v(model, options.jacobian, u, v);
     check_value(Stage::Velocity, "Ψ_v", psi_v.as_slice())?;
     check_scale(Stage::Velocity, psi_u, &psi_v)?;
-    let inv = factor(psi_u, model.psi_u_blocks(), Stage::Velocity, options)?;
-    let ratios = inv.inverse * psi_v;
+    let factors = factor(psi_u, model.psi_u_blocks(), Stage::Velocity, options)?;
+    let ratios = factors.solve_columns(&psi_v);
     let udot = -(ratios * vdot);
     check_value(Stage::Velocity, "u̇", udot.as_slice())?;
     // The size of the terms of u̇ = −R v̇, ‖R‖·|v̇| (as log₂, which cannot
@@ -299,7 +299,7 @@ fn velocity_with<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
     Ok(Velocity {
         udot,
         ratios,
-        rcond: inv.rcond,
+        rcond: factors.rcond(),
     })
 }
 
@@ -341,7 +341,7 @@ fn fused_kinematics<const M: usize, const F: usize>(
     }
     let velocity = Velocity {
         udot: k.udot,
-        ratios: k.inverse * k.psi_v,
+        ratios: k.factors.solve_columns(&k.psi_v),
         rcond: k.rcond,
     };
     Ok(Some((velocity, k.uddot)))
@@ -358,11 +358,11 @@ fn acceleration_with<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
     vddot: &SVector<f64, F>,
     options: &Options,
 ) -> Result<SVector<f64, M>, Error> {
-    let inv = invert_in_blocks(psi_u, model.psi_u_blocks());
+    let factors = Factors::of(psi_u, model.psi_u_blocks());
     let psi_v = sources::psi_v(model, options.jacobian, u, v);
     check_value(Stage::Acceleration, "Ψ_v", psi_v.as_slice())?;
     check_scale(Stage::Acceleration, psi_u, &psi_v)?;
-    acceleration_conditioning(psi_u, &psi_v, inv.rcond, options)?;
+    acceleration_conditioning(psi_u, &psi_v, factors.rcond(), options)?;
     // ü = −Ψ_u⁻¹Ψ_v v̈ − Ψ_u⁻¹γ, each part computed at unit scale and
     // scaled back by powers of two (exact): γ is quadratic in the
     // velocities, γ(q̇) = s²·γ(q̇/s), and the v̈ part linear in v̈, so that
@@ -376,8 +376,8 @@ fn acceleration_with<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
     let gamma_unit = sources::gamma(model, options.jacobian, generated, u, v, &udot, &vdot);
     check_value(Stage::Acceleration, "γ", gamma_unit.as_slice())?;
     let t = power_of_two_near(vddot.amax());
-    let from_gamma = inv.inverse * gamma_unit;
-    let from_vddot = inv.inverse * (psi_v * (vddot / t));
+    let from_gamma = factors.solve(&gamma_unit);
+    let from_vddot = factors.solve(&(psi_v * (vddot / t)));
     check_value(Stage::Acceleration, "ü", from_gamma.as_slice())?;
     check_value(Stage::Acceleration, "ü", from_vddot.as_slice())?;
     // The size of the terms ü is made of, as log₂ (no underflow): ‖Ψ_u⁻¹‖
@@ -386,7 +386,7 @@ fn acceleration_with<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
     // may cancel (a rhombus's do, exactly), and ü with them, to far less
     // than the precision they leave; what must be a normal number is the
     // scale of that precision.
-    let inverse_log2 = inv.inverse.amax().log2();
+    let inverse_log2 = factors.inverse_size().log2();
     let vddot_terms = if from_vddot.amax() > 0.0 {
         inverse_log2 + psi_v.amax().log2() + vddot.amax().log2()
     } else {

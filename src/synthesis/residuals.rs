@@ -6,7 +6,7 @@
 
 use super::problem::{Problem, Task};
 use crate::least_squares::Evaluation;
-use crate::runtime::{Linkage, Options, Sensitivities, invert_in_blocks};
+use crate::runtime::{Factors, Linkage, Options, Sensitivities};
 use nalgebra::{DMatrix, DVector, SVector};
 use std::f64::consts::TAU;
 
@@ -25,7 +25,7 @@ pub(crate) fn branch<L: Linkage<M, 1>, const M: usize>(
     u: &SVector<f64, M>,
     v: f64,
 ) -> bool {
-    invert_in_blocks(&model.psi_u(u, &SVector::from([v])), model.psi_u_blocks()).det > 0.0
+    Factors::of(&model.psi_u(u, &SVector::from([v])), model.psi_u_blocks()).det() > 0.0
 }
 
 /// Evaluates the problem's residuals and Jacobian at the unknowns `x`,

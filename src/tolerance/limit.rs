@@ -27,7 +27,7 @@
 
 use super::{Spread, Tolerances, distance, gradient, with_gradient};
 use crate::numerics::minimize;
-use crate::runtime::{Options, Sensitivities, Sweep, determinant, invert_in_blocks};
+use crate::runtime::{Factors, Options, Sensitivities, Sweep, determinant};
 use nalgebra::{ComplexField, DMatrix, SMatrix, SVector};
 use num_dual::{Dual, DualNum, DualSVec64};
 
@@ -251,8 +251,8 @@ pub(super) fn position_sensitivity<L, const M: usize, const F: usize, const K: u
 where
     L: Sensitivities<M, F, K>,
 {
-    let inverse = invert_in_blocks(&model.psi_u(u, v), model.psi_u_blocks());
-    (inverse.rcond > 0.0).then(|| -(inverse.inverse * model.psi_p(u, v)))
+    let factors = Factors::of(&model.psi_u(u, v), model.psi_u_blocks());
+    (factors.rcond() > 0.0).then(|| -factors.solve_columns(&model.psi_p(u, v)))
 }
 
 /// The parameters p and the pose u on dual numbers carrying their

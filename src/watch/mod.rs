@@ -49,7 +49,7 @@ pub use path::PathPose;
 use crate::error::UnknownName;
 use crate::numerics::root;
 use crate::quantity::{Names, Quantity, Resolved};
-use crate::runtime::{Error, Linkage, Options, Stage, Sweep, invert_in_blocks};
+use crate::runtime::{Error, Factors, Linkage, Options, Stage, Sweep};
 use nalgebra::SVector;
 use num_dual::Dual64;
 
@@ -285,15 +285,15 @@ fn node<L: Linkage<M, F>, const M: usize, const F: usize>(
     options: &Options,
 ) -> Result<Node<M, F>, WatchError> {
     let psi_u = model.psi_u(u, v);
-    let inverse = invert_in_blocks(&psi_u, model.psi_u_blocks());
-    if !options.keeps_accuracy(Stage::Acceleration, inverse.rcond) {
+    let factors = Factors::of(&psi_u, model.psi_u_blocks());
+    if !options.keeps_accuracy(Stage::Acceleration, factors.rcond()) {
         return Err(WatchError::Kinematics(Error::Singular {
             stage: Stage::Acceleration,
-            rcond: inverse.rcond,
+            rcond: factors.rcond(),
             min_rcond: options.min_rcond(Stage::Acceleration),
         }));
     }
-    let pose = path::path_pose(model, u, v, direction, speed, &inverse.inverse);
+    let pose = path::path_pose(model, u, v, direction, speed, &factors);
     if !path::is_finite(&pose) {
         return Err(WatchError::NonFinite {
             watch: "the pose's path derivatives".into(),
@@ -306,7 +306,7 @@ fn node<L: Linkage<M, F>, const M: usize, const F: usize>(
         v: *v,
         direction: *direction,
         speed,
-        det: inverse.det,
+        det: factors.det(),
     })
 }
 

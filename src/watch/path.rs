@@ -10,8 +10,8 @@
 //! `psi_generic` give u′, u″, u‴, exact to rounding for any mechanism.
 
 use crate::quantity::Pose;
-use crate::runtime::Linkage;
-use nalgebra::{SMatrix, SVector, Vector2};
+use crate::runtime::{Factors, Linkage};
+use nalgebra::{SVector, Vector2};
 use num_dual::{Dual3_64, Dual64};
 
 /// One pose of a drive at constant driver speed σ, each number with its
@@ -45,8 +45,8 @@ pub(super) fn is_finite<const M: usize, const F: usize>(pose: &PathPose<M, F>) -
         .all(|x| x.re.is_finite() && x.eps.is_finite())
 }
 
-/// The pose (u, v) of `model`, a solution of Ψ = 0 with Ψ_u⁻¹ =
-/// `inverse`, moving along the unit driver direction `direction` at
+/// The pose (u, v) of `model`, a solution of Ψ = 0 with Ψ_u factored in
+/// `factors`, moving along the unit driver direction `direction` at
 /// `speed`.
 pub(super) fn path_pose<L: Linkage<M, F>, const M: usize, const F: usize>(
     model: &L,
@@ -54,7 +54,7 @@ pub(super) fn path_pose<L: Linkage<M, F>, const M: usize, const F: usize>(
     v: &SVector<f64, F>,
     direction: &SVector<f64, F>,
     speed: f64,
-    inverse: &SMatrix<f64, M, M>,
+    factors: &Factors<M>,
 ) -> PathPose<M, F> {
     let vj = SVector::<Dual3_64, F>::from_fn(|i, _| Dual3_64::new(v[i], direction[i], 0.0, 0.0));
     // d[k] = u⁽ᵏ⁾, the higher ones 0 until computed.
@@ -66,7 +66,7 @@ pub(super) fn path_pose<L: Linkage<M, F>, const M: usize, const F: usize>(
     for k in 1..=3 {
         let residual = model.psi_generic(&jet(&d), &vj);
         let kth = residual.map(|x| [x.v1, x.v2, x.v3][k - 1]);
-        d[k] = -(inverse * kth);
+        d[k] = -factors.solve(&kth);
     }
     let s = speed;
     let dual = |re: f64, eps: f64| Dual64::new(re, eps);

@@ -25,20 +25,21 @@ impl Generator<'_> {
             let v = v.iter().map(|&x| Literal::usize_unsuffixed(x));
             quote!(&[#(#v),*])
         };
-        let (equations, coordinates, ends) = (
+        let (equations, coordinates, ends, reach) = (
             list(&order.equations),
             list(&order.coordinates),
             list(&order.ends),
+            list(&order.reach),
         );
         let name = format_ident!("{}", constants::PSI_U_BLOCKS);
         let doc = format!(
-            " {}. Its blocks' equations and coordinates in solve order, and where each block ends (`Kernels::psi_u_blocks`).",
+            " {}. Its blocks' equations and coordinates in solve order, where each block ends, and where the coordinates its equations involve begin (`Kernels::psi_u_blocks`).",
             blocks
         );
         quote! {
             #[doc = #doc]
             pub const #name: ::linkage::PsiUBlocks<'static> =
-                ::linkage::PsiUBlocks::new(#equations, #coordinates, #ends);
+                ::linkage::PsiUBlocks::new(#equations, #coordinates, #ends, #reach);
         }
     }
 
@@ -51,7 +52,7 @@ impl Generator<'_> {
         let (ml, fl) = (Literal::usize_unsuffixed(m), Literal::usize_unsuffixed(f));
         let plan = Kernel::Kinematics { with_trig }.plan(model);
         let locals = [
-            "psi", "psi_u", "psi_v", "gamma", "inverse", "rcond", "det", "udot", "uddot",
+            "psi", "psi_u", "psi_v", "gamma", "factors", "rcond", "det", "udot", "uddot",
         ];
         let local: Vec<String> = locals.iter().map(|n| self.free_name(n)).collect();
         let trig_names = Plan::trig_names(&self.names);
@@ -59,7 +60,7 @@ impl Generator<'_> {
         let mut reserved = local.clone();
         reserved.extend(trig_names.iter().cloned());
         let phased = plan.emit(self.dag(), &self.names, &reserved, Mode::F64);
-        let [psi, psi_u, psi_v, gamma, inverse, rcond, det, udot, uddot] = locals.map(|n| {
+        let [psi, psi_u, psi_v, gamma, factors, rcond, det, udot, uddot] = locals.map(|n| {
             let k = locals.iter().position(|x| *x == n).unwrap_or(0);
             format_ident!("{}", local[k])
         });
@@ -117,19 +118,11 @@ impl Generator<'_> {
                 quote!(#f: #local)
             }
         };
-        let inverse_pattern = {
-            let (a, b, c) = (
-                field("inverse", &inverse),
-                field("rcond", &rcond),
-                field("det", &det),
-            );
-            quote!(#a, #b, #c)
-        };
         let fields = [
             ("psi", &psi),
             ("psi_u", &psi_u),
             ("psi_v", &psi_v),
-            ("inverse", &inverse),
+            ("factors", &factors),
             ("rcond", &rcond),
             ("det", &det),
             ("udot", &udot),
@@ -137,11 +130,11 @@ impl Generator<'_> {
         ]
         .map(|(name, local)| field(name, local));
         // Block by block where Ψ_u has more than one block.
-        let invert = if model.blocks.is_triangular() {
+        let factor = if model.blocks.is_triangular() {
             let blocks = format_ident!("{}", constants::PSI_U_BLOCKS);
-            quote!(::linkage::invert_in_blocks(&#psi_u, Self::#blocks))
+            quote!(::linkage::Factors::of(&#psi_u, Self::#blocks))
         } else {
-            quote!(::linkage::invert(&#psi_u))
+            quote!(::linkage::Factors::whole(&#psi_u))
         };
         let prologue = &phased.prologue;
         let reads = phased.reads;
@@ -161,12 +154,13 @@ impl Generator<'_> {
             #psi_bind
             #psi_u_bind
             #psi_v_bind
-            let ::linkage::Inverse { #inverse_pattern } = #invert;
-            let #udot = -(#inverse * (#psi_v * vdot));
+            let #factors = #factor;
+            let (#rcond, #det) = (#factors.rcond(), #factors.det());
+            let #udot = -#factors.solve(&(#psi_v * vdot));
             #velocity_bind
             #(#second_statements)*
             #gamma_bind
-            let #uddot = -(#inverse * (#psi_v * vddot + #gamma));
+            let #uddot = -#factors.solve(&(#psi_v * vddot + #gamma));
             ::linkage::Kinematics { #(#fields),* }
         };
         if with_trig {

@@ -520,20 +520,21 @@ const _: () = {
             let mut psi_v = SVector::<f64, 2>::zeros();
             psi_v[0] = -l2_s_theta2;
             psi_v[1] = l2_c_theta2;
-            let ::linkage::Inverse { inverse, rcond, det } = ::linkage::invert(&psi_u);
-            let udot = -(inverse * (psi_v * vdot));
+            let factors = ::linkage::Factors::whole(&psi_u);
+            let (rcond, det) = (factors.rcond(), factors.det());
+            let udot = -factors.solve(&(psi_v * vdot));
             let (theta3_dot, theta4_dot) = (udot[0], udot[1]);
             let mut gamma = SVector::<f64, 2>::zeros();
             gamma[0] = -l3_c_theta3 * theta3_dot.powi(2)
                 - l4_c_theta4 * theta4_dot.powi(2) - l2_c_theta2 * theta2_dot.powi(2);
             gamma[1] = -l3_s_theta3 * theta3_dot.powi(2)
                 - l4_s_theta4 * theta4_dot.powi(2) - l2_s_theta2 * theta2_dot.powi(2);
-            let uddot = -(inverse * (psi_v * vddot + gamma));
+            let uddot = -factors.solve(&(psi_v * vddot + gamma));
             ::linkage::Kinematics {
                 psi,
                 psi_u,
                 psi_v,
-                inverse,
+                factors,
                 rcond,
                 det,
                 udot,
@@ -590,20 +591,21 @@ const _: () = {
             let mut psi_v = SVector::<f64, 2>::zeros();
             psi_v[0] = -l2_s_theta2;
             psi_v[1] = l2_c_theta2;
-            let ::linkage::Inverse { inverse, rcond, det } = ::linkage::invert(&psi_u);
-            let udot = -(inverse * (psi_v * vdot));
+            let factors = ::linkage::Factors::whole(&psi_u);
+            let (rcond, det) = (factors.rcond(), factors.det());
+            let udot = -factors.solve(&(psi_v * vdot));
             let (theta3_dot, theta4_dot) = (udot[0], udot[1]);
             let mut gamma = SVector::<f64, 2>::zeros();
             gamma[0] = -l3_c_theta3 * theta3_dot.powi(2)
                 - l4_c_theta4 * theta4_dot.powi(2) - l2_c_theta2 * theta2_dot.powi(2);
             gamma[1] = -l3_s_theta3 * theta3_dot.powi(2)
                 - l4_s_theta4 * theta4_dot.powi(2) - l2_s_theta2 * theta2_dot.powi(2);
-            let uddot = -(inverse * (psi_v * vddot + gamma));
+            let uddot = -factors.solve(&(psi_v * vddot + gamma));
             ::linkage::Kinematics {
                 psi,
                 psi_u,
                 psi_v,
-                inverse,
+                factors,
                 rcond,
                 det,
                 udot,

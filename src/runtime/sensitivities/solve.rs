@@ -35,9 +35,10 @@
 //! "Measurements behind the code").
 
 use super::results::{Motion, Sensitivity, SensitivityTerms};
-use crate::runtime::blocks::{PsiUBlocks, factor};
+use crate::runtime::blocks::PsiUBlocks;
 use crate::runtime::checks::{all_finite, all_finite_in, check_input, check_value};
 use crate::runtime::error::{Error, Stage};
+use crate::runtime::factors::{Factors, factor};
 use crate::runtime::options::Options;
 use nalgebra::{SMatrix, Vector2};
 
@@ -101,17 +102,17 @@ where
     // them reaches u_p, u̇_p or ü_p (IEEE: ∞·0 is NaN, and Ψ_u's makes the
     // inverse fail), so only a failure scans them, in order, to name the
     // first — the errors of a scan up front, for one pass less.
-    let inv = match factor(&terms.psi_u, blocks, stage, options) {
-        Ok(inv) => inv,
+    let factors = match factor(&terms.psi_u, blocks, stage, options) {
+        Ok(factors) => factors,
         Err(singular) => {
             name_non_finite_term(*terms)?;
             return Err(singular);
         }
     };
-    let (u, udot, uddot) = if M <= 3 {
-        by_products_first(&inv.inverse, terms)
-    } else {
-        in_sequence(&inv.inverse, terms)
+    let (u, udot, uddot) = match factors.whole_inverse() {
+        Some(inverse) if M <= 3 => by_products_first(inverse, terms),
+        Some(inverse) => in_sequence(inverse, terms),
+        None => by_solves(&factors, terms),
     };
     // ü_p alone: a NaN or an infinity in u_p or u̇_p reaches it (column j
     // of ü_p sums B·u_p's and A·u̇_p's column j, or Ψ̈_u·u_p's and
@@ -141,7 +142,7 @@ where
         points: terms.points_p,
         point_velocities: terms.point_velocities_p,
         point_accelerations: terms.point_accelerations_p,
-        rcond: inv.rcond,
+        rcond: factors.rcond(),
     };
     let count = terms.points_p.first().map_or(0, |p| p.as_ref().len());
     let zero = Vector2::zeros();
@@ -220,6 +221,21 @@ fn in_sequence<const M: usize, const K: usize, P>(
         &minus_inverse,
         &(product(&terms.psi_u_ddot, &u) + twice + terms.psi_p_ddot),
     );
+    (u, udot, uddot)
+}
+
+/// u_p, u̇_p, ü_p as [`in_sequence`], each product by Ψ_u⁻¹ a solve with
+/// Ψ_u factored in blocks (no inverse).
+#[inline(always)]
+fn by_solves<const M: usize, const K: usize, P>(
+    factors: &Factors<M>,
+    terms: &SensitivityTerms<M, K, P>,
+) -> (SMatrix<f64, M, K>, SMatrix<f64, M, K>, SMatrix<f64, M, K>) {
+    let u = -factors.solve_columns(&terms.psi_p);
+    let udot = -factors.solve_columns(&(product(&terms.psi_u_dot, &u) + terms.psi_p_dot));
+    let twice = product(&terms.psi_u_dot, &udot) * 2.0;
+    let uddot =
+        -factors.solve_columns(&(product(&terms.psi_u_ddot, &u) + twice + terms.psi_p_ddot));
     (u, udot, uddot)
 }
 

@@ -51,19 +51,16 @@ impl Tips {
         let psi = vector![r * s - s_phi];
         let psi_u = Matrix1::new(r * c);
         let psi_v = Matrix1::new(-c_phi);
-        let crate::runtime::linalg::Inverse {
-            inverse,
-            rcond,
-            det,
-        } = crate::runtime::linalg::invert(&psi_u);
-        let udot = -(inverse * (psi_v * vdot));
+        let factors = crate::runtime::Factors::whole(&psi_u);
+        let (rcond, det) = (factors.rcond(), factors.det());
+        let udot = -factors.solve(&(psi_v * vdot));
         let gamma = vector![-r * s * udot[0].powi(2) + s_phi * vdot[0].powi(2)];
-        let uddot = -(inverse * (psi_v * vddot + gamma));
+        let uddot = -factors.solve(&(psi_v * vddot + gamma));
         Kinematics {
             psi,
             psi_u,
             psi_v,
-            inverse,
+            factors,
             rcond,
             det,
             udot,

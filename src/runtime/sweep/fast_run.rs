@@ -5,10 +5,11 @@ use super::state::{Progress, REGULAR_RCOND, State, Track};
 use super::substep::tangent_continues;
 use super::tracker::{FAST_ACCEPT, Tracker};
 use crate::runtime::error::Error;
+use crate::runtime::factors::Factors;
 use crate::runtime::kernels::Kernels;
 use crate::runtime::results::Kinematics;
 use crate::runtime::trig::TrigCarrier;
-use nalgebra::{SMatrix, SVector};
+use nalgebra::SVector;
 
 /// The most Newton iterations a step of the fast run may take before the
 /// general machinery takes over.
@@ -79,7 +80,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         let (mut state, mut previous) = (at.track.state, at.previous_grid);
         // Ψ_u⁻¹ one step back, once the run has taken a step (`previous` then
         // holds the analogs one step back).
-        let mut lag: Option<SMatrix<f64, M, M>> = None;
+        let mut lag: Option<Factors<M>> = None;
         let mut taken = 0;
         while at.step < steps {
             let index = at.index + stride;
@@ -103,7 +104,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             // steps are coarse.
             let mut x = predicted;
             let mut k = self.evaluate(&x, &v, carries, trig);
-            let mut inverse = lag.unwrap_or(k.inverse);
+            let mut factors = lag.unwrap_or(k.factors);
             let mut iterations = 1;
             let converged = loop {
                 let regular = (k.rcond >= min_rcond)
@@ -112,7 +113,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
                 if !regular {
                     break false;
                 }
-                let newton = inverse * k.psi;
+                let newton = factors.solve(&k.psi);
                 x -= newton;
                 if within(&newton, FAST_ACCEPT * scale) {
                     break within(&k.psi, options.options.residual_tol);
@@ -121,7 +122,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
                     break false;
                 }
                 k = self.evaluate(&x, &v, carries, trig);
-                inverse = k.inverse;
+                factors = k.factors;
                 iterations += 1;
             };
             if !converged {
@@ -165,7 +166,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             // Where one evaluation was not enough (a coarse grid), the next
             // step starts with a fresh inverse and the current analogs: a
             // chord step would only cost another evaluation there.
-            lag = (iterations == 1).then_some(k.inverse);
+            lag = (iterations == 1).then_some(k.factors);
             previous = state;
             state = next;
             taken += 1;

@@ -2,8 +2,8 @@
 
 use super::SweepOptions;
 use super::state::State;
-use crate::runtime::blocks::invert_in_blocks;
 use crate::runtime::error::{Error, Stage};
+use crate::runtime::factors::Factors;
 use crate::runtime::kernels::Kernels;
 use crate::runtime::options::{AccelerationMethod, JacobianSource, Options};
 use crate::runtime::results::Kinematics;
@@ -90,17 +90,18 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         let jacobian = self.options.options.jacobian;
         let psi_u = sources::psi_and_psi_u(self.model, jacobian, u, v).1;
         let psi_v = sources::psi_v(self.model, jacobian, u, v);
-        let inv = invert_in_blocks(&psi_u, self.model.psi_u_blocks());
-        if inv.rcond <= 0.0 {
-            return (None, inv.det, inv.rcond);
+        let factors = Factors::of(&psi_u, self.model.psi_u_blocks());
+        let (det, rcond) = (factors.det(), factors.rcond());
+        if rcond <= 0.0 {
+            return (None, det, rcond);
         }
-        let udot = -(inv.inverse * (psi_v * vdot));
+        let udot = -factors.solve(&(psi_v * vdot));
         let generated =
             || sources::generated_gamma(self.model, self.options.options.method, u, v, &udot, vdot);
         let gamma = sources::gamma(self.model, jacobian, generated, u, v, &udot, vdot);
-        let uddot = -(inv.inverse * gamma);
+        let uddot = -factors.solve(&gamma);
         let known = finite(&udot, &uddot);
-        (known.then_some((udot, uddot)), inv.det, inv.rcond)
+        (known.then_some((udot, uddot)), det, rcond)
     }
 
     /// The state at (u, t): det, conditioning and the analogs along the path.
@@ -172,7 +173,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         if k.rcond <= 0.0 || residual.is_nan() || residual > self.options.options.residual_tol {
             return None;
         }
-        let delta = -(k.inverse * k.psi);
+        let delta = -k.factors.solve(&k.psi);
         (delta.amax() <= FAST_ACCEPT * scale).then(|| self.state_from(predicted + delta, t, 1, &k))
     }
 

@@ -30,11 +30,12 @@ const _: () = {
         /// The index of the point `R`: `pose.points[Self::R]`.
         #[allow(non_upper_case_globals)]
         pub const R: usize = 2usize;
-        /// Ψ_u is block lower triangular: 3 blocks: 2×2, 1×1, 1×1. Its blocks' equations and coordinates in solve order, and where each block ends (`Kernels::psi_u_blocks`).
+        /// Ψ_u is block lower triangular: 3 blocks: 2×2, 1×1, 1×1. Its blocks' equations and coordinates in solve order, where each block ends, and where the coordinates its equations involve begin (`Kernels::psi_u_blocks`).
         pub const PSI_U_BLOCKS: ::linkage::PsiUBlocks<'static> = ::linkage::PsiUBlocks::new(
             &[0, 1, 3, 2],
             &[0, 1, 2, 3],
             &[2, 3, 4],
+            &[0, 0, 0],
         );
         /// Ψ(u, v): the closure equations, zero at every assembled pose.
         ///
@@ -519,11 +520,9 @@ const _: () = {
             let mut psi_v = SVector::<f64, 4>::zeros();
             psi_v[0] = -r_s_theta;
             psi_v[1] = r_c_theta;
-            let ::linkage::Inverse { inverse, rcond, det } = ::linkage::invert_in_blocks(
-                &psi_u,
-                Self::PSI_U_BLOCKS,
-            );
-            let udot = -(inverse * (psi_v * vdot));
+            let factors = ::linkage::Factors::of(&psi_u, Self::PSI_U_BLOCKS);
+            let (rcond, det) = (factors.rcond(), factors.det());
+            let udot = -factors.solve(&(psi_v * vdot));
             let (phi3_dot, s_dot, phi4_dot) = (udot[0], udot[1], udot[2]);
             let mut gamma = SVector::<f64, 4>::zeros();
             gamma[0] = (s_c_phi3 * phi3_dot + s_phi3 * s_dot) * phi3_dot
@@ -532,12 +531,12 @@ const _: () = {
                 - c_phi3 * phi3_dot * s_dot - r_s_theta * theta_dot.powi(2);
             gamma[2] = -lever_c_phi3 * phi3_dot.powi(2) - rod_c_phi4 * phi4_dot.powi(2);
             gamma[3] = -lever_s_phi3 * phi3_dot.powi(2) - rod_s_phi4 * phi4_dot.powi(2);
-            let uddot = -(inverse * (psi_v * vddot + gamma));
+            let uddot = -factors.solve(&(psi_v * vddot + gamma));
             ::linkage::Kinematics {
                 psi,
                 psi_u,
                 psi_v,
-                inverse,
+                factors,
                 rcond,
                 det,
                 udot,
@@ -603,11 +602,9 @@ const _: () = {
             let mut psi_v = SVector::<f64, 4>::zeros();
             psi_v[0] = -r_s_theta;
             psi_v[1] = r_c_theta;
-            let ::linkage::Inverse { inverse, rcond, det } = ::linkage::invert_in_blocks(
-                &psi_u,
-                Self::PSI_U_BLOCKS,
-            );
-            let udot = -(inverse * (psi_v * vdot));
+            let factors = ::linkage::Factors::of(&psi_u, Self::PSI_U_BLOCKS);
+            let (rcond, det) = (factors.rcond(), factors.det());
+            let udot = -factors.solve(&(psi_v * vdot));
             let (phi3_dot, s_dot, phi4_dot) = (udot[0], udot[1], udot[2]);
             let mut gamma = SVector::<f64, 4>::zeros();
             gamma[0] = (s_c_phi3 * phi3_dot + s_phi3 * s_dot) * phi3_dot
@@ -616,12 +613,12 @@ const _: () = {
                 - c_phi3 * phi3_dot * s_dot - r_s_theta * theta_dot.powi(2);
             gamma[2] = -lever_c_phi3 * phi3_dot.powi(2) - rod_c_phi4 * phi4_dot.powi(2);
             gamma[3] = -lever_s_phi3 * phi3_dot.powi(2) - rod_s_phi4 * phi4_dot.powi(2);
-            let uddot = -(inverse * (psi_v * vddot + gamma));
+            let uddot = -factors.solve(&(psi_v * vddot + gamma));
             ::linkage::Kinematics {
                 psi,
                 psi_u,
                 psi_v,
-                inverse,
+                factors,
                 rcond,
                 det,
                 udot,
