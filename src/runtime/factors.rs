@@ -42,13 +42,13 @@ pub struct Factors<const M: usize> {
 /// (O(m)): positions in the solve order, `blocks` 0 when inverted whole.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct Order<const M: usize> {
-    equations: [u32; M],
-    coordinates: [u32; M],
+    equations: [u16; M],
+    coordinates: [u16; M],
     /// Where block b ends, and where its reach begins (the first position
     /// of a coordinate its equations involve).
-    ends: [u32; M],
-    reach: [u32; M],
-    blocks: usize,
+    ends: [u16; M],
+    reach: [u16; M],
+    blocks: u16,
     /// The sign of the two orders as permutations: det Ψ_u is it times
     /// the product of the blocks' determinants.
     sign: f64,
@@ -105,8 +105,10 @@ impl<const M: usize> Factors<M> {
     /// scale is scaled by a power of two first, exactly, and `rcond` is 0
     /// (the solves meaningless) when a diagonal block is singular or the
     /// estimate is not finite.
+    #[inline(always)]
     pub fn of(a: &SMatrix<f64, M, M>, blocks: PsiUBlocks<'_>) -> Factors<M> {
-        if blocks.len() <= 1 || blocks.positions() != M || M <= SMALL {
+        // (Positions are kept as u16: a larger Ψ_u is inverted whole.)
+        if M <= SMALL || M > u16::MAX as usize || blocks.len() <= 1 || blocks.positions() != M {
             return Factors::whole(a);
         }
         let order = Order::of(blocks);
@@ -114,7 +116,7 @@ impl<const M: usize> Factors<M> {
         const LOW: f64 = pow2(-300);
         const HIGH: f64 = pow2(300);
         if (LOW..=HIGH).contains(&scale) || !(scale > 0.0 && scale.is_finite()) {
-            return Factors::by_blocks(*a, order, &columns);
+            return Factors::by_blocks(a, order, &columns);
         }
         Factors::scaled_by_blocks(a, order, &columns, scale)
     }
@@ -136,13 +138,21 @@ impl<const M: usize> Factors<M> {
 
     /// Whether Ψ_u was factored block by block (not inverted whole).
     pub fn in_blocks(&self) -> bool {
-        self.order.blocks > 0
+        !self.is_whole()
+    }
+
+    /// Whether Ψ_u was inverted whole: always up to m = 4, known as the
+    /// code is compiled, so that small mechanisms carry no branch for the
+    /// blocks.
+    #[inline(always)]
+    fn is_whole(&self) -> bool {
+        M <= SMALL || self.order.blocks == 0
     }
 
     /// x = Ψ_u⁻¹ b (meaningless if `rcond` is 0).
     #[inline(always)]
     pub fn solve(&self, b: &SVector<f64, M>) -> SVector<f64, M> {
-        if self.order.blocks == 0 {
+        if self.is_whole() {
             return self.packed * b;
         }
         self.forward(b)
@@ -151,7 +161,7 @@ impl<const M: usize> Factors<M> {
     /// X = Ψ_u⁻¹ B, column by column.
     #[inline(always)]
     pub fn solve_columns<const C: usize>(&self, b: &SMatrix<f64, M, C>) -> SMatrix<f64, M, C> {
-        if self.order.blocks == 0 {
+        if self.is_whole() {
             return self.packed * b;
         }
         let mut x = SMatrix::<f64, M, C>::zeros();
@@ -165,12 +175,12 @@ impl<const M: usize> Factors<M> {
     /// blocks, of the inverses of its diagonal blocks (which are Ψ_u⁻¹'s
     /// own diagonal blocks: a lower bound, without the inverse).
     pub fn inverse_size(&self) -> f64 {
-        if self.order.blocks == 0 {
+        if self.is_whole() {
             return self.packed.amax();
         }
         let order = &self.order;
         let mut size = 0.0_f64;
-        for block in 0..order.blocks {
+        for block in 0..order.blocks as usize {
             let (start, end, _) = order.block(block);
             for s in start..end {
                 for t in start..end {
@@ -183,7 +193,7 @@ impl<const M: usize> Factors<M> {
 
     /// Ψ_u⁻¹ when it was inverted whole (`None` in blocks).
     pub(crate) fn whole_inverse(&self) -> Option<&SMatrix<f64, M, M>> {
-        (self.order.blocks == 0).then_some(&self.packed)
+        self.is_whole().then_some(&self.packed)
     }
 
     /// Ψ_u⁻¹ itself: one solve per column when factored in blocks (O(m)
@@ -199,7 +209,7 @@ impl<const M: usize> Factors<M> {
         let (a, order) = (&self.packed, &self.order);
         let mut x = SVector::<f64, M>::zeros();
         let mut reduced = [0.0; M];
-        for block in 0..order.blocks {
+        for block in 0..order.blocks as usize {
             let (start, end, reach) = order.block(block);
             for (s, r) in (start..end).zip(&mut reduced[start..end]) {
                 let e = order.equation(s);
@@ -230,7 +240,7 @@ impl<const M: usize> Factors<M> {
         let (a, order) = (&self.packed, &self.order);
         let mut c = *c;
         let mut y = SVector::<f64, M>::zeros();
-        for block in (0..order.blocks).rev() {
+        for block in (0..order.blocks as usize).rev() {
             let (start, end, reach) = order.block(block);
             for s in start..end {
                 let e = order.equation(s);
@@ -255,29 +265,30 @@ impl<const M: usize> Factors<M> {
     }
 
     /// Factors at an ordinary scale: the diagonal blocks inverted in place,
-    /// the determinant as their product, rcond estimated.
-    fn by_blocks(mut packed: SMatrix<f64, M, M>, order: Order<M>, columns: &[f64; M]) -> Self {
-        let mut det = order.sign;
+    /// the determinant as their product, rcond estimated. Built where it
+    /// is returned (a copy of a large Ψ_u less).
+    #[inline(always)]
+    fn by_blocks(a: &SMatrix<f64, M, M>, order: Order<M>, columns: &[f64; M]) -> Self {
+        let mut factors = Factors {
+            packed: *a,
+            order,
+            rcond: 0.0,
+            det: order.sign,
+        };
         let mut regular = true;
-        for block in 0..order.blocks {
+        for block in 0..order.blocks as usize {
             let (start, end, _) = order.block(block);
             let (ok, block_det) = diagonal::invert_in_place(
-                &mut packed,
+                &mut factors.packed,
                 &order.equations[start..end],
                 &order.coordinates[start..end],
             );
-            det *= block_det;
+            factors.det *= block_det;
             if !ok {
                 regular = false;
                 break;
             }
         }
-        let mut factors = Factors {
-            packed,
-            order,
-            rcond: 0.0,
-            det,
-        };
         if regular {
             factors.rcond = condition::estimate(&factors, columns);
         }
@@ -297,9 +308,9 @@ impl<const M: usize> Factors<M> {
     ) -> Self {
         let (p, reciprocal) = power_of_two_and_reciprocal(scale);
         let columns = columns.map(|c| c * reciprocal);
-        let inner = Factors::by_blocks(a * reciprocal, order, &columns);
+        let inner = Factors::by_blocks(&(a * reciprocal), order, &columns);
         let mut packed = *a;
-        for block in 0..order.blocks {
+        for block in 0..order.blocks as usize {
             let (start, end, _) = order.block(block);
             for s in start..end {
                 for t in start..end {
@@ -325,14 +336,14 @@ impl<const M: usize> Order<M> {
         let (equations, coordinates, ends, reach) = blocks.lists();
         order.sign = blocks.sign();
         for p in 0..M {
-            order.equations[p] = equations[p] as u32;
-            order.coordinates[p] = coordinates[p] as u32;
+            order.equations[p] = equations[p] as u16;
+            order.coordinates[p] = coordinates[p] as u16;
         }
         for (b, (&end, &first)) in ends.iter().zip(reach).enumerate() {
-            order.ends[b] = end as u32;
-            order.reach[b] = first as u32;
+            order.ends[b] = end as u16;
+            order.reach[b] = first as u16;
         }
-        order.blocks = ends.len();
+        order.blocks = ends.len() as u16;
         order
     }
 
@@ -343,7 +354,7 @@ impl<const M: usize> Order<M> {
     fn scale_and_column_norms(&self, a: &SMatrix<f64, M, M>) -> (f64, [f64; M]) {
         let mut columns = [0.0; M];
         let mut scale = 0.0_f64;
-        for block in 0..self.blocks {
+        for block in 0..self.blocks as usize {
             let (start, end, reach) = self.block(block);
             for s in start..end {
                 let e = self.equation(s);

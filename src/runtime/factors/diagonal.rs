@@ -9,8 +9,8 @@ use nalgebra::SMatrix;
 /// whether D is regular with a finite inverse, and det D.
 pub(super) fn invert_in_place<const M: usize>(
     a: &mut SMatrix<f64, M, M>,
-    equations: &[u32],
-    coordinates: &[u32],
+    equations: &[u16],
+    coordinates: &[u16],
 ) -> (bool, f64) {
     match equations.len() {
         1 => small::<1, M>(a, equations, coordinates),
@@ -23,8 +23,8 @@ pub(super) fn invert_in_place<const M: usize>(
 /// Up to 3×3: the adjugate over the determinant.
 fn small<const K: usize, const M: usize>(
     a: &mut SMatrix<f64, M, M>,
-    equations: &[u32],
-    coordinates: &[u32],
+    equations: &[u16],
+    coordinates: &[u16],
 ) -> (bool, f64) {
     let at = |s: usize, t: usize| (equations[s] as usize, coordinates[t] as usize);
     let d = SMatrix::<f64, K, K>::from_fn(|s, t| a[at(s, t)]);
@@ -46,8 +46,8 @@ fn small<const K: usize, const M: usize>(
 /// block is dense work that a heap allocation does not weigh on).
 fn large<const M: usize>(
     a: &mut SMatrix<f64, M, M>,
-    equations: &[u32],
-    coordinates: &[u32],
+    equations: &[u16],
+    coordinates: &[u16],
 ) -> (bool, f64) {
     let k = equations.len();
     let at = |s: usize, t: usize| (equations[s] as usize, coordinates[t] as usize);

@@ -112,6 +112,10 @@ where
     let (u, udot, uddot) = match factors.whole_inverse() {
         Some(inverse) if M <= 3 => by_products_first(inverse, terms),
         Some(inverse) => in_sequence(inverse, terms),
+        // Up to m = 16 the inverse (m solves) and its products cost less
+        // than a solve per parameter and term (docs/performance.md, "Cost
+        // against the size of the mechanism").
+        None if M <= 16 => in_sequence(&factors.inverse(), terms),
         None => by_solves(&factors, terms),
     };
     // ü_p alone: a NaN or an infinity in u_p or u̇_p reaches it (column j

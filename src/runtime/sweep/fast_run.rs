@@ -78,8 +78,8 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         let sign = at.track.sign;
         let (h, stride) = (direction, direction as i64);
         let (mut state, mut previous) = (at.track.state, at.previous_grid);
-        // Ψ_u⁻¹ one step back, once the run has taken a step (`previous` then
-        // holds the analogs one step back).
+        // Ψ_u's factors one step back, once the run has taken a step
+        // (`previous` then holds the analogs one step back).
         let mut lag: Option<Factors<M>> = None;
         let mut taken = 0;
         while at.step < steps {
@@ -104,7 +104,9 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             // steps are coarse.
             let mut x = predicted;
             let mut k = self.evaluate(&x, &v, carries, trig);
-            let mut factors = lag.unwrap_or(k.factors);
+            // The first correction by the lagging factors (a chord step),
+            // later ones by the current pose's; borrowed, not copied.
+            let mut chord = lag.is_some();
             let mut iterations = 1;
             let converged = loop {
                 let regular = (k.rcond >= min_rcond)
@@ -113,6 +115,10 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
                 if !regular {
                     break false;
                 }
+                let factors = match (&lag, chord) {
+                    (Some(lagging), true) => lagging,
+                    _ => &k.factors,
+                };
                 let newton = factors.solve(&k.psi);
                 x -= newton;
                 if within(&newton, FAST_ACCEPT * scale) {
@@ -122,7 +128,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
                     break false;
                 }
                 k = self.evaluate(&x, &v, carries, trig);
-                factors = k.factors;
+                chord = false;
                 iterations += 1;
             };
             if !converged {
