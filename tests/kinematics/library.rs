@@ -107,6 +107,45 @@ fn matches_reference<L: Linkage<M, 1>, const M: usize>(
     }
 }
 
+/// Jansen's leg has Ψ_u in three blocks of 2×2, solved by its factors
+/// with no inverse: at every pose of a turn the structure fits, the solves
+/// are the whole inverse's to rounding, and the estimated conditioning is
+/// never below the exact one, nor far above it.
+#[test]
+fn jansens_leg_is_solved_in_blocks_as_the_whole_inverse_solves() {
+    let sketch = vector![141.3, 70.3, -132.7, -73.7, -66.7, 151.6].map(f64::to_radians);
+    let start = JANSEN_LEG
+        .solve_position(&sketch, &vector![0.0], &Options::default())
+        .unwrap()
+        .u;
+    let sweep = whole_range("Jansen's leg", &JANSEN_LEG, start, 0.0, TAU, 360);
+    let blocks = JANSEN_LEG.psi_u_blocks();
+    assert_eq!(blocks.len(), 3);
+    let (mut exact, mut worst) = (0, 1.0_f64);
+    for pose in &sweep.poses {
+        let psi_u = JANSEN_LEG.psi_u(&pose.u, &pose.v);
+        assert!(blocks.fits(&psi_u));
+        let (factors, whole) = (
+            linkage::Factors::of(&psi_u, blocks),
+            linkage::invert(&psi_u),
+        );
+        assert!(factors.in_blocks() && whole.rcond > 0.0);
+        let b = JANSEN_LEG.psi_v(&pose.u, &pose.v).column(0).into_owned();
+        let tolerance = 1e-14 * whole.inverse.amax() * b.amax() / whole.rcond;
+        assert!((factors.solve(&b) - whole.inverse * b).amax() <= tolerance);
+        assert!((factors.det() - whole.det).abs() <= 1e-13 * whole.det.abs() / whole.rcond);
+        let ratio = factors.rcond() / whole.rcond;
+        assert!((1.0 - 1e-12..=10.0).contains(&ratio), "rcond ratio {ratio}");
+        exact += usize::from(ratio <= 1.0 + 1e-12);
+        worst = worst.max(ratio);
+    }
+    // (All 361 exact when written.)
+    assert!(
+        exact * 2 > sweep.poses.len(),
+        "{exact} exact, worst {worst}"
+    );
+}
+
 #[test]
 fn jansens_leg_walks_a_whole_turn_and_puts_its_foot_where_the_closed_form_does() {
     let reference = rows(include_str!("../data/jansen_leg.csv"));

@@ -404,6 +404,13 @@ fn psi_u_splits_into_the_same_blocks_compiled_and_at_run_time() {
         // the run-time program's, the same lists.
         let fixed = twin.fixed::<M, F>().expect("the compiled sizes");
         assert_eq!(compiled.psi_u_blocks(), fixed.psi_u_blocks(), "{name}");
+        // Every entry the factors do not read is zero, at any pose.
+        let u = SVector::<f64, M>::from_fn(|i, _| 0.3 + 0.7 * i as f64);
+        let v = SVector::<f64, F>::repeat(0.9);
+        assert!(
+            compiled.psi_u_blocks().fits(&compiled.psi_u(&u, &v)),
+            "{name}"
+        );
         assert_eq!(
             compiled.psi_u_blocks().len(),
             twin.blocks().blocks().len().max(1),
