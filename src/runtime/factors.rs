@@ -158,6 +158,29 @@ impl<const M: usize> Factors<M> {
         self.forward(b)
     }
 
+    /// The factors themselves ([`Factors::solve_by`]): the inverse, or Ψ_u
+    /// with its blocks inverted in place.
+    #[inline(always)]
+    pub(crate) fn packed(&self) -> &SMatrix<f64, M, M> {
+        &self.packed
+    }
+
+    /// x = Ψ_u⁻¹ b with the factors `packed` of another pose of the same
+    /// mechanism (a chord step, whose block order is this one's): what
+    /// [`Factors::solve`] of that pose gives. Only the matrix is kept from
+    /// pose to pose, which a small mechanism holds in registers.
+    #[inline(always)]
+    pub(crate) fn solve_by(
+        &self,
+        packed: &SMatrix<f64, M, M>,
+        b: &SVector<f64, M>,
+    ) -> SVector<f64, M> {
+        if self.is_whole() {
+            return packed * b;
+        }
+        self.forward_by(packed, b)
+    }
+
     /// X = Ψ_u⁻¹ B, column by column.
     #[inline(always)]
     pub fn solve_columns<const C: usize>(&self, b: &SMatrix<f64, M, C>) -> SMatrix<f64, M, C> {
@@ -199,17 +222,48 @@ impl<const M: usize> Factors<M> {
     /// Ψ_u⁻¹ itself: one solve per column when factored in blocks (O(m)
     /// solves), for those who need the whole inverse.
     pub fn inverse(&self) -> SMatrix<f64, M, M> {
-        self.solve_columns(&SMatrix::<f64, M, M>::identity())
+        if self.is_whole() {
+            return self.packed;
+        }
+        // Column e, for equation e of block f, is zero on the blocks before
+        // f: each solve starts at its own block.
+        let mut inverse = SMatrix::<f64, M, M>::zeros();
+        for block in 0..self.order.blocks as usize {
+            let (start, end, _) = self.order.block(block);
+            for s in start..end {
+                let e = self.order.equation(s);
+                let unit = SVector::<f64, M>::from_fn(|i, _| f64::from(u8::from(i == e)));
+                inverse.set_column(e, &self.forward_from(&self.packed, &unit, block));
+            }
+        }
+        inverse
     }
 
     /// Block forward substitution: for each block in order, its equations'
     /// right-hand sides less what the coordinates already found contribute,
     /// times the block's inverse.
     fn forward(&self, b: &SVector<f64, M>) -> SVector<f64, M> {
-        let (a, order) = (&self.packed, &self.order);
+        self.forward_by(&self.packed, b)
+    }
+
+    /// [`Factors::forward`] with another pose's packed factors in this
+    /// order.
+    fn forward_by(&self, a: &SMatrix<f64, M, M>, b: &SVector<f64, M>) -> SVector<f64, M> {
+        self.forward_from(a, b, 0)
+    }
+
+    /// [`Factors::forward_by`] for a `b` that is zero on the equations of
+    /// the blocks before `first`, whose coordinates then stay zero.
+    fn forward_from(
+        &self,
+        a: &SMatrix<f64, M, M>,
+        b: &SVector<f64, M>,
+        first: usize,
+    ) -> SVector<f64, M> {
+        let order = &self.order;
         let mut x = SVector::<f64, M>::zeros();
         let mut reduced = [0.0; M];
-        for block in 0..order.blocks as usize {
+        for block in first..order.blocks as usize {
             let (start, end, reach) = order.block(block);
             for (s, r) in (start..end).zip(&mut reduced[start..end]) {
                 let e = order.equation(s);

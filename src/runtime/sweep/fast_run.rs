@@ -5,11 +5,10 @@ use super::state::{Progress, REGULAR_RCOND, State, Track};
 use super::substep::tangent_continues;
 use super::tracker::{FAST_ACCEPT, Tracker};
 use crate::runtime::error::Error;
-use crate::runtime::factors::Factors;
 use crate::runtime::kernels::Kernels;
 use crate::runtime::results::Kinematics;
 use crate::runtime::trig::TrigCarrier;
-use nalgebra::SVector;
+use nalgebra::{SMatrix, SVector};
 
 /// The most Newton iterations a step of the fast run may take before the
 /// general machinery takes over.
@@ -78,9 +77,10 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         let sign = at.track.sign;
         let (h, stride) = (direction, direction as i64);
         let (mut state, mut previous) = (at.track.state, at.previous_grid);
-        // Ψ_u's factors one step back, once the run has taken a step
-        // (`previous` then holds the analogs one step back).
-        let mut lag: Option<Factors<M>> = None;
+        // Ψ_u's factors one step back (the matrix alone: the block order
+        // is the mechanism's), once the run has taken a step (`previous`
+        // then holds the analogs one step back).
+        let mut lag: Option<SMatrix<f64, M, M>> = None;
         let mut taken = 0;
         while at.step < steps {
             let index = at.index + stride;
@@ -105,8 +105,8 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             let mut x = predicted;
             let mut k = self.evaluate(&x, &v, carries, trig);
             // The first correction by the lagging factors (a chord step),
-            // later ones by the current pose's; borrowed, not copied.
-            let mut chord = lag.is_some();
+            // later ones by the current pose's.
+            let mut factors = lag.unwrap_or(*k.factors.packed());
             let mut iterations = 1;
             let converged = loop {
                 let regular = (k.rcond >= min_rcond)
@@ -115,11 +115,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
                 if !regular {
                     break false;
                 }
-                let factors = match (&lag, chord) {
-                    (Some(lagging), true) => lagging,
-                    _ => &k.factors,
-                };
-                let newton = factors.solve(&k.psi);
+                let newton = k.factors.solve_by(&factors, &k.psi);
                 x -= newton;
                 if within(&newton, FAST_ACCEPT * scale) {
                     break within(&k.psi, options.options.residual_tol);
@@ -128,7 +124,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
                     break false;
                 }
                 k = self.evaluate(&x, &v, carries, trig);
-                chord = false;
+                factors = *k.factors.packed();
                 iterations += 1;
             };
             if !converged {
@@ -172,7 +168,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             // Where one evaluation was not enough (a coarse grid), the next
             // step starts with a fresh inverse and the current analogs: a
             // chord step would only cost another evaluation there.
-            lag = (iterations == 1).then_some(k.factors);
+            lag = (iterations == 1).then_some(*k.factors.packed());
             previous = state;
             state = next;
             taken += 1;
