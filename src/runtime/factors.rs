@@ -15,7 +15,9 @@ mod diagonal;
 
 use crate::runtime::blocks::PsiUBlocks;
 use crate::runtime::error::{Error, Stage};
-use crate::runtime::linalg::{invert, power_of_two_and_reciprocal, scaled_determinant};
+use crate::runtime::linalg::{
+    equilibrated_norm, invert, power_of_two_and_reciprocal, scaled_determinant,
+};
 use crate::runtime::options::Options;
 use crate::runtime::powers_of_two::pow2;
 use nalgebra::{SMatrix, SVector};
@@ -107,18 +109,45 @@ impl<const M: usize> Factors<M> {
     /// estimate is not finite.
     #[inline(always)]
     pub fn of(a: &SMatrix<f64, M, M>, blocks: PsiUBlocks<'_>) -> Factors<M> {
-        // (Positions are kept as u16: a larger Ψ_u is inverted whole.)
-        if M <= SMALL || M > u16::MAX as usize || blocks.len() <= 1 || blocks.positions() != M {
+        if inverted_whole::<M>(blocks) {
             return Factors::whole(a);
         }
         let order = Order::of(blocks);
         let (scale, columns) = order.scale_and_column_norms(a);
-        const LOW: f64 = pow2(-300);
-        const HIGH: f64 = pow2(300);
-        if (LOW..=HIGH).contains(&scale) || !(scale > 0.0 && scale.is_finite()) {
+        if ordinary(scale) {
             return Factors::by_blocks(a, order, &columns);
         }
         Factors::scaled_by_blocks(a, order, &columns, scale)
+    }
+
+    /// [`Factors::of`] and, where it factors in blocks, Ψ_u⁻¹ formed from
+    /// the factors (one solve per column), for a caller that needs the
+    /// whole inverse: rcond is then read from the inverse, exactly, as
+    /// [`invert`] does, in place of the estimate. (At an extreme scale: the
+    /// estimate. Inverted whole, the inverse is
+    /// [`Factors::whole_inverse`].)
+    pub(crate) fn of_with_inverse(
+        a: &SMatrix<f64, M, M>,
+        blocks: PsiUBlocks<'_>,
+    ) -> (Factors<M>, Option<SMatrix<f64, M, M>>) {
+        if inverted_whole::<M>(blocks) {
+            return (Factors::whole(a), None);
+        }
+        let order = Order::of(blocks);
+        if !ordinary(order.scale_and_column_norms(a).0) {
+            let factors = Factors::of(a, blocks);
+            return (factors, Some(factors.inverse()));
+        }
+        let (mut factors, regular) = Factors::factored(a, order);
+        if !regular {
+            return (factors, Some(SMatrix::zeros()));
+        }
+        let inverse = factors.inverse();
+        let norm = equilibrated_norm(a, &inverse);
+        if norm.is_finite() && norm > 0.0 && inverse.iter().all(|x| x.is_finite()) {
+            factors.rcond = (1.0 / norm).min(1.0);
+        }
+        (factors, Some(inverse))
     }
 
     /// The column-equilibrated reciprocal condition number of Ψ_u in
@@ -318,11 +347,22 @@ impl<const M: usize> Factors<M> {
         y
     }
 
-    /// Factors at an ordinary scale: the diagonal blocks inverted in place,
-    /// the determinant as their product, rcond estimated. Built where it
-    /// is returned (a copy of a large Ψ_u less).
+    /// Factors at an ordinary scale: [`Factors::factored`], rcond
+    /// estimated.
     #[inline(always)]
     fn by_blocks(a: &SMatrix<f64, M, M>, order: Order<M>, columns: &[f64; M]) -> Self {
+        let (mut factors, regular) = Factors::factored(a, order);
+        if regular {
+            factors.rcond = condition::estimate(&factors, columns);
+        }
+        factors
+    }
+
+    /// The diagonal blocks inverted in place and the determinant as their
+    /// product (rcond 0 for now), and whether every block is regular.
+    /// Built where it is returned (a copy of a large Ψ_u less).
+    #[inline(always)]
+    fn factored(a: &SMatrix<f64, M, M>, order: Order<M>) -> (Self, bool) {
         let mut factors = Factors {
             packed: *a,
             order,
@@ -343,10 +383,7 @@ impl<const M: usize> Factors<M> {
                 break;
             }
         }
-        if regular {
-            factors.rcond = condition::estimate(&factors, columns);
-        }
-        factors
+        (factors, regular)
     }
 
     /// [`Factors::by_blocks`] for a matrix at an extreme scale: factored
@@ -424,6 +461,20 @@ impl<const M: usize> Order<M> {
         }
         (scale, columns)
     }
+}
+
+/// Whether [`Factors::of`] inverts Ψ_u whole: up to m = 4, for one block,
+/// for blocks of another size, and beyond the u16 positions are kept in.
+fn inverted_whole<const M: usize>(blocks: PsiUBlocks<'_>) -> bool {
+    M <= SMALL || M > u16::MAX as usize || blocks.len() <= 1 || blocks.positions() != M
+}
+
+/// Whether the largest entry `scale` lies in [2⁻³⁰⁰, 2³⁰⁰] or is zero or
+/// not finite (which the factors catch): no scaling needed.
+fn ordinary(scale: f64) -> bool {
+    const LOW: f64 = pow2(-300);
+    const HIGH: f64 = pow2(300);
+    (LOW..=HIGH).contains(&scale) || !(scale > 0.0 && scale.is_finite())
 }
 
 /// Ψ_u factored in the order of `blocks`, or [`Error::Singular`] in `stage`

@@ -344,3 +344,44 @@ fn the_estimate_holds_on_growing_chains_and_nearly_singular_blocks() {
         }
     }
 }
+
+/// With the inverse formed, rcond is read from it: the whole matrix's,
+/// to rounding; singular blocks and extreme scales as in [`Factors::of`].
+#[test]
+fn the_inverse_formed_gives_the_exact_rcond() {
+    let mut numbers = Numbers(23);
+    for _ in 0..100 {
+        let case = Case::<9>::random(&mut numbers);
+        let (factors, inverse) = Factors::of_with_inverse(&case.a, case.blocks());
+        let inverse = inverse.expect("formed in blocks");
+        let whole = invert(&case.a);
+        assert!(factors.in_blocks());
+        assert!((factors.rcond() - whole.rcond).abs() <= 1e-12 * whole.rcond);
+        assert!((inverse - whole.inverse).amax() <= 1e-13 * whole.inverse.amax() / whole.rcond);
+        assert_eq!(inverse, factors.inverse());
+        let scaled = Factors::of_with_inverse(&(case.a * 2f64.powi(700)), case.blocks()).0;
+        assert_eq!(scaled.rcond(), Factors::of(&case.a, case.blocks()).rcond());
+    }
+    let small = Case::<4>::random(&mut numbers);
+    let (factors, inverse) = Factors::of_with_inverse(&small.a, small.blocks());
+    assert_eq!(inverse, None);
+    assert_eq!(
+        (factors.whole_inverse(), factors.rcond()),
+        (Some(&invert(&small.a).inverse), invert(&small.a).rcond)
+    );
+    let mut singular = Case::<9>::random(&mut numbers);
+    let (first_equations, first_coordinates) = {
+        let blocks = singular.blocks();
+        let (e, c) = blocks.blocks().next().unwrap();
+        (e.to_vec(), c.to_vec())
+    };
+    for &c in &first_coordinates {
+        singular.a[(first_equations[0], c)] = 0.0;
+    }
+    assert_eq!(
+        Factors::of_with_inverse(&singular.a, singular.blocks())
+            .0
+            .rcond(),
+        0.0
+    );
+}

@@ -38,7 +38,7 @@ use super::results::{Motion, Sensitivity, SensitivityTerms};
 use crate::runtime::blocks::PsiUBlocks;
 use crate::runtime::checks::{all_finite, all_finite_in, check_input, check_value};
 use crate::runtime::error::{Error, Stage};
-use crate::runtime::factors::{Factors, factor};
+use crate::runtime::factors::Factors;
 use crate::runtime::options::Options;
 use nalgebra::{SMatrix, Vector2};
 
@@ -102,21 +102,24 @@ where
     // them reaches u_p, u̇_p or ü_p (IEEE: ∞·0 is NaN, and Ψ_u's makes the
     // inverse fail), so only a failure scans them, in order, to name the
     // first — the errors of a scan up front, for one pass less.
-    let factors = match factor(&terms.psi_u, blocks, stage, options) {
-        Ok(factors) => factors,
-        Err(singular) => {
-            name_non_finite_term(*terms)?;
-            return Err(singular);
-        }
+    // Up to m = 16 the inverse is formed (one solve per column in blocks,
+    // its rcond then exact) and multiplied: cheaper there than a solve per
+    // parameter and term (docs/performance.md, "Solving in blocks, without
+    // the inverse").
+    let (factors, formed) = if M <= 16 {
+        Factors::of_with_inverse(&terms.psi_u, blocks)
+    } else {
+        (Factors::of(&terms.psi_u, blocks), None)
     };
-    let (u, udot, uddot) = match factors.whole_inverse() {
-        Some(inverse) if M <= 3 => by_products_first(inverse, terms),
-        Some(inverse) => in_sequence(inverse, terms),
-        // Up to m = 16 the inverse (m solves) and its products cost less
-        // than a solve per parameter and term (docs/performance.md, "Cost
-        // against the size of the mechanism").
-        None if M <= 16 => in_sequence(&factors.inverse(), terms),
-        None => by_solves(&factors, terms),
+    if let Err(singular) = options.require_accuracy(stage, factors.rcond()) {
+        name_non_finite_term(*terms)?;
+        return Err(singular);
+    }
+    let (u, udot, uddot) = match (factors.whole_inverse(), formed) {
+        (Some(inverse), _) if M <= 3 => by_products_first(inverse, terms),
+        (Some(inverse), _) => in_sequence(inverse, terms),
+        (None, Some(inverse)) => in_sequence(&inverse, terms),
+        (None, None) => by_solves(&factors, terms),
     };
     // ü_p alone: a NaN or an infinity in u_p or u̇_p reaches it (column j
     // of ü_p sums B·u_p's and A·u̇_p's column j, or Ψ̈_u·u_p's and
