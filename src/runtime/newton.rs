@@ -136,38 +136,21 @@ pub(crate) fn solve<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
     })
 }
 
-/// What [`solve_fused`] returns: the pose, the fused kernel's evaluation
-/// there, and the sines and cosines it used (exact at the pose).
-pub(crate) type Converged<const M: usize, const F: usize> =
-    (Position<M>, Kinematics<M, F>, PoseTrig<M, F>);
+/// What [`FusedNewton`] ends with: the pose and the sines and cosines of
+/// the evaluation there (exact at the pose). The evaluation itself is the
+/// last one the caller gave [`FusedNewton::advance`], which it keeps:
+/// for a large mechanism it is tens of kilobytes, not moved.
+pub(crate) type Converged<const M: usize, const F: usize> = (Position<M>, PoseTrig<M, F>);
 
 /// Plain Newton–Raphson whose every evaluation is the fused kernel
-/// ([`Kernels::kinematics_with_trig`]): Ψ, Ψ_u and Ψ_u⁻¹ for the steps and,
+/// ([`Kernels::kinematics_with_trig`]): Ψ, Ψ_u and its factors for the steps and,
 /// at the iterate that converges, the velocities and accelerations too. So
 /// an analysis evaluates the mechanism once more than it takes steps (the
 /// evaluation that confirms convergence is the one that gives the
 /// kinematics), and the drivers' sines and cosines once. The same iterates,
 /// tests and errors as [`solve`] without damping, bit for bit.
-#[inline]
-pub(crate) fn solve_fused<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
-    model: &L,
-    u0: &SVector<f64, M>,
-    v: &SVector<f64, F>,
-    vdot: &SVector<f64, F>,
-    vddot: &SVector<f64, F>,
-    options: &Options,
-) -> Result<Converged<M, F>, Error> {
-    let mut newton = FusedNewton::start(model, u0, v, options)?;
-    loop {
-        let (u, trig_u, trig_v) = newton.pose();
-        let k = model.kinematics_with_trig(u, v, trig_u, trig_v, vdot, vddot);
-        if let Progress::Done(result) = newton.advance(model, k, options) {
-            return result;
-        }
-    }
-}
-
-/// [`solve_fused`] one evaluation at a time: the iteration asks for the
+///
+/// One evaluation at a time: the iteration asks for the
 /// fused kernel at a pose ([`FusedNewton::pose`]), is given it
 /// ([`FusedNewton::advance`]), and says whether it wants another. A batch
 /// runs many at once, each pose's evaluations made together with the
@@ -262,7 +245,7 @@ impl<const M: usize, const F: usize> FusedNewton<M, F> {
     pub(crate) fn advance<L: Kernels<M, F> + ?Sized>(
         &mut self,
         model: &L,
-        k: Kinematics<M, F>,
+        k: &Kinematics<M, F>,
         options: &Options,
     ) -> Progress<M, F> {
         match self.advance_or_fail(model, k, options) {
@@ -275,7 +258,7 @@ impl<const M: usize, const F: usize> FusedNewton<M, F> {
     fn advance_or_fail<L: Kernels<M, F> + ?Sized>(
         &mut self,
         model: &L,
-        k: Kinematics<M, F>,
+        k: &Kinematics<M, F>,
         options: &Options,
     ) -> Result<Progress<M, F>, Error> {
         check_value(Stage::Position, "Ψ", k.psi.as_slice())?;
@@ -309,7 +292,7 @@ impl<const M: usize, const F: usize> FusedNewton<M, F> {
                     sin_cos_u,
                     sin_cos_v,
                 };
-                return Ok(Progress::Done(Ok((position, k, pose_trig))));
+                return Ok(Progress::Done(Ok((position, pose_trig))));
             }
             self.previous_step = step;
         }

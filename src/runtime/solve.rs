@@ -21,7 +21,7 @@ use nalgebra::{SMatrix, SVector};
 /// solves), then the points. With the generated code, the fused γ and
 /// plain Newton (the defaults), every Newton evaluation is the fused kernel
 /// and the one that confirms convergence gives the kinematics
-/// ([`newton::solve_fused`]).
+/// ([`newton::FusedNewton`], the evaluation kept here, not moved).
 pub(crate) fn analyze<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
     model: &L,
     u_guess: &SVector<f64, M>,
@@ -32,8 +32,14 @@ pub(crate) fn analyze<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>
 ) -> Result<Analysis<M, F, L::Points>, Error> {
     let fused_serves = fused_serves(vdot, vddot, options)?;
     if fused_serves && !options.damped {
-        let converged = newton::solve_fused(model, u_guess, v, vdot, vddot, options)?;
-        return finish_fused(model, converged, v, vdot, vddot, options);
+        let mut newton = newton::FusedNewton::start(model, u_guess, v, options)?;
+        loop {
+            let (u, trig_u, trig_v) = newton.pose();
+            let k = model.kinematics_with_trig(u, v, trig_u, trig_v, vdot, vddot);
+            if let Progress::Done(ended) = newton.advance(model, &k, options) {
+                return finish_fused(model, ended?, &k, v, vdot, vddot, options);
+            }
+        }
     }
     let position = newton::solve(model, u_guess, v, options, &mut |_| {})?;
     let fused = if fused_serves {
@@ -116,12 +122,12 @@ pub(crate) fn analyze_together<L: Kernels<M, F>, const M: usize, const F: usize>
             let Some(k) = evaluated.next() else {
                 return true;
             };
-            match newton.advance(&job.model, k, options) {
+            match newton.advance(&job.model, &k, options) {
                 Progress::Evaluate => true,
                 Progress::Done(ended) => {
                     results[*index] = ended.and_then(|converged| {
                         finish_fused(
-                            &job.model, converged, &job.v, &job.vdot, &job.vddot, options,
+                            &job.model, converged, &k, &job.v, &job.vdot, &job.vddot, options,
                         )
                     });
                     false
@@ -154,13 +160,14 @@ fn fused_serves<const F: usize>(
 /// velocities and accelerations from the evaluation that confirmed it.
 fn finish_fused<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
     model: &L,
-    (position, k, trig): newton::Converged<M, F>,
+    (position, trig): newton::Converged<M, F>,
+    k: &Kinematics<M, F>,
     v: &SVector<f64, F>,
     vdot: &SVector<f64, F>,
     vddot: &SVector<f64, F>,
     options: &Options,
 ) -> Result<Analysis<M, F, L::Points>, Error> {
-    let fused = fused_kinematics(&k, vdot, vddot, options)?;
+    let fused = fused_kinematics(k, vdot, vddot, options)?;
     finish(model, position, fused, Some(trig), v, vdot, vddot, options)
 }
 
