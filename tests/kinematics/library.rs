@@ -107,18 +107,24 @@ fn matches_reference<L: Linkage<M, 1>, const M: usize>(
     }
 }
 
+/// A whole turn of Jansen's leg in 360 steps, from the assembly near the
+/// file's sketch at θ = 0 (mechanisms/jansen_leg.toml).
+fn jansens_turn() -> Sweep<6, 1> {
+    let sketch = vector![141.3, 70.3, -132.7, -73.7, -66.7, 151.6].map(f64::to_radians);
+    let start = JANSEN_LEG
+        .solve_position(&sketch, &vector![0.0], &Options::default())
+        .unwrap()
+        .u;
+    whole_range("Jansen's leg", &JANSEN_LEG, start, 0.0, TAU, 360)
+}
+
 /// Jansen's leg has Ψ_u in three blocks of 2×2, solved by its factors
 /// with no inverse: at every pose of a turn the structure fits, the solves
 /// are the whole inverse's to rounding, and the estimated conditioning is
 /// never below the exact one, nor far above it.
 #[test]
 fn jansens_leg_is_solved_in_blocks_as_the_whole_inverse_solves() {
-    let sketch = vector![141.3, 70.3, -132.7, -73.7, -66.7, 151.6].map(f64::to_radians);
-    let start = JANSEN_LEG
-        .solve_position(&sketch, &vector![0.0], &Options::default())
-        .unwrap()
-        .u;
-    let sweep = whole_range("Jansen's leg", &JANSEN_LEG, start, 0.0, TAU, 360);
+    let sweep = jansens_turn();
     let blocks = JANSEN_LEG.psi_u_blocks();
     assert_eq!(blocks.len(), 3);
     let (mut exact, mut worst) = (0, 1.0_f64);
@@ -149,13 +155,7 @@ fn jansens_leg_is_solved_in_blocks_as_the_whole_inverse_solves() {
 #[test]
 fn jansens_leg_walks_a_whole_turn_and_puts_its_foot_where_the_closed_form_does() {
     let reference = rows(include_str!("../data/jansen_leg.csv"));
-    // The file's sketch of the assembly at θ = 0 (mechanisms/jansen_leg.toml).
-    let sketch = vector![141.3, 70.3, -132.7, -73.7, -66.7, 151.6].map(f64::to_radians);
-    let start = JANSEN_LEG
-        .solve_position(&sketch, &vector![0.0], &Options::default())
-        .unwrap()
-        .u;
-    let sweep = whole_range("Jansen's leg", &JANSEN_LEG, start, 0.0, TAU, 360);
+    let sweep = jansens_turn();
     matches_reference("Jansen's leg", &JANSEN_LEG, &sweep, &reference, &["Foot"]);
     // Its foot's lowest stretch is nearly flat, the linkage's feature: over
     // the third of the turn centred on its lowest point the foot's height
