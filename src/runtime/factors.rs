@@ -16,10 +16,9 @@ mod diagonal;
 use crate::runtime::blocks::PsiUBlocks;
 use crate::runtime::error::{Error, Stage};
 use crate::runtime::linalg::{
-    equilibrated_norm, invert, power_of_two_and_reciprocal, scaled_determinant,
+    equilibrated_norm, invert, ordinary_scale, power_of_two_and_reciprocal, scaled_determinant,
 };
 use crate::runtime::options::Options;
-use crate::runtime::powers_of_two::pow2;
 use nalgebra::{SMatrix, SVector};
 
 /// Up to this size Ψ_u is inverted whole.
@@ -469,12 +468,10 @@ fn inverted_whole<const M: usize>(blocks: PsiUBlocks<'_>) -> bool {
     M <= SMALL || M > u16::MAX as usize || blocks.len() <= 1 || blocks.positions() != M
 }
 
-/// Whether the largest entry `scale` lies in [2⁻³⁰⁰, 2³⁰⁰] or is zero or
-/// not finite (which the factors catch): no scaling needed.
+/// Whether the largest entry `scale` needs no scaling ([`ordinary_scale`]),
+/// or is zero or not finite (which the factors catch).
 fn ordinary(scale: f64) -> bool {
-    const LOW: f64 = pow2(-300);
-    const HIGH: f64 = pow2(300);
-    (LOW..=HIGH).contains(&scale) || !(scale > 0.0 && scale.is_finite())
+    ordinary_scale(scale) || !(scale > 0.0 && scale.is_finite())
 }
 
 /// Ψ_u factored in the order of `blocks`, or [`Error::Singular`] in `stage`

@@ -67,8 +67,6 @@ pub fn invert<const M: usize>(a: &SMatrix<f64, M, M>) -> Inverse<M> {
 /// this runs at every evaluation of a sweep.
 #[inline(always)]
 pub(crate) fn scale_of<const M: usize>(a: &SMatrix<f64, M, M>) -> (f64, bool) {
-    const LOW: f64 = pow2(-300);
-    const HIGH: f64 = pow2(300);
     let mut scale = 0.0_f64;
     for x in a.iter() {
         let x = x.abs();
@@ -76,7 +74,16 @@ pub(crate) fn scale_of<const M: usize>(a: &SMatrix<f64, M, M>) -> (f64, bool) {
             scale = x;
         }
     }
-    (scale, (LOW..=HIGH).contains(&scale))
+    (scale, ordinary_scale(scale))
+}
+
+/// Whether a matrix whose largest entry is `scale` needs no scaling by a
+/// power of two before it is inverted: `scale` in [2⁻³⁰⁰, 2³⁰⁰].
+#[inline(always)]
+pub(crate) fn ordinary_scale(scale: f64) -> bool {
+    const LOW: f64 = pow2(-300);
+    const HIGH: f64 = pow2(300);
+    (LOW..=HIGH).contains(&scale)
 }
 
 /// [`invert`] for m > 3 at an extreme scale, out of line: Gauss–Jordan

@@ -121,13 +121,12 @@ fn jansens_turn() -> Sweep<6, 1> {
 /// Jansen's leg has Ψ_u in three blocks of 2×2, solved by its factors
 /// with no inverse: at every pose of a turn the structure fits, the solves
 /// are the whole inverse's to rounding, and the estimated conditioning is
-/// never below the exact one, nor far above it.
+/// the exact one (to rounding) at every pose.
 #[test]
 fn jansens_leg_is_solved_in_blocks_as_the_whole_inverse_solves() {
     let sweep = jansens_turn();
     let blocks = JANSEN_LEG.psi_u_blocks();
     assert_eq!(blocks.len(), 3);
-    let (mut exact, mut worst) = (0, 1.0_f64);
     for pose in &sweep.poses {
         let psi_u = JANSEN_LEG.psi_u(&pose.u, &pose.v);
         assert!(blocks.fits(&psi_u));
@@ -141,15 +140,8 @@ fn jansens_leg_is_solved_in_blocks_as_the_whole_inverse_solves() {
         assert!((factors.solve(&b) - whole.inverse * b).amax() <= tolerance);
         assert!((factors.det() - whole.det).abs() <= 1e-13 * whole.det.abs() / whole.rcond);
         let ratio = factors.rcond() / whole.rcond;
-        assert!((1.0 - 1e-12..=10.0).contains(&ratio), "rcond ratio {ratio}");
-        exact += usize::from(ratio <= 1.0 + 1e-12);
-        worst = worst.max(ratio);
+        assert!((ratio - 1.0).abs() <= 1e-12, "rcond ratio {ratio}");
     }
-    // (All 361 exact when written.)
-    assert!(
-        exact * 2 > sweep.poses.len(),
-        "{exact} exact, worst {worst}"
-    );
 }
 
 #[test]

@@ -101,8 +101,9 @@ impl<const M: usize> Case<M> {
 
 /// The factors solve as the whole inverse does, both ways; det as the
 /// whole matrix's (to rounding, which grows with the conditioning); the
-/// estimated rcond never below the exact one, and
-/// within a factor of 10 of it. Whether the estimate was exact.
+/// estimated rcond never below the exact one, and within a factor of 3.5
+/// of it (3.2 at worst on the random matrices below). Whether the
+/// estimate was exact.
 fn agrees<const M: usize>(a: &SMatrix<f64, M, M>, blocks: PsiUBlocks<'_>) -> bool {
     assert!(blocks.fits(a));
     let factors = Factors::of(a, blocks);
@@ -131,7 +132,7 @@ fn agrees<const M: usize>(a: &SMatrix<f64, M, M>, blocks: PsiUBlocks<'_>) -> boo
     assert!(
         // (The exact value, from the whole inverse, is itself only as
         // accurate as the conditioning allows.)
-        estimate >= exact * (1.0 - 1e-12) - 1e-15 && estimate <= 10.0 * exact,
+        estimate >= exact * (1.0 - 1e-12) - 1e-15 && estimate <= 3.5 * exact,
         "rcond {estimate:e} estimated, {exact:e} exact"
     );
     (estimate - exact).abs() <= 1e-12 * exact
@@ -150,7 +151,7 @@ fn random_block_triangular_matrices_solve_as_whole_ones() {
     }
     // The estimate is the exact norm for more than half of these matrices
     // (354 of 600 when written; within a factor 3.2 for all).
-    assert!(exact >= 300, "exact {exact} of 600");
+    assert!(exact >= 350, "exact {exact} of 600");
 }
 
 #[test]
@@ -358,7 +359,6 @@ fn the_inverse_formed_gives_the_exact_rcond() {
         assert!(factors.in_blocks());
         assert!((factors.rcond() - whole.rcond).abs() <= 1e-12 * whole.rcond);
         assert!((inverse - whole.inverse).amax() <= 1e-13 * whole.inverse.amax() / whole.rcond);
-        assert_eq!(inverse, factors.inverse());
         let scaled = Factors::of_with_inverse(&(case.a * 2f64.powi(700)), case.blocks()).0;
         assert_eq!(scaled.rcond(), Factors::of(&case.a, case.blocks()).rcond());
     }

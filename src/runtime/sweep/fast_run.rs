@@ -106,7 +106,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             let mut k = self.evaluate(&x, &v, carries, trig);
             // The first correction by the lagging factors (a chord step),
             // later ones by the current pose's.
-            let mut factors = lag.unwrap_or(*k.factors.packed());
+            let mut factors = lag.unwrap_or_else(|| *k.factors.packed());
             let mut iterations = 1;
             let converged = loop {
                 let regular = (k.rcond >= min_rcond)
@@ -168,7 +168,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             // Where one evaluation was not enough (a coarse grid), the next
             // step starts with a fresh inverse and the current analogs: a
             // chord step would only cost another evaluation there.
-            lag = (iterations == 1).then_some(*k.factors.packed());
+            lag = (iterations == 1).then(|| *k.factors.packed());
             previous = state;
             state = next;
             taken += 1;
