@@ -140,6 +140,8 @@ pub mod quantity;
 mod random;
 pub mod synthesis;
 pub mod tolerance;
+#[cfg(feature = "files")]
+pub mod topology;
 pub mod transmission;
 mod vectors;
 pub mod watch;

@@ -146,6 +146,7 @@ pub use drives::Drives;
 pub use equations::Equations;
 pub use error::{FileError, FileErrors, ReadError};
 pub use names::Name;
+pub(crate) use names::not_an_identifier;
 pub use parameters::Parameter;
 pub use quantity::Quantity;
 pub use units::{Kind, Unit};

@@ -14,7 +14,7 @@ const KEYWORDS: [&str; 52] = [
 /// Why `name` cannot be an identifier of the equations, if it cannot: an
 /// ASCII letter or `_` first, then letters, digits and `_`; not `_`
 /// alone, not a Rust keyword.
-pub(super) fn not_an_identifier(name: &str) -> Option<String> {
+pub(crate) fn not_an_identifier(name: &str) -> Option<String> {
     let mut chars = name.chars();
     let first_ok = chars
         .next()

@@ -1,0 +1,76 @@
+//! Mechanisms built the way engineers draw them: joints at drawn
+//! positions, links listing the joints they carry, and drivers — no
+//! equations written by hand.
+//!
+//! A [`Topology`] is checked (names, every joint on a link, sliders on
+//! two links, every link connected to the frame, two links never joined
+//! by two pins, the degrees of freedom by Grübler–Kutzbach against the
+//! drivers), then its closure equations are generated: one vector loop
+//! per joint that a spanning tree of the links does not cross, each
+//! moving link's angle or each slider's travel a coordinate, every length
+//! and fixed angle a named parameter read from the drawing (so that
+//! sensitivities, tolerances and synthesis work on them). The result is
+//! an ordinary mechanism file ([`Topology::mechanism_text`]), which
+//! starts from the drawn assembly; nothing downstream is special.
+//!
+//! ```
+//! use linkage::topology::Topology;
+//!
+//! // The four-bar of the Maple worksheet, as drawn at θ2 = 20° (mm).
+//! let four_bar = Topology::new("FourBar")
+//!     .length_unit("mm")
+//!     .revolute("A", [0.0, 0.0])
+//!     .revolute("B", [18.79385241571817, 6.840402866513374])
+//!     .revolute("C", [35.44242865, 54.00760042])
+//!     .revolute("D", [80.0, 0.0])
+//!     .link("ground", &["A", "D"])
+//!     .link("crank", &["A", "B"])
+//!     .link("coupler", &["B", "C"])
+//!     .link("rocker", &["D", "C"])
+//!     .drive_angle("A", "B");
+//! let file = four_bar.mechanism_file()?;
+//! let mechanism = file.mechanism()?;
+//! assert_eq!((mechanism.m(), mechanism.f()), (2, 1));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+mod check;
+mod error;
+mod generate;
+mod model;
+mod write;
+
+pub use error::{TopologyError, TopologyErrors};
+pub use model::{Driven, Driver, Joint, JointKind, Link, Topology};
+
+use crate::file::MechanismFile;
+
+impl Topology {
+    /// Every mistake of the topology, or none.
+    pub fn check(&self) -> Result<(), TopologyErrors> {
+        check::check(self).map(|_| ())
+    }
+
+    /// The mechanism file of this topology: its generated equations,
+    /// parameters read from the drawing, drivers, the drawn assembly and
+    /// a drawing.
+    pub fn mechanism_text(&self) -> Result<String, TopologyErrors> {
+        let checked = check::check(self)?;
+        let generated = generate::generate(&checked);
+        Ok(write::mechanism_file(&checked, &generated))
+    }
+
+    /// [`Topology::mechanism_text`], read.
+    pub fn mechanism_file(&self) -> Result<MechanismFile, TopologyErrors> {
+        let text = self.mechanism_text()?;
+        MechanismFile::parse(&text).map_err(|errors| {
+            // The generator's own mistake, never the user's: said whole.
+            TopologyErrors::from(TopologyError::Generated {
+                why: format!("{errors}\n{text}"),
+            })
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests;
