@@ -10,7 +10,8 @@ use std::path::PathBuf;
 /// synthesized, drawn, and promoted to Rust.
 ///
 /// FILE is a mechanism file (TOML; see the guide's chapter on mechanism
-/// files), or `-` for standard input. Results go to standard output (or
+/// files) or a topology file (joints and links, whose equations are
+/// generated), or `-` for standard input. Results go to standard output (or
 /// `--output`), messages to standard error.
 ///
 /// Exit status: 0 done; 1 the mechanism file (or a targets file) has mistakes; 2 the command
@@ -27,6 +28,10 @@ pub struct Cli {
 pub enum Command {
     /// Reads a mechanism file and reports every mistake in it, or its sizes.
     Check(Input),
+    /// Writes the mechanism file that a topology file (joints and links)
+    /// generates: its closure equations, parameters, drive, assembly and
+    /// drawing.
+    Equations(Input),
     /// Analyses one pose (the drivers at their `at`): coordinates and
     /// points with their velocities and accelerations.
     Analyze(Analysis),

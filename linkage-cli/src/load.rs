@@ -3,7 +3,7 @@
 //! to standard error as a compiler writes them.
 
 use crate::failure::Failure;
-use linkage::file::MechanismFile;
+use linkage::file::{MechanismFile, TopologyFile, is_topology};
 use linkage::mechanism::{Diagnostics, Mechanism, MechanismError};
 use std::io::{IsTerminal, Read};
 use std::path::Path;
@@ -24,7 +24,7 @@ pub fn report(diagnostics: &Diagnostics, shown: &str, text: &str) {
 }
 
 /// The file's text: the file at `path`, or standard input for `-`.
-fn text_of(path: &Path) -> Result<(String, String), Failure> {
+pub fn text_of(path: &Path) -> Result<(String, String), Failure> {
     if path.as_os_str() == "-" {
         let mut text = String::new();
         std::io::stdin()
@@ -44,10 +44,32 @@ fn text_of(path: &Path) -> Result<(String, String), Failure> {
     Ok((path.display().to_string(), text))
 }
 
-/// Reads the mechanism file at `path` and makes its mechanism; every
-/// mistake is written to standard error.
+/// The mechanism file a topology file generates, shown as such in later
+/// messages; the topology's mistakes written against its own text.
+pub fn generated(shown: &str, text: &str) -> Result<(String, String), Failure> {
+    let topology = TopologyFile::parse(text).map_err(|errors| {
+        report(&Diagnostics::from(&errors), shown, text);
+        Failure::Mistakes
+    })?;
+    match topology.mechanism_file() {
+        Ok((_, generated)) => Ok((format!("{shown} (its equations)"), generated)),
+        Err(errors) => {
+            report(&Diagnostics::from(&errors), shown, text);
+            Err(Failure::Mistakes)
+        }
+    }
+}
+
+/// Reads the mechanism file at `path` (or the one a topology file
+/// generates) and makes its mechanism; every mistake is written to
+/// standard error.
 pub fn load(path: &Path) -> Result<Loaded, Failure> {
     let (shown, text) = text_of(path)?;
+    let (shown, text) = if is_topology(&text) {
+        generated(&shown, &text)?
+    } else {
+        (shown, text)
+    };
     let file = match MechanismFile::parse(&text) {
         Ok(file) => file,
         Err(errors) => {

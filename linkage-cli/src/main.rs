@@ -21,6 +21,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match &cli.command {
         Command::Check(input) => commands::check::run(input),
+        Command::Equations(input) => commands::equations::run(input),
         Command::Analyze(args) => commands::analyze::run(args),
         Command::Sweep(args) => commands::sweep::run(args),
         Command::Extremes(args) => commands::extremes::run(args),

@@ -638,3 +638,76 @@ fn a_file_makes_the_tool_read_and_write_only_its_paths() {
         assert_eq!(now, Some(contents), "{name} changed");
     }
 }
+
+/// The topology files (joints and links) of `mechanisms/joints/`.
+fn topologies() -> Vec<PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../mechanisms/joints");
+    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
+    files.sort();
+    assert!(files.len() >= 3, "the library of topologies");
+    files
+}
+
+#[test]
+fn every_topology_file_generates_its_equations_and_runs_every_command() {
+    for file in topologies() {
+        let path = file.to_str().unwrap();
+        for args in [
+            vec!["check", path],
+            vec!["equations", path],
+            vec!["analyze", path, "-f", "json"],
+            vec!["sweep", path, "--steps", "24", "-f", "csv"],
+            vec!["draw", path],
+            vec!["expand", path],
+        ] {
+            let out = run(&args);
+            assert!(
+                out.status.success(),
+                "linkage {args:?}: {}\n{}",
+                out.status,
+                text(&out.stderr)
+            );
+            assert!(!out.stdout.is_empty(), "linkage {args:?} printed nothing");
+        }
+        // The generated equations are a mechanism file that reads.
+        let equations = text(&run(&["equations", path]).stdout);
+        MechanismFile::parse(&equations).unwrap();
+    }
+    // A mechanism file is not a topology.
+    let out = run(&["equations", four_bar_file().to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+}
+
+#[test]
+fn a_topologys_mistake_is_located_at_its_culprit() {
+    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../mechanisms/joints/four_bar.toml");
+    let good = std::fs::read_to_string(file).unwrap();
+    let bad = good.replace("D = [80, 0]", "D = [80, 0]\nE = [1, 2]");
+    let line = bad.lines().position(|l| l.starts_with("E = ")).unwrap() + 1;
+    let mut child = tool()
+        .args(["check", "-"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(bad.as_bytes())
+        .unwrap();
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let message = text(&out.stderr);
+    assert!(
+        message.contains("joint `E` is on no link")
+            && message.contains(&format!("<stdin>:{line}:1")),
+        "{message}"
+    );
+    assert_eq!(message.matches("error").count(), 1, "{message}");
+}

@@ -137,6 +137,7 @@ mod reader;
 mod scene;
 mod suggest;
 mod syntax;
+mod topology;
 pub mod units;
 
 pub use assembly::AssemblyChoice;
@@ -149,6 +150,7 @@ pub use names::Name;
 pub(crate) use names::not_an_identifier;
 pub use parameters::Parameter;
 pub use quantity::Quantity;
+pub use topology::{TopologyFile, is_topology};
 pub use units::{Kind, Unit};
 
 use reader::{Reader, Table};

@@ -46,6 +46,9 @@ pub(super) struct Generated {
     pub bodies: Vec<Vec<String>>,
     /// Blocks on the frame: (point, angle).
     pub ground_sliders: Vec<(String, f64)>,
+    /// Blocks on a moving link: (point, two points of the link along its
+    /// line).
+    pub along_sliders: Vec<(String, [String; 2])>,
 }
 
 /// How a link's frame turns.
@@ -623,23 +626,75 @@ impl Generator<'_, '_> {
             if l == ground {
                 continue;
             }
-            let mut body: Vec<String> = Vec::new();
-            for &j in joints {
-                let drawn = self.placer[j].is_some();
+            // Its pins first, then what slides on it; one name a place.
+            let mut body: Vec<usize> = Vec::new();
+            let pins_first = (joints.iter().copied())
+                .filter(|&j| self.checked.kind(j) == JointKind::Revolute)
+                .chain(
+                    joints
+                        .iter()
+                        .copied()
+                        .filter(|&j| self.checked.kind(j) != JointKind::Revolute),
+                );
+            for j in pins_first {
                 let carried = self.places(l, j) || self.checked.kind(j) == JointKind::Revolute;
-                if drawn && carried && !body.iter().any(|b| b == self.name(j)) {
-                    body.push(self.name(j).to_owned());
+                let apart = body.iter().all(|&b| {
+                    !self
+                        .checked
+                        .coincide(self.checked.at(b), self.checked.at(j))
+                });
+                if self.placer[j].is_some() && carried && apart {
+                    body.push(j);
                 }
             }
+            let body: Vec<String> = body.iter().map(|&j| self.name(j).to_owned()).collect();
             if body.len() >= 2 {
                 self.out.bodies.push(body);
             }
         }
         for j in 0..self.checked.topology.joints.len() {
-            if self.checked.kind(j) != JointKind::Revolute && self.guide(j).0 == ground {
-                self.out
-                    .ground_sliders
-                    .push((self.name(j).to_owned(), self.slide_angle(j)));
+            if self.checked.kind(j) == JointKind::Revolute {
+                continue;
+            }
+            let (guide, block) = self.guide(j);
+            // The block drawn at the block's pin where one is drawn there.
+            let at = self.checked.at(j);
+            let pin = (self.checked.links[block].iter().copied()).find(|&p| {
+                p != j
+                    && self.checked.kind(p) == JointKind::Revolute
+                    && self.placer[p].is_some()
+                    && self.checked.coincide(self.checked.at(p), at)
+            });
+            let point = self.name(pin.unwrap_or(j)).to_owned();
+            if guide == ground {
+                self.out.ground_sliders.push((point, self.slide_angle(j)));
+                continue;
+            }
+            // On a moving guide: along two of its points on the line.
+            let line = self.slide_angle(j);
+            let on_line = |a: usize, b: usize| {
+                let d = self.drawn_angle(a, b) - line;
+                d.sin().abs() < 1e-9
+                    && !self
+                        .checked
+                        .coincide(self.checked.at(a), self.checked.at(b))
+            };
+            let points: Vec<usize> = (self.checked.links[guide].iter().copied())
+                .filter(|&p| {
+                    p != j
+                        && self.placer[p].is_some()
+                        && self.checked.kind(p) == JointKind::Revolute
+                })
+                .collect();
+            let pair = points.iter().enumerate().find_map(|(k, &a)| {
+                points[k + 1..]
+                    .iter()
+                    .find(|&&b| on_line(a, b))
+                    .map(|&b| [a, b])
+            });
+            if let Some([a, b]) = pair {
+                let names = [self.name(a).to_owned(), self.name(b).to_owned()];
+                self.out.along_sliders.push((point, names));
             }
         }
     }

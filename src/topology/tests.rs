@@ -291,3 +291,36 @@ fn each_bad_topology_gives_its_one_error() {
         }]
     );
 }
+
+/// Each topology file of `mechanisms/joints/` against its equation file:
+/// the named points and their velocities at the drive's `at`.
+#[test]
+fn the_topology_files_are_their_equation_files() {
+    use crate::file::TopologyFile;
+    fn compare<const M: usize>(topology: &str, equations: &str, points: &[&str], scale: f64) {
+        let (generated, _) = TopologyFile::parse(topology)
+            .unwrap()
+            .mechanism_file()
+            .unwrap();
+        let (model, analysis) = pose::<M, 1>(&generated);
+        let (twin, twin_analysis) = pose::<M, 1>(&MechanismFile::parse(equations).unwrap());
+        for name in points {
+            let [p, pv] = point(&model, &analysis, name);
+            let [q, qv] = point(&twin, &twin_analysis, name);
+            close(p, q, scale);
+            close(pv, qv, scale * 50.0);
+        }
+    }
+    compare::<2>(
+        include_str!("../../mechanisms/joints/four_bar.toml"),
+        include_str!("../../mechanisms/four_bar.toml"),
+        &["B", "C"],
+        80.0,
+    );
+    compare::<4>(
+        include_str!("../../mechanisms/joints/quick_return.toml"),
+        include_str!("../../mechanisms/quick_return.toml"),
+        &["A", "P", "R"],
+        450.0,
+    );
+}

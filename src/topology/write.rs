@@ -93,12 +93,15 @@ pub(super) fn mechanism_file(checked: &Checked<'_>, generated: &Generated) -> St
     if !plates.is_empty() {
         let _ = writeln!(out, "plates = [{}]", plates.join(", "));
     }
-    if !generated.ground_sliders.is_empty() {
-        let sliders: Vec<String> = (generated.ground_sliders.iter())
-            .map(|(point, angle)| {
-                format!("{{ point = {}, angle = {} }}", quote(point), number(*angle))
-            })
-            .collect();
+    let mut sliders: Vec<String> = (generated.ground_sliders.iter())
+        .map(|(point, angle)| format!("{{ point = {}, angle = {} }}", quote(point), number(*angle)))
+        .collect();
+    sliders.extend(
+        (generated.along_sliders.iter()).map(|(point, along)| {
+            format!("{{ point = {}, along = {} }}", quote(point), list(along))
+        }),
+    );
+    if !sliders.is_empty() {
         let _ = writeln!(out, "sliders = [{}]", sliders.join(", "));
     }
     if !topology.trace.is_empty() {
