@@ -13,7 +13,8 @@
 //! C = [35.4, 54.0]
 //! D = ["80 mm", 0]
 //! # S = { at = [4, 0.5], slider = "0 deg" }   a slider along 0°
-//! # Q = { at = [1, 2], slot = "30 deg" }      a pin in a slot along 30°
+//! # Q = { at = [1, 2], slot = "30 deg", guide = "lever" }
+//! #                                  a pin in a slot of `lever` along 30°
 //!
 //! [links]                  # each link's joints; `ground` is the frame
 //! ground = ["A", "D"]
@@ -36,7 +37,7 @@
 //! |---|---|---|
 //! | `name`, `title`, `length_unit` | as in a mechanism file | `name` required |
 //! | `ground` | the name of the frame's link (`ground` unless said) | optional |
-//! | `[joints]` | `<name> = [x, y]` for a pin (or a point, on one link); `{ at = [x, y], slider = angle }` for a slider, `{ at = [x, y], slot = angle }` for a pin in a slot (its guide the first of its two links in `[links]`) | required |
+//! | `[joints]` | `<name> = [x, y]` for a pin (or a point, on one link); `{ at = [x, y], slider = angle }` for a slider, `{ at = [x, y], slot = angle }` for a pin in a slot; `guide = "link"` names the link that carries the line (by default the first of the joint's two links in `[links]`) | required |
 //! | `[links]` | `<name> = ["A", "B", …]`: the joints each link carries | required |
 //! | `[[drive]]` | one per driver: `angle = ["A", "B"]` (the angle of the line A→B of one link) or `slide = "S"` (the travel along a slider or slot); `from`, `to` (an angle's default: a turn from its drawn value; a slide's required), `steps`, `rate`, `at` as in a mechanism file | required |
 //! | `[lengths]` | `A-B = length`: the distance of two joints of one link, given rather than drawn | optional |
@@ -119,7 +120,9 @@ impl TopologyFile {
         let name = match error {
             BadName { name, .. } | DuplicateName { name } | NameClash { name } => Some(name),
             UnknownJoint { link, .. } | JointTwice { link, .. } | EmptyLink { link } => Some(link),
-            JointOnNoLink { joint } | SliderLinks { joint, .. } => Some(joint),
+            JointOnNoLink { joint } | SliderLinks { joint, .. } | BadGuide { joint, .. } => {
+                Some(joint)
+            }
             Disconnected { links } | RigidLoop { links } => links.first(),
             CoincidentPins { joints, .. } => joints.get(1),
             Dangling { link, .. } => Some(link),
@@ -242,6 +245,7 @@ impl Reader<'_> {
         topology: &mut Topology,
         places: &mut HashMap<String, Range<usize>>,
     ) {
+        let mut guides: Vec<(String, String)> = Vec::new();
         let Some(table) = self.table("joints", "a table of joints: `A = [x, y]`", value) else {
             return;
         };
@@ -258,7 +262,13 @@ impl Reader<'_> {
                     let at = t.require(self, "at", "where the joint is drawn: `at = [x, y]`");
                     let slider = t.take("slider");
                     let slot = t.take("slot");
+                    let guide = t.take("guide");
                     t.finish(self);
+                    if let Some(v) = guide
+                        && let Some(g) = self.string(&format!("{place}.guide"), v)
+                    {
+                        guides.push((name.text.clone(), g.to_owned()));
+                    }
                     let angle = |reader: &mut Self, key: &str, v: &Value<'_>| {
                         reader
                             .quantity(&format!("{place}.{key}"), v, Accept::ANGLE, unit)
@@ -289,10 +299,14 @@ impl Reader<'_> {
             };
             if let (Some(at), Some(kind)) = (at, kind) {
                 places.insert(name.text.clone(), span);
+                let guide = (guides.iter())
+                    .find(|(j, _)| *j == name.text)
+                    .map(|(_, g)| g.clone());
                 topology.joints.push(crate::topology::Joint {
                     name: name.text,
                     kind,
                     at,
+                    guide,
                 });
             }
         }

@@ -110,8 +110,18 @@ pub(super) fn check(topology: &Topology) -> Result<Checked<'_>, TopologyErrors> 
             joint_links[j].push(l);
         }
     }
-    for (j, on) in joint_links.iter().enumerate() {
+    for (j, on) in joint_links.iter_mut().enumerate() {
         let joint = &topology.joints[j];
+        // The guide first.
+        if let Some(guide) = &joint.guide {
+            match on.iter().position(|&l| topology.links[l].name == *guide) {
+                Some(k) => on[..=k].rotate_right(1),
+                None => errors.push(TopologyError::BadGuide {
+                    joint: joint.name.clone(),
+                    link: guide.clone(),
+                }),
+            }
+        }
         if on.is_empty() {
             errors.push(TopologyError::JointOnNoLink {
                 joint: joint.name.clone(),

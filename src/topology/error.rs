@@ -24,6 +24,8 @@ pub enum TopologyError {
     JointOnNoLink { joint: String },
     /// A link that lists no joint.
     EmptyLink { link: String },
+    /// A slider's or a slot's guide that is not one of its links.
+    BadGuide { joint: String, link: String },
     /// A slider or a slot not on exactly two links.
     SliderLinks { joint: String, links: usize },
     /// A position or an angle that is not a finite number.
@@ -103,6 +105,10 @@ impl fmt::Display for TopologyError {
                 "joint `{joint}` is on no link: list it on the links it joins"
             ),
             EmptyLink { link } => write!(f, "link `{link}` carries no joint"),
+            BadGuide { joint, link } => write!(
+                f,
+                "the guide of `{joint}` is `{link}`, which is not one of the links it joins"
+            ),
             SliderLinks { joint, links } => write!(
                 f,
                 "slider `{joint}` is on {links} link(s): a slider or a slot joins exactly two links, its guide listed first"

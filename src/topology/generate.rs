@@ -361,7 +361,7 @@ impl Generator<'_, '_> {
         let mut order = 0;
         self.reached[ground] = order;
         for &j in &self.checked.links[ground].clone() {
-            if self.checked.kind(j) == JointKind::Revolute {
+            if self.places(ground, j) {
                 self.placer[j] = Some(ground);
             }
         }

@@ -8,13 +8,13 @@ pub enum JointKind {
     /// A pin: every link it joins turns about it. On one link only, it is
     /// a named point of that link (a coupler point).
     Revolute,
-    /// A slider: of its two links, the second slides on the first along
-    /// the line through the joint at `angle` (from the x axis, in radians,
-    /// as drawn), and the two turn together.
+    /// A slider: its two links slide on each other along the line through
+    /// the joint at `angle` (from the x axis, in radians, as drawn), and
+    /// turn together.
     Prismatic { angle: f64 },
-    /// A pin in a slot: the pin, on the second link, runs in a straight
-    /// slot of the first, through the joint at `angle` (as drawn), and
-    /// turns in it.
+    /// A pin in a slot: the pin, on one of its two links, runs in a
+    /// straight slot of the other (the joint's guide), through the joint at
+    /// `angle` (as drawn), and turns in it.
     PinInSlot { angle: f64 },
 }
 
@@ -26,6 +26,9 @@ pub struct Joint {
     pub kind: JointKind,
     /// Where it is drawn, in the topology's length unit.
     pub at: [f64; 2],
+    /// A slider's or a slot's guide: the link that carries the line (the
+    /// first of its two links in the topology's order when not said).
+    pub guide: Option<String>,
 }
 
 /// A rigid link and the joints it carries, in order (a binary link's two,
@@ -139,12 +142,20 @@ impl Topology {
             name: name.to_owned(),
             kind,
             at,
+            guide: None,
         });
         self
     }
 
-    /// With a link carrying these joints (a slider's or a slot's guide
-    /// first among the two links that list it).
+    /// With the slider or slot `joint`'s line on `link`.
+    pub fn guide(mut self, joint: &str, link: &str) -> Topology {
+        if let Some(j) = self.joints.iter_mut().find(|j| j.name == joint) {
+            j.guide = Some(link.to_owned());
+        }
+        self
+    }
+
+    /// With a link carrying these joints.
     pub fn link(mut self, name: &str, joints: &[&str]) -> Topology {
         self.links.push(Link {
             name: name.to_owned(),
