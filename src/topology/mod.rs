@@ -38,6 +38,7 @@ mod check;
 mod error;
 mod generate;
 mod model;
+pub mod pylinkage;
 pub mod pyslvs;
 mod write;
 

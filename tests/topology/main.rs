@@ -3,3 +3,6 @@
 
 /// pyslvs's example mechanisms against pyslvs.
 mod pyslvs;
+
+/// pylinkage's example linkages against pylinkage.
+mod pylinkage;
