@@ -297,13 +297,18 @@ fn each_bad_topology_gives_its_one_error() {
 #[test]
 fn the_topology_files_are_their_equation_files() {
     use crate::file::TopologyFile;
-    fn compare<const M: usize>(topology: &str, equations: &str, points: &[&str], scale: f64) {
+    fn compare<const M: usize, const N: usize>(
+        topology: &str,
+        equations: &str,
+        points: &[&str],
+        scale: f64,
+    ) {
         let (generated, _) = TopologyFile::parse(topology)
             .unwrap()
             .mechanism_file()
             .unwrap();
         let (model, analysis) = pose::<M, 1>(&generated);
-        let (twin, twin_analysis) = pose::<M, 1>(&MechanismFile::parse(equations).unwrap());
+        let (twin, twin_analysis) = pose::<N, 1>(&MechanismFile::parse(equations).unwrap());
         for name in points {
             let [p, pv] = point(&model, &analysis, name);
             let [q, qv] = point(&twin, &twin_analysis, name);
@@ -311,13 +316,19 @@ fn the_topology_files_are_their_equation_files() {
             close(pv, qv, scale * 50.0);
         }
     }
-    compare::<2>(
+    compare::<2, 2>(
         include_str!("../../mechanisms/joints/four_bar.toml"),
         include_str!("../../mechanisms/four_bar.toml"),
         &["B", "C"],
         80.0,
     );
-    compare::<4>(
+    compare::<4, 3>(
+        include_str!("../../mechanisms/joints/shaper.toml"),
+        include_str!("../../mechanisms/shaper.toml"),
+        &["A", "D", "S3", "S5", "K"],
+        0.7,
+    );
+    compare::<4, 4>(
         include_str!("../../mechanisms/joints/quick_return.toml"),
         include_str!("../../mechanisms/quick_return.toml"),
         &["A", "P", "R"],
