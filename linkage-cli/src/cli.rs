@@ -32,6 +32,12 @@ pub enum Command {
     /// generates: its closure equations, parameters, drive, assembly and
     /// drawing.
     Equations(Input),
+    /// Reads a mechanism of another tool (a pyslvs expression, pylinkage's
+    /// JSON) and writes it as a topology file.
+    Import(ImportArgs),
+    /// Writes a topology file in another tool's format (a pyslvs
+    /// expression, pylinkage's JSON).
+    Export(ExportArgs),
     /// Analyses one pose (the drivers at their `at`): coordinates and
     /// points with their velocities and accelerations.
     Analyze(Analysis),
@@ -57,6 +63,53 @@ pub enum Command {
     /// a struct, and its parameters' values (with `--expanded`, the code
     /// the attribute generates).
     Expand(ExpandArgs),
+}
+
+/// The formats of other tools.
+#[derive(Clone, Copy, Debug, clap::ValueEnum)]
+pub enum Peer {
+    /// pyslvs's expression, `M[J[R, color[Green], P[0, 0], L[ground, L1]], …]`
+    Pyslvs,
+    /// pylinkage's JSON (`mechanism_to_dict`)
+    Pylinkage,
+}
+
+/// `import`'s arguments.
+#[derive(Debug, Args)]
+pub struct ImportArgs {
+    /// The format of the source.
+    pub from: Peer,
+    #[command(flatten)]
+    pub input: Input,
+    /// A pyslvs input: the joints BASE,DRIVE whose line's angle drives
+    /// (as pyslvs's `(base, drive)`); once per input.
+    #[arg(long = "input", value_parser = parse_pair)]
+    pub inputs: Vec<(usize, usize)>,
+    /// The mechanism's name (an identifier); pyslvs's expressions have none.
+    #[arg(long, default_value = "Mechanism")]
+    pub name: String,
+}
+
+/// `export`'s arguments.
+#[derive(Debug, Args)]
+pub struct ExportArgs {
+    /// The format to write.
+    pub to: Peer,
+    #[command(flatten)]
+    pub input: Input,
+}
+
+/// `3,4` as (3, 4).
+fn parse_pair(text: &str) -> Result<(usize, usize), String> {
+    let (a, b) = text
+        .split_once(',')
+        .ok_or_else(|| format!("`{text}` is not BASE,DRIVE (two joint numbers)"))?;
+    let number = |t: &str| {
+        t.trim()
+            .parse::<usize>()
+            .map_err(|_| format!("`{t}` is not a joint number"))
+    };
+    Ok((number(a)?, number(b)?))
 }
 
 /// `expand`'s arguments.

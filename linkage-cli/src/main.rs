@@ -22,6 +22,8 @@ fn main() -> ExitCode {
     let result = match &cli.command {
         Command::Check(input) => commands::check::run(input),
         Command::Equations(input) => commands::equations::run(input),
+        Command::Import(args) => commands::import::run(args),
+        Command::Export(args) => commands::export::run(args),
         Command::Analyze(args) => commands::analyze::run(args),
         Command::Sweep(args) => commands::sweep::run(args),
         Command::Extremes(args) => commands::extremes::run(args),

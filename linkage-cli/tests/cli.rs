@@ -711,3 +711,49 @@ fn a_topologys_mistake_is_located_at_its_culprit() {
     );
     assert_eq!(message.matches("error").count(), 1, "{message}");
 }
+
+/// A pyslvs expression imported as a topology file analyses; exported
+/// again it is the same expression; without its input it is refused.
+#[test]
+fn import_and_export_carry_a_pyslvs_expression() {
+    let expression = "M[J[R, color[Green], P[0.0, 0.0], L[ground, L1]], J[R, color[Green], P[12.92, 32.53], L[L1, L2]], J[R, color[Green], P[73.28, 67.97], L[L2, L3]], J[R, color[Green], P[33.3, 66.95], L[L2]], J[R, color[Green], P[90.0, 0.0], L[ground, L3]]]";
+    let dir = std::env::temp_dir().join(format!("linkage-import-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let source = dir.join("crank_rocker.txt");
+    std::fs::write(&source, expression).unwrap();
+    let topology = dir.join("crank_rocker.toml");
+    let (source, topology) = (source.to_str().unwrap(), topology.to_str().unwrap());
+    let out = run(&[
+        "import",
+        "pyslvs",
+        source,
+        "--input",
+        "0,1",
+        "--name",
+        "CrankRocker",
+        "-o",
+        topology,
+    ]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let out = run(&["analyze", topology, "-f", "csv"]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let out = run(&["export", "pyslvs", topology]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    assert_eq!(
+        text(&out.stdout),
+        format!("{expression}\n# inputs: (0, 1)\n")
+    );
+    let out = run(&["export", "pylinkage", topology]);
+    assert!(out.status.success() && text(&out.stdout).contains("\"motor_joint\": \"J0\""));
+    let out = run(&["import", "pyslvs", source]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(
+        text(&out.stderr).contains("0 driver(s)"),
+        "{}",
+        text(&out.stderr)
+    );
+    let out = run(&["import", "pyslvs", source, "--input", "0,7"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(text(&out.stderr).contains("names a joint the expression does not have"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}

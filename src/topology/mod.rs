@@ -40,6 +40,7 @@ mod generate;
 mod model;
 pub mod pylinkage;
 pub mod pyslvs;
+mod save;
 mod write;
 
 pub use error::{TopologyError, TopologyErrors};
@@ -60,6 +61,12 @@ impl Topology {
         let checked = check::check(self)?;
         let generated = generate::generate(&checked);
         Ok(write::mechanism_file(&checked, &generated))
+    }
+
+    /// The topology file of this topology ([`crate::file::TopologyFile`]),
+    /// which reads back to it.
+    pub fn topology_text(&self) -> String {
+        save::topology_file(self)
     }
 
     /// [`Topology::mechanism_text`], read.

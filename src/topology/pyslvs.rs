@@ -10,7 +10,8 @@
 //! the pin. Its inputs are pairs of joints (base, drive): the angle of
 //! the line base → drive, from the x axis.
 //!
-//! Read here, joint i is `J<i>`. A pin in a slot on more than one pin link
+//! Read here, joint i is `J<i>`, lengths are millimetres (as Pyslvs-UI
+//! draws them). A pin in a slot on more than one pin link
 //! is the slot on the first (`J<i>`) and a pin `J<i>_pin` joining the
 //! pin's links; a slider whose block is more than one link, or an input
 //! whose two joints no moving link carries, is not representable and is
@@ -247,7 +248,8 @@ pub fn from_pyslvs(
 ) -> Result<Topology, PyslvsError> {
     let joints = parse_expression(expression)?;
     let unrepresentable = |why: String| PyslvsError::Unrepresentable { why };
-    let mut topology = Topology::new(name);
+    // pyslvs draws in millimetres.
+    let mut topology = Topology::new(name).length_unit("mm");
     // The links in order of first mention, the frame as `ground`.
     let mut links: Vec<(String, Vec<String>)> = Vec::new();
     let mut carry = |link: &str, joint: String| match links.iter_mut().find(|(n, _)| n == link) {

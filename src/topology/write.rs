@@ -3,6 +3,7 @@
 
 use super::check::Checked;
 use super::generate::{Generated, number};
+use super::save::quote;
 use std::f64::consts::TAU;
 use std::fmt::Write;
 
@@ -107,22 +108,5 @@ pub(super) fn mechanism_file(checked: &Checked<'_>, generated: &Generated) -> St
     if !topology.trace.is_empty() {
         let _ = writeln!(out, "trace = {}", list(&topology.trace));
     }
-    out
-}
-
-/// A TOML basic string.
-fn quote(text: &str) -> String {
-    let mut out = String::from("\"");
-    for c in text.chars() {
-        match c {
-            '"' => out.push_str("\\\""),
-            '\\' => out.push_str("\\\\"),
-            c if c.is_control() => {
-                let _ = write!(out, "\\u{:04X}", c as u32);
-            }
-            c => out.push(c),
-        }
-    }
-    out.push('"');
     out
 }

@@ -419,6 +419,11 @@ fn every_example_reads_back_from_its_written_expression() {
         assert_eq!(written_inputs, inputs, "{name}");
         let again = from_pyslvs("Example", &written, &written_inputs).unwrap();
         assert_eq!(again, topology, "{name}: {written}");
+        // And as a topology file.
+        let text = topology.topology_text();
+        let file = linkage::file::TopologyFile::parse(&text)
+            .unwrap_or_else(|e| panic!("{name}: {e}\n{text}"));
+        assert_eq!(file.topology, topology, "{name}\n{text}");
         // The joints as pyslvs reads them: types, angles, places, links.
         let (ours, theirs) = (
             parse_expression(&written).unwrap(),
