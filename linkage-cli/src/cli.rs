@@ -32,6 +32,11 @@ pub enum Command {
     /// generates: its closure equations, parameters, drive, assembly and
     /// drawing.
     Equations(Input),
+    /// A topology file's mechanism for CAD, as DXF: its pose at `at` (each
+    /// link an outline with pin holes, a layer each, the traced points'
+    /// paths), or with `--cut-sheet` every moving link laid flat and
+    /// labelled.
+    Dxf(DxfArgs),
     /// Reads a mechanism of another tool (a pyslvs expression, pylinkage's
     /// JSON) and writes it as a topology file.
     Import(ImportArgs),
@@ -63,6 +68,23 @@ pub enum Command {
     /// a struct, and its parameters' values (with `--expanded`, the code
     /// the attribute generates).
     Expand(ExpandArgs),
+}
+
+/// `dxf`'s arguments.
+#[derive(Debug, Args)]
+pub struct DxfArgs {
+    #[command(flatten)]
+    pub input: Input,
+    /// Every moving link laid flat, labelled, for cutting.
+    #[arg(long)]
+    pub cut_sheet: bool,
+    /// The links' width, in the file's length unit (default: a twentieth
+    /// of the mechanism's size).
+    #[arg(long)]
+    pub width: Option<f64>,
+    /// The pins' holes' diameter (default: two fifths of the width).
+    #[arg(long)]
+    pub hole: Option<f64>,
 }
 
 /// The formats of other tools.

@@ -70,6 +70,27 @@ pub fn load(path: &Path) -> Result<Loaded, Failure> {
     } else {
         (shown, text)
     };
+    loaded(shown, text)
+}
+
+/// Reads the topology file at `path`, and makes the mechanism it generates.
+pub fn load_topology(path: &Path) -> Result<(TopologyFile, Loaded), Failure> {
+    let (shown, text) = text_of(path)?;
+    if !is_topology(&text) {
+        return Err(Failure::Malformed(format!(
+            "{shown} is not a topology file (it has no [joints], or it has equations): joints and links are needed here"
+        )));
+    }
+    let topology = TopologyFile::parse(&text).map_err(|errors| {
+        report(&Diagnostics::from(&errors), &shown, &text);
+        Failure::Mistakes
+    })?;
+    let (shown, generated) = generated(&shown, &text)?;
+    Ok((topology, loaded(shown, generated)?))
+}
+
+/// A mechanism file's text, read and made into its mechanism.
+fn loaded(shown: String, text: String) -> Result<Loaded, Failure> {
     let file = match MechanismFile::parse(&text) {
         Ok(file) => file,
         Err(errors) => {

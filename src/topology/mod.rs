@@ -35,6 +35,7 @@
 //! ```
 
 mod check;
+pub mod dxf;
 mod error;
 mod generate;
 mod model;

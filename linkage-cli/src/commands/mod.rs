@@ -4,6 +4,7 @@
 pub mod analyze;
 pub mod check;
 pub mod draw;
+pub mod dxf;
 pub mod equations;
 pub mod expand;
 pub mod export;

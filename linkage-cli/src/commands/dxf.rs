@@ -1,0 +1,101 @@
+//! `linkage dxf TOPOLOGY -o pose.dxf`: the pose at `at` for CAD, or with
+//! `--cut-sheet` the links laid flat.
+
+use crate::cli::DxfArgs;
+use crate::failure::Failure;
+use crate::load::{Loaded, load_topology};
+use crate::sizes::{self, Job};
+use linkage::file::TopologyFile;
+use linkage::mechanism::Fixed;
+use linkage::prelude::*;
+use linkage::topology::dxf::DxfOptions;
+
+/// The joints' positions at the pose (the frame's pivots where drawn),
+/// and the traced points' paths over the drive range.
+struct Pose<'a> {
+    loaded: &'a Loaded,
+    trace: &'a [String],
+}
+
+type Paths = Vec<(String, Vec<[f64; 2]>)>;
+
+impl Job for Pose<'_> {
+    type Output = (Vec<(String, [f64; 2])>, Paths);
+    fn run<const M: usize, const F: usize>(
+        self,
+        model: Fixed<M, F>,
+    ) -> Result<Self::Output, Failure> {
+        let (drives, pose) = super::analysed(self.loaded, &model)?;
+        let names = model.point_names();
+        let mut positions: Vec<(String, [f64; 2])> = (names.iter().zip(pose.points.as_ref()))
+            .map(|(n, p)| ((*n).to_owned(), [p.x, p.y]))
+            .collect();
+        let file = &self.loaded.file;
+        for parameter in &file.parameters {
+            if let Some(joint) = parameter.name.text.strip_prefix("x_")
+                && let Some(y) = file.parameter(&format!("y_{joint}"))
+            {
+                positions.push((joint.to_owned(), [parameter.quantity.value, y]));
+            }
+        }
+        let traced: Vec<usize> = (self.trace.iter())
+            .filter_map(|t| names.iter().position(|n| n == t))
+            .collect();
+        let mut paths: Paths = traced
+            .iter()
+            .map(|&k| (names[k].to_owned(), Vec::new()))
+            .collect();
+        super::sweep_each(self.loaded, &model, drives.steps, &mut |_, p| {
+            let points = model.point_positions(&p.u, &p.v);
+            for (path, &k) in paths.iter_mut().zip(&traced) {
+                let q = points.as_ref()[k];
+                path.1.push([q.x, q.y]);
+            }
+        })?;
+        Ok((positions, paths))
+    }
+}
+
+pub fn run(args: &DxfArgs) -> Result<(), Failure> {
+    let (topology, loaded): (TopologyFile, Loaded) = load_topology(&args.input.file)?;
+    let topology = &topology.topology;
+    let (positions, paths) = sizes::run(
+        &loaded.mechanism,
+        Pose {
+            loaded: &loaded,
+            trace: &topology.trace,
+        },
+    )?;
+    let size = {
+        let extent = |k: usize| {
+            let values = positions.iter().map(|(_, p)| p[k]);
+            let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), x| {
+                (l.min(x), h.max(x))
+            });
+            hi - lo
+        };
+        extent(0).max(extent(1))
+    };
+    let mut options = DxfOptions::for_size(size);
+    if let Some(width) = args.width {
+        options.width = width;
+        options.hole_diameter = 0.4 * width;
+    }
+    if let Some(hole) = args.hole {
+        options.hole_diameter = hole;
+    }
+    let sizes_ok = [options.width, options.hole_diameter]
+        .iter()
+        .all(|x| x.is_finite() && *x > 0.0);
+    if !sizes_ok || options.hole_diameter >= options.width {
+        return Err(Failure::Malformed(
+            "`--width` and `--hole` must be positive, the holes narrower than the links".to_owned(),
+        ));
+    }
+    let dxf = if args.cut_sheet {
+        topology.cut_sheet_dxf(&positions, &options)
+    } else {
+        topology.pose_dxf(&positions, &paths, &options)
+    };
+    super::emit(args.input.output.as_deref(), dxf.as_bytes())
+}
