@@ -637,13 +637,13 @@ impl Generator<'_, '_> {
                         .filter(|&j| self.checked.kind(j) != JointKind::Revolute),
                 );
             for j in pins_first {
-                let carried = self.places(l, j) || self.checked.kind(j) == JointKind::Revolute;
+                // A slider's or a slot's point lies on its guide's line too.
                 let apart = body.iter().all(|&b| {
                     !self
                         .checked
                         .coincide(self.checked.at(b), self.checked.at(j))
                 });
-                if self.placer[j].is_some() && carried && apart {
+                if self.placer[j].is_some() && apart {
                     body.push(j);
                 }
             }

@@ -198,6 +198,25 @@ fn run<const M: usize, const F: usize>(
     let start = model
         .solve_position(&guess, &drawn, &Options::default())
         .unwrap_or_else(|e| panic!("{name}: as drawn: {e}"));
+    // It draws, as drawn.
+    #[cfg(feature = "draw")]
+    {
+        let analysis = model
+            .analyze(
+                &start.u,
+                &drawn,
+                &SVector::zeros(),
+                &SVector::zeros(),
+                &Options::default(),
+            )
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        let frame = linkage::draw::scene::Frame::from_analysis(&model, &analysis);
+        let svg = (file.scene().render(&frame, &[])).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert!(
+            svg.starts_with("<svg") && svg.matches("<circle").count() >= 3,
+            "{name}"
+        );
+    }
     let mut outcome = Outcome::default();
     let drawn_joints: Vec<[f64; 2]> = (parse_expression(example["expression"].as_str().unwrap())
         .unwrap()
