@@ -64,6 +64,8 @@ pub struct TopologyFile {
     driver_places: Vec<Range<usize>>,
     /// Where the `[links]` table is, and the file's start.
     links_place: Range<usize>,
+    /// Where each traced name is written.
+    trace_places: Vec<(String, Range<usize>)>,
 }
 
 /// Whether `text` is a topology file rather than a mechanism file: it has
@@ -135,12 +137,22 @@ impl TopologyFile {
             | DrivenLinkLocked { .. }
             | NotASlide { .. }
             | SlideWithoutRange { .. }
+            | BadDrive { .. }
             | Mobility { .. } => self.driver_places.first(),
             DrivenTwice { .. } => self.driver_places.last(),
             _ => None,
         };
+        let traced = match error {
+            UnknownTrace { name } => self
+                .trace_places
+                .iter()
+                .find(|(n, _)| n == name)
+                .map(|(_, r)| r),
+            _ => None,
+        };
         let at = (name.and_then(|n| self.places.get(n)))
             .or(driver)
+            .or(traced)
             .cloned()
             .unwrap_or_else(|| self.links_place.clone());
         FileError::new(text, at, error.to_string())
@@ -223,10 +235,12 @@ impl Reader<'_> {
         if let Some(value) = lengths {
             self.given_lengths(value, unit, &mut topology);
         }
+        let mut trace_places = Vec::new();
         if let Some(value) = trace
             && let Some(names) = self.names("trace", value)
         {
-            topology.trace = names.into_iter().map(|(n, _)| n).collect();
+            topology.trace = names.iter().map(|(n, _)| n.clone()).collect();
+            trace_places = names;
         }
         name?;
         Some(TopologyFile {
@@ -234,6 +248,7 @@ impl Reader<'_> {
             places,
             driver_places,
             links_place,
+            trace_places,
         })
     }
 

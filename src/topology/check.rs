@@ -8,6 +8,9 @@ use super::model::{Driven, JointKind, Topology};
 use crate::file::units;
 use std::collections::{BTreeSet, HashMap};
 
+/// The longest name of a joint or a link (the generated names join two).
+const LONGEST_NAME: usize = 100;
+
 /// A topology whose names resolve: joints and links by index.
 #[derive(Debug)]
 pub(super) struct Checked<'t> {
@@ -156,6 +159,11 @@ pub(super) fn check(topology: &Topology) -> Result<Checked<'_>, TopologyErrors> 
     coincident_pins(&checked, &mut errors);
     drivers(&checked, &mut errors);
     lengths(&checked, &mut errors);
+    for name in &topology.trace {
+        if checked.joint(name).is_none() {
+            errors.push(TopologyError::UnknownTrace { name: name.clone() });
+        }
+    }
     if errors.is_empty() {
         mobility(&checked, &mut errors);
     }
@@ -176,6 +184,11 @@ fn names(topology: &Topology, errors: &mut Vec<TopologyError>) {
             errors.push(TopologyError::BadName {
                 name: name.clone(),
                 why,
+            });
+        } else if name.len() > LONGEST_NAME {
+            errors.push(TopologyError::BadName {
+                name: name.clone(),
+                why: format!("a name of {} characters: a joint's or a link's name has at most {LONGEST_NAME}", name.len()),
             });
         } else if !seen.insert(name.as_str()) {
             errors.push(TopologyError::DuplicateName { name: name.clone() });
@@ -253,6 +266,25 @@ fn coincident_pins(checked: &Checked<'_>, errors: &mut Vec<TopologyError>) {
         let pins: Vec<usize> = (joints.iter().copied())
             .filter(|&j| checked.kind(j) == JointKind::Revolute)
             .collect();
+        // A turning link needs two of its joints apart for its angle.
+        let slides = joints
+            .iter()
+            .any(|&j| matches!(checked.kind(j), JointKind::Prismatic { .. }));
+        if let [first, second, ..] = joints[..]
+            && !slides
+            && joints
+                .iter()
+                .all(|&j| checked.coincide(checked.at(j), checked.at(first)))
+        {
+            errors.push(TopologyError::CoincidentPins {
+                link: checked.link_name(l).to_owned(),
+                joints: [
+                    checked.joint_name(first).to_owned(),
+                    checked.joint_name(second).to_owned(),
+                ],
+            });
+            continue;
+        }
         'pairs: for (a, &ja) in pins.iter().enumerate() {
             for &jb in &pins[a + 1..] {
                 if checked.coincide(checked.at(ja), checked.at(jb)) {
@@ -307,11 +339,21 @@ fn drivers(checked: &Checked<'_>, errors: &mut Vec<TopologyError>) {
                         && checked.links[l].contains(&a)
                         && checked.links[l].contains(&b)
                 });
+                let locked = unturning(checked);
                 match link {
                     None => errors.push(TopologyError::DriverNotOnOneLink {
                         from: from.clone(),
                         to: to.clone(),
                     }),
+                    Some(l) if locked[l] => {
+                        let slider = (checked.links[l].iter())
+                            .find(|&&j| matches!(checked.kind(j), JointKind::Prismatic { .. }))
+                            .map_or(String::new(), |&j| checked.joint_name(j).to_owned());
+                        errors.push(TopologyError::DrivenLinkLocked {
+                            link: checked.link_name(l).to_owned(),
+                            joint: slider,
+                        })
+                    }
                     Some(l)
                         if !driven
                             .insert(format!("the angle of link `{}`", checked.link_name(l))) =>
@@ -355,8 +397,44 @@ fn drivers(checked: &Checked<'_>, errors: &mut Vec<TopologyError>) {
             errors.push(TopologyError::NotFinite {
                 what: "a driver's range, rate or pose".to_owned(),
             });
+        } else if driver.range.is_some_and(|[from, to]| from == to) {
+            errors.push(TopologyError::BadDrive {
+                why: "its range is of zero length (`from` = `to`, to rounding)".to_owned(),
+            });
+        }
+        if let Some(steps) = driver.steps
+            && !(1..=crate::file::MOST_STEPS).contains(&steps)
+        {
+            errors.push(TopologyError::BadDrive {
+                why: format!(
+                    "{steps} steps: a sweep takes 1 to {}",
+                    crate::file::MOST_STEPS
+                ),
+            });
         }
     }
+}
+
+/// The links that cannot turn: slid on the frame along sliders, or on
+/// links that cannot turn.
+fn unturning(checked: &Checked<'_>) -> Vec<bool> {
+    let mut locked = vec![false; checked.links.len()];
+    locked[checked.ground] = true;
+    let mut changed = true;
+    while changed {
+        changed = false;
+        for (j, on) in checked.joint_links.iter().enumerate() {
+            if matches!(checked.kind(j), JointKind::Prismatic { .. })
+                && let [a, b] = on[..]
+                && locked[a] != locked[b]
+            {
+                locked[a] = true;
+                locked[b] = true;
+                changed = true;
+            }
+        }
+    }
+    locked
 }
 
 /// Given lengths between two joints of one link, positive.
@@ -395,6 +473,10 @@ fn mobility(checked: &Checked<'_>, errors: &mut Vec<TopologyError>) {
     let n = checked.links.len();
     let mobility = 3 * (n as i64 - 1) - 2 * full as i64 - half as i64;
     let drivers = checked.topology.drivers.len();
+    if mobility == 0 && drivers == 0 {
+        errors.push(TopologyError::NoDriver);
+        return;
+    }
     if mobility < drivers as i64
         && let Some(links) = over_constrained(checked)
     {

@@ -72,6 +72,14 @@ pub enum TopologyError {
         to: String,
         why: String,
     },
+    /// A driver's range of zero length, or its steps out of range.
+    BadDrive { why: String },
+    /// No driver, and no degree of freedom: a structure, not a mechanism.
+    NoDriver,
+    /// Every coordinate driven: nothing is left to solve for.
+    NothingDepends,
+    /// A point to trace that is no joint.
+    UnknownTrace { name: String },
     /// The length unit is none of `m`, `mm`, `cm`, `in`, `ft`.
     BadUnit { unit: String },
     /// The generated mechanism file did not read: a fault of this
@@ -183,6 +191,14 @@ impl fmt::Display for TopologyError {
             DrivenTwice { what } => write!(f, "{what} is driven twice"),
             BadLength { from, to, why } => write!(f, "the length `{from}`–`{to}`: {why}"),
             BadUnit { unit } => write!(f, "`{unit}` is not a length unit: m, mm, cm, in or ft"),
+            BadDrive { why } => write!(f, "a driver: {why}"),
+            NoDriver => f.write_str(
+                "nothing drives it, and it cannot move (0 degrees of freedom): a structure, not a mechanism",
+            ),
+            NothingDepends => f.write_str(
+                "every coordinate is driven: nothing is left to solve for (drive fewer, or join more links)",
+            ),
+            UnknownTrace { name } => write!(f, "`{name}` is traced but is no joint"),
             Generated { why } => write!(
                 f,
                 "the generated mechanism file does not read (a fault of linkage): {why}"

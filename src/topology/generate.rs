@@ -578,7 +578,13 @@ impl Generator<'_, '_> {
                         continue;
                     }
                     let (point, travel) = self.line_point(guide, j);
-                    let here = self.position_of(j);
+                    // The block's (or pin's) point, through its own frame
+                    // where another link placed the joint's point.
+                    let here = if self.placer[j] == Some(block) {
+                        self.position_of(j)
+                    } else {
+                        self.through(block, j)
+                    };
                     self.out.closure.push(format!("{} - ({})", here.0, point.0));
                     self.out.closure.push(format!("{} - ({})", here.1, point.1));
                     let s = Value {

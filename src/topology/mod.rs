@@ -61,6 +61,16 @@ impl Topology {
     pub fn mechanism_text(&self) -> Result<String, TopologyErrors> {
         let checked = check::check(self)?;
         let generated = generate::generate(&checked);
+        if generated.u.is_empty() {
+            return Err(TopologyError::NothingDepends.into());
+        }
+        // Every driver a coordinate of v (the checks make it so).
+        if generated.v.len() != self.drivers.len() {
+            return Err(TopologyError::Generated {
+                why: "a driver moves no coordinate".to_owned(),
+            }
+            .into());
+        }
         Ok(write::mechanism_file(&checked, &generated))
     }
 

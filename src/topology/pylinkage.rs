@@ -252,7 +252,9 @@ pub fn from_pylinkage(json: &str) -> Result<(Topology, Vec<(String, String)>), P
                 let steps = if rate == 0.0 {
                     360
                 } else {
-                    ((range[1] - range[0]).abs() / rate.abs()).round().max(1.0) as usize
+                    ((range[1] - range[0]).abs() / rate.abs())
+                        .round()
+                        .clamp(1.0, crate::file::MOST_STEPS as f64) as usize
                 };
                 topology = topology.drive(Driver {
                     driven: Driven::Angle {

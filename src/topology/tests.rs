@@ -277,6 +277,68 @@ fn each_bad_topology_gives_its_one_error() {
     let mut t = good.clone();
     t.links[1].name = "fn".into();
     assert!(matches!(&errors(&t)[..], [TopologyError::BadName { .. }]));
+    // No driver and no freedom: a structure.
+    let t = Topology::new("Truss")
+        .revolute("A", [0.0, 0.0])
+        .revolute("B", [1.0, 0.0])
+        .revolute("C", [0.5, 1.0])
+        .link("ground", &["A", "B"])
+        .link("left", &["A", "C"])
+        .link("right", &["B", "C"]);
+    assert_eq!(errors(&t), [TopologyError::NoDriver]);
+    // A drive of zero length, or of no steps.
+    let mut t = good.clone();
+    t.drivers[0].range = Some([1.0, 1.0]);
+    assert!(matches!(&errors(&t)[..], [TopologyError::BadDrive { .. }]));
+    let mut t = good.clone();
+    t.drivers[0].steps = Some(0);
+    assert!(matches!(&errors(&t)[..], [TopologyError::BadDrive { .. }]));
+    // The angle of a block that slides on the frame without turning.
+    let block = Topology::new("Block")
+        .prismatic("S", [0.0, 0.0], 0.0)
+        .revolute("P", [1.0, 0.0])
+        .link("ground", &["S"])
+        .link("block", &["S", "P"])
+        .drive_angle("S", "P");
+    assert!(
+        matches!(&errors(&block)[..], [TopologyError::DrivenLinkLocked { link, .. }, ..] if link == "block"),
+        "{:?}",
+        errors(&block)
+    );
+    // A lone crank: nothing left to solve for.
+    let crank = Topology::new("Crank")
+        .revolute("A", [0.0, 0.0])
+        .revolute("B", [1.0, 0.0])
+        .link("ground", &["A"])
+        .link("crank", &["A", "B"])
+        .drive_angle("A", "B");
+    assert_eq!(
+        crank.mechanism_text().unwrap_err().errors,
+        [TopologyError::NothingDepends]
+    );
+    // A point traced that is no joint.
+    let t = good.clone().trace("Q");
+    assert_eq!(
+        errors(&t),
+        [TopologyError::UnknownTrace { name: "Q".into() }]
+    );
+    // A link whose joints are all drawn at one place (a pin and a slot).
+    let t = Topology::new("Bad")
+        .revolute("A", [0.0, 0.0])
+        .revolute("B", [1.0, 0.0])
+        .pin_in_slot("S", [1.0, 0.0], 0.0)
+        .link("ground", &["A", "S"])
+        .link("crank", &["A", "B"])
+        .link("rod", &["B", "S"])
+        .guide("S", "ground")
+        .drive_angle("A", "B");
+    assert_eq!(
+        errors(&t),
+        [TopologyError::CoincidentPins {
+            link: "rod".into(),
+            joints: ["B".into(), "S".into()]
+        }]
+    );
     // A driver of joints no moving link carries together.
     let t = {
         let mut t = good.clone();

@@ -1,6 +1,7 @@
 //! Fuzzing what the library reads at run time: mechanism texts
-//! (`Mechanism::from_text`, the attribute's grammar) and mechanism files
-//! (`MechanismFile::parse`, then the file's mechanism), built from the 13
+//! (`Mechanism::from_text`, the attribute's grammar), mechanism files
+//! (`MechanismFile::parse`, then the file's mechanism) and topologies
+//! (topology files, pyslvs's expressions, pylinkage's JSON: `topologies`), built from the 13
 //! files of `mechanisms/` and from the grammar — token swaps, deletions,
 //! duplications, awkward numbers (huge, tiny, not finite, long runs of
 //! digits), deep nesting, long inputs, unicode and control characters,
@@ -41,6 +42,7 @@ mod mutate;
 mod random;
 mod regressions;
 mod run;
+mod topologies;
 
 use crate::watchdog::{Ended, watched};
 use random::Rng;
@@ -340,6 +342,16 @@ fn run_file(text: &String) -> Report {
 #[test]
 fn mechanism_texts_never_hang_panic_or_lie() {
     campaign("mechanism texts", 0x7465_7874_7331, text_input, run_text);
+}
+
+#[test]
+fn topologies_never_hang_panic_or_lie() {
+    campaign(
+        "topologies",
+        0x746f_706f_6c31,
+        topologies::input,
+        topologies::run,
+    );
 }
 
 #[test]

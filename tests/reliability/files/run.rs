@@ -56,7 +56,12 @@ fn in_text(text: &str, range: &std::ops::Range<usize>) -> bool {
 /// `outside` were given outside the text (a text's mechanism name and
 /// parameters, arguments of `from_text`): a mistake about one of them has
 /// no place in the text.
-fn located(report: &mut Report, diagnostics: &Diagnostics, text: &str, outside: &[&str]) {
+pub(crate) fn located(
+    report: &mut Report,
+    diagnostics: &Diagnostics,
+    text: &str,
+    outside: &[&str],
+) {
     for d in diagnostics.iter() {
         let about_outside =
             || (outside.iter()).any(|name| d.message().contains(&format!("`{name}`")));
