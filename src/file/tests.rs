@@ -651,6 +651,7 @@ fn the_module_opens_no_path_but_the_one_it_is_given() {
         ("scene.rs", include_str!("scene.rs")),
         ("suggest.rs", include_str!("suggest.rs")),
         ("syntax.rs", include_str!("syntax.rs")),
+        ("topology.rs", include_str!("topology.rs")),
         ("units.rs", include_str!("units.rs")),
     ];
     // Every source of the module is read here.
