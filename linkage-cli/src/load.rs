@@ -5,6 +5,7 @@
 use crate::failure::Failure;
 use linkage::file::{MechanismFile, TopologyFile, is_topology};
 use linkage::mechanism::{Diagnostics, Mechanism, MechanismError};
+use linkage::topology::Topology;
 use std::io::{IsTerminal, Read};
 use std::path::Path;
 
@@ -15,6 +16,8 @@ pub struct Loaded {
     pub text: String,
     pub file: MechanismFile,
     pub mechanism: Mechanism,
+    /// The topology the file was generated from, if it was.
+    pub topology: Option<Topology>,
 }
 
 /// Writes `diagnostics` against the file's text to standard error.
@@ -46,13 +49,17 @@ pub fn text_of(path: &Path) -> Result<(String, String), Failure> {
 
 /// The mechanism file a topology file generates, shown as such in later
 /// messages; the topology's mistakes written against its own text.
-pub fn generated(shown: &str, text: &str) -> Result<(String, String), Failure> {
+pub fn generated(shown: &str, text: &str) -> Result<(String, String, Topology), Failure> {
     let topology = TopologyFile::parse(text).map_err(|errors| {
         report(&Diagnostics::from(&errors), shown, text);
         Failure::Mistakes
     })?;
     match topology.mechanism_file() {
-        Ok((_, generated)) => Ok((format!("{shown} (its equations)"), generated)),
+        Ok((_, generated)) => Ok((
+            format!("{shown} (its equations)"),
+            generated,
+            topology.topology,
+        )),
         Err(errors) => {
             report(&Diagnostics::from(&errors), shown, text);
             Err(Failure::Mistakes)
@@ -65,11 +72,12 @@ pub fn generated(shown: &str, text: &str) -> Result<(String, String), Failure> {
 /// standard error.
 pub fn load(path: &Path) -> Result<Loaded, Failure> {
     let (shown, text) = text_of(path)?;
-    let (shown, text) = if is_topology(&text) {
-        generated(&shown, &text)?
-    } else {
-        (shown, text)
-    };
+    if is_topology(&text) {
+        let (shown, text, topology) = generated(&shown, &text)?;
+        let mut loaded = loaded(shown, text)?;
+        loaded.topology = Some(topology);
+        return Ok(loaded);
+    }
     loaded(shown, text)
 }
 
@@ -85,8 +93,10 @@ pub fn load_topology(path: &Path) -> Result<(TopologyFile, Loaded), Failure> {
         report(&Diagnostics::from(&errors), &shown, &text);
         Failure::Mistakes
     })?;
-    let (shown, generated) = generated(&shown, &text)?;
-    Ok((topology, loaded(shown, generated)?))
+    let (shown, generated, made) = generated(&shown, &text)?;
+    let mut loaded = loaded(shown, generated)?;
+    loaded.topology = Some(made);
+    Ok((topology, loaded))
 }
 
 /// A mechanism file's text, read and made into its mechanism.
@@ -111,5 +121,6 @@ fn loaded(shown: String, text: String) -> Result<Loaded, Failure> {
         text,
         file,
         mechanism,
+        topology: None,
     })
 }

@@ -757,3 +757,38 @@ fn import_and_export_carry_a_pyslvs_expression() {
     assert!(text(&out.stderr).contains("names a joint the expression does not have"));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// A topology whose given lengths cannot close its loop says which loop,
+/// and by how much, as drawn.
+#[test]
+fn a_topology_that_does_not_close_names_its_loop() {
+    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../mechanisms/joints/four_bar.toml");
+    let text = std::fs::read_to_string(file)
+        .unwrap()
+        .replace("D-C = 70", "D-C = 10");
+    let mut child = tool()
+        .args(["analyze", "-"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(text.as_bytes())
+        .unwrap();
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(out.status.code(), Some(3));
+    let message = text_of_bytes(&out.stderr);
+    assert!(
+        message.contains("does not assemble")
+            && message.contains("the loop closing at joint `C` misses by 46.26"),
+        "{message}"
+    );
+}
+
+fn text_of_bytes(bytes: &[u8]) -> String {
+    String::from_utf8(bytes.to_vec()).unwrap()
+}

@@ -199,6 +199,22 @@ impl Mechanism {
         Ok(())
     }
 
+    /// Ψ(u, v), the closure equations' residuals in their order, at a pose
+    /// of any sizes (`u` of m coordinates, `v` of f): for a look at a pose
+    /// without a view at fixed sizes (how far a sketch is from closing).
+    pub fn residual(&self, u: &[f64], v: &[f64]) -> Result<Vec<f64>, MechanismError> {
+        let (m, f) = (self.m(), self.f());
+        if (u.len(), v.len()) != (m, f) {
+            return Err(MechanismError::Sizes {
+                asked: (u.len(), v.len()),
+                has: (m, f),
+            });
+        }
+        let field = |k: usize| self.fields[k];
+        let q = |k: usize| if k < m { u[k] } else { v[k - m] };
+        Ok(self.program.psi_dual(&field, &q))
+    }
+
     /// The mechanism seen at m = `M`, f = `F`, with room for 32 named
     /// points: an error if those are not its sizes.
     pub fn fixed<const M: usize, const F: usize>(&self) -> Result<Fixed<M, F>, MechanismError> {

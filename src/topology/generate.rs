@@ -39,6 +39,8 @@ pub(super) struct Generated {
     /// `name = (x, y)` of each point, in order.
     pub points: Vec<(String, String, String)>,
     pub closure: Vec<String>,
+    /// The joint each closure equation closes a loop at.
+    pub closes_at: Vec<String>,
     pub parameters: Vec<Value>,
     /// The frame's pivots.
     pub ground: Vec<(String, [f64; 2])>,
@@ -550,6 +552,12 @@ impl Generator<'_, '_> {
         ((strip(x, &ox), strip(y, &oy)), travel)
     }
 
+    /// A closure equation, of the loop closed at `joint`.
+    fn equation(&mut self, joint: usize, text: String) {
+        self.out.closure.push(text);
+        self.out.closes_at.push(self.name(joint).to_owned());
+    }
+
     /// One loop per joint the tree did not cross, for each link beyond the
     /// one that placed it.
     fn close(&mut self) {
@@ -564,12 +572,8 @@ impl Generator<'_, '_> {
                         }
                         let here = self.position_of(j);
                         let through = self.through(l, j);
-                        self.out
-                            .closure
-                            .push(format!("{} - ({})", here.0, through.0));
-                        self.out
-                            .closure
-                            .push(format!("{} - ({})", here.1, through.1));
+                        self.equation(j, format!("{} - ({})", here.0, through.0));
+                        self.equation(j, format!("{} - ({})", here.1, through.1));
                     }
                 }
                 JointKind::Prismatic { .. } | JointKind::PinInSlot { .. } => {
@@ -585,8 +589,8 @@ impl Generator<'_, '_> {
                     } else {
                         self.through(block, j)
                     };
-                    self.out.closure.push(format!("{} - ({})", here.0, point.0));
-                    self.out.closure.push(format!("{} - ({})", here.1, point.1));
+                    self.equation(j, format!("{} - ({})", here.0, point.0));
+                    self.equation(j, format!("{} - ({})", here.1, point.1));
                     let s = Value {
                         name: format!("s_{}", self.name(j)),
                         value: travel,
@@ -609,7 +613,7 @@ impl Generator<'_, '_> {
                         );
                         let gb = Self::sum(&b.angle, None);
                         let gg = Self::sum(&g.angle, Some(&c));
-                        self.out.closure.push(format!("{gb} - {gg}"));
+                        self.equation(j, format!("{gb} - {gg}"));
                     }
                 }
             }

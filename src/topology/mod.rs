@@ -80,6 +80,34 @@ impl Topology {
         save::topology_file(self)
     }
 
+    /// How far the drawing is from closing each loop, with the lengths
+    /// given: for each joint where a loop closes, the largest residual of
+    /// its equations at the drawn pose (0 to rounding when the drawing
+    /// gives every length), largest first. Where a mechanism does not
+    /// assemble, the first names the loop that the given lengths open.
+    pub fn sketch_gaps(&self) -> Result<Vec<(String, f64)>, TopologyErrors> {
+        let checked = check::check(self)?;
+        let generated = generate::generate(&checked);
+        let text = write::mechanism_file(&checked, &generated);
+        let fault = |why: String| TopologyErrors::from(TopologyError::Generated { why });
+        let file = MechanismFile::parse(&text).map_err(|e| fault(e.to_string()))?;
+        let mechanism = file.mechanism().map_err(|e| fault(e.to_string()))?;
+        let u: Vec<f64> = generated.u.iter().map(|c| c.value).collect();
+        let v: Vec<f64> = generated.v.iter().map(|(c, _)| c.value).collect();
+        let residual = mechanism
+            .residual(&u, &v)
+            .map_err(|e| fault(e.to_string()))?;
+        let mut gaps: Vec<(String, f64)> = Vec::new();
+        for (joint, r) in generated.closes_at.iter().zip(residual) {
+            match gaps.iter_mut().find(|(j, _)| j == joint) {
+                Some((_, gap)) => *gap = gap.max(r.abs()),
+                None => gaps.push((joint.clone(), r.abs())),
+            }
+        }
+        gaps.sort_by(|a, b| b.1.total_cmp(&a.1));
+        Ok(gaps)
+    }
+
     /// [`Topology::mechanism_text`], read.
     pub fn mechanism_file(&self) -> Result<MechanismFile, TopologyErrors> {
         let text = self.mechanism_text()?;

@@ -397,3 +397,49 @@ fn the_topology_files_are_their_equation_files() {
         450.0,
     );
 }
+
+/// A drawing closes every loop to rounding where it gives every length;
+/// a length given that opens a loop is found at the joint that closes it.
+#[test]
+fn sketch_gaps_name_the_loop_that_given_lengths_open() {
+    let drawn = worksheet_four_bar();
+    let mut exact = drawn.clone();
+    exact.lengths.clear();
+    let gaps = exact.sketch_gaps().unwrap();
+    assert_eq!(gaps.len(), 1);
+    assert!(gaps[0].1 < 1e-12, "{gaps:?}");
+    // The sketch is near the given lengths: a small gap.
+    let near = drawn.sketch_gaps().unwrap();
+    assert!(near[0].1 > 1e-3 && near[0].1 < 1.0, "{near:?}");
+    // A rocker of 10 mm cannot reach: the loop at C misses by what the
+    // drawing says, C reached from D along the drawn D→C and from B along
+    // the drawn B→C.
+    let mut open = drawn.clone();
+    open.lengths[2].2 = 10.0;
+    let gaps = open.sketch_gaps().unwrap();
+    assert_eq!(gaps[0].0, "C");
+    let at = |n: &str| open.joints.iter().find(|j| j.name == n).unwrap().at;
+    let along = |from: [f64; 2], to: [f64; 2], length: f64| {
+        let (dx, dy) = (to[0] - from[0], to[1] - from[1]);
+        let norm = dx.hypot(dy);
+        [from[0] + length * dx / norm, from[1] + length * dy / norm]
+    };
+    // B where the given crank puts it along the drawn A→B.
+    let b = along(at("A"), at("B"), 20.0);
+    let (c, d) = (at("C"), at("D"));
+    let (by_rocker, by_coupler) = (
+        along(d, c, 10.0),
+        along(
+            b,
+            [b[0] + c[0] - at("B")[0], b[1] + c[1] - at("B")[1]],
+            50.0,
+        ),
+    );
+    let expected = (by_rocker[0] - by_coupler[0])
+        .abs()
+        .max((by_rocker[1] - by_coupler[1]).abs());
+    assert!(
+        (gaps[0].1 - expected).abs() < 1e-12,
+        "{gaps:?} against {expected}"
+    );
+}

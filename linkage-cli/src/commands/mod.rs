@@ -72,10 +72,21 @@ pub fn assembled<const M: usize, const F: usize, const K: usize>(
         },
     };
     model.assemble(at, &pick).map(|mode| mode.u).map_err(|e| {
-        let why = format!(
+        let mut why = format!(
             "the mechanism does not assemble at the drivers' `at` ({}): {e}",
             analyze::at_text(&model.v_names(), at.as_slice())
         );
+        // Of a topology, the loop its given lengths open most, as drawn.
+        if let Some(topology) = &loaded.topology
+            && let Ok(gaps) = topology.sketch_gaps()
+            && let Some((joint, gap)) = gaps.first()
+            && *gap > 0.0
+        {
+            why += &format!(
+                "; as drawn, with the lengths given, the loop closing at joint `{joint}` misses by {gap:.4} {}",
+                loaded.file.length_unit
+            );
+        }
         at_the_drive(loaded, &model.v_names(), why, "the drive")
     })
 }
