@@ -3,15 +3,19 @@
 //! around its joints (a bar's two ends rounded, a plate the rounded hull
 //! of its joints) with a hole at every pin through it, one layer per link,
 //! the drawing's units in the header; the paths of points as polylines;
-//! and a cut sheet with every moving link laid flat and labelled. Slots
-//! and slider guides are not cut: their lines are the links' own (a slot's
-//! length is the pin's travel, which a sweep gives).
+//! and a cut sheet with every moving link laid flat and labelled. A pin
+//! running in a slot of a moving link has its slot cut, a hole's width
+//! wide and as long as the pin travels over a cycle; a slider's guide is
+//! the link itself.
 //!
 //! Coordinates are written as Rust writes an f64 (the shortest text that
 //! reads back to it): a reader gets the pose's numbers exactly.
 
 use super::model::{JointKind, Topology};
 use std::fmt::Write;
+
+/// The positions of a topology's joints at each pose of a cycle.
+pub type Cycle<'a> = &'a [Vec<(String, [f64; 2])>];
 
 /// The sizes of the parts drawn: a link's width (its outline lies
 /// `width / 2` around its pins) and the pins' holes.
@@ -260,21 +264,28 @@ fn pins_of(
 
 impl Topology {
     /// The pose whose joints are at `positions` as DXF: each moving link
-    /// an outline on its own layer with a hole at each pin, the frame's
-    /// pivots as holes on the layer of the frame, and each of `paths` (a
-    /// point's name and its path) as a polyline on a layer `path_<name>`.
+    /// an outline on its own layer with a hole at each pin and a slot for
+    /// each pin that runs in it (as long as the pin travels over `cycle`,
+    /// the joints' positions at each pose of a cycle), the frame's pivots
+    /// as holes on the layer of the frame, and the path over `cycle` of
+    /// each traced point as a polyline on a layer `path_<name>`.
     pub fn pose_dxf(
         &self,
         positions: Positions<'_>,
-        paths: &[(String, Vec<[f64; 2]>)],
+        cycle: Cycle<'_>,
         options: &DxfOptions,
     ) -> String {
         let mut document = Document::new();
         let radius = options.width / 2.0;
+        let slots = self.slots(positions, cycle);
         for (l, link) in self.links.iter().enumerate() {
             let pins = pins_of(self, l, positions);
+            let ends = slots
+                .iter()
+                .filter(|(g, _)| *g == link.name)
+                .flat_map(|(_, e)| e.iter().copied());
             if link.name != self.ground {
-                let places: Vec<[f64; 2]> = pins.iter().map(|(_, p, _)| *p).collect();
+                let places: Vec<[f64; 2]> = pins.iter().map(|(_, p, _)| *p).chain(ends).collect();
                 document.polyline(&link.name, &outline(&places, radius), true);
             }
             for (_, p, hole) in &pins {
@@ -283,20 +294,102 @@ impl Topology {
                 }
             }
         }
-        for (name, path) in paths {
-            let vertices: Vec<([f64; 2], f64)> = path.iter().map(|p| (*p, 0.0)).collect();
-            document.polyline(&format!("path_{name}"), &vertices, false);
+        for (link, ends) in &slots {
+            document.polyline(link, &outline(ends, options.hole_diameter / 2.0), true);
+        }
+        for name in &self.trace {
+            let path: Vec<([f64; 2], f64)> = cycle
+                .iter()
+                .filter_map(|pose| at(pose, name))
+                .map(|p| (p, 0.0))
+                .collect();
+            if path.len() > 1 {
+                document.polyline(&format!("path_{name}"), &path, false);
+            }
         }
         document.finish(&self.length_unit)
+    }
+
+    /// The slots of moving links, in the coordinates of the pose at
+    /// `positions`: for each pin in a slot of a moving link, the two ends
+    /// (one where the pin does not travel) of its travel along the slot's
+    /// line over `cycle`, the guide link's name first.
+    fn slots(&self, positions: Positions<'_>, cycle: Cycle<'_>) -> Vec<(String, Vec<[f64; 2]>)> {
+        let mut slots = Vec::new();
+        for joint in &self.joints {
+            let (JointKind::PinInSlot { angle }, Some(guide)) = (joint.kind, &joint.guide) else {
+                continue;
+            };
+            let Some(link) = self
+                .links
+                .iter()
+                .find(|l| l.name == *guide && l.name != self.ground)
+            else {
+                continue;
+            };
+            // The guide's frame: two of its other joints, apart as drawn.
+            let drawn = |name: &str| self.joints.iter().find(|j| j.name == name).map(|j| j.at);
+            let others: Vec<&String> = link.joints.iter().filter(|n| **n != joint.name).collect();
+            let frame = others.iter().enumerate().find_map(|(k, a)| {
+                others[k + 1..].iter().find_map(|b| {
+                    let (pa, pb) = (drawn(a)?, drawn(b)?);
+                    ((pb[0] - pa[0]).hypot(pb[1] - pa[1]) > 1e-9)
+                        .then(|| ((*a).clone(), (*b).clone(), pa, pb))
+                })
+            });
+            let Some((a, b, pa, pb)) = frame else {
+                continue;
+            };
+            // The slot's direction in the guide's frame, as drawn.
+            let along = angle - (pb[1] - pa[1]).atan2(pb[0] - pa[0]);
+            let (dir, normal) = ([along.cos(), along.sin()], [-along.sin(), along.cos()]);
+            let local = |pose: Positions<'_>| -> Option<([f64; 2], f64, [f64; 2])> {
+                let (o, r, pin) = (at(pose, &a)?, at(pose, &b)?, at(pose, &joint.name)?);
+                let turn = (r[1] - o[1]).atan2(r[0] - o[0]);
+                let (s, c) = turn.sin_cos();
+                let d = [pin[0] - o[0], pin[1] - o[1]];
+                Some((o, turn, [c * d[0] + s * d[1], -s * d[0] + c * d[1]]))
+            };
+            let travels: Vec<f64> = (cycle.iter())
+                .filter_map(|pose| local(pose))
+                .map(|(_, _, p)| p[0] * dir[0] + p[1] * dir[1])
+                .collect();
+            let Some((origin, turn, here)) = local(positions) else {
+                continue;
+            };
+            let offset = here[0] * normal[0] + here[1] * normal[1];
+            let here_travel = here[0] * dir[0] + here[1] * dir[1];
+            let least = travels.iter().copied().fold(here_travel, f64::min);
+            let most = travels.iter().copied().fold(here_travel, f64::max);
+            let (s, c) = turn.sin_cos();
+            let world = |t: f64| {
+                let l = [
+                    t * dir[0] + offset * normal[0],
+                    t * dir[1] + offset * normal[1],
+                ];
+                [
+                    origin[0] + c * l[0] - s * l[1],
+                    origin[1] + s * l[0] + c * l[1],
+                ]
+            };
+            slots.push((link.name.clone(), vec![world(least), world(most)]));
+        }
+        slots
     }
 
     /// Every moving link of the pose at `positions` laid flat for cutting:
     /// turned so that its two farthest pins lie along x, side by side with
     /// a link's width between them, each labelled with its name (layer
     /// `labels`), its outline and holes on its own layer.
-    pub fn cut_sheet_dxf(&self, positions: Positions<'_>, options: &DxfOptions) -> String {
+    pub fn cut_sheet_dxf(
+        &self,
+        positions: Positions<'_>,
+        cycle: Cycle<'_>,
+        options: &DxfOptions,
+    ) -> String {
         let mut document = Document::new();
         let radius = options.width / 2.0;
+        let slots = self.slots(positions, cycle);
         let mut x = 0.0;
         for (l, link) in self.links.iter().enumerate() {
             if link.name == self.ground {
@@ -319,11 +412,17 @@ impl Topology {
                 }
             }
             let (s, c) = (-angle).sin_cos();
+            let turn = |p: [f64; 2]| {
+                let (dx, dy) = (p[0] - first[0], p[1] - first[1]);
+                [c * dx - s * dy, s * dx + c * dy]
+            };
+            let slot_ends: Vec<Vec<[f64; 2]>> = (slots.iter())
+                .filter(|(g, _)| *g == link.name)
+                .map(|(_, ends)| ends.iter().map(|p| turn(*p)).collect())
+                .collect();
             let turned: Vec<[f64; 2]> = (pins.iter())
-                .map(|(_, p, _)| {
-                    let (dx, dy) = (p[0] - first[0], p[1] - first[1]);
-                    [c * dx - s * dy, s * dx + c * dy]
-                })
+                .map(|(_, p, _)| turn(*p))
+                .chain(slot_ends.iter().flatten().copied())
                 .collect();
             let min_x = turned.iter().map(|p| p[0]).fold(f64::INFINITY, f64::min);
             let max_x = turned
@@ -341,6 +440,17 @@ impl Topology {
                 if *hole {
                     document.circle(&link.name, *p, options.hole_diameter / 2.0);
                 }
+            }
+            for ends in &slot_ends {
+                let laid: Vec<[f64; 2]> = ends
+                    .iter()
+                    .map(|p| [p[0] + shift[0], p[1] + shift[1]])
+                    .collect();
+                document.polyline(
+                    &link.name,
+                    &outline(&laid, options.hole_diameter / 2.0),
+                    true,
+                );
             }
             document.text(
                 "labels",

@@ -10,7 +10,8 @@ well-kept DXF library for Python, from the Python package registry):
 - the pose has a layer per link, and its holes' centres are the joints'
   positions that `linkage analyze -f json` prints, to 1e-9;
 - the cut sheet has every moving link, labelled, its holes as far apart
-  as in the pose (a link is laid flat, not reshaped), to 1e-9.
+  as in the pose (a link is laid flat, not reshaped), to 1e-9;
+- a pin in a slot of a moving link has its slot cut in that link, in both.
 
     python3 -m venv target/dxf-venv && target/dxf-venv/bin/pip install ezdxf
     target/dxf-venv/bin/python tests/dxf/check_dxf.py target/debug/linkage
@@ -111,6 +112,22 @@ def check(tool, path, work):
         for d_pose, d_flat in zip(distances(posed), distances(flat)):
             if abs(d_pose - d_flat) > 1e-9 * max(1.0, d_pose):
                 fail(f"{cut_path.name}: {link}'s holes are {d_flat} apart, {d_pose} in the pose")
+    # A slot cut in each moving link that a pin runs in: a second closed
+    # outline on its layer, around the pin as posed.
+    for name, value in topology["joints"].items():
+        if isinstance(value, dict) and "slot" in value and value.get("guide", ground) != ground:
+            guide = value["guide"]
+            for doc, what in ((pose, pose_path.name), (cut, cut_path.name)):
+                closed = [e for e in doc.modelspace().query("POLYLINE") if e.dxf.layer == guide and e.is_closed]
+                if len(closed) < 2:
+                    fail(f"{what}: no slot for {name} in {guide}")
+            slot = [e for e in pose.modelspace().query("POLYLINE") if e.dxf.layer == guide and e.is_closed][-1]
+            xs = [v.dxf.location.x for v in slot.vertices]
+            ys = [v.dxf.location.y for v in slot.vertices]
+            p = positions[name]
+            margin = 1e-9
+            if not (min(xs) - margin <= p["x"] <= max(xs) + margin and min(ys) - margin <= p["y"] <= max(ys) + margin):
+                fail(f"{pose_path.name}: the slot for {name} does not reach its pin")
     return len(pose_holes)
 
 

@@ -11,61 +11,48 @@ use linkage::prelude::*;
 use linkage::topology::dxf::DxfOptions;
 
 /// The joints' positions at the pose (the frame's pivots where drawn),
-/// and the traced points' paths over the drive range.
+/// and at each pose of a cycle over the drive range.
 struct Pose<'a> {
     loaded: &'a Loaded,
-    trace: &'a [String],
 }
 
-type Paths = Vec<(String, Vec<[f64; 2]>)>;
+type Positions = Vec<(String, [f64; 2])>;
 
 impl Job for Pose<'_> {
-    type Output = (Vec<(String, [f64; 2])>, Paths);
+    type Output = (Positions, Vec<Positions>);
     fn run<const M: usize, const F: usize>(
         self,
         model: Fixed<M, F>,
     ) -> Result<Self::Output, Failure> {
         let (drives, pose) = super::analysed(self.loaded, &model)?;
         let names = model.point_names();
-        let mut positions: Vec<(String, [f64; 2])> = (names.iter().zip(pose.points.as_ref()))
-            .map(|(n, p)| ((*n).to_owned(), [p.x, p.y]))
-            .collect();
         let file = &self.loaded.file;
-        for parameter in &file.parameters {
-            if let Some(joint) = parameter.name.text.strip_prefix("x_")
-                && let Some(y) = file.parameter(&format!("y_{joint}"))
-            {
-                positions.push((joint.to_owned(), [parameter.quantity.value, y]));
-            }
-        }
-        let traced: Vec<usize> = (self.trace.iter())
-            .filter_map(|t| names.iter().position(|n| n == t))
+        let pivots: Positions = (file.parameters.iter())
+            .filter_map(|p| {
+                let joint = p.name.text.strip_prefix("x_")?;
+                let y = file.parameter(&format!("y_{joint}"))?;
+                Some((joint.to_owned(), [p.quantity.value, y]))
+            })
             .collect();
-        let mut paths: Paths = traced
-            .iter()
-            .map(|&k| (names[k].to_owned(), Vec::new()))
-            .collect();
+        let with_pivots = |points: &[Vector2<f64>]| -> Positions {
+            (names.iter().zip(points))
+                .map(|(n, p)| ((*n).to_owned(), [p.x, p.y]))
+                .chain(pivots.iter().cloned())
+                .collect()
+        };
+        let positions = with_pivots(pose.points.as_ref());
+        let mut cycle = Vec::new();
         super::sweep_each(self.loaded, &model, drives.steps, &mut |_, p| {
-            let points = model.point_positions(&p.u, &p.v);
-            for (path, &k) in paths.iter_mut().zip(&traced) {
-                let q = points.as_ref()[k];
-                path.1.push([q.x, q.y]);
-            }
+            cycle.push(with_pivots(model.point_positions(&p.u, &p.v).as_ref()));
         })?;
-        Ok((positions, paths))
+        Ok((positions, cycle))
     }
 }
 
 pub fn run(args: &DxfArgs) -> Result<(), Failure> {
     let (topology, loaded): (TopologyFile, Loaded) = load_topology(&args.input.file)?;
     let topology = &topology.topology;
-    let (positions, paths) = sizes::run(
-        &loaded.mechanism,
-        Pose {
-            loaded: &loaded,
-            trace: &topology.trace,
-        },
-    )?;
+    let (positions, cycle) = sizes::run(&loaded.mechanism, Pose { loaded: &loaded })?;
     let size = {
         let extent = |k: usize| {
             let values = positions.iter().map(|(_, p)| p[k]);
@@ -93,9 +80,9 @@ pub fn run(args: &DxfArgs) -> Result<(), Failure> {
         ));
     }
     let dxf = if args.cut_sheet {
-        topology.cut_sheet_dxf(&positions, &options)
+        topology.cut_sheet_dxf(&positions, &cycle, &options)
     } else {
-        topology.pose_dxf(&positions, &paths, &options)
+        topology.pose_dxf(&positions, &cycle, &options)
     };
     super::emit(args.input.output.as_deref(), dxf.as_bytes())
 }
