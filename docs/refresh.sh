@@ -22,6 +22,9 @@ run cam docs/figures/cam
 run tolerance docs/figures/tolerance
 run stability docs/figures
 run expansion_cost docs/figures -p linkage-macros
+cargo run --quiet --release -p linkage-cli -- draw mechanisms/joints/jansen_double.toml \
+  -o docs/figures/topology/jansen_double.svg
+echo "refreshed docs/figures/topology (linkage draw)"
 if [[ ${1:-} == --speed ]]; then
   benches/speed_tables.sh
   LINKAGE_OUT=docs/figures/synthesis bash benches/peers/synthesis.sh > /dev/null

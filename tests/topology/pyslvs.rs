@@ -462,3 +462,26 @@ fn every_example_reads_back_from_its_written_expression() {
         }
     }
 }
+
+/// The library's file of Jansen's double linkage is pyslvs's example, as
+/// imported, with a title and its feet traced.
+#[test]
+fn the_librarys_jansen_double_is_pyslvss_example() {
+    let example = (examples().into_iter())
+        .find(|e| e["name"] == "Jansen's linkage (Double)")
+        .unwrap();
+    let imported = from_pyslvs(
+        "JansenDouble",
+        example["expression"].as_str().unwrap(),
+        &[(0, 1)],
+    )
+    .unwrap();
+    let file = linkage::file::TopologyFile::parse(include_str!(
+        "../../mechanisms/joints/jansen_double.toml"
+    ))
+    .unwrap();
+    let mut kept = file.topology;
+    kept.title = None;
+    kept.trace.clear();
+    assert_eq!(kept, imported);
+}

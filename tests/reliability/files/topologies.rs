@@ -19,6 +19,7 @@ use linkage::topology::pyslvs::from_pyslvs;
 /// The topology files of `mechanisms/joints/`.
 const LIBRARY: &[&str] = &[
     include_str!("../../../mechanisms/joints/four_bar.toml"),
+    include_str!("../../../mechanisms/joints/jansen_double.toml"),
     include_str!("../../../mechanisms/joints/quick_return.toml"),
     include_str!("../../../mechanisms/joints/shaper.toml"),
     include_str!("../../../mechanisms/joints/slider_crank.toml"),
