@@ -64,6 +64,18 @@ impl Topology {
         if generated.u.is_empty() {
             return Err(TopologyError::NothingDepends.into());
         }
+        // A joint's name is its point's: no generated name may be one.
+        let generated_names = (generated.u.iter())
+            .chain(generated.v.iter().map(|(v, _)| v))
+            .chain(&generated.parameters)
+            .map(|value| &value.name);
+        let clashes: Vec<TopologyError> = generated_names
+            .filter(|name| self.joints.iter().any(|j| j.name == **name))
+            .map(|name| TopologyError::NameClash { name: name.clone() })
+            .collect();
+        if !clashes.is_empty() {
+            return Err(TopologyErrors { errors: clashes });
+        }
         // Every driver a coordinate of v (the checks make it so).
         if generated.v.len() != self.drivers.len() {
             return Err(TopologyError::Generated {

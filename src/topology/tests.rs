@@ -316,6 +316,23 @@ fn each_bad_topology_gives_its_one_error() {
         crank.mechanism_text().unwrap_err().errors,
         [TopologyError::NothingDepends]
     );
+    // A joint named as a generated parameter is.
+    let t = good
+        .clone()
+        .revolute("l_A_B", [5.0, 5.0])
+        .link("tag", &["B", "l_A_B"]);
+    let t = {
+        let mut t = t;
+        t.links.pop();
+        t.links[2].joints.push("l_A_B".into());
+        t
+    };
+    assert_eq!(
+        t.mechanism_text().unwrap_err().errors,
+        [TopologyError::NameClash {
+            name: "l_A_B".into()
+        }]
+    );
     // A point traced that is no joint.
     let t = good.clone().trace("Q");
     assert_eq!(
