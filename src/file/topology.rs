@@ -148,6 +148,10 @@ impl TopologyFile {
                 .iter()
                 .find(|(n, _)| n == name)
                 .map(|(_, r)| r),
+            TracedTwice { name } => (self.trace_places.iter())
+                .filter(|(n, _)| n == name)
+                .nth(1)
+                .map(|(_, r)| r),
             _ => None,
         };
         let at = (name.and_then(|n| self.places.get(n)))

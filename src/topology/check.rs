@@ -159,9 +159,11 @@ pub(super) fn check(topology: &Topology) -> Result<Checked<'_>, TopologyErrors> 
     coincident_pins(&checked, &mut errors);
     drivers(&checked, &mut errors);
     lengths(&checked, &mut errors);
-    for name in &topology.trace {
+    for (k, name) in topology.trace.iter().enumerate() {
         if checked.joint(name).is_none() {
             errors.push(TopologyError::UnknownTrace { name: name.clone() });
+        } else if topology.trace[..k].contains(name) {
+            errors.push(TopologyError::TracedTwice { name: name.clone() });
         }
     }
     if errors.is_empty() {
@@ -477,8 +479,14 @@ fn mobility(checked: &Checked<'_>, errors: &mut Vec<TopologyError>) {
         errors.push(TopologyError::NoDriver);
         return;
     }
-    if mobility < drivers as i64
+    // A part that cannot move makes the equations singular whatever the
+    // count (another part then moves freely): looked for always where
+    // the search is small, and wherever the count says over-constrained.
+    let small = n <= 16;
+    // (The whole mechanism over-constrained is the count's to say.)
+    if (mobility < drivers as i64 || small)
         && let Some(links) = over_constrained(checked)
+        && links.len() < n
     {
         errors.push(TopologyError::RigidLoop { links });
         return;
@@ -538,5 +546,23 @@ fn sub_mobility(checked: &Checked<'_>, chosen: &[usize]) -> i64 {
             JointKind::PinInSlot { .. } => 1,
         };
     }
-    3 * (chosen.len() as i64 - 1) - constraints
+    // A driver inside fixes one more freedom.
+    let driven = (checked.topology.drivers.iter())
+        .filter(|d| match &d.driven {
+            Driven::Angle { from, to } => {
+                let (Some(a), Some(b)) = (checked.joint(from), checked.joint(to)) else {
+                    return false;
+                };
+                chosen.iter().any(|&l| {
+                    l != checked.ground
+                        && checked.links[l].contains(&a)
+                        && checked.links[l].contains(&b)
+                }) && chosen.contains(&checked.ground)
+            }
+            Driven::Slide { joint } => checked
+                .joint(joint)
+                .is_some_and(|j| checked.joint_links[j].iter().all(|l| chosen.contains(l))),
+        })
+        .count() as i64;
+    3 * (chosen.len() as i64 - 1) - constraints - driven
 }

@@ -80,6 +80,8 @@ pub enum TopologyError {
     NothingDepends,
     /// A point to trace that is no joint.
     UnknownTrace { name: String },
+    /// A point traced twice.
+    TracedTwice { name: String },
     /// The length unit is none of `m`, `mm`, `cm`, `in`, `ft`.
     BadUnit { unit: String },
     /// The generated mechanism file did not read: a fault of this
@@ -198,6 +200,7 @@ impl fmt::Display for TopologyError {
             NothingDepends => f.write_str(
                 "every coordinate is driven: nothing is left to solve for (drive fewer, or join more links)",
             ),
+            TracedTwice { name } => write!(f, "`{name}` is traced twice"),
             UnknownTrace { name } => write!(f, "`{name}` is traced but is no joint"),
             Generated { why } => write!(
                 f,

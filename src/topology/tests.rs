@@ -255,7 +255,10 @@ fn each_bad_topology_gives_its_one_error() {
     let [TopologyError::RigidLoop { links }] = &found[..] else {
         panic!("{found:?}");
     };
-    assert!(links.contains(&"brace".to_owned()) && links.contains(&"brace2".to_owned()));
+    // Braced once, the driven four-bar is already a truss: the smallest
+    // such part, with one of the braces.
+    assert!(links.len() < 6, "{links:?}");
+    assert!(links.iter().any(|l| l.starts_with("brace")), "{links:?}");
     // A slider on three links.
     let t = good
         .clone()
