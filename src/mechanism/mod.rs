@@ -49,6 +49,7 @@ mod point_set;
 mod program;
 mod scratch;
 mod sensitive;
+pub mod sizes;
 
 pub use error::MechanismError;
 pub use fixed::Fixed;

@@ -15,6 +15,7 @@ struct Analyze<'a> {
 
 impl Job for Analyze<'_> {
     type Output = Table;
+    type Error = Failure;
     fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<Table, Failure> {
         let (drives, pose) = super::analysed(self.loaded, &model)?;
         let unit = &self.loaded.file.length_unit;

@@ -17,6 +17,7 @@ struct Picture<'a> {
 
 impl Job for Picture<'_> {
     type Output = String;
+    type Error = Failure;
     fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<String, Failure> {
         let (drives, pose) = super::analysed(self.loaded, &model)?;
         let frame = Frame::from_analysis(&model, &pose);

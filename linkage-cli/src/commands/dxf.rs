@@ -20,6 +20,7 @@ type Positions = Vec<(String, [f64; 2])>;
 
 impl Job for Pose<'_> {
     type Output = (Positions, Vec<Positions>);
+    type Error = Failure;
     fn run<const M: usize, const F: usize>(
         self,
         model: Fixed<M, F>,

@@ -17,6 +17,7 @@ struct Differentiate<'a> {
 
 impl SensitivityJob for Differentiate<'_> {
     type Output = Table;
+    type Error = Failure;
     fn run<const M: usize, const F: usize>(
         self,
         model: Fixed<M, F, 32, PARAMETERS>,

@@ -19,6 +19,7 @@ struct Poses<'a> {
 
 impl Job for Poses<'_> {
     type Output = Table;
+    type Error = Failure;
     fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<Table, Failure> {
         let unit = self.loaded.file.length_unit.clone();
         let mut columns: Vec<(String, String)> = Vec::new();

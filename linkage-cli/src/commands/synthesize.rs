@@ -64,6 +64,7 @@ struct Design<'a> {
 
 impl DesignJob for Design<'_> {
     type Output = Table;
+    type Error = Failure;
     fn run<const M: usize>(self, model: Fixed<M, 1, 32, PARAMETERS>) -> Result<Table, Failure> {
         let args = self.args;
         let drives = super::drives(self.loaded, &model)?;

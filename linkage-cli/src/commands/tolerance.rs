@@ -33,6 +33,7 @@ fn output<const M: usize, const F: usize, const K: usize>(
 
 impl SensitivityJob for Spread<'_> {
     type Output = Table;
+    type Error = Failure;
     fn run<const M: usize, const F: usize>(
         self,
         model: Fixed<M, F, 32, PARAMETERS>,
