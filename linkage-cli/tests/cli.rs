@@ -688,20 +688,7 @@ fn a_topologys_mistake_is_located_at_its_culprit() {
     let good = std::fs::read_to_string(file).unwrap();
     let bad = good.replace("D = [80, 0]", "D = [80, 0]\nE = [1, 2]");
     let line = bad.lines().position(|l| l.starts_with("E = ")).unwrap() + 1;
-    let mut child = tool()
-        .args(["check", "-"])
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(bad.as_bytes())
-        .unwrap();
-    let out = child.wait_with_output().unwrap();
+    let out = with_input(&["check", "-"], &bad);
     assert_eq!(out.status.code(), Some(1));
     let message = text(&out.stderr);
     assert!(
@@ -763,11 +750,23 @@ fn import_and_export_carry_a_pyslvs_expression() {
 #[test]
 fn a_topology_that_does_not_close_names_its_loop() {
     let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../mechanisms/joints/four_bar.toml");
-    let text = std::fs::read_to_string(file)
+    let topology = std::fs::read_to_string(file)
         .unwrap()
         .replace("D-C = 70", "D-C = 10");
+    let out = with_input(&["analyze", "-"], &topology);
+    assert_eq!(out.status.code(), Some(3));
+    let message = text(&out.stderr);
+    assert!(
+        message.contains("does not assemble")
+            && message.contains("the loop closing at joint `C` misses by 46.26"),
+        "{message}"
+    );
+}
+
+/// The tool run with `input` on its standard input.
+fn with_input(args: &[&str], input: &str) -> Output {
     let mut child = tool()
-        .args(["analyze", "-"])
+        .args(args)
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
@@ -777,18 +776,7 @@ fn a_topology_that_does_not_close_names_its_loop() {
         .stdin
         .take()
         .unwrap()
-        .write_all(text.as_bytes())
+        .write_all(input.as_bytes())
         .unwrap();
-    let out = child.wait_with_output().unwrap();
-    assert_eq!(out.status.code(), Some(3));
-    let message = text_of_bytes(&out.stderr);
-    assert!(
-        message.contains("does not assemble")
-            && message.contains("the loop closing at joint `C` misses by 46.26"),
-        "{message}"
-    );
-}
-
-fn text_of_bytes(bytes: &[u8]) -> String {
-    String::from_utf8(bytes.to_vec()).unwrap()
+    child.wait_with_output().unwrap()
 }

@@ -299,6 +299,18 @@ impl Generator<'_, '_> {
         }
     }
 
+    /// The travel `s_<joint>` along a slider or slot, drawn at `travel`: a
+    /// coordinate, driven if a driver names it.
+    fn slide(&mut self, joint: usize, travel: f64) {
+        let value = Value {
+            name: format!("s_{}", self.name(joint)),
+            value: travel,
+            what: format!("the travel along `{}`", self.name(joint)),
+        };
+        let driver = self.slide_driver(joint);
+        self.coordinate(value, driver);
+    }
+
     /// The driver of the angle of `link`, if any: (from, to, index).
     fn angle_driver(&self, link: usize) -> Option<(usize, usize, usize)> {
         let joints = &self.checked.links[link];
@@ -428,25 +440,13 @@ impl Generator<'_, '_> {
                     reference: None,
                 });
                 self.define(l, j, point);
-                let s = Value {
-                    name: format!("s_{}", self.name(j)),
-                    value: travel,
-                    what: format!("the travel along `{}`", self.name(j)),
-                };
-                let driver = self.slide_driver(j);
-                self.coordinate(s, driver);
+                self.slide(j, travel);
             }
             JointKind::PinInSlot { .. } if self.places(l, j) => {
                 // The pin's link, reached from the slot: its origin the pin.
                 let (point, travel) = self.line_point(k, j);
                 self.define(l, j, point);
-                let s = Value {
-                    name: format!("s_{}", self.name(j)),
-                    value: travel,
-                    what: format!("the travel along `{}`", self.name(j)),
-                };
-                let driver = self.slide_driver(j);
-                self.coordinate(s, driver);
+                self.slide(j, travel);
                 self.free_frame(l, j, &name, &joints);
             }
             JointKind::PinInSlot { .. } => {
@@ -456,11 +456,6 @@ impl Generator<'_, '_> {
                     return;
                 };
                 self.free_frame(l, origin, &name, &joints);
-                let s = Value {
-                    name: format!("s_{}", self.name(j)),
-                    value: 0.0,
-                    what: format!("the travel along `{}`", self.name(j)),
-                };
                 // The line through the origin: the pin at travel s from it.
                 let ((x, y), travel) = self.line_point_relative(l, j);
                 let pin = self.position_of(j);
@@ -469,8 +464,7 @@ impl Generator<'_, '_> {
                     origin,
                     (format!("{} - ({x})", pin.0), format!("{} - ({y})", pin.1)),
                 );
-                let driver = self.slide_driver(j);
-                self.coordinate(Value { value: travel, ..s }, driver);
+                self.slide(j, travel);
             }
             JointKind::Revolute => {
                 let driven = self.angle_driver(l);
@@ -591,13 +585,7 @@ impl Generator<'_, '_> {
                     };
                     self.equation(j, format!("{} - ({})", here.0, point.0));
                     self.equation(j, format!("{} - ({})", here.1, point.1));
-                    let s = Value {
-                        name: format!("s_{}", self.name(j)),
-                        value: travel,
-                        what: format!("the travel along `{}`", self.name(j)),
-                    };
-                    let driver = self.slide_driver(j);
-                    self.coordinate(s, driver);
+                    self.slide(j, travel);
                     if matches!(self.checked.kind(j), JointKind::Prismatic { .. }) {
                         let (g, b) = (
                             self.frames[guide].clone().expect("visited"),
