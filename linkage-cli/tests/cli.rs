@@ -14,16 +14,23 @@ fn tool() -> Command {
     Command::new(env!("CARGO_BIN_EXE_linkage"))
 }
 
-fn library() -> Vec<PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../mechanisms");
+/// The TOML files of `folder` (under the repository), at least `least`.
+fn toml_files(folder: &str, least: usize) -> Vec<PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("..")
+        .join(folder);
     let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
         .unwrap()
         .map(|e| e.unwrap().path())
         .filter(|p| p.extension().is_some_and(|e| e == "toml"))
         .collect();
     files.sort();
-    assert!(files.len() >= 13, "the library of mechanisms");
+    assert!(files.len() >= least, "the files of {folder}");
     files
+}
+
+fn library() -> Vec<PathBuf> {
+    toml_files("mechanisms", 13)
 }
 
 fn run(args: &[&str]) -> Output {
@@ -641,15 +648,7 @@ fn a_file_makes_the_tool_read_and_write_only_its_paths() {
 
 /// The topology files (joints and links) of `mechanisms/joints/`.
 fn topologies() -> Vec<PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../mechanisms/joints");
-    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
-        .collect();
-    files.sort();
-    assert!(files.len() >= 3, "the library of topologies");
-    files
+    toml_files("mechanisms/joints", 5)
 }
 
 #[test]

@@ -310,11 +310,18 @@ impl Reader<'_> {
                         (None, None) => Some(JointKind::Revolute),
                     };
                     (
-                        at.and_then(|v| self.point(&format!("{place}.at"), v, unit)),
+                        at.and_then(|v| {
+                            self.position(&format!("{place}.at"), v, unit)
+                                .map(|[x, y]| [x.value, y.value])
+                        }),
                         kind,
                     )
                 }
-                _ => (self.point(&place, value, unit), Some(JointKind::Revolute)),
+                _ => (
+                    self.position(&place, value, unit)
+                        .map(|[x, y]| [x.value, y.value]),
+                    Some(JointKind::Revolute),
+                ),
             };
             if let (Some(at), Some(kind)) = (at, kind) {
                 places.insert(name.text.clone(), span);
@@ -329,24 +336,6 @@ impl Reader<'_> {
                 });
             }
         }
-    }
-
-    /// `[x, y]`, two lengths.
-    fn point(&mut self, place: &str, value: &Value<'_>, unit: Unit) -> Option<[f64; 2]> {
-        let array = self.array(place, "a position [x, y]", value)?;
-        if array.len() != 2 {
-            self.error(
-                value.span(),
-                format!(
-                    "`{place}` must be a position [x, y]: two lengths, not {}",
-                    array.len()
-                ),
-            );
-            return None;
-        }
-        let x = self.quantity(&format!("{place}[0]"), &array[0], Accept::LENGTH, unit);
-        let y = self.quantity(&format!("{place}[1]"), &array[1], Accept::LENGTH, unit);
-        Some([x?.value, y?.value])
     }
 
     /// `[links]`: `crank = ["A", "B"]`.
@@ -426,10 +415,6 @@ impl Reader<'_> {
                 Some(Driven::Slide { .. }) => Accept::LENGTH,
                 _ => Accept::ANGLE,
             };
-            let rate_accept = match driven {
-                Some(Driven::Slide { .. }) => Accept::RATE,
-                _ => Accept::RATE,
-            };
             let quantity = |reader: &mut Self, key: &str, v: Option<&Value<'_>>, accept| {
                 v.map(|v| {
                     reader
@@ -440,7 +425,7 @@ impl Reader<'_> {
             let from = quantity(self, "from", from, accept);
             let to = quantity(self, "to", to, accept);
             let at = quantity(self, "at", at, accept);
-            let rate = quantity(self, "rate", rate, rate_accept);
+            let rate = quantity(self, "rate", rate, Accept::RATE);
             let steps = steps
                 .map(|v| self.count(&format!("{place}.steps"), v, 1, super::MOST_STEPS as u64));
             let range = match (from, to) {

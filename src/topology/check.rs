@@ -29,7 +29,7 @@ impl<'t> Checked<'t> {
         self.topology.joints.iter().position(|j| j.name == name)
     }
 
-    /// The links a joint joins (a pin on one link is a point of it).
+    /// What kind of joint `joint` is.
     pub fn kind(&self, joint: usize) -> JointKind {
         self.topology.joints[joint].kind
     }

@@ -9,7 +9,7 @@
 //! dyad's drawn orientation. pyslvs solves most examples in closed form
 //! (its "triangular" mode, exact to ~1e-13) and the rest iteratively from
 //! the drawing (BFGS, to ~1e-11 where it converges), printing six
-//! decimals; both are held here to 1e-9 of the drawing's size (200 mm).
+//! decimals; both are held here to 1e-10 of the drawing's size (200 mm).
 
 use linkage::assembly::{Assemble, Search};
 use linkage::file::MechanismFile;
@@ -179,8 +179,9 @@ fn run<const M: usize, const F: usize>(
     example: &Value,
     closed_form: bool,
 ) -> Outcome {
-    // pyslvs's iterative results agree as closely as its closed forms.
-    let tolerance = 1e-9;
+    // The closest pyslvs's iterative results allow (its closed forms agree
+    // closer; at 1e-11 an iterative case of the Inverted slider misses).
+    let tolerance = 1e-10;
     let model: Fixed<M, F> = file.mechanism().unwrap().fixed::<M, F>().unwrap();
     let v_names = model.v_names();
     let drawn = SVector::<f64, F>::from_fn(|k, _| file.driver(v_names[k]).unwrap().at.value);
