@@ -1,24 +1,14 @@
 //! Reading the mechanism file named on the command line (or standard
-//! input) into its file and its run-time mechanism, every mistake written
-//! to standard error as a compiler writes them.
+//! input) into the library's [`Loaded`]; every mistake written to standard
+//! error as a compiler writes them.
 
 use crate::failure::Failure;
-use linkage::file::{MechanismFile, TopologyFile, is_topology};
-use linkage::mechanism::{Diagnostics, Mechanism, MechanismError};
-use linkage::topology::Topology;
+use linkage::file::{LoadError, Located, TopologyFile, read_text};
+use linkage::mechanism::Diagnostics;
 use std::io::{IsTerminal, Read};
 use std::path::Path;
 
-/// A mechanism file, read and made into its mechanism.
-pub struct Loaded {
-    /// The name to show in messages: the path, or `<stdin>`.
-    pub shown: String,
-    pub text: String,
-    pub file: MechanismFile,
-    pub mechanism: Mechanism,
-    /// The topology the file was generated from, if it was.
-    pub topology: Option<Topology>,
-}
+pub use linkage::file::Loaded;
 
 /// Writes `diagnostics` against the file's text to standard error.
 pub fn report(diagnostics: &Diagnostics, shown: &str, text: &str) {
@@ -26,7 +16,38 @@ pub fn report(diagnostics: &Diagnostics, shown: &str, text: &str) {
     eprint!("{}", diagnostics.render(shown, text, colour));
 }
 
-/// The file's text: the file at `path`, or standard input for `-`.
+/// Writes located mistakes to standard error.
+fn report_located(located: &Located) {
+    eprint!("{}", located.render(std::io::stderr().is_terminal()));
+}
+
+impl From<LoadError> for Failure {
+    /// The tool's failure for a loaded file's: mistakes and failures
+    /// located in the file are written to standard error here.
+    fn from(error: LoadError) -> Failure {
+        match error {
+            LoadError::Read { why } => Failure::Io(why),
+            LoadError::NotThisKind { why } => Failure::Malformed(why),
+            LoadError::Mistakes(located) => {
+                report_located(&located);
+                Failure::Mistakes
+            }
+            LoadError::Mechanism(error) => Failure::Analysis(error.to_string()),
+            LoadError::Analysis {
+                located: Some(located),
+                ..
+            } => {
+                report_located(&located);
+                Failure::AnalysisAt
+            }
+            LoadError::Analysis { why, .. } => Failure::Analysis(why),
+            _ => Failure::Analysis(error.to_string()),
+        }
+    }
+}
+
+/// The file's text: the file at `path`, or standard input for `-`; and its
+/// name in messages.
 pub fn text_of(path: &Path) -> Result<(String, String), Failure> {
     if path.as_os_str() == "-" {
         let mut text = String::new();
@@ -35,31 +56,18 @@ pub fn text_of(path: &Path) -> Result<(String, String), Failure> {
             .map_err(|e| Failure::Io(format!("cannot read standard input: {e}")))?;
         return Ok(("<stdin>".to_owned(), text));
     }
-    let bytes = std::fs::read(path)
-        .map_err(|e| Failure::Io(format!("cannot read {}: {e}", path.display())))?;
-    let text = String::from_utf8(bytes).map_err(|e| {
-        Failure::Io(format!(
-            "{} is not UTF-8 text (byte {}): a mechanism file is text in UTF-8",
-            path.display(),
-            e.utf8_error().valid_up_to()
-        ))
-    })?;
-    Ok((path.display().to_string(), text))
+    Ok((path.display().to_string(), read_text(path)?))
 }
 
-/// The mechanism file a topology file generates, shown as such in later
-/// messages; the topology's mistakes written against its own text.
-pub fn generated(shown: &str, text: &str) -> Result<(String, String, Topology), Failure> {
+/// The mechanism file a topology file generates; the topology's mistakes
+/// written against its own text.
+pub fn generated(shown: &str, text: &str) -> Result<String, Failure> {
     let topology = TopologyFile::parse(text).map_err(|errors| {
         report(&Diagnostics::from(&errors), shown, text);
         Failure::Mistakes
     })?;
     match topology.mechanism_file() {
-        Ok((_, generated)) => Ok((
-            format!("{shown} (its equations)"),
-            generated,
-            topology.topology,
-        )),
+        Ok((_, generated)) => Ok(generated),
         Err(errors) => {
             report(&Diagnostics::from(&errors), shown, text);
             Err(Failure::Mistakes)
@@ -68,59 +76,14 @@ pub fn generated(shown: &str, text: &str) -> Result<(String, String, Topology), 
 }
 
 /// Reads the mechanism file at `path` (or the one a topology file
-/// generates) and makes its mechanism; every mistake is written to
-/// standard error.
+/// generates) and makes its mechanism.
 pub fn load(path: &Path) -> Result<Loaded, Failure> {
     let (shown, text) = text_of(path)?;
-    if is_topology(&text) {
-        let (shown, text, topology) = generated(&shown, &text)?;
-        let mut loaded = loaded(shown, text)?;
-        loaded.topology = Some(topology);
-        return Ok(loaded);
-    }
-    loaded(shown, text)
+    Ok(Loaded::from_text(&shown, &text)?)
 }
 
 /// Reads the topology file at `path`, and makes the mechanism it generates.
 pub fn load_topology(path: &Path) -> Result<(TopologyFile, Loaded), Failure> {
     let (shown, text) = text_of(path)?;
-    if !is_topology(&text) {
-        return Err(Failure::Malformed(format!(
-            "{shown} is not a topology file (it has no [joints], or it has equations): joints and links are needed here"
-        )));
-    }
-    let topology = TopologyFile::parse(&text).map_err(|errors| {
-        report(&Diagnostics::from(&errors), &shown, &text);
-        Failure::Mistakes
-    })?;
-    let (shown, generated, made) = generated(&shown, &text)?;
-    let mut loaded = loaded(shown, generated)?;
-    loaded.topology = Some(made);
-    Ok((topology, loaded))
-}
-
-/// A mechanism file's text, read and made into its mechanism.
-fn loaded(shown: String, text: String) -> Result<Loaded, Failure> {
-    let file = match MechanismFile::parse(&text) {
-        Ok(file) => file,
-        Err(errors) => {
-            report(&Diagnostics::from(&errors), &shown, &text);
-            return Err(Failure::Mistakes);
-        }
-    };
-    let mechanism = match file.mechanism() {
-        Ok(mechanism) => mechanism,
-        Err(MechanismError::Mistakes(diagnostics)) => {
-            report(&diagnostics, &shown, &text);
-            return Err(Failure::Mistakes);
-        }
-        Err(other) => return Err(Failure::Analysis(other.to_string())),
-    };
-    Ok(Loaded {
-        shown,
-        text,
-        file,
-        mechanism,
-        topology: None,
-    })
+    Ok(Loaded::from_topology(&shown, &text)?)
 }

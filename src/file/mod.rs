@@ -128,6 +128,7 @@ mod drives;
 mod equations;
 mod error;
 mod lines;
+mod loaded;
 mod mechanism;
 mod names;
 mod parameters;
@@ -146,6 +147,9 @@ pub use drive::{DEFAULT_RATE, DEFAULT_STEPS, Driver, MOST_STEPS};
 pub use drives::Drives;
 pub use equations::Equations;
 pub use error::{FileError, FileErrors, ReadError};
+pub use loaded::{
+    Cause, FixedAnalysis, FixedDrives, LoadError, Loaded, Located, Swept, at_text, read_text,
+};
 pub use names::Name;
 pub(crate) use names::not_an_identifier;
 pub use parameters::Parameter;

@@ -6,6 +6,7 @@ use crate::failure::Failure;
 use crate::load::{Loaded, load};
 use crate::sizes::{self, Job};
 use crate::table::Table;
+use linkage::file::at_text;
 use linkage::mechanism::Fixed;
 use linkage::prelude::*;
 
@@ -17,8 +18,8 @@ impl Job for Analyze<'_> {
     type Output = Table;
     type Error = Failure;
     fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<Table, Failure> {
-        let (drives, pose) = super::analysed(self.loaded, &model)?;
-        let unit = &self.loaded.file.length_unit;
+        let (drives, pose) = self.loaded.analysed(&model)?;
+        let unit = &self.loaded.file().length_unit;
         let mut table = Table::new(
             format!(
                 "{} at {}",
@@ -58,19 +59,9 @@ impl Job for Analyze<'_> {
     }
 }
 
-/// `theta2 = 0.349066`.
-pub fn at_text(names: &[&str], v: &[f64]) -> String {
-    let parts: Vec<String> = names
-        .iter()
-        .zip(v)
-        .map(|(n, x)| format!("{n} = {x}"))
-        .collect();
-    parts.join(", ")
-}
-
 pub fn run(args: &Analysis) -> Result<(), Failure> {
     let loaded = load(&args.input.file)?;
-    let table = sizes::run(&loaded.mechanism, Analyze { loaded: &loaded })?;
+    let table = sizes::run(loaded.mechanism(), Analyze { loaded: &loaded })?;
     let mut out = Vec::new();
     table
         .write(args.output.format, &mut out)

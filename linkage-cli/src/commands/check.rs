@@ -6,7 +6,7 @@ use crate::load::load;
 
 pub fn run(input: &Input) -> Result<(), Failure> {
     let loaded = load(&input.file)?;
-    let m = &loaded.mechanism;
+    let m = loaded.mechanism();
     let agree = match m.methods_agree() {
         Some(true) => "the two acceleration methods expand to the same polynomial",
         Some(false) => "the two acceleration methods do NOT expand to the same polynomial",
@@ -22,7 +22,7 @@ pub fn run(input: &Input) -> Result<(), Failure> {
         .describe(|k| u_names.get(k).map_or("?", |n| n).to_owned());
     let text = format!(
         "{}: {} is a mechanism of m = {} dependent coordinates [{}], f = {} driving [{}], {} and {}; {agree}\n{structure}\n",
-        loaded.shown,
+        loaded.shown(),
         m.name(),
         m.m(),
         m.u_names().join(", "),

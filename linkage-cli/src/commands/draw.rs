@@ -19,14 +19,14 @@ impl Job for Picture<'_> {
     type Output = String;
     type Error = Failure;
     fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<String, Failure> {
-        let (drives, pose) = super::analysed(self.loaded, &model)?;
+        let (drives, pose) = self.loaded.analysed(&model)?;
         let frame = Frame::from_analysis(&model, &pose);
         let mut cycle = Vec::new();
-        super::sweep_each(self.loaded, &model, drives.steps, &mut |_, p| {
+        self.loaded.sweep_each(&model, drives.steps, &mut |_, p| {
             cycle.push(Frame::from_sweep_pose(&model, p))
         })?;
         self.loaded
-            .file
+            .file()
             .scene_of(model.point_names())
             .width(self.width)
             .render(&frame, &cycle)
@@ -42,7 +42,7 @@ pub fn run(args: &Draw) -> Result<(), Failure> {
         ));
     }
     let svg = sizes::run(
-        &loaded.mechanism,
+        loaded.mechanism(),
         Picture {
             loaded: &loaded,
             width: args.width,

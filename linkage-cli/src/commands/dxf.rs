@@ -25,9 +25,9 @@ impl Job for Pose<'_> {
         self,
         model: Fixed<M, F>,
     ) -> Result<Self::Output, Failure> {
-        let (drives, pose) = super::analysed(self.loaded, &model)?;
+        let (drives, pose) = self.loaded.analysed(&model)?;
         let names = model.point_names();
-        let file = &self.loaded.file;
+        let file = &self.loaded.file();
         let pivots: Positions = (file.parameters.iter())
             .filter_map(|p| {
                 let joint = p.name.text.strip_prefix("x_")?;
@@ -43,7 +43,7 @@ impl Job for Pose<'_> {
         };
         let positions = with_pivots(pose.points.as_ref());
         let mut cycle = Vec::new();
-        super::sweep_each(self.loaded, &model, drives.steps, &mut |_, p| {
+        self.loaded.sweep_each(&model, drives.steps, &mut |_, p| {
             cycle.push(with_pivots(model.point_positions(&p.u, &p.v).as_ref()));
         })?;
         Ok((positions, cycle))
@@ -53,7 +53,7 @@ impl Job for Pose<'_> {
 pub fn run(args: &DxfArgs) -> Result<(), Failure> {
     let (topology, loaded): (TopologyFile, Loaded) = load_topology(&args.input.file)?;
     let topology = &topology.topology;
-    let (positions, cycle) = sizes::run(&loaded.mechanism, Pose { loaded: &loaded })?;
+    let (positions, cycle) = sizes::run(loaded.mechanism(), Pose { loaded: &loaded })?;
     let size = {
         let extent = |k: usize| {
             let values = positions.iter().map(|(_, p)| p[k]);

@@ -12,6 +12,6 @@ pub fn run(input: &Input) -> Result<(), Failure> {
             "{shown} is not a topology file (it has no [joints], or it has equations): `equations` writes the equations of joints and links"
         )));
     }
-    let (_, mechanism, _) = generated(&shown, &text)?;
+    let mechanism = generated(&shown, &text)?;
     super::emit(input.output.as_deref(), mechanism.as_bytes())
 }

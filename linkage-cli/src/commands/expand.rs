@@ -32,7 +32,7 @@ fn attributed(loaded: &Loaded) -> String {
 
 /// The struct's documentation: the file's title and where it comes from.
 fn documentation(loaded: &Loaded) -> String {
-    let file = &loaded.file;
+    let file = loaded.file();
     let mut rust = String::new();
     let title = file.title.as_deref().unwrap_or(&file.name.text);
     // The title and the path are text of the file's, inside comments:
@@ -41,7 +41,7 @@ fn documentation(loaded: &Loaded) -> String {
     for line in title.lines() {
         rust.push_str(&format!("/// {}\n", line.replace('\r', " ")));
     }
-    let shown = loaded.shown.replace(['\n', '\r'], " ");
+    let shown = loaded.shown().replace(['\n', '\r'], " ");
     rust.push_str(&format!(
         "///\n/// Promoted from the mechanism file `{shown}` (lengths in {}).\n",
         file.length_unit
@@ -52,7 +52,7 @@ fn documentation(loaded: &Loaded) -> String {
 /// The attribute's arguments: the file's equations, indented.
 fn attribute(loaded: &Loaded) -> String {
     let mut rust = String::new();
-    for line in loaded.file.equations.text.trim_matches('\n').lines() {
+    for line in loaded.file().equations.text.trim_matches('\n').lines() {
         if line.trim().is_empty() {
             rust.push('\n');
         } else {
@@ -64,7 +64,7 @@ fn attribute(loaded: &Loaded) -> String {
 
 /// The struct of the parameters, with its derives.
 fn structure(loaded: &Loaded) -> String {
-    let file = &loaded.file;
+    let file = loaded.file();
     let mut rust = String::from("#[derive(Clone, Copy, Debug, PartialEq)]\n");
     rust.push_str(&format!("pub struct {} {{\n", file.name.text));
     for p in &file.parameters {
@@ -76,7 +76,7 @@ fn structure(loaded: &Loaded) -> String {
 
 /// The constant with the file's values.
 fn values(loaded: &Loaded) -> String {
-    let file = &loaded.file;
+    let file = loaded.file();
     let name = &file.name.text;
     let mut rust = format!("\nimpl {name} {{\n    /// The values of the mechanism file.\n");
     rust.push_str(&format!("    pub const FILE: {name} = {name} {{\n"));

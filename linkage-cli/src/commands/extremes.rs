@@ -53,10 +53,11 @@ impl Job for Find<'_> {
                 watched.push(text);
             }
         }
-        let steps = super::drives(self.loaded, &model)?.steps;
+        let steps = self.loaded.drives(&model)?.steps;
         let mut poses = Vec::new();
-        let summary =
-            super::sweep_each(self.loaded, &model, steps, &mut |_, pose| poses.push(*pose))?;
+        let summary = self
+            .loaded
+            .sweep_each(&model, steps, &mut |_, pose| poses.push(*pose))?;
         let sweep = Sweep {
             poses,
             events: summary.events,
@@ -98,7 +99,7 @@ pub fn run(args: &Extremes) -> Result<(), Failure> {
         watches: &args.watches,
         zeros: args.zeros,
     };
-    let table = sizes::run(&loaded.mechanism, job)?;
+    let table = sizes::run(loaded.mechanism(), job)?;
     let mut out = Vec::new();
     table
         .write(args.output.format, &mut out)

@@ -22,7 +22,7 @@ impl SensitivityJob for Differentiate<'_> {
         self,
         model: Fixed<M, F, 32, PARAMETERS>,
     ) -> Result<Table, Failure> {
-        let (drives, pose) = super::analysed(self.loaded, &model)?;
+        let (drives, pose) = self.loaded.analysed(&model)?;
         let s = model
             .sensitivities_of(&pose, &Options::default())
             .map_err(|e| Failure::Analysis(e.to_string()))?;
@@ -37,7 +37,7 @@ impl SensitivityJob for Differentiate<'_> {
             format!(
                 "{}: the derivatives by each parameter at {}",
                 model.name(),
-                super::analyze::at_text(&model.v_names(), drives.at.as_slice())
+                linkage::file::at_text(&model.v_names(), drives.at.as_slice())
             ),
             columns.collect(),
         );
@@ -67,7 +67,7 @@ impl SensitivityJob for Differentiate<'_> {
 pub fn run(args: &SensitivitiesArgs) -> Result<(), Failure> {
     let loaded = load(&args.input.file)?;
     let job = Differentiate { loaded: &loaded };
-    let table = sizes::run_sensitive(&loaded.mechanism, &args.params, job)?;
+    let table = sizes::run_sensitive(loaded.mechanism(), &args.params, job)?;
     let mut out = Vec::new();
     table
         .write(args.output.format, &mut out)

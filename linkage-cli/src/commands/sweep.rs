@@ -21,7 +21,7 @@ impl Job for Poses<'_> {
     type Output = Table;
     type Error = Failure;
     fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<Table, Failure> {
-        let unit = self.loaded.file.length_unit.clone();
+        let unit = self.loaded.file().length_unit.clone();
         let mut columns: Vec<(String, String)> = Vec::new();
         for name in model.v_names() {
             columns.push((name.into(), String::new()));
@@ -43,10 +43,10 @@ impl Job for Poses<'_> {
         let mut table = Table::new(format!("{}: a sweep", model.name()), columns);
         let steps = match self.steps {
             Some(steps) => steps,
-            None => super::drives(self.loaded, &model)?.steps,
+            None => self.loaded.drives(&model)?.steps,
         };
         let progress = Progress::new(steps as u64 + 1, "poses");
-        let summary = super::sweep_each(self.loaded, &model, steps, &mut |_, pose| {
+        let summary = self.loaded.sweep_each(&model, steps, &mut |_, pose| {
             let mut row: Vec<f64> = pose.v.iter().copied().collect();
             row.extend(pose.u.iter().chain(&pose.udot).chain(&pose.uddot));
             if self.points {
@@ -72,7 +72,7 @@ impl Job for Poses<'_> {
             eprintln!(
                 "note: {:?} at {}",
                 event.kind,
-                super::analyze::at_text(&model.v_names(), event.v.as_slice())
+                linkage::file::at_text(&model.v_names(), event.v.as_slice())
             );
         }
         if !summary.complete {
@@ -92,7 +92,7 @@ pub fn run(args: &Sweep) -> Result<(), Failure> {
         steps: args.steps,
         points: args.points,
     };
-    let table = sizes::run(&loaded.mechanism, job)?;
+    let table = sizes::run(loaded.mechanism(), job)?;
     let mut out = Vec::new();
     table
         .write(args.output.format, &mut out)

@@ -67,8 +67,8 @@ impl DesignJob for Design<'_> {
     type Error = Failure;
     fn run<const M: usize>(self, model: Fixed<M, 1, 32, PARAMETERS>) -> Result<Table, Failure> {
         let args = self.args;
-        let drives = super::drives(self.loaded, &model)?;
-        let guess = super::assembled(self.loaded, &model, &drives.at)?;
+        let drives = self.loaded.drives(&model)?;
+        let guess = self.loaded.assembled(&model, &drives.at)?;
         let failed = |e: synthesis::SynthesisError| Failure::Analysis(e.to_string());
         let (problem, over) = if let Some(point) = &args.path {
             let (rows, timing) = match args.timing {
@@ -172,7 +172,7 @@ pub fn run(args: &SynthesizeArgs) -> Result<(), Failure> {
         loaded: &loaded,
         args,
     };
-    let table = sizes::run_design(&loaded.mechanism, &free, job)?;
+    let table = sizes::run_design(loaded.mechanism(), &free, job)?;
     let mut out = Vec::new();
     table
         .write(args.output.format, &mut out)

@@ -55,9 +55,9 @@ impl SensitivityJob for Spread<'_> {
             .map_err(|e| Failure::Analysis(e.to_string()))?;
         let steps = match args.steps {
             Some(steps) => steps,
-            None => super::drives(self.loaded, &model)?.steps,
+            None => self.loaded.drives(&model)?.steps,
         };
-        let swept = super::swept(self.loaded, &model, steps)?;
+        let swept = self.loaded.swept(&model, steps)?;
         let (start, drive, options) = (&swept.start, &swept.drive, &swept.options);
         let cycle = tolerance::cycle(&model, start, drive, options, &outputs, &tolerances)
             .map_err(|e| Failure::Analysis(e.to_string()))?;
@@ -86,7 +86,7 @@ impl SensitivityJob for Spread<'_> {
             eprintln!(
                 "warning: within the tolerances the mechanism reaches a limit position \
                  (at {}): the linear spreads do not describe the band there{}",
-                super::analyze::at_text(&model.v_names(), limit.v.as_slice()),
+                linkage::file::at_text(&model.v_names(), limit.v.as_slice()),
                 if samples.is_some() {
                     ""
                 } else {
@@ -150,7 +150,7 @@ pub fn run(args: &ToleranceArgs) -> Result<(), Failure> {
         loaded: &loaded,
         args,
     };
-    let table = sizes::run_sensitive(&loaded.mechanism, &names, job)?;
+    let table = sizes::run_sensitive(loaded.mechanism(), &names, job)?;
     let mut out = Vec::new();
     table
         .write(args.output.format, &mut out)
