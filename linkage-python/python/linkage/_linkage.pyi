@@ -1,0 +1,112 @@
+"""Type stubs of the extension module `linkage._linkage` (re-exported by
+`linkage`)."""
+
+from os import PathLike
+from typing import Any, Mapping, Optional, Sequence, Union
+
+import numpy as np
+import numpy.typing as npt
+
+Values = Union[float, Sequence[float], npt.NDArray[np.float64]]
+
+SIZES: list[tuple[int, int]]
+
+class Pose:
+    """A pose with its velocities and accelerations."""
+
+    u: npt.NDArray[np.float64]
+    udot: npt.NDArray[np.float64]
+    uddot: npt.NDArray[np.float64]
+    v: npt.NDArray[np.float64]
+    vdot: npt.NDArray[np.float64]
+    vddot: npt.NDArray[np.float64]
+    points: npt.NDArray[np.float64]
+    point_velocities: npt.NDArray[np.float64]
+    point_accelerations: npt.NDArray[np.float64]
+    residual: float
+    rcond: float
+    iterations: int
+    u_names: list[str]
+    v_names: list[str]
+    point_names: list[str]
+    def __getitem__(self, name: str) -> Union[float, npt.NDArray[np.float64]]: ...
+
+class Sweep:
+    """The poses of a sweep, one row per pose."""
+
+    v: npt.NDArray[np.float64]
+    vdot: npt.NDArray[np.float64]
+    u: npt.NDArray[np.float64]
+    udot: npt.NDArray[np.float64]
+    uddot: npt.NDArray[np.float64]
+    rcond: npt.NDArray[np.float64]
+    points: npt.NDArray[np.float64]
+    point_velocities: npt.NDArray[np.float64]
+    point_accelerations: npt.NDArray[np.float64]
+    events: list[dict[str, Any]]
+    complete: bool
+    u_names: list[str]
+    v_names: list[str]
+    point_names: list[str]
+    def __len__(self) -> int: ...
+    def __getitem__(self, name: str) -> npt.NDArray[np.float64]: ...
+
+class Mechanism:
+    """A planar mechanism made at run time."""
+
+    @staticmethod
+    def from_text(
+        equations: str, parameters: Mapping[str, float], name: str = "Mechanism"
+    ) -> Mechanism: ...
+    @staticmethod
+    def from_file(path: Union[str, PathLike[str]]) -> Mechanism: ...
+    @staticmethod
+    def from_toml(text: str, name: str = "<text>") -> Mechanism: ...
+    @staticmethod
+    def from_topology(text: str, name: str = "<topology>") -> Mechanism: ...
+    @staticmethod
+    def from_pyslvs(
+        expression: str, inputs: Sequence[tuple[int, int]], name: str = "Mechanism"
+    ) -> Mechanism: ...
+    @staticmethod
+    def from_pylinkage(linkage: Union[str, Mapping[str, Any]]) -> Mechanism: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def m(self) -> int: ...
+    @property
+    def f(self) -> int: ...
+    @property
+    def u_names(self) -> list[str]: ...
+    @property
+    def v_names(self) -> list[str]: ...
+    @property
+    def point_names(self) -> list[str]: ...
+    @property
+    def parameters(self) -> dict[str, float]: ...
+    @property
+    def drive(self) -> Optional[dict[str, dict[str, float]]]: ...
+    @property
+    def file_text(self) -> Optional[str]: ...
+    @property
+    def topology_text(self) -> Optional[str]: ...
+    def set_parameter(self, name: str, value: float) -> None: ...
+    def with_parameters(self, **values: float) -> Mechanism: ...
+    def analyze(
+        self,
+        v: Optional[Values] = None,
+        vdot: Optional[Values] = None,
+        vddot: Optional[Values] = None,
+        u: Optional[Values] = None,
+    ) -> Pose: ...
+    def sweep(
+        self,
+        steps: Optional[int] = None,
+        start: Optional[Values] = None,
+        stop: Optional[Values] = None,
+        rate: Optional[Values] = None,
+        u: Optional[Values] = None,
+    ) -> Sweep: ...
+    def assemble(self, v: Optional[Values] = None) -> npt.NDArray[np.float64]: ...
+    def svg(self, width: float = 640.0) -> str: ...
+    def _repr_svg_(self) -> Optional[str]: ...

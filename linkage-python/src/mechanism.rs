@@ -1,0 +1,430 @@
+//! `linkage.Mechanism`: a mechanism made at run time, from any of the
+//! library's front ends, and the analyses Python calls on it.
+
+use crate::errors::Failure;
+use crate::interrupt::interruptible;
+use crate::pose::{Analyze, Pose};
+use crate::source::Source;
+use crate::sweep::{Poses, Sweep};
+use linkage::assembly::{Assemble, Search};
+use linkage::draw::scene::Frame;
+use linkage::file::{LoadError, Loaded, Located};
+use linkage::mechanism::sizes::{Job, run};
+use linkage::mechanism::{Fixed, MechanismError};
+use linkage::prelude::*;
+use linkage::topology::Topology;
+use numpy::PyArray2;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyString};
+use std::path::PathBuf;
+
+/// A planar mechanism made at run time: its closure equations read,
+/// checked and differentiated by linkage's own front end, its kernels
+/// evaluated to the bits of the compiled code. Make one with
+/// `Mechanism.from_file`, `from_toml`, `from_text`, `from_topology`,
+/// `from_pyslvs` or `from_pylinkage`.
+#[pyclass(module = "linkage")]
+#[derive(Clone)]
+pub struct Mechanism {
+    source: Source,
+}
+
+impl Mechanism {
+    fn loaded(loaded: Loaded) -> Mechanism {
+        Mechanism {
+            source: Source {
+                mechanism: loaded.mechanism().clone(),
+                loaded: Some(loaded),
+            },
+        }
+    }
+
+    /// A topology's mechanism, as its topology file makes it.
+    fn of_topology(shown: &str, topology: &Topology) -> Result<Mechanism, Failure> {
+        let text = topology.topology_text();
+        Ok(Mechanism::loaded(Loaded::from_topology(shown, &text)?.1))
+    }
+}
+
+/// Drawing the mechanism at its file's `at`, with its points' paths.
+struct Picture<'a> {
+    source: &'a Source,
+    width: f64,
+}
+
+impl Job for Picture<'_> {
+    type Output = String;
+    type Error = Failure;
+    fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<String, Failure> {
+        let Some(loaded) = &self.source.loaded else {
+            return Err(Failure::BadInput(
+                "a mechanism from its equations has no drive or drawing: draw one from a file"
+                    .into(),
+            ));
+        };
+        let (drives, pose) = loaded.analysed(&model)?;
+        let frame = Frame::from_analysis(&model, &pose);
+        let mut cycle = Vec::new();
+        loaded.sweep_each(&model, drives.steps, &mut |_, p| {
+            cycle.push(Frame::from_sweep_pose(&model, p))
+        })?;
+        (loaded.file())
+            .scene_of(model.point_names())
+            .width(self.width)
+            .render(&frame, &cycle)
+            .map_err(|e| Failure::BadInput(format!("the drawing: {e}")))
+    }
+}
+
+/// Every assembly mode at the drivers' values.
+struct Modes<'a> {
+    source: &'a Source,
+    v: Option<Vec<f64>>,
+}
+
+impl Job for Modes<'_> {
+    type Output = (usize, Vec<f64>);
+    type Error = Failure;
+    fn run<const M: usize, const F: usize>(
+        self,
+        model: Fixed<M, F>,
+    ) -> Result<(usize, Vec<f64>), Failure> {
+        let drives = self.source.drives(&model)?;
+        let v = Source::or_file(
+            self.v.as_deref(),
+            "v",
+            &model.v_names(),
+            drives.map(|d| d.at),
+            None,
+        )?;
+        let modes = model.assembly_modes(&v, &Search::default())?;
+        let flat = (modes.modes.iter())
+            .flat_map(|mode| mode.u.iter().copied())
+            .collect();
+        Ok((modes.modes.len(), flat))
+    }
+}
+
+#[pymethods]
+impl Mechanism {
+    /// The mechanism whose equations are `equations` — the attribute's
+    /// text, `u = [...], v = [...], points = [...], closure = [...]` — with
+    /// the parameters' values `parameters` (a dict, name to number) and
+    /// the name `name` (an identifier). It has no drive: its analyses are
+    /// given the drivers' values.
+    #[staticmethod]
+    #[pyo3(signature = (equations, parameters, name = "Mechanism"))]
+    fn from_text(
+        py: Python<'_>,
+        equations: &str,
+        parameters: &Bound<'_, PyDict>,
+        name: &str,
+    ) -> PyResult<Mechanism> {
+        let mut values: Vec<(String, f64)> = Vec::new();
+        for (key, value) in parameters.iter() {
+            values.push((key.extract()?, value.extract()?));
+        }
+        let made = py.detach(|| {
+            let pairs: Vec<(&str, f64)> = values.iter().map(|(n, x)| (n.as_str(), *x)).collect();
+            linkage::mechanism::Mechanism::from_text(name, equations, &pairs)
+        });
+        let mechanism = made.map_err(|e| match e {
+            MechanismError::Mistakes(diagnostics) => Failure::Load(LoadError::Mistakes(Located {
+                shown: "<equations>".into(),
+                text: equations.into(),
+                diagnostics,
+            })),
+            other => Failure::Mechanism(other),
+        })?;
+        Ok(Mechanism {
+            source: Source {
+                mechanism,
+                loaded: None,
+            },
+        })
+    }
+
+    /// The mechanism of the mechanism file (or topology file) at `path`.
+    #[staticmethod]
+    fn from_file(py: Python<'_>, path: PathBuf) -> PyResult<Mechanism> {
+        let loaded = py.detach(|| Loaded::read(&path)).map_err(Failure::from)?;
+        Ok(Mechanism::loaded(loaded))
+    }
+
+    /// The mechanism of a mechanism file's (or a topology file's) text,
+    /// called `name` in messages.
+    #[staticmethod]
+    #[pyo3(signature = (text, name = "<text>"))]
+    fn from_toml(py: Python<'_>, text: &str, name: &str) -> PyResult<Mechanism> {
+        let loaded = py
+            .detach(|| Loaded::from_text(name, text))
+            .map_err(Failure::from)?;
+        Ok(Mechanism::loaded(loaded))
+    }
+
+    /// The mechanism of a topology file's text (joints and links), called
+    /// `name` in messages.
+    #[staticmethod]
+    #[pyo3(signature = (text, name = "<topology>"))]
+    fn from_topology(py: Python<'_>, text: &str, name: &str) -> PyResult<Mechanism> {
+        let loaded = py
+            .detach(|| Loaded::from_topology(name, text))
+            .map_err(Failure::from)?;
+        Ok(Mechanism::loaded(loaded.1))
+    }
+
+    /// The mechanism of a pyslvs expression (`M[J[R, …], …]`), driven by
+    /// `inputs`: pairs (base, drive) of joint numbers, the angle of the
+    /// line base → drive, as pyslvs's own inputs.
+    #[staticmethod]
+    #[pyo3(signature = (expression, inputs, name = "Mechanism"))]
+    fn from_pyslvs(
+        py: Python<'_>,
+        expression: &str,
+        inputs: Vec<(usize, usize)>,
+        name: &str,
+    ) -> PyResult<Mechanism> {
+        let made = py.detach(|| {
+            let topology = linkage::topology::pyslvs::from_pyslvs(name, expression.trim(), &inputs)
+                .map_err(|e| Failure::Format(e.to_string()))?;
+            Mechanism::of_topology("<pyslvs>", &topology)
+        });
+        Ok(made?)
+    }
+
+    /// The mechanism of pylinkage's JSON (`Linkage.to_dict()` written by
+    /// `json.dumps`, or that dict itself).
+    #[staticmethod]
+    fn from_pylinkage(py: Python<'_>, linkage: &Bound<'_, PyAny>) -> PyResult<Mechanism> {
+        let json: String = if linkage.is_instance_of::<PyString>() {
+            linkage.extract()?
+        } else {
+            py.import("json")?
+                .call_method1("dumps", (linkage,))?
+                .extract()?
+        };
+        let made = py.detach(|| {
+            let (topology, _) = linkage::topology::pylinkage::from_pylinkage(&json)
+                .map_err(|e| Failure::Format(e.to_string()))?;
+            Mechanism::of_topology("<pylinkage>", &topology)
+        });
+        Ok(made?)
+    }
+
+    /// Its name.
+    #[getter]
+    fn name(&self) -> String {
+        self.source.mechanism.name().to_owned()
+    }
+
+    /// The number m of dependent coordinates u.
+    #[getter]
+    fn m(&self) -> usize {
+        self.source.mechanism.m()
+    }
+
+    /// The number f of driving coordinates v.
+    #[getter]
+    fn f(&self) -> usize {
+        self.source.mechanism.f()
+    }
+
+    /// The dependent coordinates u, in order.
+    #[getter]
+    fn u_names(&self) -> Vec<String> {
+        crate::pose::owned(self.source.mechanism.u_names())
+    }
+
+    /// The driving coordinates v, in order.
+    #[getter]
+    fn v_names(&self) -> Vec<String> {
+        crate::pose::owned(self.source.mechanism.v_names())
+    }
+
+    /// The named points, in order.
+    #[getter]
+    fn point_names(&self) -> Vec<String> {
+        crate::pose::owned(self.source.mechanism.point_names())
+    }
+
+    /// Every parameter and its value, in order.
+    #[getter]
+    fn parameters<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let m = &self.source.mechanism;
+        let dict = PyDict::new(py);
+        for (name, value) in m.parameter_names().iter().zip(m.parameters()) {
+            dict.set_item(name, value)?;
+        }
+        Ok(dict)
+    }
+
+    /// The mechanism file's text it was loaded from (generated, for a
+    /// topology); `None` for a mechanism from its equations.
+    #[getter]
+    fn file_text(&self) -> Option<String> {
+        (self.source.loaded.as_ref()).map(|loaded| loaded.text().to_owned())
+    }
+
+    /// The topology file's text of a mechanism given by its joints and
+    /// links (a topology, pyslvs, pylinkage); `None` otherwise.
+    #[getter]
+    fn topology_text(&self) -> Option<String> {
+        (self.source.loaded.as_ref())
+            .and_then(|loaded| loaded.topology())
+            .map(Topology::topology_text)
+    }
+
+    /// The file's drive: for each driving coordinate a dict of `at`,
+    /// `start`, `stop`, `rate`, `acceleration` (in the engine's units), and
+    /// `steps`; `None` for a mechanism from its equations.
+    #[getter]
+    fn drive<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
+        let Some(loaded) = &self.source.loaded else {
+            return Ok(None);
+        };
+        let names = self.source.mechanism.v_names();
+        let drives = (loaded.file())
+            .drives(names)
+            .map_err(|missing| Failure::Load(LoadError::Mistakes(loaded.located(missing))))?;
+        let dict = PyDict::new(py);
+        for (k, name) in names.iter().enumerate() {
+            let driver = PyDict::new(py);
+            driver.set_item("at", drives.at[k])?;
+            driver.set_item("start", drives.from[k])?;
+            driver.set_item("stop", drives.to[k])?;
+            driver.set_item("rate", drives.rate[k])?;
+            driver.set_item("acceleration", drives.acceleration[k])?;
+            driver.set_item("steps", drives.steps)?;
+            dict.set_item(name, driver)?;
+        }
+        Ok(Some(dict))
+    }
+
+    /// Sets the parameter `name` to `value`.
+    fn set_parameter(&mut self, name: &str, value: f64) -> PyResult<()> {
+        Ok((self.source.mechanism)
+            .set_parameter(name, value)
+            .map_err(Failure::from)?)
+    }
+
+    /// A copy with the parameters given as keywords set.
+    #[pyo3(signature = (**values))]
+    fn with_parameters(&self, values: Option<&Bound<'_, PyDict>>) -> PyResult<Mechanism> {
+        let mut copy = self.clone();
+        if let Some(values) = values {
+            for (name, value) in values.iter() {
+                copy.set_parameter(&name.extract::<String>()?, value.extract()?)?;
+            }
+        }
+        Ok(copy)
+    }
+
+    /// The pose at the drivers' values `v` (default: the file's `at`),
+    /// with velocities at the rates `vdot` (default: the file's rate, or 1)
+    /// and accelerations at `vddot` (default: the file's, or 0). Newton
+    /// starts from `u` if given; otherwise from the assembly the file picks
+    /// (its first mode, for a mechanism without a file).
+    #[pyo3(signature = (v = None, vdot = None, vddot = None, u = None))]
+    fn analyze(
+        &self,
+        py: Python<'_>,
+        v: Option<&Bound<'_, PyAny>>,
+        vdot: Option<&Bound<'_, PyAny>>,
+        vddot: Option<&Bound<'_, PyAny>>,
+        u: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Pose> {
+        use crate::arrays::values;
+        let job = Analyze {
+            source: &self.source,
+            v: values(v)?,
+            vdot: values(vdot)?,
+            vddot: values(vddot)?,
+            u: values(u)?,
+        };
+        let analysed = py.detach(|| run(&self.source.mechanism, job))?;
+        Ok(Pose::new(py, analysed))
+    }
+
+    /// Every pose as the drivers move from `start` to `stop` in `steps`
+    /// equal steps (default: the file's drive, from its assembly at `at`),
+    /// at the rate `rate`; Newton starts from `u` if given. Singular poses
+    /// met are located and passed through (`Sweep.events`). Ctrl-C
+    /// interrupts it.
+    #[pyo3(signature = (steps = None, start = None, stop = None, rate = None, u = None))]
+    fn sweep(
+        &self,
+        py: Python<'_>,
+        steps: Option<usize>,
+        start: Option<&Bound<'_, PyAny>>,
+        stop: Option<&Bound<'_, PyAny>>,
+        rate: Option<&Bound<'_, PyAny>>,
+        u: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Sweep> {
+        use crate::arrays::values;
+        let job = Poses {
+            source: self.source.clone(),
+            steps,
+            start: values(start)?,
+            stop: values(stop)?,
+            rate: values(rate)?,
+            u: values(u)?,
+        };
+        let mechanism = self.source.mechanism.clone();
+        let swept = interruptible(py, move || run(&mechanism, job))?;
+        Sweep::new(py, swept?)
+    }
+
+    /// Every assembly mode at the drivers' values `v` (default: the file's
+    /// `at`), found without a guess: an array (modes, m).
+    #[pyo3(signature = (v = None))]
+    fn assemble<'py>(
+        &self,
+        py: Python<'py>,
+        v: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let job = Modes {
+            source: &self.source,
+            v: crate::arrays::values(v)?,
+        };
+        let (count, flat) = py.detach(|| run(&self.source.mechanism, job))?;
+        Ok(crate::arrays::array2(py, count, self.m(), flat).into_bound(py))
+    }
+
+    /// The mechanism drawn at its file's `at`, with the paths its points
+    /// trace over the drive range: SVG text, `width` pixels wide.
+    #[pyo3(signature = (width = 640.0))]
+    fn svg(&self, py: Python<'_>, width: f64) -> PyResult<String> {
+        if !(width.is_finite() && width > 0.0) {
+            return Err(Failure::BadInput(format!(
+                "`width` must be a positive number, not {width}"
+            ))
+            .into());
+        }
+        let job = Picture {
+            source: &self.source,
+            width,
+        };
+        Ok(py.detach(|| run(&self.source.mechanism, job))?)
+    }
+
+    /// Jupyter's picture of the mechanism: `svg()`, or none for a
+    /// mechanism without a file (no drive, no drawing).
+    fn _repr_svg_(&self, py: Python<'_>) -> PyResult<Option<String>> {
+        if self.source.loaded.is_none() {
+            return Ok(None);
+        }
+        self.svg(py, 640.0).map(Some)
+    }
+
+    fn __repr__(&self) -> String {
+        let m = &self.source.mechanism;
+        format!(
+            "Mechanism({}: u = [{}], v = [{}], {} point{})",
+            m.name(),
+            m.u_names().join(", "),
+            m.v_names().join(", "),
+            m.point_names().len(),
+            if m.point_names().len() == 1 { "" } else { "s" }
+        )
+    }
+}

@@ -1,0 +1,68 @@
+//! A Python mechanism's run-time mechanism, and the file it was loaded
+//! from if it was: the file gives the drive and the assembly to start
+//! from; a mechanism from the attribute's text has neither, so its calls
+//! name the drivers' values and its first assembly mode is taken.
+
+use crate::errors::Failure;
+use linkage::assembly::{Assemble, Pick};
+use linkage::file::{FixedDrives, Loaded};
+use linkage::mechanism::{Fixed, Mechanism};
+use linkage::prelude::SVector;
+
+#[derive(Clone, Debug)]
+pub struct Source {
+    /// The mechanism, with the parameters set from Python.
+    pub mechanism: Mechanism,
+    pub loaded: Option<Loaded>,
+}
+
+impl Source {
+    /// The file's drive for `model`; none without a file.
+    pub fn drives<const M: usize, const F: usize, const N: usize, const K: usize>(
+        &self,
+        model: &Fixed<M, F, N, K>,
+    ) -> Result<Option<FixedDrives<F>>, Failure> {
+        match &self.loaded {
+            Some(loaded) => Ok(Some(loaded.drives(model)?)),
+            None => Ok(None),
+        }
+    }
+
+    /// The assembly at the drivers' `at`: the file's pick, or the first
+    /// mode found.
+    pub fn assembled<const M: usize, const F: usize, const N: usize, const K: usize>(
+        &self,
+        model: &Fixed<M, F, N, K>,
+        at: &SVector<f64, F>,
+    ) -> Result<SVector<f64, M>, Failure> {
+        match &self.loaded {
+            Some(loaded) => Ok(loaded.assembled(model, at)?),
+            None => Ok(model.assemble(at, &Pick::Index(0))?.u),
+        }
+    }
+
+    /// The drive's value of one argument: the one given, or the file's, or
+    /// `default` for a mechanism without a file (`None`: it must be
+    /// given).
+    pub fn or_file<const F: usize>(
+        given: Option<&[f64]>,
+        argument: &str,
+        names: &[&str],
+        file: Option<SVector<f64, F>>,
+        default: Option<f64>,
+    ) -> Result<SVector<f64, F>, Failure> {
+        if let Some(values) = given {
+            return crate::arrays::fixed::<F>(values, argument, names);
+        }
+        if let Some(value) = file {
+            return Ok(value);
+        }
+        match default {
+            Some(x) => Ok(SVector::repeat(x)),
+            None => Err(Failure::BadInput(format!(
+                "give `{argument}` (one value for each of [{}]): a mechanism from its equations has no drive of its own",
+                names.join(", ")
+            ))),
+        }
+    }
+}
