@@ -46,6 +46,17 @@ pub struct Search {
     /// target by more than this (in the targets' units): "designs under a
     /// tolerance". `None`: any certified design counts.
     pub within: Option<f64>,
+    /// The index of the first start: the search runs the starts `first`
+    /// to `first + starts - 1`. A larger search split into shards of
+    /// consecutive starts (the same random state) runs the same starts,
+    /// each of which depends on its index alone.
+    pub first: usize,
+    /// Whether a design found again from a later start (the same free
+    /// parameters and drivers, to 1e-6 of their ranges) is dropped. A
+    /// shard keeps them (`false`): the shards' designs, put together in
+    /// the order of their starts, are then those of the whole search run
+    /// at once with `distinct: false`, row for row.
+    pub distinct: bool,
 }
 
 impl Search {
@@ -68,6 +79,8 @@ impl Default for Search {
             options: SweepOptions::default(),
             enough: None,
             within: None,
+            first: 0,
+            distinct: true,
         }
     }
 }
@@ -247,8 +260,9 @@ where
             .enough
             .is_none_or(|enough| counted(&synthesis.designs) < enough)
     {
-        let starts: Vec<usize> =
-            (synthesis.starts..search.starts.min(synthesis.starts + round)).collect();
+        let starts: Vec<usize> = (synthesis.starts..search.starts.min(synthesis.starts + round))
+            .map(|k| search.first + k)
+            .collect();
         // Solved and certified in parallel; kept in the starts' order.
         let outcomes = batch::map(&starts, |&start| {
             let solved = solve(problem, search, requirements.steps_per_radian, start);
@@ -265,10 +279,8 @@ where
             match outcome {
                 None => synthesis.failed_starts += 1,
                 Some((candidate, Ok(()))) => {
-                    if !synthesis
-                        .designs
-                        .iter()
-                        .any(|d| same_design(problem, d, &candidate))
+                    if !(search.distinct
+                        && (synthesis.designs.iter()).any(|d| same_design(problem, d, &candidate)))
                     {
                         synthesis.designs.push(candidate);
                     }

@@ -401,6 +401,58 @@ fn a_search_stops_with_the_round_that_certifies_enough_designs() {
     assert!(seen <= early.starts);
 }
 
+/// A search split into shards of consecutive starts (the same random
+/// state, `first` set, duplicates kept) gives, shard after shard, the
+/// designs of the whole search run at once, candidate for candidate.
+#[test]
+fn shards_of_a_search_put_together_are_the_whole_search() {
+    let (targets, _) = worksheet_targets();
+    let problem = g3_path(AWAY, &targets, WIDE);
+    let whole = Search {
+        starts: 24,
+        random_state: 7,
+        distinct: false,
+        ..Search::default()
+    };
+    let all = synthesize(&problem, &transmission(30.0), &whole).unwrap();
+    let mut designs = Vec::new();
+    let (mut refused, mut failed) = (0, 0);
+    for (first, starts) in [(0, 5), (5, 11), (16, 8)] {
+        let shard = Search {
+            first,
+            starts,
+            ..whole
+        };
+        let part = synthesize(&problem, &transmission(30.0), &shard).unwrap();
+        assert!(
+            part.designs
+                .iter()
+                .all(|d| (first..first + starts).contains(&d.start))
+        );
+        designs.extend(part.designs);
+        refused += part.refused.len();
+        failed += part.failed_starts;
+    }
+    designs.sort_by_key(|d| d.start);
+    let mut whole_designs = all.designs.clone();
+    whole_designs.sort_by_key(|d| d.start);
+    assert!(whole_designs.len() > 1, "{}", whole_designs.len());
+    assert_eq!(designs, whole_designs);
+    assert_eq!((refused, failed), (all.refused.len(), all.failed_starts));
+    // Duplicates kept: the distinct search returns fewer or as many.
+    let distinct = synthesize(
+        &problem,
+        &transmission(30.0),
+        &Search {
+            distinct: true,
+            ..whole
+        },
+    )
+    .unwrap();
+    assert!(distinct.designs.len() <= all.designs.len());
+    assert!(distinct.designs.iter().all(|d| all.designs.contains(d)));
+}
+
 /// The requirement that a design be of one Grashof type (the designer's
 /// check, here by the closed form's classification).
 fn grashof(wanted: Grashof) -> Requirements<'static, FourBar, 2> {
