@@ -41,6 +41,7 @@
 //! A mechanism with mistakes gives every one of them at once, located in
 //! its text (see [`linkage_symbolic::text`]), in [`MechanismError::Mistakes`].
 
+pub mod design;
 mod error;
 mod fixed;
 mod interned;

@@ -12,8 +12,9 @@ use crate::progress::Progress;
 use crate::sizes::{self, DesignJob, PARAMETERS};
 use crate::table::Table;
 use linkage::mechanism::Fixed;
+use linkage::mechanism::design::{DesignTask, NoDesign, Targets, design};
 use linkage::prelude::*;
-use linkage::synthesis::{self, Problem, Range, Requirements, Search};
+use linkage::synthesis::{self, Search};
 use std::path::Path;
 
 /// The targets' lines: the numbers of each, with its line number.
@@ -70,7 +71,7 @@ impl DesignJob for Design<'_> {
         let drives = self.loaded.drives(&model)?;
         let guess = self.loaded.assembled(&model, &drives.at)?;
         let failed = |e: synthesis::SynthesisError| Failure::Analysis(e.to_string());
-        let (problem, over) = if let Some(point) = &args.path {
+        let targets = if let Some(point) = &args.path {
             let (rows, timing) = match args.timing {
                 Timing::Free => (targets(&args.targets, 2, "x, y")?, synthesis::Timing::Free),
                 Timing::Prescribed | Timing::Relative => {
@@ -84,43 +85,33 @@ impl DesignJob for Design<'_> {
                     (rows.iter().map(|r| r[1..].to_vec()).collect(), timing)
                 }
             };
-            let points: Vec<Vector2<f64>> = rows.iter().map(|r| Vector2::new(r[0], r[1])).collect();
-            let problem = Problem::path(model.clone(), point, &points, timing).map_err(failed)?;
-            (problem, Range::Revolution)
+            let points = rows.iter().map(|r: &Vec<f64>| [r[0], r[1]]).collect();
+            Targets::Path {
+                point: point.clone(),
+                points,
+                timing,
+            }
         } else {
-            let coordinate = args.function.as_deref().unwrap_or_default();
+            let coordinate = args.function.clone().unwrap_or_default();
             let rows = targets(&args.targets, 2, "driver, value")?;
-            let pairs: Vec<(f64, f64)> = rows.iter().map(|r| (r[0], r[1])).collect();
-            let problem = Problem::function(model.clone(), coordinate, &pairs).map_err(failed)?;
-            (problem, Range::Targets)
+            let pairs = rows.iter().map(|r| (r[0], r[1])).collect();
+            Targets::Function { coordinate, pairs }
         };
-        let mut problem = problem.guess(guess);
-        for (name, lower, upper) in &args.free {
-            problem = problem.free(name, *lower, *upper).map_err(failed)?;
-        }
-        if args.precision_points {
-            problem = problem.precision_points();
-        }
+        let task = DesignTask {
+            targets,
+            free: args.free.clone(),
+            precision_points: args.precision_points,
+        };
         let search = Search {
             starts: args.starts,
             ..Search::default()
         };
         let progress = Progress::new(args.starts as u64, "starts");
-        let found =
-            synthesis::synthesize_observed(&problem, &Requirements::new(over), &search, &|| {
-                progress.tick()
-            });
+        let found = design(&model, guess, &task, &search, &|| progress.tick());
         progress.finish();
         let found = found.map_err(failed)?;
-        if found.designs.is_empty() {
-            let why = found
-                .best()
-                .err()
-                .map_or_else(String::new, |e| e.to_string());
-            return Err(Failure::Analysis(format!(
-                "no design found from {} starts: {why}",
-                found.starts
-            )));
+        if let Some(none) = NoDesign::of(&found) {
+            return Err(Failure::Analysis(none.to_string()));
         }
         let names = model.parameter_names();
         let mut columns: Vec<(String, String)> = names

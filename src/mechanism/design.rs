@@ -1,0 +1,112 @@
+//! A synthesis posed on a run-time mechanism by names and numbers — what
+//! the command-line tool, the Python package and each shard of a
+//! distributed search ask for — solved by the library's synthesis
+//! ([`crate::synthesis`]).
+
+use super::Fixed;
+use super::sizes::PARAMETERS;
+use crate::synthesis::{
+    self, Problem, Range, Requirements, Search, Synthesis, SynthesisError, Timing,
+};
+use nalgebra::{SVector, Vector2};
+use std::fmt;
+
+/// What a design must match.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Targets {
+    /// Path generation: the point `point` passes through `points`, reached
+    /// as `timing` says; certified over a revolution of the driver.
+    Path {
+        point: String,
+        points: Vec<[f64; 2]>,
+        timing: Timing,
+    },
+    /// Function generation: the coordinate `coordinate` takes each pair's
+    /// value at its driver; certified over the targets' drivers.
+    Function {
+        coordinate: String,
+        pairs: Vec<(f64, f64)>,
+    },
+}
+
+/// A synthesis on a run-time mechanism: its targets, the parameters it
+/// chooses within bounds (the others keep their values), and whether it
+/// stops at precision points.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DesignTask {
+    pub targets: Targets,
+    /// `(name, lower, upper)` of each free parameter.
+    pub free: Vec<(String, f64, f64)>,
+    pub precision_points: bool,
+}
+
+/// The fixed view a synthesis runs on: one driver, the sensitivities by
+/// the free parameters.
+pub type DesignView<const M: usize> = Fixed<M, 1, 32, PARAMETERS>;
+
+/// Solves `task` on `model` from the assembly `guess`, by `search`,
+/// calling `on_start` as each start ends; every design returned is
+/// certified. No design found is not an error here (a shard may find
+/// none): see [`NoDesign::of`].
+pub fn design<const M: usize>(
+    model: &DesignView<M>,
+    guess: SVector<f64, M>,
+    task: &DesignTask,
+    search: &Search,
+    on_start: &(dyn Fn() + Sync),
+) -> Result<Synthesis<DesignView<M>, M>, SynthesisError> {
+    let (problem, over) = match &task.targets {
+        Targets::Path {
+            point,
+            points,
+            timing,
+        } => {
+            let points: Vec<Vector2<f64>> =
+                points.iter().map(|p| Vector2::new(p[0], p[1])).collect();
+            let problem = Problem::path(model.clone(), point, &points, timing.clone())?;
+            (problem, Range::Revolution)
+        }
+        Targets::Function { coordinate, pairs } => {
+            let problem = Problem::function(model.clone(), coordinate, pairs)?;
+            (problem, Range::Targets)
+        }
+    };
+    let mut problem = problem.guess(guess);
+    for (name, lower, upper) in &task.free {
+        problem = problem.free(name, *lower, *upper)?;
+    }
+    if task.precision_points {
+        problem = problem.precision_points();
+    }
+    synthesis::synthesize_observed(&problem, &Requirements::new(over), search, on_start)
+}
+
+/// A search that certified no design: from how many starts, and why
+/// (a target out of reach, or the closest candidate's defect).
+#[derive(Clone, Debug, PartialEq)]
+pub struct NoDesign {
+    pub starts: usize,
+    pub why: Option<SynthesisError>,
+}
+
+impl NoDesign {
+    /// Why `found` has no design, if it has none.
+    pub fn of<L, const M: usize>(found: &Synthesis<L, M>) -> Option<NoDesign> {
+        found.designs.is_empty().then(|| NoDesign {
+            starts: found.starts,
+            why: found.best().err(),
+        })
+    }
+}
+
+impl fmt::Display for NoDesign {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "no design found from {} starts", self.starts)?;
+        match &self.why {
+            Some(why) => write!(f, ": {why}"),
+            None => Ok(()),
+        }
+    }
+}
+
+impl std::error::Error for NoDesign {}
