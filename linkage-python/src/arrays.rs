@@ -94,3 +94,32 @@ pub fn array3(py: Python<'_>, shape: (usize, usize, usize), values: Vec<f64>) ->
         .into_pyarray(py)
         .unbind()
 }
+
+/// The rows of a two-dimensional argument of `width` numbers each
+/// (`what` says what they are, for the message).
+pub fn rows(argument: &Bound<'_, PyAny>, width: usize, what: &str) -> PyResult<Vec<Vec<f64>>> {
+    let refused = || {
+        PyTypeError::new_err(format!(
+            "expected rows of {width} numbers ({what}), as a sequence of sequences or an array of shape (n, {width})"
+        ))
+    };
+    if argument.is_instance_of::<PyString>() || argument.is_instance_of::<PyBytes>() {
+        return Err(refused());
+    }
+    let array = argument
+        .py()
+        .import("numpy")?
+        .call_method1("asarray", (argument,))
+        .map_err(|_| refused())?;
+    let kind: String = array.getattr("dtype")?.getattr("kind")?.extract()?;
+    let shape: Vec<usize> = array.getattr("shape")?.extract()?;
+    if !matches!(kind.as_str(), "i" | "u" | "f") || shape.len() != 2 || shape[1] != width {
+        return Err(refused());
+    }
+    let flat: PyArrayLike1<'_, f64, AllowTypeChange> = array
+        .call_method1("reshape", (-1,))?
+        .extract()
+        .map_err(|_| refused())?;
+    let flat = flat.as_array().to_vec();
+    Ok(flat.chunks(width).map(<[f64]>::to_vec).collect())
+}

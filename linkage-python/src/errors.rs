@@ -5,7 +5,9 @@ use linkage::Error;
 use linkage::assembly::AssemblyError;
 use linkage::file::{Cause, LoadError};
 use linkage::mechanism::MechanismError;
+use linkage::mechanism::design::NoDesign;
 use linkage::mechanism::sizes::SizeError;
+use linkage::synthesis::SynthesisError;
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use pyo3::types::PyType;
@@ -18,6 +20,8 @@ pub enum Failure {
     Analysis(Error),
     Assembly(AssemblyError),
     Size(SizeError),
+    Synthesis(SynthesisError),
+    NoDesign(NoDesign),
     /// An argument from Python is out of its range.
     BadInput(String),
     /// Another tool's format could not be read or represented.
@@ -48,6 +52,12 @@ impl From<AssemblyError> for Failure {
     }
 }
 
+impl From<SynthesisError> for Failure {
+    fn from(error: SynthesisError) -> Failure {
+        Failure::Synthesis(error)
+    }
+}
+
 impl From<SizeError> for Failure {
     fn from(error: SizeError) -> Failure {
         Failure::Size(error)
@@ -62,6 +72,8 @@ impl std::fmt::Display for Failure {
             Failure::Analysis(e) => write!(f, "{e}"),
             Failure::Assembly(e) => write!(f, "{e}"),
             Failure::Size(e) => write!(f, "{e}"),
+            Failure::Synthesis(e) => write!(f, "{e}"),
+            Failure::NoDesign(e) => write!(f, "{e}"),
             Failure::BadInput(why) | Failure::Format(why) => f.write_str(why),
         }
     }
@@ -85,6 +97,14 @@ fn of_assembly(error: &AssemblyError) -> &'static str {
         AssemblyError::SingularEverywhere { .. } | AssemblyError::AtDeadCentre { .. } => {
             "SingularPoseError"
         }
+        _ => "BadInputError",
+    }
+}
+
+fn of_synthesis(error: &SynthesisError) -> &'static str {
+    match error {
+        SynthesisError::Unreachable { .. } | SynthesisError::NoDesign { .. } => "NoDesignError",
+        SynthesisError::Options(e) => of_analysis(e),
         _ => "BadInputError",
     }
 }
@@ -117,6 +137,8 @@ impl Failure {
             Failure::Assembly(e) => of_assembly(e),
             Failure::Size(SizeError::View(e)) => of_mechanism(e),
             Failure::Size(_) => "SizeError",
+            Failure::Synthesis(e) => of_synthesis(e),
+            Failure::NoDesign(_) => "NoDesignError",
             Failure::BadInput(_) => "BadInputError",
             Failure::Format(_) => "FormatError",
         }

@@ -7,6 +7,7 @@
 //! through `linkage::mechanism::sizes`, with the GIL released.
 
 mod arrays;
+mod design;
 mod errors;
 mod interrupt;
 mod mechanism;
@@ -21,6 +22,7 @@ use pyo3::prelude::*;
 fn _linkage(module: &Bound<'_, PyModule>) -> PyResult<()> {
     module.add_class::<mechanism::Mechanism>()?;
     module.add_class::<pose::Pose>()?;
+    module.add_class::<design::Designs>()?;
     module.add_class::<sweep::Sweep>()?;
     module.add("SIZES", linkage::mechanism::sizes::SIZES.to_vec())?;
     Ok(())

@@ -1,6 +1,7 @@
 //! `linkage.Mechanism`: a mechanism made at run time, from any of the
 //! library's front ends, and the analyses Python calls on it.
 
+use crate::design::{Designs, Synthesize};
 use crate::errors::Failure;
 use crate::interrupt::interruptible;
 use crate::pose::{Analyze, Pose};
@@ -9,7 +10,7 @@ use crate::sweep::{Poses, Sweep};
 use linkage::assembly::{Assemble, Search};
 use linkage::draw::scene::Frame;
 use linkage::file::{LoadError, Loaded, Located};
-use linkage::mechanism::sizes::{Job, run};
+use linkage::mechanism::sizes::{Job, run, run_design};
 use linkage::mechanism::{Fixed, MechanismError};
 use linkage::prelude::*;
 use linkage::topology::Topology;
@@ -30,6 +31,11 @@ pub struct Mechanism {
 }
 
 impl Mechanism {
+    /// The mechanism of a source (a design's, say).
+    pub(crate) fn of_source(source: Source) -> Mechanism {
+        Mechanism { source }
+    }
+
     fn loaded(loaded: Loaded) -> Mechanism {
         Mechanism {
             source: Source {
@@ -372,6 +378,121 @@ impl Mechanism {
         let mechanism = self.source.mechanism.clone();
         let swept = interruptible(py, move || run(&mechanism, job))?;
         Sweep::new(py, swept?)
+    }
+
+    /// Dimensions that make the point `path` pass through `targets` (rows
+    /// x, y), or the coordinate `function` take the targets' values (rows
+    /// driver, value) — the parameters `free` (a dict, name to (lower,
+    /// upper)) chosen, the others kept — from `starts` random starts
+    /// (indices `first` on, from `random_state`: the same state and
+    /// indices give the same designs). A path's `timing` is "free",
+    /// "prescribed" or "relative" (then `drivers` gives the driver at each
+    /// target). `precision_points` stops at exactly as many targets as the
+    /// free parameters can meet. Every design returned is certified over
+    /// the driver's range (a revolution for a path); `distinct=False`
+    /// keeps designs found again from later starts (the rows of a shard).
+    /// Raises `NoDesignError` when none is certified, unless
+    /// `none_is_error=False`. Runs its starts in parallel, the GIL
+    /// released; Ctrl-C interrupts it.
+    #[pyo3(signature = (
+        *, free, targets, path = None, function = None, timing = "free", drivers = None,
+        precision_points = false, starts = 64, random_state = 1, first = 0, distinct = true,
+        at = None, none_is_error = true
+    ))]
+    #[allow(clippy::too_many_arguments)]
+    fn synthesize(
+        &self,
+        py: Python<'_>,
+        free: &Bound<'_, PyDict>,
+        targets: &Bound<'_, PyAny>,
+        path: Option<String>,
+        function: Option<String>,
+        timing: &str,
+        drivers: Option<&Bound<'_, PyAny>>,
+        precision_points: bool,
+        starts: usize,
+        random_state: u64,
+        first: usize,
+        distinct: bool,
+        at: Option<f64>,
+        none_is_error: bool,
+    ) -> PyResult<Designs> {
+        use linkage::mechanism::design::{DesignTask, Targets};
+        use linkage::synthesis::{Search, Timing};
+        let mut freed = Vec::new();
+        for (name, bounds) in free.iter() {
+            let (lower, upper): (f64, f64) = bounds.extract()?;
+            freed.push((name.extract::<String>()?, lower, upper));
+        }
+        let bad = |why: String| PyErr::from(Failure::BadInput(why));
+        let drivers = crate::arrays::values(drivers)?;
+        let targets = match (path, function) {
+            (Some(point), None) => {
+                let points = crate::arrays::rows(targets, 2, "x, y")?;
+                let timing = match (timing, drivers) {
+                    ("free", None) => Timing::Free,
+                    ("prescribed", Some(d)) => Timing::Prescribed(d),
+                    ("relative", Some(d)) => Timing::Relative(d),
+                    ("free", Some(_)) => {
+                        return Err(bad(
+                            "`drivers` are for a prescribed or relative timing".into()
+                        ));
+                    }
+                    ("prescribed" | "relative", None) => {
+                        return Err(bad(format!(
+                            "a {timing} timing needs `drivers`, one for each target"
+                        )));
+                    }
+                    (other, _) => {
+                        return Err(bad(format!(
+                            "`timing` is \"free\", \"prescribed\" or \"relative\", not {other:?}"
+                        )));
+                    }
+                };
+                Targets::Path {
+                    point,
+                    points: points.iter().map(|r| [r[0], r[1]]).collect(),
+                    timing,
+                }
+            }
+            (None, Some(coordinate)) => {
+                let rows = crate::arrays::rows(targets, 2, "driver, value")?;
+                Targets::Function {
+                    coordinate,
+                    pairs: rows.iter().map(|r| (r[0], r[1])).collect(),
+                }
+            }
+            _ => {
+                return Err(bad(
+                    "give one of `path` (a point) and `function` (a coordinate)".into(),
+                ));
+            }
+        };
+        let names: Vec<String> = freed.iter().map(|(n, _, _)| n.clone()).collect();
+        let job = Synthesize {
+            source: self.source.clone(),
+            task: DesignTask {
+                targets,
+                free: freed,
+                precision_points,
+            },
+            search: Search {
+                starts,
+                random_state,
+                first,
+                distinct,
+                ..Search::default()
+            },
+            at,
+            none_is_error,
+        };
+        let mechanism = self.source.mechanism.clone();
+        let free_names = names.clone();
+        let designed = interruptible(py, move || {
+            let names: Vec<&str> = free_names.iter().map(String::as_str).collect();
+            run_design(&mechanism, &names, job)
+        })??;
+        Ok(Designs::new(py, designed, names, self.source.clone()))
     }
 
     /// Every assembly mode at the drivers' values `v` (default: the file's

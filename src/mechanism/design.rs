@@ -44,13 +44,14 @@ pub struct DesignTask {
 /// the free parameters.
 pub type DesignView<const M: usize> = Fixed<M, 1, 32, PARAMETERS>;
 
-/// Solves `task` on `model` from the assembly `guess`, by `search`,
+/// Solves `task` on `model` from the assembly `guess` (without one, each
+/// start's design is assembled by the search for its modes), by `search`,
 /// calling `on_start` as each start ends; every design returned is
 /// certified. No design found is not an error here (a shard may find
 /// none): see [`NoDesign::of`].
 pub fn design<const M: usize>(
     model: &DesignView<M>,
-    guess: SVector<f64, M>,
+    guess: Option<SVector<f64, M>>,
     task: &DesignTask,
     search: &Search,
     on_start: &(dyn Fn() + Sync),
@@ -71,7 +72,10 @@ pub fn design<const M: usize>(
             (problem, Range::Targets)
         }
     };
-    let mut problem = problem.guess(guess);
+    let mut problem = match guess {
+        Some(guess) => problem.guess(guess),
+        None => problem,
+    };
     for (name, lower, upper) in &task.free {
         problem = problem.free(name, *lower, *upper)?;
     }

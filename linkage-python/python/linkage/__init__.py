@@ -12,7 +12,7 @@ The errors it raises are in `linkage.errors`, all subclasses of
 """
 
 from . import errors
-from ._linkage import SIZES, Mechanism, Pose, Sweep
+from ._linkage import SIZES, Designs, Mechanism, Pose, Sweep
 from .errors import (
     AnalysisError,
     BadInputError,
@@ -21,6 +21,7 @@ from .errors import (
     FormatError,
     LinkageError,
     MistakesError,
+    NoDesignError,
     NotConvergedError,
     SingularPoseError,
     SizeError,
@@ -28,6 +29,7 @@ from .errors import (
 
 __all__ = [
     "SIZES",
+    "Designs",
     "Mechanism",
     "Pose",
     "Sweep",
@@ -39,6 +41,7 @@ __all__ = [
     "FormatError",
     "LinkageError",
     "MistakesError",
+    "NoDesignError",
     "NotConvergedError",
     "SingularPoseError",
     "SizeError",

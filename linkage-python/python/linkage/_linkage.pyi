@@ -51,6 +51,27 @@ class Sweep:
     def __len__(self) -> int: ...
     def __getitem__(self, name: str) -> npt.NDArray[np.float64]: ...
 
+class Designs:
+    """The certified designs of a synthesis, best first."""
+
+    parameters: npt.NDArray[np.float64]
+    parameter_names: list[str]
+    free: list[str]
+    rms_error: npt.NDArray[np.float64]
+    largest_error: npt.NDArray[np.float64]
+    start: list[int]
+    drivers: npt.NDArray[np.float64]
+    errors: npt.NDArray[np.float64]
+    certified_from: npt.NDArray[np.float64]
+    certified_to: npt.NDArray[np.float64]
+    transmission: npt.NDArray[np.float64]
+    transmission_at: npt.NDArray[np.float64]
+    starts: int
+    failed_starts: int
+    refused: int
+    def __len__(self) -> int: ...
+    def design(self, k: int) -> Mechanism: ...
+
 class Mechanism:
     """A planar mechanism made at run time."""
 
@@ -107,6 +128,23 @@ class Mechanism:
         rate: Optional[Values] = None,
         u: Optional[Values] = None,
     ) -> Sweep: ...
+    def synthesize(
+        self,
+        *,
+        free: Mapping[str, tuple[float, float]],
+        targets: Any,
+        path: Optional[str] = None,
+        function: Optional[str] = None,
+        timing: str = "free",
+        drivers: Optional[Values] = None,
+        precision_points: bool = False,
+        starts: int = 64,
+        random_state: int = 1,
+        first: int = 0,
+        distinct: bool = True,
+        at: Optional[float] = None,
+        none_is_error: bool = True,
+    ) -> Designs: ...
     def assemble(self, v: Optional[Values] = None) -> npt.NDArray[np.float64]: ...
     def svg(self, width: float = 640.0) -> str: ...
     def _repr_svg_(self) -> Optional[str]: ...

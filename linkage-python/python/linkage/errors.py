@@ -31,6 +31,11 @@ class CannotAssembleError(LinkageError):
     cannot close."""
 
 
+class NoDesignError(LinkageError):
+    """A synthesis certified no design: a target out of reach, or every
+    candidate refused (the message gives the closest one's reason)."""
+
+
 class SizeError(LinkageError):
     """The mechanism's sizes (m, f), or the parameters asked for, are more
     than this build analyses at run time (see `linkage.SIZES`)."""
