@@ -11,7 +11,7 @@ The errors it raises are in `linkage.errors`, all subclasses of
 `LinkageError`.
 """
 
-from . import errors
+from . import errors, shards
 from ._linkage import SIZES, Designs, Mechanism, Pose, Sweep
 from .errors import (
     AnalysisError,
@@ -34,6 +34,7 @@ __all__ = [
     "Pose",
     "Sweep",
     "errors",
+    "shards",
     "AnalysisError",
     "BadInputError",
     "CannotAssembleError",
