@@ -1,13 +1,13 @@
 //! Synthesis from Python: `Mechanism.synthesize` and its result,
 //! `Designs` — every design certified over the driver's range.
 
-use crate::arrays::{array1, array2};
+use crate::arrays::{array1, array2, array3};
 use crate::errors::Failure;
 use crate::source::Source;
 use linkage::mechanism::design::{DesignTask, DesignView, NoDesign, design};
 use linkage::mechanism::sizes::DesignJob;
 use linkage::synthesis::Search;
-use numpy::{PyArray1, PyArray2};
+use numpy::{PyArray1, PyArray2, PyArray3};
 use pyo3::prelude::*;
 
 /// The certified designs of a synthesis, one row per design, best first
@@ -15,7 +15,7 @@ use pyo3::prelude::*;
 /// of `parameter_names` (the free ones chosen, the others as they were),
 /// `rms_error`, `largest_error`, `start` (the start each came from),
 /// `drivers` and `errors` (designs, targets): the driver at each target
-/// and the miss there; the certificate: the range swept `certified_from`
+/// and the miss there, `poses` (designs, targets, m) the pose there; the certificate: the range swept `certified_from`
 /// to `certified_to`, the worst transmission angle `transmission` (rad)
 /// and the driver there `transmission_at`. `starts` were run, of which
 /// `failed_starts` could not be assembled and `refused` candidates failed
@@ -38,6 +38,8 @@ pub struct Designs {
     drivers: Py<PyArray2<f64>>,
     #[pyo3(get)]
     errors: Py<PyArray2<f64>>,
+    #[pyo3(get)]
+    poses: Py<PyArray3<f64>>,
     #[pyo3(get)]
     certified_from: Py<PyArray1<f64>>,
     #[pyo3(get)]
@@ -67,6 +69,9 @@ pub struct Designed {
     start: Vec<usize>,
     drivers: Vec<f64>,
     errors: Vec<f64>,
+    /// u at each target, design after design.
+    poses: Vec<f64>,
+    m: usize,
     targets: usize,
     certificate: [Vec<f64>; 4],
     starts: usize,
@@ -105,6 +110,7 @@ impl DesignJob for Synthesize {
         let mut out = Designed {
             names: crate::pose::owned(model.parameter_names()),
             targets,
+            m: M,
             starts: found.starts,
             failed_starts: found.failed_starts,
             refused: found.refused.len(),
@@ -117,6 +123,8 @@ impl DesignJob for Synthesize {
             out.start.push(d.start);
             out.drivers.extend(&d.drivers);
             out.errors.extend(&d.errors);
+            out.poses
+                .extend(d.poses.iter().flat_map(|u| u.iter().copied()));
             let c = d.certificate.as_ref();
             let values = [
                 c.map_or(f64::NAN, |c| c.from),
@@ -147,6 +155,7 @@ impl Designs {
             start: d.start,
             drivers: array2(py, n, d.targets, d.drivers),
             errors: array2(py, n, d.targets, d.errors),
+            poses: array3(py, (n, d.targets, d.m), d.poses),
             certified_from: array1(py, from),
             certified_to: array1(py, to),
             transmission: array1(py, transmission),

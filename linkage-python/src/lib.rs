@@ -12,6 +12,7 @@ mod errors;
 mod interrupt;
 mod mechanism;
 mod pose;
+mod sensitivity;
 mod source;
 mod sweep;
 
@@ -23,6 +24,7 @@ fn _linkage(module: &Bound<'_, PyModule>) -> PyResult<()> {
     module.add_class::<mechanism::Mechanism>()?;
     module.add_class::<pose::Pose>()?;
     module.add_class::<design::Designs>()?;
+    module.add_class::<sensitivity::Sensitivities>()?;
     module.add_class::<sweep::Sweep>()?;
     module.add("SIZES", linkage::mechanism::sizes::SIZES.to_vec())?;
     Ok(())

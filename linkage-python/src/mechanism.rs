@@ -5,12 +5,13 @@ use crate::design::{Designs, Synthesize};
 use crate::errors::Failure;
 use crate::interrupt::interruptible;
 use crate::pose::{Analyze, Pose};
+use crate::sensitivity::{Differentiate, Sensitivities};
 use crate::source::Source;
 use crate::sweep::{Poses, Sweep};
 use linkage::assembly::{Assemble, Search};
 use linkage::draw::scene::Frame;
 use linkage::file::{LoadError, Loaded, Located};
-use linkage::mechanism::sizes::{Job, run, run_design};
+use linkage::mechanism::sizes::{Job, run, run_design, run_sensitive};
 use linkage::mechanism::{Fixed, MechanismError};
 use linkage::prelude::*;
 use linkage::topology::Topology;
@@ -351,6 +352,35 @@ impl Mechanism {
         Ok(Pose::new(py, analysed))
     }
 
+    /// The exact derivatives of the pose `analyze` would give (the same
+    /// arguments) by the parameters `params` (default: every parameter the
+    /// mechanism is differentiated by; at most 16), the drivers' motion
+    /// held fixed.
+    #[pyo3(signature = (v = None, vdot = None, vddot = None, u = None, params = None))]
+    fn sensitivities(
+        &self,
+        py: Python<'_>,
+        v: Option<&Bound<'_, PyAny>>,
+        vdot: Option<&Bound<'_, PyAny>>,
+        vddot: Option<&Bound<'_, PyAny>>,
+        u: Option<&Bound<'_, PyAny>>,
+        params: Option<Vec<String>>,
+    ) -> PyResult<Sensitivities> {
+        use crate::arrays::values;
+        let job = Differentiate {
+            analyze: Analyze {
+                source: &self.source,
+                v: values(v)?,
+                vdot: values(vdot)?,
+                vddot: values(vddot)?,
+                u: values(u)?,
+            },
+        };
+        let names = params.unwrap_or_default();
+        let differentiated = py.detach(|| run_sensitive(&self.source.mechanism, &names, job))?;
+        Ok(Sensitivities::new(py, differentiated))
+    }
+
     /// Every pose as the drivers move from `start` to `stop` in `steps`
     /// equal steps (default: the file's drive, from its assembly at `at`),
     /// at the rate `rate`; Newton starts from `u` if given. Singular poses
@@ -390,14 +420,16 @@ impl Mechanism {
     /// target). `precision_points` stops at exactly as many targets as the
     /// free parameters can meet. Every design returned is certified over
     /// the driver's range (a revolution for a path); `distinct=False`
-    /// keeps designs found again from later starts (the rows of a shard).
+    /// keeps designs found again from later starts (the rows of a shard);
+    /// `enough=k` stops with the round of starts (8 at a time) that
+    /// certifies k designs.
     /// Raises `NoDesignError` when none is certified, unless
     /// `none_is_error=False`. Runs its starts in parallel, the GIL
     /// released; Ctrl-C interrupts it.
     #[pyo3(signature = (
         *, free, targets, path = None, function = None, timing = "free", drivers = None,
         precision_points = false, starts = 64, random_state = 1, first = 0, distinct = true,
-        at = None, none_is_error = true
+        enough = None, at = None, none_is_error = true
     ))]
     #[allow(clippy::too_many_arguments)]
     fn synthesize(
@@ -414,6 +446,7 @@ impl Mechanism {
         random_state: u64,
         first: usize,
         distinct: bool,
+        enough: Option<usize>,
         at: Option<f64>,
         none_is_error: bool,
     ) -> PyResult<Designs> {
@@ -481,6 +514,7 @@ impl Mechanism {
                 random_state,
                 first,
                 distinct,
+                enough,
                 ..Search::default()
             },
             at,

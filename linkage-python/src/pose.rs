@@ -3,6 +3,7 @@
 use crate::arrays::{array1, array2};
 use crate::errors::Failure;
 use crate::source::Source;
+use linkage::file::FixedAnalysis;
 use linkage::mechanism::Fixed;
 use linkage::mechanism::sizes::Job;
 use linkage::prelude::*;
@@ -93,12 +94,15 @@ pub fn owned(names: &[&str]) -> Vec<String> {
     names.iter().map(|n| (*n).to_owned()).collect()
 }
 
-impl Job for Analyze<'_> {
-    type Output = Analysed;
-    type Error = Failure;
-    fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<Analysed, Failure> {
+impl Analyze<'_> {
+    /// The pose these arguments ask of `model`: the drivers' values given
+    /// or the file's, Newton from `u` or from the file's assembly.
+    pub fn pose<const M: usize, const F: usize, const N: usize, const K: usize>(
+        &self,
+        model: &Fixed<M, F, N, K>,
+    ) -> Result<PoseOf<M, F, N, K>, Failure> {
         let v_names = model.v_names();
-        let drives = self.source.drives(&model)?;
+        let drives = self.source.drives(model)?;
         let v = Source::or_file(self.v.as_deref(), "v", &v_names, drives.map(|d| d.at), None)?;
         let vdot = Source::or_file(
             self.vdot.as_deref(),
@@ -126,9 +130,37 @@ impl Job for Analyze<'_> {
         }
         let u = match &self.u {
             Some(u) => crate::arrays::fixed::<M>(u, "u", &model.u_names())?,
-            None => self.source.assembled(&model, &v)?,
+            None => self.source.assembled(model, &v)?,
         };
         let pose = model.analyze(&u, &v, &vdot, &vddot, &Options::default())?;
+        Ok(PoseOf {
+            pose,
+            v,
+            vdot,
+            vddot,
+        })
+    }
+}
+
+/// A pose of a view of a run-time mechanism, with the drivers' motion it
+/// was analysed at.
+pub struct PoseOf<const M: usize, const F: usize, const N: usize, const K: usize> {
+    pub pose: FixedAnalysis<M, F, N, K>,
+    pub v: SVector<f64, F>,
+    pub vdot: SVector<f64, F>,
+    pub vddot: SVector<f64, F>,
+}
+
+impl Job for Analyze<'_> {
+    type Output = Analysed;
+    type Error = Failure;
+    fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<Analysed, Failure> {
+        let PoseOf {
+            pose,
+            v,
+            vdot,
+            vddot,
+        } = self.pose(&model)?;
         Ok(Analysed {
             u: pose.u.as_slice().to_vec(),
             udot: pose.udot.as_slice().to_vec(),
@@ -143,7 +175,7 @@ impl Job for Analyze<'_> {
             rcond: pose.rcond,
             iterations: pose.iterations,
             u_names: owned(&model.u_names()),
-            v_names: owned(&v_names),
+            v_names: owned(&model.v_names()),
             point_names: owned(model.point_names()),
         })
     }

@@ -12,7 +12,7 @@ The errors it raises are in `linkage.errors`, all subclasses of
 """
 
 from . import errors, shards
-from ._linkage import SIZES, Designs, Mechanism, Pose, Sweep
+from ._linkage import SIZES, Designs, Mechanism, Pose, Sensitivities, Sweep
 from .errors import (
     AnalysisError,
     BadInputError,
@@ -32,6 +32,7 @@ __all__ = [
     "Designs",
     "Mechanism",
     "Pose",
+    "Sensitivities",
     "Sweep",
     "errors",
     "shards",

@@ -51,6 +51,19 @@ class Sweep:
     def __len__(self) -> int: ...
     def __getitem__(self, name: str) -> npt.NDArray[np.float64]: ...
 
+class Sensitivities:
+    """The exact derivatives of a pose by the parameters."""
+
+    u: npt.NDArray[np.float64]
+    udot: npt.NDArray[np.float64]
+    uddot: npt.NDArray[np.float64]
+    points: npt.NDArray[np.float64]
+    point_velocities: npt.NDArray[np.float64]
+    point_accelerations: npt.NDArray[np.float64]
+    parameter_names: list[str]
+    u_names: list[str]
+    point_names: list[str]
+
 class Designs:
     """The certified designs of a synthesis, best first."""
 
@@ -62,6 +75,7 @@ class Designs:
     start: list[int]
     drivers: npt.NDArray[np.float64]
     errors: npt.NDArray[np.float64]
+    poses: npt.NDArray[np.float64]
     certified_from: npt.NDArray[np.float64]
     certified_to: npt.NDArray[np.float64]
     transmission: npt.NDArray[np.float64]
@@ -120,6 +134,14 @@ class Mechanism:
         vddot: Optional[Values] = None,
         u: Optional[Values] = None,
     ) -> Pose: ...
+    def sensitivities(
+        self,
+        v: Optional[Values] = None,
+        vdot: Optional[Values] = None,
+        vddot: Optional[Values] = None,
+        u: Optional[Values] = None,
+        params: Optional[Sequence[str]] = None,
+    ) -> Sensitivities: ...
     def sweep(
         self,
         steps: Optional[int] = None,
@@ -142,6 +164,7 @@ class Mechanism:
         random_state: int = 1,
         first: int = 0,
         distinct: bool = True,
+        enough: Optional[int] = None,
         at: Optional[float] = None,
         none_is_error: bool = True,
     ) -> Designs: ...
