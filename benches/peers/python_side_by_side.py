@@ -51,7 +51,7 @@ WORKSHEET = {"xa": 0.0, "ya": 0.0, "xd": 80.0, "yd": 0.0, "l2": 20.0, "l3": 50.0
              "l4": 70.0, "px": 25.0, "py": 0.0}
 NAMES = list(WORKSHEET)
 TIMINGS = 3
-STREAMS = 3
+STREAMS = 5
 
 
 def coupler(parameters=WORKSHEET):

@@ -107,6 +107,16 @@ def test_ten_thousand_malformed_calls_raise_typed_exceptions():
         lambda: linkage.Mechanism.from_pyslvs(
             sources[4][1], rng.choice([[(0, 1)], [(0, 9)], [(1, 0)], [], [(0, 1), (0, 2)], g()])
         ),
+        lambda: bar.sensitivities(**kwargs(["v", "vdot", "u"]),
+                                  params=rng.choice([None, ["l2"], ["zz"], [], "l2", [g()], g()])),
+        lambda: bar.synthesize(
+            **{rng.choice(["path", "function"]): rng.choice(["C", "theta4", "zz", g()])},
+            targets=rng.choice([[[30.0, 40.0], [20.0, 50.0]], [[0.1, 1.0]], g(), [[g(), g()]]]),
+            free=rng.choice([{"l2": (15.0, 25.0)}, {"l2": (g(), g())}, {g(): (1.0, 2.0)}, {}, g()]),
+            timing=rng.choice(["free", "prescribed", "relative", "x", g()]),
+            drivers=rng.choice([None, [0.1, 0.2], g()]),
+            starts=rng.choice([0, 1, 2, g()]), none_is_error=rng.random() < 0.5,
+        ),
     ]
 
     def from_mutated():
