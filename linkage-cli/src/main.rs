@@ -9,7 +9,6 @@ mod commands;
 mod failure;
 mod load;
 mod progress;
-mod quantity;
 mod sizes;
 mod table;
 

@@ -8,6 +8,8 @@ use linkage::mechanism::MechanismError;
 use linkage::mechanism::design::NoDesign;
 use linkage::mechanism::sizes::SizeError;
 use linkage::synthesis::SynthesisError;
+use linkage::tolerance::ToleranceError;
+use linkage::watch::WatchError;
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use pyo3::types::PyType;
@@ -22,6 +24,8 @@ pub enum Failure {
     Size(SizeError),
     Synthesis(SynthesisError),
     NoDesign(NoDesign),
+    Watch(WatchError),
+    Tolerance(ToleranceError),
     /// An argument from Python is out of its range.
     BadInput(String),
     /// Another tool's format could not be read or represented.
@@ -74,6 +78,8 @@ impl std::fmt::Display for Failure {
             Failure::Size(e) => write!(f, "{e}"),
             Failure::Synthesis(e) => write!(f, "{e}"),
             Failure::NoDesign(e) => write!(f, "{e}"),
+            Failure::Watch(e) => write!(f, "{e}"),
+            Failure::Tolerance(e) => write!(f, "{e}"),
             Failure::BadInput(why) | Failure::Format(why) => f.write_str(why),
         }
     }
@@ -98,6 +104,14 @@ fn of_assembly(error: &AssemblyError) -> &'static str {
             "SingularPoseError"
         }
         _ => "BadInputError",
+    }
+}
+
+fn of_watch(error: &WatchError) -> &'static str {
+    match error {
+        WatchError::UnknownName(_) => "BadInputError",
+        WatchError::Kinematics(e) => of_analysis(e),
+        _ => "AnalysisError",
     }
 }
 
@@ -139,6 +153,15 @@ impl Failure {
             Failure::Size(_) => "SizeError",
             Failure::Synthesis(e) => of_synthesis(e),
             Failure::NoDesign(_) => "NoDesignError",
+            Failure::Watch(e) => of_watch(e),
+            Failure::Tolerance(e) => match e {
+                ToleranceError::UnknownName(_) | ToleranceError::BadTolerance { .. } => {
+                    "BadInputError"
+                }
+                ToleranceError::Kinematics { error, .. } => of_analysis(error),
+                ToleranceError::Watch(e) => of_watch(e),
+                _ => "AnalysisError",
+            },
             Failure::BadInput(_) => "BadInputError",
             Failure::Format(_) => "FormatError",
         }

@@ -9,12 +9,14 @@
 mod arrays;
 mod design;
 mod errors;
+mod extremes;
 mod interrupt;
 mod mechanism;
 mod pose;
 mod sensitivity;
 mod source;
 mod sweep;
+mod tolerance;
 
 use pyo3::prelude::*;
 

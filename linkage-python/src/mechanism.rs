@@ -3,11 +3,13 @@
 
 use crate::design::{Designs, Synthesize};
 use crate::errors::Failure;
+use crate::extremes::Find;
 use crate::interrupt::interruptible;
 use crate::pose::{Analyze, Pose};
 use crate::sensitivity::{Differentiate, Sensitivities};
 use crate::source::Source;
-use crate::sweep::{Poses, Sweep};
+use crate::sweep::{DriveArgs, Poses, Sweep};
+use crate::tolerance::Spread;
 use linkage::assembly::{Assemble, Search};
 use linkage::draw::scene::Frame;
 use linkage::file::{LoadError, Loaded, Located};
@@ -399,11 +401,13 @@ impl Mechanism {
         use crate::arrays::values;
         let job = Poses {
             source: self.source.clone(),
-            steps,
-            start: values(start)?,
-            stop: values(stop)?,
-            rate: values(rate)?,
-            u: values(u)?,
+            drive: DriveArgs {
+                steps,
+                start: values(start)?,
+                stop: values(stop)?,
+                rate: values(rate)?,
+                u: values(u)?,
+            },
         };
         let mechanism = self.source.mechanism.clone();
         let swept = interruptible(py, move || run(&mechanism, job))?;
@@ -527,6 +531,166 @@ impl Mechanism {
             run_design(&mechanism, &names, job)
         })??;
         Ok(Designs::new(py, designed, names, self.source.clone()))
+    }
+
+    /// Where `quantities` (default: every dependent coordinate) are
+    /// largest and smallest over a sweep — and zero, with `zeros=True` —
+    /// located to rounding between its poses: a list of dicts of
+    /// `quantity`, `kind` ("maximum", "minimum", "zero, rising", "zero,
+    /// falling"), `v` (the drivers there) and `value`. A quantity is
+    /// written as on the command line: `theta4`, `C.x`, `theta4'` (its
+    /// velocity), `C.y''` (an acceleration). The sweep is `sweep`'s (the
+    /// same keywords).
+    #[pyo3(signature = (
+        quantities = None, zeros = false, steps = None, start = None, stop = None, rate = None,
+        u = None
+    ))]
+    #[allow(clippy::too_many_arguments)]
+    fn extremes<'py>(
+        &self,
+        py: Python<'py>,
+        quantities: Option<Vec<String>>,
+        zeros: bool,
+        steps: Option<usize>,
+        start: Option<&Bound<'_, PyAny>>,
+        stop: Option<&Bound<'_, PyAny>>,
+        rate: Option<&Bound<'_, PyAny>>,
+        u: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Vec<Bound<'py, PyDict>>> {
+        use crate::arrays::values;
+        let job = Find {
+            source: self.source.clone(),
+            drive: DriveArgs {
+                steps,
+                start: values(start)?,
+                stop: values(stop)?,
+                rate: values(rate)?,
+                u: values(u)?,
+            },
+            quantities: quantities.unwrap_or_default(),
+            zeros,
+        };
+        let mechanism = self.source.mechanism.clone();
+        let found = interruptible(py, move || run(&mechanism, job))??;
+        let mut out = Vec::new();
+        for extreme in found {
+            let dict = PyDict::new(py);
+            dict.set_item("quantity", extreme.quantity)?;
+            dict.set_item("kind", extreme.kind)?;
+            dict.set_item("v", crate::arrays::array1(py, extreme.v))?;
+            dict.set_item("value", extreme.value)?;
+            out.push(dict);
+        }
+        Ok(out)
+    }
+
+    /// How far the parameters' `tolerances` (a dict: name to a band's
+    /// half-width t, or to ("normal", σ)) move `quantities` (default: every
+    /// dependent coordinate; `C.path` is the point's deviation normal to
+    /// its path) over a sweep (`sweep`'s keywords): a dict with
+    /// `parameters` (those toleranced, in the library's order), `limit`
+    /// (the drivers where, within the tolerances, the mechanism may reach
+    /// a limit position — the linear spreads do not describe the band
+    /// there — or None), `failed_samples`, and `bands`: for each quantity a
+    /// dict of arrays over the poses — `v` (poses, f), `value`,
+    /// `worst_case` (Σ|gᵢ|tᵢ), `rss`, `sigma`, `sigma_monte_carlo` (with
+    /// `samples` > 0) — and `largest` (the pose where the worst case is
+    /// largest) with `shares` (each parameter's part of it there).
+    #[pyo3(signature = (
+        tolerances, quantities = None, samples = 0, random_state = 1, steps = None,
+        start = None, stop = None, rate = None, u = None
+    ))]
+    #[allow(clippy::too_many_arguments)]
+    fn tolerance<'py>(
+        &self,
+        py: Python<'py>,
+        tolerances: &Bound<'_, PyDict>,
+        quantities: Option<Vec<String>>,
+        samples: usize,
+        random_state: u64,
+        steps: Option<usize>,
+        start: Option<&Bound<'_, PyAny>>,
+        stop: Option<&Bound<'_, PyAny>>,
+        rate: Option<&Bound<'_, PyAny>>,
+        u: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        use crate::arrays::{array1, array2, values};
+        use linkage::tolerance::Tolerance;
+        let mut given = Vec::new();
+        for (name, value) in tolerances.iter() {
+            let name: String = name.extract()?;
+            let tolerance = if let Ok(t) = value.extract::<f64>() {
+                Tolerance::Band(t)
+            } else {
+                let (kind, size): (String, f64) = value.extract().map_err(|_| {
+                    pyo3::exceptions::PyTypeError::new_err(format!(
+                        "the tolerance of `{name}`: a half-width t, or (\"normal\", σ)"
+                    ))
+                })?;
+                match kind.as_str() {
+                    "normal" => Tolerance::Normal(size),
+                    "band" => Tolerance::Band(size),
+                    other => {
+                        return Err(Failure::BadInput(format!(
+                            "the tolerance of `{name}`: \"normal\" or \"band\", not {other:?}"
+                        ))
+                        .into());
+                    }
+                }
+            };
+            given.push((name, tolerance));
+        }
+        if samples > 1_000_000 {
+            return Err(Failure::BadInput(format!(
+                "`samples` is {samples}: a Monte Carlo run here takes at most 1000000"
+            ))
+            .into());
+        }
+        let names: Vec<String> = given.iter().map(|(n, _)| n.clone()).collect();
+        let job = Spread {
+            source: self.source.clone(),
+            drive: DriveArgs {
+                steps,
+                start: values(start)?,
+                stop: values(stop)?,
+                rate: values(rate)?,
+                u: values(u)?,
+            },
+            tolerances: given,
+            quantities: quantities.unwrap_or_default(),
+            samples,
+            random_state,
+        };
+        let mechanism = self.source.mechanism.clone();
+        let spreads = interruptible(py, move || run_sensitive(&mechanism, &names, job))??;
+        let f = self.f();
+        let out = PyDict::new(py);
+        out.set_item("parameters", spreads.parameters.clone())?;
+        out.set_item("limit", spreads.limit.map(|v| array1(py, v)))?;
+        out.set_item("failed_samples", spreads.failed_samples)?;
+        let bands = PyDict::new(py);
+        for band in spreads.bands {
+            let dict = PyDict::new(py);
+            let poses = band.value.len();
+            dict.set_item("v", array2(py, poses, f, band.v))?;
+            dict.set_item("value", array1(py, band.value))?;
+            dict.set_item("worst_case", array1(py, band.worst_case))?;
+            dict.set_item("rss", array1(py, band.rss))?;
+            dict.set_item("sigma", array1(py, band.sigma))?;
+            dict.set_item(
+                "sigma_monte_carlo",
+                band.sigma_monte_carlo.map(|s| array1(py, s)),
+            )?;
+            dict.set_item("largest", band.largest)?;
+            let shares = PyDict::new(py);
+            for (name, share) in spreads.parameters.iter().zip(band.shares) {
+                shares.set_item(name, share)?;
+            }
+            dict.set_item("shares", shares)?;
+            bands.set_item(band.quantity, dict)?;
+        }
+        out.set_item("bands", bands)?;
+        Ok(out)
     }
 
     /// Every assembly mode at the drivers' values `v` (default: the file's

@@ -85,9 +85,11 @@ pub struct Swept {
     point_names: Vec<String>,
 }
 
-/// A sweep: the file's drive, or the range and steps given.
-pub struct Poses {
-    pub source: Source,
+/// Where a sweep goes: the file's drive, or the range, steps and rate
+/// given (what is not given taken from the file); Newton starts from `u`
+/// if given.
+#[derive(Clone, Debug, Default)]
+pub struct DriveArgs {
     pub steps: Option<usize>,
     pub start: Option<Vec<f64>>,
     pub stop: Option<Vec<f64>>,
@@ -95,15 +97,18 @@ pub struct Poses {
     pub u: Option<Vec<f64>>,
 }
 
-/// Steps a sweep takes when neither the call nor a file says.
-const STEPS: usize = 360;
+/// A sweep's start, drive and options, at a mechanism's sizes.
+pub type Resolved<const M: usize, const F: usize> = (SVector<f64, M>, Drive<F>, SweepOptions);
 
-impl Job for Poses {
-    type Output = Swept;
-    type Error = Failure;
-    fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<Swept, Failure> {
+impl DriveArgs {
+    /// The sweep these arguments ask of `model`.
+    pub fn resolve<const M: usize, const F: usize, const N: usize, const K: usize>(
+        &self,
+        source: &Source,
+        model: &Fixed<M, F, N, K>,
+    ) -> Result<Resolved<M, F>, Failure> {
         let v_names = model.v_names();
-        let drives = self.source.drives(&model)?;
+        let drives = source.drives(model)?;
         if let Some(steps) = self.steps
             && !(1..=MOST_STEPS).contains(&steps)
         {
@@ -114,51 +119,67 @@ impl Job for Poses {
         let steps = (self.steps).or(drives.map(|d| d.steps)).unwrap_or(STEPS);
         let as_file =
             self.start.is_none() && self.stop.is_none() && self.rate.is_none() && self.u.is_none();
-        let (u0, drive, options) = match &self.source.loaded {
-            Some(loaded) if as_file => {
-                let swept = loaded.swept(&model, steps)?;
-                (swept.start, swept.drive, swept.options)
-            }
-            _ => {
-                let from = Source::or_file(
-                    self.start.as_deref(),
-                    "start",
-                    &v_names,
-                    drives.map(|d| d.from),
-                    None,
-                )?;
-                let to = Source::or_file(
-                    self.stop.as_deref(),
-                    "stop",
-                    &v_names,
-                    drives.map(|d| d.to),
-                    None,
-                )?;
-                let rate = Source::or_file(
-                    self.rate.as_deref(),
-                    "rate",
-                    &v_names,
-                    drives.map(|d| d.rate),
-                    Some(1.0),
-                )?;
-                let mut options = SweepOptions::default();
-                if F == 1 {
-                    options.speed = rate[0];
-                }
-                if let Some(index) = from.iter().position(|x| !x.is_finite()) {
-                    return Err(Failure::Analysis(linkage::Error::NonFiniteInput {
-                        argument: "start",
-                        index,
-                        value: from[index],
-                    }));
-                }
-                let u0 = match &self.u {
-                    Some(u) => crate::arrays::fixed::<M>(u, "u", &model.u_names())?,
-                    None => self.source.assembled(&model, &from)?,
-                };
-                (u0, Drive::Line { from, to, steps }, options)
-            }
+        if let Some(loaded) = &source.loaded
+            && as_file
+        {
+            let swept = loaded.swept(model, steps)?;
+            return Ok((swept.start, swept.drive, swept.options));
+        }
+        let from = Source::or_file(
+            self.start.as_deref(),
+            "start",
+            &v_names,
+            drives.map(|d| d.from),
+            None,
+        )?;
+        let to = Source::or_file(
+            self.stop.as_deref(),
+            "stop",
+            &v_names,
+            drives.map(|d| d.to),
+            None,
+        )?;
+        let rate = Source::or_file(
+            self.rate.as_deref(),
+            "rate",
+            &v_names,
+            drives.map(|d| d.rate),
+            Some(1.0),
+        )?;
+        let mut options = SweepOptions::default();
+        if F == 1 {
+            options.speed = rate[0];
+        }
+        if let Some(index) = from.iter().position(|x| !x.is_finite()) {
+            return Err(Failure::Analysis(linkage::Error::NonFiniteInput {
+                argument: "start",
+                index,
+                value: from[index],
+            }));
+        }
+        let u0 = match &self.u {
+            Some(u) => crate::arrays::fixed::<M>(u, "u", &model.u_names())?,
+            None => source.assembled(model, &from)?,
         };
+        Ok((u0, Drive::Line { from, to, steps }, options))
+    }
+}
+
+/// A sweep's poses.
+pub struct Poses {
+    pub source: Source,
+    pub drive: DriveArgs,
+}
+
+/// Steps a sweep takes when neither the call nor a file says.
+const STEPS: usize = 360;
+
+impl Job for Poses {
+    type Output = Swept;
+    type Error = Failure;
+    fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<Swept, Failure> {
+        let v_names = model.v_names();
+        let (u0, drive, options) = self.drive.resolve(&self.source, &model)?;
         let mut out = Swept::default();
         let points = !model.point_names().is_empty();
         let summary = model.sweep_each(&u0, &drive, &options, |pose| {

@@ -107,6 +107,13 @@ def test_ten_thousand_malformed_calls_raise_typed_exceptions():
         lambda: linkage.Mechanism.from_pyslvs(
             sources[4][1], rng.choice([[(0, 1)], [(0, 9)], [(1, 0)], [], [(0, 1), (0, 2)], g()])
         ),
+        lambda: bar.extremes(rng.choice([None, ["theta4"], ["C.x'"], ["C.path"], ["zz"], [g()], g()]),
+                             zeros=rng.random() < 0.5, steps=rng.choice([12, 36, small()]),
+                             **kwargs(["start", "stop", "rate"])),
+        lambda: bar.tolerance({rng.choice(["l2", "l3", "zz", g()]): rng.choice(
+                                  [0.05, -1.0, ("normal", 0.01), ("x", 0.1), g()])},
+                              quantities=rng.choice([None, ["theta4"], ["C.path"], [g()]]),
+                              samples=rng.choice([0, 0, 20, g()]), steps=rng.choice([12, small()])),
         lambda: bar.sensitivities(**kwargs(["v", "vdot", "u"]),
                                   params=rng.choice([None, ["l2"], ["zz"], [], "l2", [g()], g()])),
         lambda: bar.synthesize(

@@ -40,11 +40,13 @@
 mod names;
 mod pose;
 mod selector;
+mod written;
 
 pub use names::Names;
 pub(crate) use names::{body, find, parameter};
 pub use pose::Pose;
 pub use selector::{Quantity, Resolved};
+pub use written::{Written, written};
 
 /// Which derivative in time of a coordinate or a point.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

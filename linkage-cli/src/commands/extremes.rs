@@ -5,19 +5,19 @@
 use crate::cli::Extremes;
 use crate::failure::Failure;
 use crate::load::{Loaded, load};
-use crate::quantity::{self, Quantity};
 use crate::sizes::{self, Job};
 use crate::table::Table;
 use linkage::mechanism::Fixed;
 use linkage::prelude::*;
+use linkage::quantity::{Written, written};
 use linkage::watch::{FoundKind, Watch, locate};
 
 /// A watch written on the command line (see [`quantity`]).
 fn parse_watch<const M: usize, const F: usize>(text: &str) -> Result<Watch<'static, M, F>, String> {
-    match quantity::parse(text)? {
-        Quantity::Coordinate(name, of) => Ok(Watch::coordinate(name, of)),
-        Quantity::Point(name, axis, of) => Ok(Watch::point(name, axis, of)),
-        Quantity::Path(_) => Err(format!(
+    match written(text)? {
+        Written::Coordinate(name, of) => Ok(Watch::coordinate(name, of)),
+        Written::Point(name, axis, of) => Ok(Watch::point(name, axis, of)),
+        Written::Path(_) => Err(format!(
             "`{text}`: a path's deviation is a quantity of `linkage tolerance`, not one to watch"
         )),
     }

@@ -8,11 +8,11 @@ use crate::cli::ToleranceArgs;
 use crate::failure::Failure;
 use crate::load::{Loaded, load};
 use crate::progress::Progress;
-use crate::quantity::{self, Quantity};
 use crate::sizes::{self, PARAMETERS, SensitivityJob};
 use crate::table::Table;
 use linkage::mechanism::Fixed;
 use linkage::prelude::*;
+use linkage::quantity::{Written, written};
 use linkage::tolerance::{self, MonteCarlo, Output, Tolerance, Tolerances};
 
 struct Spread<'a> {
@@ -24,10 +24,10 @@ struct Spread<'a> {
 fn output<const M: usize, const F: usize, const K: usize>(
     text: &str,
 ) -> Result<Output<'static, M, F, K>, Failure> {
-    Ok(match quantity::parse(text).map_err(Failure::Analysis)? {
-        Quantity::Coordinate(name, of) => Output::coordinate(name, of),
-        Quantity::Point(name, axis, of) => Output::point(name, axis, of),
-        Quantity::Path(name) => Output::path(name),
+    Ok(match written(text).map_err(Failure::Analysis)? {
+        Written::Coordinate(name, of) => Output::coordinate(name, of),
+        Written::Point(name, axis, of) => Output::point(name, axis, of),
+        Written::Path(name) => Output::path(name),
     })
 }
 

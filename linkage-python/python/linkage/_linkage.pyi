@@ -150,6 +150,28 @@ class Mechanism:
         rate: Optional[Values] = None,
         u: Optional[Values] = None,
     ) -> Sweep: ...
+    def extremes(
+        self,
+        quantities: Optional[Sequence[str]] = None,
+        zeros: bool = False,
+        steps: Optional[int] = None,
+        start: Optional[Values] = None,
+        stop: Optional[Values] = None,
+        rate: Optional[Values] = None,
+        u: Optional[Values] = None,
+    ) -> list[dict[str, Any]]: ...
+    def tolerance(
+        self,
+        tolerances: Mapping[str, Union[float, tuple[str, float]]],
+        quantities: Optional[Sequence[str]] = None,
+        samples: int = 0,
+        random_state: int = 1,
+        steps: Optional[int] = None,
+        start: Optional[Values] = None,
+        stop: Optional[Values] = None,
+        rate: Optional[Values] = None,
+        u: Optional[Values] = None,
+    ) -> dict[str, Any]: ...
     def synthesize(
         self,
         *,
