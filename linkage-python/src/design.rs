@@ -9,6 +9,8 @@ use linkage::mechanism::sizes::DesignJob;
 use linkage::synthesis::Search;
 use numpy::{PyArray1, PyArray2, PyArray3};
 use pyo3::prelude::*;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 /// The certified designs of a synthesis, one row per design, best first
 /// (smallest RMS miss): `parameters` (designs, parameters) in the order
@@ -88,6 +90,9 @@ pub struct Synthesize {
     /// `at`; without a file, no guess).
     pub at: Option<f64>,
     pub none_is_error: bool,
+    /// Raised when the caller is interrupted: the search stops between
+    /// starts.
+    pub stop: Arc<AtomicBool>,
 }
 
 impl DesignJob for Synthesize {
@@ -100,7 +105,10 @@ impl DesignJob for Synthesize {
             Some(at) => Some(self.source.assembled(&model, &at)?),
             None => None,
         };
-        let found = design(&model, guess, &self.task, &self.search, &|| {})?;
+        let stop = &self.stop;
+        let found = design(&model, guess, &self.task, &self.search, &|| {}, &|| {
+            stop.load(Ordering::Relaxed)
+        })?;
         if self.none_is_error
             && let Some(none) = NoDesign::of(&found)
         {

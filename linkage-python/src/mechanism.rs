@@ -410,7 +410,7 @@ impl Mechanism {
             },
         };
         let mechanism = self.source.mechanism.clone();
-        let swept = interruptible(py, move || run(&mechanism, job))?;
+        let swept = interruptible(py, move |_| run(&mechanism, job))?;
         Sweep::new(py, swept?)
     }
 
@@ -523,12 +523,13 @@ impl Mechanism {
             },
             at,
             none_is_error,
+            stop: Default::default(),
         };
         let mechanism = self.source.mechanism.clone();
         let free_names = names.clone();
-        let designed = interruptible(py, move || {
+        let designed = interruptible(py, move |stop| {
             let names: Vec<&str> = free_names.iter().map(String::as_str).collect();
-            run_design(&mechanism, &names, job)
+            run_design(&mechanism, &names, Synthesize { stop, ..job })
         })??;
         Ok(Designs::new(py, designed, names, self.source.clone()))
     }
@@ -571,7 +572,7 @@ impl Mechanism {
             zeros,
         };
         let mechanism = self.source.mechanism.clone();
-        let found = interruptible(py, move || run(&mechanism, job))??;
+        let found = interruptible(py, move |_| run(&mechanism, job))??;
         let mut out = Vec::new();
         for extreme in found {
             let dict = PyDict::new(py);
@@ -662,7 +663,7 @@ impl Mechanism {
             random_state,
         };
         let mechanism = self.source.mechanism.clone();
-        let spreads = interruptible(py, move || run_sensitive(&mechanism, &names, job))??;
+        let spreads = interruptible(py, move |_| run_sensitive(&mechanism, &names, job))??;
         let f = self.f();
         let out = PyDict::new(py);
         out.set_item("parameters", spreads.parameters.clone())?;

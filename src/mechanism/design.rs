@@ -46,8 +46,8 @@ pub type DesignView<const M: usize> = Fixed<M, 1, 32, PARAMETERS>;
 
 /// Solves `task` on `model` from the assembly `guess` (without one, each
 /// start's design is assembled by the search for its modes), by `search`,
-/// calling `on_start` as each start ends; every design returned is
-/// certified. No design found is not an error here (a shard may find
+/// calling `on_start` as each start ends and stopping once `cancelled`
+/// says so; every design returned is certified. No design found is not an error here (a shard may find
 /// none): see [`NoDesign::of`].
 pub fn design<const M: usize>(
     model: &DesignView<M>,
@@ -55,6 +55,7 @@ pub fn design<const M: usize>(
     task: &DesignTask,
     search: &Search,
     on_start: &(dyn Fn() + Sync),
+    cancelled: &(dyn Fn() -> bool + Sync),
 ) -> Result<Synthesis<DesignView<M>, M>, SynthesisError> {
     let (problem, over) = match &task.targets {
         Targets::Path {
@@ -82,7 +83,13 @@ pub fn design<const M: usize>(
     if task.precision_points {
         problem = problem.precision_points();
     }
-    synthesis::synthesize_observed(&problem, &Requirements::new(over), search, on_start)
+    synthesis::synthesize_cancellable(
+        &problem,
+        &Requirements::new(over),
+        search,
+        on_start,
+        cancelled,
+    )
 }
 
 /// A search that certified no design: from how many starts, and why

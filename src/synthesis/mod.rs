@@ -43,7 +43,9 @@ pub use certify::{
 };
 pub use problem::{Problem, Timing};
 pub use residuals::Evaluated;
-pub use search::{Candidate, Closest, Search, Synthesis, synthesize, synthesize_observed};
+pub use search::{
+    Candidate, Closest, Search, Synthesis, synthesize, synthesize_cancellable, synthesize_observed,
+};
 
 use crate::error::UnknownName;
 use crate::runtime::Error;
@@ -98,6 +100,8 @@ pub enum SynthesisError {
         failed_starts: usize,
         closest: Option<Closest>,
     },
+    /// The caller asked the search to stop ([`synthesize_cancellable`]).
+    Cancelled,
 }
 
 crate::error::error_impls! {
@@ -117,6 +121,7 @@ crate::error::error_impls! {
         Self::Unreachable { target, error } => ("target {target} is out of reach: every candidate missed it, the closest by {error}"),
         Self::NoDesign { refused, failed_starts, closest: Some(closest) } => ("no certified design: {refused} candidates refused, {failed_starts} starts could not be assembled; {closest}"),
         Self::NoDesign { refused, failed_starts, closest: None } => ("no certified design: {refused} candidates refused, {failed_starts} starts could not be assembled"),
+        Self::Cancelled => ("the search was stopped before its end"),
     }
     wraps { UnknownName(UnknownName) }
     sources { Options(Error) }

@@ -226,6 +226,23 @@ pub fn synthesize_observed<L, const M: usize, const K: usize>(
 where
     L: Sensitivities<M, 1, K> + Clone + Sync + Send,
 {
+    synthesize_cancellable(problem, requirements, search, on_start, &|| false)
+}
+
+/// [`synthesize_observed`], stopped once `cancelled` says so: each start
+/// asks before it begins, and a search asked to stop ends with
+/// [`SynthesisError::Cancelled`] when the starts under way are done (an
+/// interrupted caller — Ctrl-C in Python — need not wait for the rest).
+pub fn synthesize_cancellable<L, const M: usize, const K: usize>(
+    problem: &Problem<L, M, K>,
+    requirements: &Requirements<'_, L, M>,
+    search: &Search,
+    on_start: &(dyn Fn() + Sync),
+    cancelled: &(dyn Fn() -> bool + Sync),
+) -> Result<Synthesis<L, M>, SynthesisError>
+where
+    L: Sensitivities<M, 1, K> + Clone + Sync + Send,
+{
     problem.check()?;
     search
         .options
@@ -265,6 +282,9 @@ where
             .collect();
         // Solved and certified in parallel; kept in the starts' order.
         let outcomes = batch::map(&starts, |&start| {
+            if cancelled() {
+                return None;
+            }
             let solved = solve(problem, search, requirements.steps_per_radian, start);
             let outcome = solved.map(|mut candidate| {
                 let verdict = verdict(problem, &candidate, requirements, &search.options);
@@ -274,6 +294,9 @@ where
             on_start();
             outcome
         });
+        if cancelled() {
+            return Err(SynthesisError::Cancelled);
+        }
         synthesis.starts += starts.len();
         for outcome in outcomes {
             match outcome {

@@ -228,8 +228,16 @@ pub fn locate<L: Linkage<M, F>, const M: usize, const F: usize>(
             && a.speed == b.speed
             && a.direction == b.direction
             && (a.det > 0.0) == (b.det > 0.0);
-        let length = (b.v - a.v).dot(&a.direction);
-        if !smooth || length <= 0.0 {
+        // In the order of time: from a to b when the drivers' rate points
+        // from a to b, from b back to a when it points the other way (a
+        // negative rate).
+        let forward = (b.v - a.v).dot(&a.direction);
+        let (a, b, length) = if forward < 0.0 {
+            (b, a, -forward)
+        } else {
+            (a, b, forward)
+        };
+        if !smooth || !(length > 0.0) {
             continue;
         }
         for (w, (watch, quantity)) in watches.iter().zip(&resolved).enumerate() {

@@ -19,7 +19,7 @@ use linkage::nalgebra::{Matrix3, Vector3};
 use linkage::prelude::*;
 use linkage::synthesis::{
     Defect, Problem, Range, Requirements, Search, SynthesisError, Timing, Transmission, certify,
-    synthesize,
+    synthesize, synthesize_cancellable,
 };
 use std::f64::consts::{PI, TAU};
 
@@ -451,6 +451,38 @@ fn shards_of_a_search_put_together_are_the_whole_search() {
     .unwrap();
     assert!(distinct.designs.len() <= all.designs.len());
     assert!(distinct.designs.iter().all(|d| all.designs.contains(d)));
+}
+
+/// A search told to stop ends with `Cancelled` once the starts under way
+/// are done, and starts no more.
+#[test]
+fn a_cancelled_search_stops_between_starts() {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    let (targets, _) = worksheet_targets();
+    let problem = g3_path(AWAY, &targets, WIDE);
+    let search = Search {
+        starts: 64,
+        ..Search::default()
+    };
+    let ended = AtomicUsize::new(0);
+    let stopped = synthesize_cancellable(
+        &problem,
+        &transmission(30.0),
+        &search,
+        &|| {
+            ended.fetch_add(1, Ordering::Relaxed);
+        },
+        &|| ended.load(Ordering::Relaxed) >= 3,
+    );
+    assert_eq!(stopped, Err(SynthesisError::Cancelled));
+    // The starts under way when the flag rose finish; no other begins.
+    let ran = ended.load(Ordering::Relaxed);
+    assert!(
+        (3..3 + rayon::current_num_threads()).contains(&ran),
+        "{ran} starts ran"
+    );
+    let never = synthesize_cancellable(&problem, &transmission(30.0), &search, &|| {}, &|| true);
+    assert_eq!(never, Err(SynthesisError::Cancelled));
 }
 
 /// The requirement that a design be of one Grashof type (the designer's

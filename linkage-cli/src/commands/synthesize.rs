@@ -107,7 +107,14 @@ impl DesignJob for Design<'_> {
             ..Search::default()
         };
         let progress = Progress::new(args.starts as u64, "starts");
-        let found = design(&model, Some(guess), &task, &search, &|| progress.tick());
+        let found = design(
+            &model,
+            Some(guess),
+            &task,
+            &search,
+            &|| progress.tick(),
+            &|| false,
+        );
         progress.finish();
         let found = found.map_err(failed)?;
         if let Some(none) = NoDesign::of(&found) {
