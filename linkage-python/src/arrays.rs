@@ -73,26 +73,36 @@ pub fn fixed<const N: usize>(
     Ok(SVector::from_fn(|k, _| values[k]))
 }
 
+/// `array`, read-only: a result's arrays are its own numbers, which the
+/// result's other accessors read too.
+fn frozen<T>(array: Bound<'_, T>) -> Py<T> {
+    // Setting a flag of an array just made cannot fail.
+    let _ = (array.as_any().getattr("flags")).and_then(|f| f.setattr("writeable", false));
+    array.unbind()
+}
+
 /// A one-dimensional array.
 pub fn array1(py: Python<'_>, values: Vec<f64>) -> Py<PyArray1<f64>> {
-    Array1::from_vec(values).into_pyarray(py).unbind()
+    frozen(Array1::from_vec(values).into_pyarray(py))
 }
 
 /// A two-dimensional array of `rows` × `columns`, from its values row by
 /// row.
 pub fn array2(py: Python<'_>, rows: usize, columns: usize, values: Vec<f64>) -> Py<PyArray2<f64>> {
-    Array2::from_shape_vec((rows, columns), values)
-        .expect("rows × columns values")
-        .into_pyarray(py)
-        .unbind()
+    frozen(
+        Array2::from_shape_vec((rows, columns), values)
+            .expect("rows × columns values")
+            .into_pyarray(py),
+    )
 }
 
 /// A three-dimensional array of `shape`, from its values in C order.
 pub fn array3(py: Python<'_>, shape: (usize, usize, usize), values: Vec<f64>) -> Py<PyArray3<f64>> {
-    Array3::from_shape_vec(shape, values)
-        .expect("the shape's count of values")
-        .into_pyarray(py)
-        .unbind()
+    frozen(
+        Array3::from_shape_vec(shape, values)
+            .expect("the shape's count of values")
+            .into_pyarray(py),
+    )
 }
 
 /// The rows of a two-dimensional argument of `width` numbers each
@@ -122,4 +132,14 @@ pub fn rows(argument: &Bound<'_, PyAny>, width: usize, what: &str) -> PyResult<V
         .map_err(|_| refused())?;
     let flat = flat.as_array().to_vec();
     Ok(flat.chunks(width).map(<[f64]>::to_vec).collect())
+}
+
+/// Names: one name, or a sequence of them; `None` when not given.
+pub fn names(argument: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Vec<String>>> {
+    match argument {
+        None => Ok(None),
+        Some(a) if a.is_none() => Ok(None),
+        Some(a) if a.is_instance_of::<PyString>() => Ok(Some(vec![a.extract()?])),
+        Some(a) => Ok(Some(a.extract()?)),
+    }
 }

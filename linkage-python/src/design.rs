@@ -186,8 +186,14 @@ impl Designs {
 
     /// The `k`-th design (best first) as a mechanism: the one synthesized
     /// on, with the design's parameters.
-    fn design(&self, k: usize) -> PyResult<crate::mechanism::Mechanism> {
-        let Some(row) = self.rows.get(k) else {
+    fn design(&self, k: isize) -> PyResult<crate::mechanism::Mechanism> {
+        // From the end for a negative k, as Python indexes.
+        let index = if k < 0 {
+            (self.count as isize).checked_add(k)
+        } else {
+            Some(k)
+        };
+        let Some(row) = index.and_then(|i| self.rows.get(i as usize)) else {
             return Err(pyo3::exceptions::PyIndexError::new_err(format!(
                 "design {k} of {}",
                 self.count

@@ -21,31 +21,42 @@ use numpy::PyArray2;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 use std::path::PathBuf;
+use std::sync::{Arc, Mutex};
 
 /// A planar mechanism made at run time: its closure equations read,
 /// checked and differentiated by linkage's own front end, its kernels
 /// evaluated to the bits of the compiled code. Make one with
 /// `Mechanism.from_file`, `from_toml`, `from_text`, `from_topology`,
 /// `from_pyslvs` or `from_pylinkage`.
-#[pyclass(module = "linkage")]
-#[derive(Clone)]
+#[pyclass(module = "linkage", frozen)]
 pub struct Mechanism {
-    source: Source,
+    /// Locked only to copy it (cheap: the mechanism's program and the file
+    /// are shared) or to set a parameter, never while an analysis runs:
+    /// threads may share a mechanism.
+    source: Mutex<Source>,
 }
 
 impl Mechanism {
     /// The mechanism of a source (a design's, say).
     pub(crate) fn of_source(source: Source) -> Mechanism {
-        Mechanism { source }
+        Mechanism {
+            source: Mutex::new(source),
+        }
+    }
+
+    /// A copy of its source, to run an analysis on without the lock.
+    fn source(&self) -> Source {
+        self.source
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner)
+            .clone()
     }
 
     fn loaded(loaded: Loaded) -> Mechanism {
-        Mechanism {
-            source: Source {
-                mechanism: loaded.mechanism().clone(),
-                loaded: Some(loaded),
-            },
-        }
+        Mechanism::of_source(Source {
+            mechanism: loaded.mechanism().clone(),
+            loaded: Some(Arc::new(loaded)),
+        })
     }
 
     /// A topology's mechanism, as its topology file makes it.
@@ -145,12 +156,10 @@ impl Mechanism {
             })),
             other => Failure::Mechanism(other),
         })?;
-        Ok(Mechanism {
-            source: Source {
-                mechanism,
-                loaded: None,
-            },
-        })
+        Ok(Mechanism::of_source(Source {
+            mechanism,
+            loaded: None,
+        }))
     }
 
     /// The mechanism of the mechanism file (or topology file) at `path`.
@@ -190,9 +199,20 @@ impl Mechanism {
     fn from_pyslvs(
         py: Python<'_>,
         expression: &str,
-        inputs: Vec<(usize, usize)>,
+        inputs: Vec<Vec<usize>>,
         name: &str,
     ) -> PyResult<Mechanism> {
+        let mut pairs = Vec::new();
+        for input in &inputs {
+            let [base, drive] = input.as_slice() else {
+                return Err(Failure::BadInput(format!(
+                    "a pyslvs input is a pair (base, drive) of joint numbers, not {input:?}"
+                ))
+                .into());
+            };
+            pairs.push((*base, *drive));
+        }
+        let inputs = pairs;
         let made = py.detach(|| {
             let topology = linkage::topology::pyslvs::from_pyslvs(name, expression.trim(), &inputs)
                 .map_err(|e| Failure::Format(e.to_string()))?;
@@ -223,43 +243,50 @@ impl Mechanism {
     /// Its name.
     #[getter]
     fn name(&self) -> String {
-        self.source.mechanism.name().to_owned()
+        let source = self.source();
+        source.mechanism.name().to_owned()
     }
 
     /// The number m of dependent coordinates u.
     #[getter]
     fn m(&self) -> usize {
-        self.source.mechanism.m()
+        let source = self.source();
+        source.mechanism.m()
     }
 
     /// The number f of driving coordinates v.
     #[getter]
     fn f(&self) -> usize {
-        self.source.mechanism.f()
+        let source = self.source();
+        source.mechanism.f()
     }
 
     /// The dependent coordinates u, in order.
     #[getter]
     fn u_names(&self) -> Vec<String> {
-        crate::pose::owned(self.source.mechanism.u_names())
+        let source = self.source();
+        crate::pose::owned(source.mechanism.u_names())
     }
 
     /// The driving coordinates v, in order.
     #[getter]
     fn v_names(&self) -> Vec<String> {
-        crate::pose::owned(self.source.mechanism.v_names())
+        let source = self.source();
+        crate::pose::owned(source.mechanism.v_names())
     }
 
     /// The named points, in order.
     #[getter]
     fn point_names(&self) -> Vec<String> {
-        crate::pose::owned(self.source.mechanism.point_names())
+        let source = self.source();
+        crate::pose::owned(source.mechanism.point_names())
     }
 
     /// Every parameter and its value, in order.
     #[getter]
     fn parameters<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let m = &self.source.mechanism;
+        let source = self.source();
+        let m = &source.mechanism;
         let dict = PyDict::new(py);
         for (name, value) in m.parameter_names().iter().zip(m.parameters()) {
             dict.set_item(name, value)?;
@@ -271,14 +298,16 @@ impl Mechanism {
     /// topology); `None` for a mechanism from its equations.
     #[getter]
     fn file_text(&self) -> Option<String> {
-        (self.source.loaded.as_ref()).map(|loaded| loaded.text().to_owned())
+        let source = self.source();
+        (source.loaded.as_ref()).map(|loaded| loaded.text().to_owned())
     }
 
     /// The topology file's text of a mechanism given by its joints and
     /// links (a topology, pyslvs, pylinkage); `None` otherwise.
     #[getter]
     fn topology_text(&self) -> Option<String> {
-        (self.source.loaded.as_ref())
+        let source = self.source();
+        (source.loaded.as_ref())
             .and_then(|loaded| loaded.topology())
             .map(Topology::topology_text)
     }
@@ -288,10 +317,11 @@ impl Mechanism {
     /// `steps`; `None` for a mechanism from its equations.
     #[getter]
     fn drive<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
-        let Some(loaded) = &self.source.loaded else {
+        let source = self.source();
+        let Some(loaded) = &source.loaded else {
             return Ok(None);
         };
-        let names = self.source.mechanism.v_names();
+        let names = source.mechanism.v_names();
         let drives = (loaded.file())
             .drives(names)
             .map_err(|missing| Failure::Load(LoadError::Mistakes(loaded.located(missing))))?;
@@ -310,8 +340,12 @@ impl Mechanism {
     }
 
     /// Sets the parameter `name` to `value`.
-    fn set_parameter(&mut self, name: &str, value: f64) -> PyResult<()> {
-        Ok((self.source.mechanism)
+    fn set_parameter(&self, name: &str, value: f64) -> PyResult<()> {
+        let mut source = self
+            .source
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        Ok((source.mechanism)
             .set_parameter(name, value)
             .map_err(Failure::from)?)
     }
@@ -319,7 +353,7 @@ impl Mechanism {
     /// A copy with the parameters given as keywords set.
     #[pyo3(signature = (**values))]
     fn with_parameters(&self, values: Option<&Bound<'_, PyDict>>) -> PyResult<Mechanism> {
-        let mut copy = self.clone();
+        let copy = Mechanism::of_source(self.source());
         if let Some(values) = values {
             for (name, value) in values.iter() {
                 copy.set_parameter(&name.extract::<String>()?, value.extract()?)?;
@@ -342,15 +376,16 @@ impl Mechanism {
         vddot: Option<&Bound<'_, PyAny>>,
         u: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Pose> {
+        let source = self.source();
         use crate::arrays::values;
         let job = Analyze {
-            source: &self.source,
+            source: &source,
             v: values(v)?,
             vdot: values(vdot)?,
             vddot: values(vddot)?,
             u: values(u)?,
         };
-        let analysed = py.detach(|| run(&self.source.mechanism, job))?;
+        let analysed = py.detach(|| run(&source.mechanism, job))?;
         Ok(Pose::new(py, analysed))
     }
 
@@ -366,12 +401,14 @@ impl Mechanism {
         vdot: Option<&Bound<'_, PyAny>>,
         vddot: Option<&Bound<'_, PyAny>>,
         u: Option<&Bound<'_, PyAny>>,
-        params: Option<Vec<String>>,
+        params: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Sensitivities> {
+        let params = crate::arrays::names(params)?;
+        let source = self.source();
         use crate::arrays::values;
         let job = Differentiate {
             analyze: Analyze {
-                source: &self.source,
+                source: &source,
                 v: values(v)?,
                 vdot: values(vdot)?,
                 vddot: values(vddot)?,
@@ -379,7 +416,7 @@ impl Mechanism {
             },
         };
         let names = params.unwrap_or_default();
-        let differentiated = py.detach(|| run_sensitive(&self.source.mechanism, &names, job))?;
+        let differentiated = py.detach(|| run_sensitive(&source.mechanism, &names, job))?;
         Ok(Sensitivities::new(py, differentiated))
     }
 
@@ -398,9 +435,10 @@ impl Mechanism {
         rate: Option<&Bound<'_, PyAny>>,
         u: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Sweep> {
+        let source = self.source();
         use crate::arrays::values;
         let job = Poses {
-            source: self.source.clone(),
+            source: source.clone(),
             drive: DriveArgs {
                 steps,
                 start: values(start)?,
@@ -409,7 +447,7 @@ impl Mechanism {
                 u: values(u)?,
             },
         };
-        let mechanism = self.source.mechanism.clone();
+        let mechanism = source.mechanism.clone();
         let swept = interruptible(py, move |_| run(&mechanism, job))?;
         Sweep::new(py, swept?)
     }
@@ -454,12 +492,29 @@ impl Mechanism {
         at: Option<f64>,
         none_is_error: bool,
     ) -> PyResult<Designs> {
+        let source = self.source();
         use linkage::mechanism::design::{DesignTask, Targets};
         use linkage::synthesis::{Search, Timing};
         let mut freed = Vec::new();
         for (name, bounds) in free.iter() {
-            let (lower, upper): (f64, f64) = bounds.extract()?;
-            freed.push((name.extract::<String>()?, lower, upper));
+            let name: String = name.extract()?;
+            let bounds: Vec<f64> = bounds.extract()?;
+            let [lower, upper] = bounds[..] else {
+                return Err(Failure::BadInput(format!(
+                    "the bounds of `{name}` are a pair (lower, upper), not {bounds:?}"
+                ))
+                .into());
+            };
+            freed.push((name, lower, upper));
+        }
+        if enough == Some(0) {
+            return Err(Failure::BadInput("`enough` is at least 1 design".into()).into());
+        }
+        if first.checked_add(starts).is_none() {
+            return Err(Failure::BadInput(format!(
+                "`first` + `starts` = {first} + {starts} is past the largest start index"
+            ))
+            .into());
         }
         let bad = |why: String| PyErr::from(Failure::BadInput(why));
         let drivers = crate::arrays::values(drivers)?;
@@ -507,7 +562,7 @@ impl Mechanism {
         };
         let names: Vec<String> = freed.iter().map(|(n, _, _)| n.clone()).collect();
         let job = Synthesize {
-            source: self.source.clone(),
+            source: source.clone(),
             task: DesignTask {
                 targets,
                 free: freed,
@@ -525,13 +580,13 @@ impl Mechanism {
             none_is_error,
             stop: Default::default(),
         };
-        let mechanism = self.source.mechanism.clone();
+        let mechanism = source.mechanism.clone();
         let free_names = names.clone();
         let designed = interruptible(py, move |stop| {
             let names: Vec<&str> = free_names.iter().map(String::as_str).collect();
-            run_design(&mechanism, &names, Synthesize { stop, ..job })
+            crate::pool::install(|| run_design(&mechanism, &names, Synthesize { stop, ..job }))
         })??;
-        Ok(Designs::new(py, designed, names, self.source.clone()))
+        Ok(Designs::new(py, designed, names, source.clone()))
     }
 
     /// Where `quantities` (default: every dependent coordinate) are
@@ -550,7 +605,7 @@ impl Mechanism {
     fn extremes<'py>(
         &self,
         py: Python<'py>,
-        quantities: Option<Vec<String>>,
+        quantities: Option<&Bound<'_, PyAny>>,
         zeros: bool,
         steps: Option<usize>,
         start: Option<&Bound<'_, PyAny>>,
@@ -558,9 +613,10 @@ impl Mechanism {
         rate: Option<&Bound<'_, PyAny>>,
         u: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Vec<Bound<'py, PyDict>>> {
+        let source = self.source();
         use crate::arrays::values;
         let job = Find {
-            source: self.source.clone(),
+            source: source.clone(),
             drive: DriveArgs {
                 steps,
                 start: values(start)?,
@@ -568,10 +624,10 @@ impl Mechanism {
                 rate: values(rate)?,
                 u: values(u)?,
             },
-            quantities: quantities.unwrap_or_default(),
+            quantities: crate::arrays::names(quantities)?.unwrap_or_default(),
             zeros,
         };
-        let mechanism = self.source.mechanism.clone();
+        let mechanism = source.mechanism.clone();
         let found = interruptible(py, move |_| run(&mechanism, job))??;
         let mut out = Vec::new();
         for extreme in found {
@@ -606,7 +662,7 @@ impl Mechanism {
         &self,
         py: Python<'py>,
         tolerances: &Bound<'_, PyDict>,
-        quantities: Option<Vec<String>>,
+        quantities: Option<&Bound<'_, PyAny>>,
         samples: usize,
         random_state: u64,
         steps: Option<usize>,
@@ -615,6 +671,7 @@ impl Mechanism {
         rate: Option<&Bound<'_, PyAny>>,
         u: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Bound<'py, PyDict>> {
+        let source = self.source();
         use crate::arrays::{array1, array2, values};
         use linkage::tolerance::Tolerance;
         let mut given = Vec::new();
@@ -623,11 +680,19 @@ impl Mechanism {
             let tolerance = if let Ok(t) = value.extract::<f64>() {
                 Tolerance::Band(t)
             } else {
-                let (kind, size): (String, f64) = value.extract().map_err(|_| {
+                let refused = || {
                     pyo3::exceptions::PyTypeError::new_err(format!(
                         "the tolerance of `{name}`: a half-width t, or (\"normal\", σ)"
                     ))
-                })?;
+                };
+                let pair: Vec<Bound<'_, PyAny>> = value.extract().map_err(|_| refused())?;
+                let [kind, size] = &pair[..] else {
+                    return Err(refused());
+                };
+                let (kind, size): (String, f64) = (
+                    kind.extract().map_err(|_| refused())?,
+                    size.extract().map_err(|_| refused())?,
+                );
                 match kind.as_str() {
                     "normal" => Tolerance::Normal(size),
                     "band" => Tolerance::Band(size),
@@ -649,7 +714,7 @@ impl Mechanism {
         }
         let names: Vec<String> = given.iter().map(|(n, _)| n.clone()).collect();
         let job = Spread {
-            source: self.source.clone(),
+            source: source.clone(),
             drive: DriveArgs {
                 steps,
                 start: values(start)?,
@@ -658,12 +723,14 @@ impl Mechanism {
                 u: values(u)?,
             },
             tolerances: given,
-            quantities: quantities.unwrap_or_default(),
+            quantities: crate::arrays::names(quantities)?.unwrap_or_default(),
             samples,
             random_state,
         };
-        let mechanism = self.source.mechanism.clone();
-        let spreads = interruptible(py, move |_| run_sensitive(&mechanism, &names, job))??;
+        let mechanism = source.mechanism.clone();
+        let spreads = interruptible(py, move |_| {
+            crate::pool::install(|| run_sensitive(&mechanism, &names, job))
+        })??;
         let f = self.f();
         let out = PyDict::new(py);
         out.set_item("parameters", spreads.parameters.clone())?;
@@ -702,11 +769,12 @@ impl Mechanism {
         py: Python<'py>,
         v: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let source = self.source();
         let job = Modes {
-            source: &self.source,
+            source: &source,
             v: crate::arrays::values(v)?,
         };
-        let (count, flat) = py.detach(|| run(&self.source.mechanism, job))?;
+        let (count, flat) = py.detach(|| run(&source.mechanism, job))?;
         Ok(crate::arrays::array2(py, count, self.m(), flat).into_bound(py))
     }
 
@@ -714,30 +782,33 @@ impl Mechanism {
     /// trace over the drive range: SVG text, `width` pixels wide.
     #[pyo3(signature = (width = 640.0))]
     fn svg(&self, py: Python<'_>, width: f64) -> PyResult<String> {
-        if !(width.is_finite() && width > 0.0) {
+        let source = self.source();
+        if !(width.is_finite() && width > 0.0 && width <= 100_000.0) {
             return Err(Failure::BadInput(format!(
-                "`width` must be a positive number, not {width}"
+                "`width` is a number of pixels from 0 to 100000, not {width:e}"
             ))
             .into());
         }
         let job = Picture {
-            source: &self.source,
+            source: &source,
             width,
         };
-        Ok(py.detach(|| run(&self.source.mechanism, job))?)
+        Ok(py.detach(|| run(&source.mechanism, job))?)
     }
 
     /// Jupyter's picture of the mechanism: `svg()`, or none for a
     /// mechanism without a file (no drive, no drawing).
     fn _repr_svg_(&self, py: Python<'_>) -> PyResult<Option<String>> {
-        if self.source.loaded.is_none() {
+        let source = self.source();
+        if source.loaded.is_none() {
             return Ok(None);
         }
         self.svg(py, 640.0).map(Some)
     }
 
     fn __repr__(&self) -> String {
-        let m = &self.source.mechanism;
+        let source = self.source();
+        let m = &source.mechanism;
         format!(
             "Mechanism({}: u = [{}], v = [{}], {} point{})",
             m.name(),

@@ -230,6 +230,29 @@ impl Pose {
         )))
     }
 
+    /// The names `pose[name]` takes: the coordinates u and v, the points.
+    fn keys(&self) -> Vec<String> {
+        let a = &self.values;
+        (a.u_names.iter())
+            .chain(&a.v_names)
+            .chain(&a.point_names)
+            .cloned()
+            .collect()
+    }
+
+    fn __contains__(&self, name: &str) -> bool {
+        self.keys().iter().any(|n| n == name)
+    }
+
+    fn __iter__(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+        Ok(self
+            .keys()
+            .into_pyobject(py)?
+            .try_iter()?
+            .into_any()
+            .unbind())
+    }
+
     fn __repr__(&self) -> String {
         let a = &self.values;
         let pairs = |names: &[String], values: &[f64]| {

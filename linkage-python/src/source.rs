@@ -8,12 +8,13 @@ use linkage::assembly::{Assemble, Pick};
 use linkage::file::{FixedDrives, Loaded};
 use linkage::mechanism::{Fixed, Mechanism};
 use linkage::prelude::SVector;
+use std::sync::Arc;
 
 #[derive(Clone, Debug)]
 pub struct Source {
     /// The mechanism, with the parameters set from Python.
     pub mechanism: Mechanism,
-    pub loaded: Option<Loaded>,
+    pub loaded: Option<Arc<Loaded>>,
 }
 
 impl Source {

@@ -146,9 +146,25 @@ impl DriveArgs {
             drives.map(|d| d.rate),
             Some(1.0),
         )?;
+        if F > 1 && self.rate.is_some() {
+            return Err(Failure::BadInput(format!(
+                "`rate` is for one driving coordinate: a sweep of several ([{}]) moves them along \
+                 the line from `start` to `stop` at unit speed",
+                v_names.join(", ")
+            )));
+        }
         let mut options = SweepOptions::default();
         if F == 1 {
             options.speed = rate[0];
+        }
+        for (argument, values) in [("start", &from), ("stop", &to), ("rate", &rate)] {
+            if let Some(index) = values.iter().position(|x| !x.is_finite()) {
+                return Err(Failure::Analysis(linkage::Error::NonFiniteInput {
+                    argument,
+                    index,
+                    value: values[index],
+                }));
+            }
         }
         if let Some(index) = from.iter().position(|x| !x.is_finite()) {
             return Err(Failure::Analysis(linkage::Error::NonFiniteInput {
@@ -264,6 +280,29 @@ impl Sweep {
 
 #[pymethods]
 impl Sweep {
+    /// The names `sweep[name]` takes: the coordinates u and v, the points.
+    fn keys(&self) -> Vec<String> {
+        (self.u_names.iter())
+            .chain(&self.v_names)
+            .chain(&self.point_names)
+            .cloned()
+            .collect()
+    }
+
+    fn __contains__(&self, name: &str) -> bool {
+        self.keys().iter().any(|n| n == name)
+    }
+
+    /// Its names, as a mapping's keys (not its poses: `len` counts those).
+    fn __iter__(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+        Ok(self
+            .keys()
+            .into_pyobject(py)?
+            .try_iter()?
+            .into_any()
+            .unbind())
+    }
+
     /// The number of poses.
     fn __len__(&self) -> usize {
         self.poses

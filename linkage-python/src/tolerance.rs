@@ -125,7 +125,11 @@ impl SensitivityJob for Spread {
                 shares: chosen.iter().map(|&j| shares[j]).collect(),
                 sigma_monte_carlo: samples.as_ref().map(|s| {
                     (0..band.value.len())
-                        .map(|k| s.statistics[o].get(k).map_or(f64::NAN, |x| x.std()))
+                        .map(|k| match s.statistics[o].get(k) {
+                            // σ of fewer than two samples is not known.
+                            Some(x) if x.count >= 2 => x.std(),
+                            _ => f64::NAN,
+                        })
                         .collect()
                 }),
             });

@@ -30,8 +30,8 @@ impl fmt::Display for SizeError {
         match self {
             SizeError::NotListed { m, f: drivers } => write!(
                 f,
-                "this tool analyses mechanisms of the sizes {}; this one has m = {m}, f = {drivers}: \
-                 promote it to Rust with `linkage expand`",
+                "mechanisms read at run time are analysed at the sizes {}; this one has m = {m}, \
+                 f = {drivers}: promote it to Rust with `linkage expand`",
                 SIZES
                     .iter()
                     .map(|(m, f)| format!("({m}, {f})"))
@@ -43,12 +43,12 @@ impl fmt::Display for SizeError {
                 freed: false,
             } => write!(
                 f,
-                "the mechanism is differentiated by {count} parameters; this tool takes at most \
-                 {PARAMETERS} at once: choose them with `--param`"
+                "the mechanism is differentiated by {count} parameters; at most {PARAMETERS} are \
+                 taken at once: choose them (the command-line tool's `--param`, Python's `params=`)"
             ),
             SizeError::TooManyParameters { count, freed: true } => write!(
                 f,
-                "{count} parameters are free; this tool frees at most {PARAMETERS} at once"
+                "{count} parameters are free; at most {PARAMETERS} can be at once"
             ),
             SizeError::NotOneDriver { f: drivers } => write!(
                 f,

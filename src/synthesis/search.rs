@@ -14,7 +14,7 @@ use crate::assembly;
 use crate::batch;
 use crate::least_squares::{Stopping, minimize};
 use crate::random::SplitMix64;
-use crate::runtime::{Options, Sensitivities, SweepOptions};
+use crate::runtime::{Error, Options, Sensitivities, SweepOptions};
 use nalgebra::{DVector, SVector};
 use std::f64::consts::TAU;
 
@@ -244,6 +244,13 @@ where
     L: Sensitivities<M, 1, K> + Clone + Sync + Send,
 {
     problem.check()?;
+    if search.first.checked_add(search.starts).is_none() {
+        return Err(SynthesisError::Options(Error::InvalidInput {
+            argument: "first",
+            value: search.first as f64,
+            why: "the starts from `first` on run past the largest index a start can have",
+        }));
+    }
     search
         .options
         .options
@@ -578,13 +585,14 @@ fn verdict<L, const M: usize, const K: usize>(
 where
     L: Sensitivities<M, 1, K>,
 {
-    if problem.exact {
-        let (target, error) = candidate.largest_error();
-        // (A NaN miss is no meeting either.)
-        let met = error <= PRECISION * problem.target_scale();
-        if !met {
-            return Err(Defect::Misses { target, error });
-        }
+    let (target, error) = candidate.largest_error();
+    // (A NaN miss is no meeting either.)
+    let met = error <= PRECISION * problem.target_scale();
+    // A miss that is not finite is no design, whether the targets must be
+    // met or come as near as they can (targets so large that the misses
+    // overflow).
+    if (problem.exact && !met) || !error.is_finite() || !candidate.rms_error.is_finite() {
+        return Err(Defect::Misses { target, error });
     }
     certify(
         &candidate.model,

@@ -237,7 +237,7 @@ pub fn locate<L: Linkage<M, F>, const M: usize, const F: usize>(
         } else {
             (a, b, forward)
         };
-        if !smooth || !(length > 0.0) {
+        if !smooth || length.is_nan() || length <= 0.0 {
             continue;
         }
         for (w, (watch, quantity)) in watches.iter().zip(&resolved).enumerate() {

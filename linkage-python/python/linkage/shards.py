@@ -45,7 +45,7 @@ class Shard:
     meta: Mapping[str, Any] = field(default_factory=dict)
 
 
-SEARCH_KEYWORDS = {"starts", "random_state", "first", "distinct", "none_is_error"}
+SEARCH_KEYWORDS = {"starts", "random_state", "first", "distinct", "none_is_error", "enough"}
 
 
 def split(spec, task, starts, per_shard, random_state=1):
