@@ -29,6 +29,7 @@ fn _linkage(module: &Bound<'_, PyModule>) -> PyResult<()> {
     module.add_class::<design::Designs>()?;
     module.add_class::<sensitivity::Sensitivities>()?;
     module.add_class::<sweep::Sweep>()?;
+    module.add_function(wrap_pyfunction!(mechanism::_remake, module)?)?;
     module.add("SIZES", linkage::mechanism::sizes::SIZES.to_vec())?;
     Ok(())
 }

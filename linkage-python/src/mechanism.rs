@@ -56,6 +56,7 @@ impl Mechanism {
         Mechanism::of_source(Source {
             mechanism: loaded.mechanism().clone(),
             loaded: Some(Arc::new(loaded)),
+            equations: None,
         })
     }
 
@@ -159,6 +160,7 @@ impl Mechanism {
         Ok(Mechanism::of_source(Source {
             mechanism,
             loaded: None,
+            equations: Some(Arc::new((equations.to_owned(), name.to_owned()))),
         }))
     }
 
@@ -548,6 +550,11 @@ impl Mechanism {
                 }
             }
             (None, Some(coordinate)) => {
+                if timing != "free" || drivers.is_some() {
+                    return Err(bad(
+                        "a function's targets give their drivers: `timing` and `drivers` are a path's".into(),
+                    ));
+                }
                 let rows = crate::arrays::rows(targets, 2, "driver, value")?;
                 Targets::Function {
                     coordinate,
@@ -806,6 +813,14 @@ impl Mechanism {
         self.svg(py, 640.0).map(Some)
     }
 
+    /// Pickled as the text it was made from and its parameters' values:
+    /// a mechanism travels to another process (a Dask worker) whole.
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+        let remake = py.import("linkage._linkage")?.getattr("_remake")?;
+        let recipe = self.source().recipe().into_pyobject(py)?.into_any();
+        Ok((remake, recipe))
+    }
+
     fn __repr__(&self) -> String {
         let source = self.source();
         let m = &source.mechanism;
@@ -818,4 +833,29 @@ impl Mechanism {
             if m.point_names().len() == 1 { "" } else { "s" }
         )
     }
+}
+
+/// A pickled mechanism made again (see `Mechanism.__reduce__`).
+#[pyfunction]
+pub fn _remake(
+    py: Python<'_>,
+    kind: &str,
+    text: &str,
+    name: &str,
+    parameters: Vec<(String, f64)>,
+) -> PyResult<Mechanism> {
+    let made = match kind {
+        "file" => Mechanism::from_toml(py, text, name)?,
+        _ => {
+            let values = PyDict::new(py);
+            for (n, x) in &parameters {
+                values.set_item(n, x)?;
+            }
+            Mechanism::from_text(py, text, &values, name)?
+        }
+    };
+    for (n, x) in &parameters {
+        made.set_parameter(n, *x)?;
+    }
+    Ok(made)
 }

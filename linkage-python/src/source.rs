@@ -15,9 +15,39 @@ pub struct Source {
     /// The mechanism, with the parameters set from Python.
     pub mechanism: Mechanism,
     pub loaded: Option<Arc<Loaded>>,
+    /// The equations and name of a mechanism made from them (none for a
+    /// file's): what remakes it in another process.
+    pub equations: Option<Arc<(String, String)>>,
 }
 
 impl Source {
+    /// How to make this mechanism again (in another process: a pickle):
+    /// the kind of text (`"equations"` or `"file"`: a mechanism file's or
+    /// a topology's), the text, the name, and every parameter's value.
+    pub fn recipe(&self) -> (&'static str, String, String, Vec<(String, f64)>) {
+        let m = &self.mechanism;
+        let parameters = (m.parameter_names().iter())
+            .zip(m.parameters())
+            .map(|(n, x)| ((*n).to_owned(), *x))
+            .collect();
+        match (&self.loaded, &self.equations) {
+            (Some(loaded), _) => {
+                let text = match loaded.topology() {
+                    Some(topology) => topology.topology_text(),
+                    None => loaded.text().to_owned(),
+                };
+                ("file", text, loaded.shown().to_owned(), parameters)
+            }
+            (None, Some(equations)) => (
+                "equations",
+                equations.0.clone(),
+                equations.1.clone(),
+                parameters,
+            ),
+            (None, None) => ("equations", String::new(), m.name().to_owned(), parameters),
+        }
+    }
+
     /// The file's drive for `model`; none without a file.
     pub fn drives<const M: usize, const F: usize, const N: usize, const K: usize>(
         &self,

@@ -151,3 +151,25 @@ def test_ctrl_c_stops_a_synthesis_too():
     time.sleep(0.5)
     busy = (time.process_time() - cpu) / (time.perf_counter() - wall)
     assert busy < 0.3, f"{busy:.2f} cores still busy after Ctrl-C"
+
+
+def test_a_mechanism_pickles_whole():
+    import copy
+    import json
+    import pickle
+
+    bar = linkage.Mechanism.from_file(FOUR_BAR).with_parameters(l2=21.5)
+    crank = linkage.Mechanism.from_text(CRANK, {"r": 1.0}, name="Crank")
+    crank.set_parameter("r", 2.5)
+    examples = json.loads((ROOT / "tests/data/pyslvs_examples.json").read_text())["examples"]
+    jansen = next(e for e in examples if e["name"] == "Jansen's linkage (Single)")
+    leg = linkage.Mechanism.from_pyslvs(jansen["expression"], jansen["inputs"], name="Jansen")
+    for m, v in [(bar, None), (crank, 0.4), (leg, 0.9)]:
+        back = pickle.loads(pickle.dumps(m))
+        assert repr(back) == repr(m) and back.parameters == m.parameters
+        assert back.topology_text == m.topology_text
+        assert np.array_equal(back.analyze(v=v).u, m.analyze(v=v).u)
+        assert np.array_equal(copy.deepcopy(m).analyze(v=v).points, m.analyze(v=v).points)
+    with pytest.raises(errors.BadInputError, match="a path's"):
+        crank.synthesize(function="x", targets=[[0.0, 2.0]], free={"r": (0.5, 3.0)},
+                         timing="prescribed", drivers=[0.0])
