@@ -466,14 +466,16 @@ impl Mechanism {
     /// the driver's range (a revolution for a path); `distinct=False`
     /// keeps designs found again from later starts (the rows of a shard);
     /// `enough=k` stops with the round of starts (8 at a time) that
-    /// certifies k designs.
+    /// certifies k designs; `min_transmission` (radians) is the smallest
+    /// transmission angle a design may have over its range (default 40°
+    /// for a mechanism of two coordinates, 10° for more; 0 asks none).
     /// Raises `NoDesignError` when none is certified, unless
     /// `none_is_error=False`. Runs its starts in parallel, the GIL
     /// released; Ctrl-C interrupts it.
     #[pyo3(signature = (
         *, free, targets, path = None, function = None, timing = "free", drivers = None,
         precision_points = false, starts = 64, random_state = 1, first = 0, distinct = true,
-        enough = None, at = None, none_is_error = true
+        enough = None, min_transmission = None, at = None, none_is_error = true
     ))]
     #[allow(clippy::too_many_arguments)]
     fn synthesize(
@@ -491,6 +493,7 @@ impl Mechanism {
         first: usize,
         distinct: bool,
         enough: Option<usize>,
+        min_transmission: Option<f64>,
         at: Option<f64>,
         none_is_error: bool,
     ) -> PyResult<Designs> {
@@ -574,6 +577,7 @@ impl Mechanism {
                 targets,
                 free: freed,
                 precision_points,
+                min_transmission,
             },
             search: Search {
                 starts,

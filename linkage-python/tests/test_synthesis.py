@@ -121,3 +121,18 @@ def test_impossible_or_malformed_problems_raise_typed_exceptions():
         bar.synthesize(path="P", targets=[1.0, 2.0], free=tight)
     with pytest.raises(errors.BadInputError):
         bar.synthesize(path="P", targets=[[math.nan, 0.0]], free=tight)
+
+
+def test_the_smallest_transmission_angle_is_the_callers():
+    targets = path_targets(5)
+    bar = coupler()
+    common = dict(path="P", targets=targets, free=path_bounds(targets), precision_points=True,
+                  starts=48, at=0.0, none_is_error=False)
+    loose = bar.synthesize(min_transmission=0.0, **common)
+    strict = bar.synthesize(min_transmission=math.radians(50), **common)
+    default = bar.synthesize(**common)
+    assert len(strict) <= len(default) <= len(loose) and len(loose) > len(strict)
+    assert (strict.transmission >= math.radians(50) - 1e-12).all()
+    assert (loose.transmission < math.radians(40)).any()
+    with pytest.raises(errors.BadInputError, match="min_transmission"):
+        bar.synthesize(min_transmission=2.0, **common)

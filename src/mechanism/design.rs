@@ -38,6 +38,10 @@ pub struct DesignTask {
     /// `(name, lower, upper)` of each free parameter.
     pub free: Vec<(String, f64, f64)>,
     pub precision_points: bool,
+    /// The smallest transmission angle a design may have over its range
+    /// (radians); `None`: the library's default
+    /// ([`Requirements::new`]: 40° for a mechanism of two coordinates).
+    pub min_transmission: Option<f64>,
 }
 
 /// The fixed view a synthesis runs on: one driver, the sensitivities by
@@ -83,13 +87,18 @@ pub fn design<const M: usize>(
     if task.precision_points {
         problem = problem.precision_points();
     }
-    synthesis::synthesize_cancellable(
-        &problem,
-        &Requirements::new(over),
-        search,
-        on_start,
-        cancelled,
-    )
+    let mut requirements = Requirements::new(over);
+    if let Some(angle) = task.min_transmission {
+        if !(0.0..=std::f64::consts::FRAC_PI_2).contains(&angle) {
+            return Err(SynthesisError::Options(crate::Error::InvalidInput {
+                argument: "min_transmission",
+                value: angle,
+                why: "a transmission angle is from 0 to π/2",
+            }));
+        }
+        requirements.min_transmission = angle;
+    }
+    synthesis::synthesize_cancellable(&problem, &requirements, search, on_start, cancelled)
 }
 
 /// A search that certified no design: from how many starts, and why

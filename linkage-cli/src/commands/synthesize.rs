@@ -101,6 +101,7 @@ impl DesignJob for Design<'_> {
             targets,
             free: args.free.clone(),
             precision_points: args.precision_points,
+            min_transmission: None,
         };
         let search = Search {
             starts: args.starts,

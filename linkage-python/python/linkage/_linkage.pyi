@@ -187,6 +187,7 @@ class Mechanism:
         first: int = 0,
         distinct: bool = True,
         enough: Optional[int] = None,
+        min_transmission: Optional[float] = None,
         at: Optional[float] = None,
         none_is_error: bool = True,
     ) -> Designs: ...
