@@ -1,0 +1,62 @@
+//! linkage in the browser: a mechanism file or topology read at run time
+//! by the library's own front end, its analyses run by the library's own
+//! code compiled to WebAssembly, for the page in `web/`. Results cross to
+//! JavaScript as JSON text; mistakes as JSON too, each with its place in
+//! the text (for the editor to underline) and the message the command-line
+//! tool writes.
+
+mod library;
+mod mechanism;
+
+pub use mechanism::WebMechanism;
+
+use linkage::file::{LoadError, Loaded};
+use serde_json::{Value, json};
+use wasm_bindgen::prelude::*;
+
+/// The library of mechanisms: JSON `[{path, text}, …]`.
+#[wasm_bindgen]
+pub fn library() -> String {
+    let files: Vec<Value> = (library::FILES.iter())
+        .map(|(path, text)| json!({ "path": path, "text": text }))
+        .collect();
+    Value::Array(files).to_string()
+}
+
+/// The mistakes of a mechanism file's (or topology's) text, as JSON: `[]`
+/// when it makes a mechanism, or `[{message, from, to, rendered}, …]`
+/// with `from` and `to` the UTF-16 offsets of its place in `text` (for a
+/// text area's selection), and `rendered` the whole report as the tool
+/// writes it; a failure that is not located has `from` = `to` = null.
+#[wasm_bindgen]
+pub fn mistakes(text: &str, name: &str) -> String {
+    match Loaded::from_text(name, text) {
+        Ok(_) => "[]".to_owned(),
+        Err(error) => located(&error, text).to_string(),
+    }
+}
+
+/// A load error as JSON mistakes located in `text`.
+pub(crate) fn located(error: &LoadError, text: &str) -> Value {
+    let utf16 = |byte: usize| text.get(..byte).map(|s| s.encode_utf16().count());
+    match error {
+        LoadError::Mistakes(located) if located.text == text => {
+            let rendered = located.render(false);
+            let each: Vec<Value> = (located.diagnostics.iter())
+                .map(|d| {
+                    let range = d.range();
+                    json!({
+                        "message": d.message(),
+                        "from": range.as_ref().and_then(|r| utf16(r.start)),
+                        "to": range.as_ref().and_then(|r| utf16(r.end)),
+                        "rendered": rendered,
+                    })
+                })
+                .collect();
+            Value::Array(each)
+        }
+        other => {
+            json!([{ "message": other.to_string(), "from": null, "to": null, "rendered": other.to_string() }])
+        }
+    }
+}

@@ -1,0 +1,248 @@
+//! `Mechanism` for JavaScript: a loaded file and the analyses the page
+//! asks of it — a pose with its vectors, a sweep of the drive range with
+//! the points' paths and the singular poses met, the picture.
+
+use linkage::draw::scene::Frame;
+use linkage::file::{FixedDrives, Loaded};
+use linkage::mechanism::Fixed;
+use linkage::mechanism::sizes::{Job, SizeError, run};
+use linkage::prelude::*;
+use serde_json::{Value, json};
+use wasm_bindgen::prelude::*;
+
+/// A mechanism made from a mechanism file's (or a topology's) text.
+#[wasm_bindgen(js_name = Mechanism)]
+pub struct WebMechanism {
+    loaded: Loaded,
+}
+
+/// Why a call failed, as a JavaScript `Error` with the library's message.
+fn failed(error: impl std::fmt::Display) -> JsError {
+    JsError::new(&error.to_string())
+}
+
+/// Failures of the jobs, with their message.
+struct Failure(String);
+
+impl From<SizeError> for Failure {
+    fn from(e: SizeError) -> Failure {
+        Failure(e.to_string())
+    }
+}
+
+impl From<linkage::file::LoadError> for Failure {
+    fn from(e: linkage::file::LoadError) -> Failure {
+        Failure(e.to_string())
+    }
+}
+
+impl From<linkage::Error> for Failure {
+    fn from(e: linkage::Error) -> Failure {
+        Failure(e.to_string())
+    }
+}
+
+fn xy(points: &[Vector2<f64>]) -> Vec<[f64; 2]> {
+    points.iter().map(|p| [p.x, p.y]).collect()
+}
+
+fn drive_json<const F: usize>(d: &FixedDrives<F>) -> Value {
+    json!({
+        "at": d.at.as_slice(), "from": d.from.as_slice(), "to": d.to.as_slice(),
+        "rate": d.rate.as_slice(), "acceleration": d.acceleration.as_slice(), "steps": d.steps,
+    })
+}
+
+/// The pose at the drivers' values `v` (the file's `at` when empty), from
+/// the file's assembly there, at the file's rates.
+struct Pose<'a> {
+    loaded: &'a Loaded,
+    v: Vec<f64>,
+}
+
+impl Job for Pose<'_> {
+    type Output = Value;
+    type Error = Failure;
+    fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<Value, Failure> {
+        let drives = self.loaded.drives(&model)?;
+        let v = if self.v.is_empty() {
+            drives.at
+        } else if self.v.len() == F {
+            SVector::from_fn(|k, _| self.v[k])
+        } else {
+            return Err(Failure(format!(
+                "{} driver values for {F} drivers",
+                self.v.len()
+            )));
+        };
+        let u = self.loaded.assembled(&model, &v)?;
+        let pose = model.analyze(
+            &u,
+            &v,
+            &drives.rate,
+            &drives.acceleration,
+            &Options::default(),
+        )?;
+        Ok(json!({
+            "v": v.as_slice(), "u": pose.u.as_slice(), "udot": pose.udot.as_slice(),
+            "uddot": pose.uddot.as_slice(), "points": xy(pose.points.as_ref()),
+            "pointVelocities": xy(pose.point_velocities.as_ref()),
+            "pointAccelerations": xy(pose.point_accelerations.as_ref()),
+            "rcond": pose.rcond, "drive": drive_json(&drives),
+        }))
+    }
+}
+
+/// The file's sweep in `steps` steps: every pose's drivers, coordinates
+/// and points, and the singular poses met.
+struct Poses<'a> {
+    loaded: &'a Loaded,
+    steps: usize,
+}
+
+impl Job for Poses<'_> {
+    type Output = Value;
+    type Error = Failure;
+    fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<Value, Failure> {
+        let steps = if self.steps == 0 {
+            self.loaded.drives(&model)?.steps
+        } else {
+            self.steps
+        };
+        let (mut v, mut u, mut points) = (Vec::<f64>::new(), Vec::<f64>::new(), Vec::<f64>::new());
+        let summary = self.loaded.sweep_each(&model, steps, &mut |_, pose| {
+            v.extend(pose.v.iter());
+            u.extend(pose.u.iter());
+            let p = model.point_positions(&pose.u, &pose.v);
+            points.extend(p.as_ref().iter().flat_map(|q| [q.x, q.y]));
+        })?;
+        let events: Vec<Value> = (summary.events.iter())
+            .map(|e| {
+                let kind = match e.kind {
+                    EventKind::LimitPosition => "limit position",
+                    EventKind::BranchPoint => "branch point",
+                };
+                let at = model.point_positions(&e.u, &e.v);
+                json!({ "kind": kind, "v": e.v.as_slice(), "u": e.u.as_slice(), "points": xy(at.as_ref()) })
+            })
+            .collect();
+        Ok(
+            json!({ "v": v, "u": u, "points": points, "events": events, "complete": summary.complete }),
+        )
+    }
+}
+
+/// The file's picture at the drivers' values `v` (its `at` if empty),
+/// with the points' paths over the drive range.
+struct Picture<'a> {
+    loaded: &'a Loaded,
+    width: f64,
+    v: Vec<f64>,
+}
+
+impl Job for Picture<'_> {
+    type Output = String;
+    type Error = Failure;
+    fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<String, Failure> {
+        let drives = self.loaded.drives(&model)?;
+        let v = if self.v.len() == F {
+            SVector::from_fn(|k, _| self.v[k])
+        } else {
+            drives.at
+        };
+        let u = self.loaded.assembled(&model, &v)?;
+        let pose = model.analyze(
+            &u,
+            &v,
+            &drives.rate,
+            &drives.acceleration,
+            &Options::default(),
+        )?;
+        let frame = Frame::from_analysis(&model, &pose);
+        let mut cycle = Vec::new();
+        self.loaded.sweep_each(&model, drives.steps, &mut |_, p| {
+            cycle.push(Frame::from_sweep_pose(&model, p))
+        })?;
+        (self.loaded.file())
+            .scene_of(model.point_names())
+            .width(self.width)
+            .render(&frame, &cycle)
+            .map_err(|e| Failure(format!("the drawing: {e}")))
+    }
+}
+
+#[wasm_bindgen(js_class = Mechanism)]
+impl WebMechanism {
+    /// The mechanism of a mechanism file's (or a topology's) text, called
+    /// `name` in messages; its mistakes, all of them, in the error's
+    /// message (see `mistakes` for their places).
+    #[wasm_bindgen(js_name = fromText)]
+    pub fn from_text(text: &str, name: &str) -> Result<WebMechanism, JsError> {
+        Ok(WebMechanism {
+            loaded: Loaded::from_text(name, text).map_err(failed)?,
+        })
+    }
+
+    /// Its names and parameters, as JSON.
+    pub fn info(&self) -> String {
+        let m = self.loaded.mechanism();
+        json!({
+            "name": m.name(), "uNames": m.u_names(), "vNames": m.v_names(),
+            "pointNames": m.point_names(), "parameterNames": m.parameter_names(),
+            "parameters": m.parameters(), "lengthUnit": self.loaded.file().length_unit,
+        })
+        .to_string()
+    }
+
+    /// Sets a parameter.
+    #[wasm_bindgen(js_name = setParameter)]
+    pub fn set_parameter(&mut self, name: &str, value: f64) -> Result<(), JsError> {
+        self.loaded
+            .mechanism_mut()
+            .set_parameter(name, value)
+            .map_err(failed)
+    }
+
+    /// The pose at the drivers' values `v` (the file's `at` if empty), as
+    /// JSON.
+    pub fn analyze(&self, v: Vec<f64>) -> Result<String, JsError> {
+        let job = Pose {
+            loaded: &self.loaded,
+            v,
+        };
+        let pose = run(self.loaded.mechanism(), job).map_err(|Failure(why)| JsError::new(&why))?;
+        Ok(pose.to_string())
+    }
+
+    /// The file's sweep in `steps` steps (the file's own when 0), as JSON.
+    pub fn sweep(&self, steps: usize) -> Result<String, JsError> {
+        if steps > linkage::file::MOST_STEPS {
+            return Err(JsError::new(&format!(
+                "a sweep takes 1 to {} steps",
+                linkage::file::MOST_STEPS
+            )));
+        }
+        let job = Poses {
+            loaded: &self.loaded,
+            steps,
+        };
+        let swept = run(self.loaded.mechanism(), job).map_err(|Failure(why)| JsError::new(&why))?;
+        Ok(swept.to_string())
+    }
+
+    /// The mechanism drawn with its drivers at `v` (the file's `at` if
+    /// empty), `width` pixels wide, with its points' paths: SVG.
+    pub fn svg(&self, width: f64, v: Vec<f64>) -> Result<String, JsError> {
+        if !(width.is_finite() && width > 0.0 && width <= 100_000.0) {
+            return Err(JsError::new(
+                "the width is a number of pixels from 0 to 100000",
+            ));
+        }
+        let job = Picture {
+            loaded: &self.loaded,
+            width,
+            v,
+        };
+        run(self.loaded.mechanism(), job).map_err(|Failure(why)| JsError::new(&why))
+    }
+}
