@@ -8,14 +8,49 @@ const $ = (id) => document.getElementById(id);
 let mechanism = null;
 let drive = null;
 let info = null;
+let sweep = null;
+let current = 0;
 
 function status(text, error = false) {
   $("status").textContent = text;
   $("status").className = error ? "error" : "";
 }
 
+// The plotted coordinate against the driver over the sweep, the singular
+// poses met marked, the current pose as a cursor.
+function plot() {
+  if (!sweep || sweep.v.length < 2) { $("plot").innerHTML = ""; return; }
+  const k = Number($("quantity").value);
+  const m = info.uNames.length;
+  const xs = sweep.v;
+  const ys = xs.map((_, i) => sweep.u[i * m + k]);
+  const [w, h, pad] = [640, 200, 40];
+  const [x0, x1] = [Math.min(...xs), Math.max(...xs)];
+  let [y0, y1] = [Math.min(...ys), Math.max(...ys)];
+  if (y1 - y0 < 1e-12) { y0 -= 1; y1 += 1; }
+  const X = (x) => pad + (w - 2 * pad) * (x - x0) / (x1 - x0 || 1);
+  const Y = (y) => h - pad + (2 * pad - h) * (y - y0) / (y1 - y0);
+  const path = xs.map((x, i) => `${i ? "L" : "M"}${X(x).toFixed(2)},${Y(ys[i]).toFixed(2)}`).join("");
+  const marks = sweep.events.map((e) =>
+    `<circle cx="${X(e.v[0]).toFixed(2)}" cy="${Y(e.u[k]).toFixed(2)}" r="4" fill="#a00"><title>${e.kind}</title></circle>`);
+  const fmt = (x) => Number(x.toPrecision(4));
+  $("plot").innerHTML =
+    `<svg viewBox="0 0 ${w} ${h}" xmlns="http://www.w3.org/2000/svg" font-size="12" font-family="sans-serif">` +
+    `<rect x="${pad}" y="${pad / 2}" width="${w - 2 * pad}" height="${h - 1.5 * pad}" fill="none" stroke="#ccc"/>` +
+    `<path d="${path}" fill="none" stroke="#345" stroke-width="1.5"/>${marks.join("")}` +
+    `<line id="cursor" x1="${X(current)}" x2="${X(current)}" y1="${pad / 2}" y2="${h - pad}" stroke="#07c" stroke-dasharray="4 3"/>` +
+    `<text x="${pad}" y="${h - pad / 3}">${fmt(x0)}</text><text x="${w - pad}" y="${h - pad / 3}" text-anchor="end">${fmt(x1)} ${info.vNames[0]}</text>` +
+    `<text x="4" y="${Y(y1) + 4}">${fmt(y1)}</text><text x="4" y="${Y(y0) + 4}">${fmt(y0)}</text>` +
+    `<text x="${w / 2}" y="14" text-anchor="middle">${info.uNames[k]} against ${info.vNames[0]}</text></svg>`;
+  document.body.dataset.plotted = `${xs.length} ${sweep.events.length}`;
+  $("events").innerHTML = sweep.events.map((e) =>
+    `<li>${e.kind} at ${info.vNames[0]} = ${e.v[0].toPrecision(12)}</li>`).join("") +
+    (sweep.complete ? "" : "<li>the sweep stops before the end of the drive range</li>");
+}
+
 function draw(value) {
   if (!mechanism) return;
+  current = value;
   const v = [value];
   $("driver-value").textContent = `${info.vNames[0]} = ${v[0].toFixed(6)}`;
   try {
@@ -27,7 +62,9 @@ function draw(value) {
       `<tr><th scope="row">${n}</th><td>${pose.u[k].toPrecision(10)}</td>` +
       `<td>${pose.udot[k].toPrecision(8)}</td><td>${pose.uddot[k].toPrecision(8)}</td></tr>`);
     $("pose").innerHTML = "<tr><th></th><th>value</th><th>velocity</th><th>acceleration</th></tr>" + rows.join("");
-    status(`pose and picture in ${took.toFixed(1)} ms`);
+    status(took > 0 ? `pose and picture in ${took.toFixed(1)} ms` : "pose and picture drawn");
+    const cursor = document.getElementById("cursor");
+    if (cursor) plot();
     document.body.dataset.pose = JSON.stringify(pose);
   } catch (e) {
     status(e.message, true);
@@ -73,7 +110,15 @@ function open(text) {
     $("driver").step = String((high - low) / Math.max(drive.steps, 1) / 10);
     $("driver").value = String(drive.at[0]);
     $("driver-label").textContent = info.vNames[0];
+    $("quantity").innerHTML = info.uNames.map((n, k) => `<option value="${k}">${n}</option>`).join("");
+    try {
+      sweep = JSON.parse(mechanism.sweep(0));
+    } catch (e) {
+      sweep = null;
+      $("events").innerHTML = `<li>${e.message}</li>`;
+    }
     draw(drive.at[0]);
+    plot();
   } catch (e) {
     mechanism = null;
     status(e.message, true);
@@ -100,6 +145,7 @@ $("editor").addEventListener("input", () => {
   typing = setTimeout(() => open($("editor").value), 300);
 });
 $("driver").addEventListener("input", () => draw(Number($("driver").value)));
+$("quantity").addEventListener("change", plot);
 
 const start = files.find((x) => x.path === "four_bar.toml");
 $("library").value = start.path;
@@ -114,5 +160,21 @@ if (params.has("selftest")) {
   document.body.dataset.brokenMistakes = String(shown);
   document.body.dataset.brokenMessage = JSON.parse(mistakes(broken, "the editor"))[0]?.message ?? "";
   showMistakes(start.text);
+}
+if (params.has("timing")) {
+  // The six-bar's sweep of 720 poses and the redraw, as a drag asks them.
+  const six = files.find((x) => x.path === "six_bar.toml");
+  const m = Mechanism.fromText(six.text, six.path);
+  const times = [];
+  for (let k = 0; k < 25; k++) {
+    const started = performance.now();
+    const s = JSON.parse(m.sweep(720));
+    const svg = m.svg(640, [s.v[k * 20]]);
+    times.push(performance.now() - started);
+    if (s.v.length !== 721 || !svg.startsWith("<svg")) throw new Error("the six-bar's sweep");
+  }
+  times.sort((a, b) => a - b);
+  document.body.dataset.sixBarMs = String(times[12]);
+  console.log(`six-bar: sweep of 720 poses and redraw, median of 25: ${times[12]} ms (${times[0]}–${times[24]})`);
 }
 document.body.dataset.ready = "yes";

@@ -60,6 +60,7 @@ def main():
     for name, ours, exact, rel in checks:
         error = abs(ours - exact) / abs(exact)
         assert error <= rel, f"{name}: {ours} against {exact} ({error:.1e})"
+    assert data["plotted"] == "361 0", data.get("plotted")  # the turn in 360 steps, no singular pose
     assert data["mistakes"] == "0"
     assert int(data["broken-mistakes"]) >= 1 and "`l9`" in data["broken-message"], data
     wasm = ROOT / "web/pkg/linkage_web_bg.wasm"
