@@ -2,7 +2,7 @@
 // linkage compiled to WebAssembly; its pose at the driver's value drawn by
 // the library's own pictures, its numbers in a table, the file's mistakes
 // listed where they are. `?selftest` records what a test reads in the DOM.
-import init, { Mechanism, library, mistakes } from "./pkg/linkage_web.js";
+import init, { Mechanism, importPylinkage, importPyslvs, library, mistakes } from "./pkg/linkage_web.js";
 
 const $ = (id) => document.getElementById(id);
 let mechanism = null;
@@ -147,6 +147,24 @@ $("editor").addEventListener("input", () => {
 $("driver").addEventListener("input", () => draw(Number($("driver").value)));
 $("quantity").addEventListener("change", plot);
 
+// Another tool's mechanism, as joints and links in the editor.
+function imported(make) {
+  try {
+    const text = make();
+    $("import-status").textContent = "";
+    $("editor").value = text;
+    open(text);
+    return true;
+  } catch (e) {
+    $("import-status").textContent = e.message;
+    return false;
+  }
+}
+$("import-pyslvs").addEventListener("click", () =>
+  imported(() => importPyslvs($("import-text").value, $("import-inputs").value, "Imported")));
+$("import-pylinkage").addEventListener("click", () =>
+  imported(() => importPylinkage($("import-text").value)));
+
 const start = files.find((x) => x.path === "four_bar.toml");
 $("library").value = start.path;
 $("editor").value = start.text;
@@ -160,6 +178,16 @@ if (params.has("selftest")) {
   document.body.dataset.brokenMistakes = String(shown);
   document.body.dataset.brokenMessage = JSON.parse(mistakes(broken, "the editor"))[0]?.message ?? "";
   showMistakes(start.text);
+  // A pyslvs four-bar imported as joints and links, and analysed.
+  $("import-text").value = "M[J[R, color[Green], P[0.0, 0.0], L[ground, L1]], " +
+    "J[R, color[Green], P[20.0, 0.0], L[L1, L2]], J[R, color[Green], P[70.0, 40.0], L[L2, L3]], " +
+    "J[R, color[Green], P[80.0, 0.0], L[ground, L3]]]";
+  const ok = imported(() => importPyslvs($("import-text").value, "[[0, 1]]", "Imported"));
+  document.body.dataset.importedPyslvs = ok ? JSON.parse(mechanism.info()).uNames.join(",") : $("import-status").textContent;
+  const refused = imported(() => importPyslvs("M[J[nonsense", "[[0, 1]]", "Imported"));
+  document.body.dataset.importRefused = refused ? "" : $("import-status").textContent;
+  $("editor").value = start.text;
+  open(start.text);
 }
 if (params.has("timing")) {
   // The six-bar's sweep of 720 poses and the redraw, as a drag asks them.

@@ -23,6 +23,37 @@ pub fn library() -> String {
     Value::Array(files).to_string()
 }
 
+/// A pyslvs expression (`M[J[R, …], …]`), driven by `inputs` (a JSON list
+/// of pairs `[base, drive]` of joint numbers), as a topology file's text.
+#[wasm_bindgen(js_name = importPyslvs)]
+pub fn import_pyslvs(expression: &str, inputs: &str, name: &str) -> Result<String, JsError> {
+    let pairs: Vec<[usize; 2]> = serde_json::from_str::<Value>(inputs)
+        .ok()
+        .and_then(|v| {
+            (v.as_array()?.iter())
+                .map(|p| {
+                    let p = p.as_array()?;
+                    Some([p.first()?.as_u64()? as usize, p.get(1)?.as_u64()? as usize])
+                })
+                .collect()
+        })
+        .ok_or_else(|| {
+            JsError::new("the inputs are a list of pairs [base, drive] of joint numbers")
+        })?;
+    let inputs: Vec<(usize, usize)> = pairs.iter().map(|[b, d]| (*b, *d)).collect();
+    let topology = linkage::topology::pyslvs::from_pyslvs(name, expression.trim(), &inputs)
+        .map_err(|e| JsError::new(&e.to_string()))?;
+    Ok(topology.topology_text())
+}
+
+/// pylinkage's JSON (`Linkage.to_dict()`), as a topology file's text.
+#[wasm_bindgen(js_name = importPylinkage)]
+pub fn import_pylinkage(json: &str) -> Result<String, JsError> {
+    let (topology, _) = linkage::topology::pylinkage::from_pylinkage(json)
+        .map_err(|e| JsError::new(&e.to_string()))?;
+    Ok(topology.topology_text())
+}
+
 /// The mistakes of a mechanism file's (or topology's) text, as JSON: `[]`
 /// when it makes a mechanism, or `[{message, from, to, rendered}, …]`
 /// with `from` and `to` the UTF-16 offsets of its place in `text` (for a

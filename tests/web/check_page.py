@@ -61,6 +61,8 @@ def main():
         error = abs(ours - exact) / abs(exact)
         assert error <= rel, f"{name}: {ours} against {exact} ({error:.1e})"
     assert data["plotted"] == "361 0", data.get("plotted")  # the turn in 360 steps, no singular pose
+    assert data["imported-pyslvs"].startswith("theta_"), data["imported-pyslvs"]  # joints and links, analysed
+    assert data["import-refused"], "a malformed pyslvs expression shows why"
     assert data["mistakes"] == "0"
     assert int(data["broken-mistakes"]) >= 1 and "`l9`" in data["broken-message"], data
     wasm = ROOT / "web/pkg/linkage_web_bg.wasm"
