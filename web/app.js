@@ -147,6 +147,40 @@ $("editor").addEventListener("input", () => {
 $("driver").addEventListener("input", () => draw(Number($("driver").value)));
 $("quantity").addEventListener("change", plot);
 
+// Exports: what is shown, as files; the editor's text in the page's link.
+function save(name, type, text) {
+  const url = URL.createObjectURL(new Blob([text], { type }));
+  const a = document.createElement("a");
+  a.href = url;
+  a.download = name;
+  a.click();
+  setTimeout(() => URL.revokeObjectURL(url), 1000);
+}
+function sweepCsv() {
+  const m = info.uNames.length;
+  const p = info.pointNames.length;
+  const head = [info.vNames[0], ...info.uNames,
+    ...info.pointNames.flatMap((n) => [`${n}.x`, `${n}.y`])];
+  const rows = sweep.v.map((v, i) => [v, ...sweep.u.slice(i * m, (i + 1) * m),
+    ...sweep.points.slice(i * 2 * p, (i + 1) * 2 * p)].join(","));
+  return [head.join(","), ...rows].join("\n") + "\n";
+}
+const encode = (text) => btoa(String.fromCharCode(...new TextEncoder().encode(text)));
+const decode = (data) => new TextDecoder().decode(Uint8Array.from(atob(data), (c) => c.charCodeAt(0)));
+function link() {
+  return `${location.href.split("#")[0]}#file=${encodeURIComponent(encode($("editor").value))}`;
+}
+$("save-svg").addEventListener("click", () => mechanism &&
+  save(`${info.name}.svg`, "image/svg+xml", mechanism.svg(640, [current])));
+$("save-csv").addEventListener("click", () => sweep && save(`${info.name}.csv`, "text/csv", sweepCsv()));
+$("save-file").addEventListener("click", () =>
+  save(`${info ? info.name : "mechanism"}.toml`, "text/plain", $("editor").value));
+$("share").addEventListener("click", () => {
+  history.replaceState(null, "", link());
+  navigator.clipboard?.writeText(location.href).catch(() => {});
+  status("the link to this mechanism is in the address bar");
+});
+
 // Another tool's mechanism, as joints and links in the editor.
 function imported(make) {
   try {
@@ -166,9 +200,11 @@ $("import-pylinkage").addEventListener("click", () =>
   imported(() => importPylinkage($("import-text").value)));
 
 const start = files.find((x) => x.path === "four_bar.toml");
+const shared = location.hash.startsWith("#file=") ? decode(decodeURIComponent(location.hash.slice(6))) : null;
 $("library").value = start.path;
-$("editor").value = start.text;
-open(start.text);
+$("editor").value = shared ?? start.text;
+open(shared ?? start.text);
+document.body.dataset.opened = info ? info.name : "";
 
 const params = new URLSearchParams(location.search);
 if (params.has("selftest")) {
@@ -188,6 +224,9 @@ if (params.has("selftest")) {
   document.body.dataset.importRefused = refused ? "" : $("import-status").textContent;
   $("editor").value = start.text;
   open(start.text);
+  // What the exports write, and a link that opens the same text.
+  document.body.dataset.csvRows = String(sweepCsv().trim().split("\n").length);
+  document.body.dataset.link = link();
 }
 if (params.has("timing")) {
   // The six-bar's sweep of 720 poses and the redraw, as a drag asks them.

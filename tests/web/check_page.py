@@ -63,6 +63,15 @@ def main():
     assert data["plotted"] == "361 0", data.get("plotted")  # the turn in 360 steps, no singular pose
     assert data["imported-pyslvs"].startswith("theta_"), data["imported-pyslvs"]  # joints and links, analysed
     assert data["import-refused"], "a malformed pyslvs expression shows why"
+    assert data["csv-rows"] == "362", data["csv-rows"]  # a header and 361 poses
+    # The page's link opens the text it carries: here, the slider-crank.
+    link = data["link"]
+    crank = (ROOT / "mechanisms/slider_crank.toml").read_text()
+    import base64
+    import urllib.parse
+    shared = link.split("#")[0] + "#file=" + urllib.parse.quote(base64.b64encode(crank.encode()).decode())
+    opened = body(shared)
+    assert opened.get("opened") == "SliderCrank" and "error" not in opened, opened.get("opened")
     assert data["mistakes"] == "0"
     assert int(data["broken-mistakes"]) >= 1 and "`l9`" in data["broken-message"], data
     wasm = ROOT / "web/pkg/linkage_web_bg.wasm"
