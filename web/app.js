@@ -20,10 +20,15 @@ function status(text, error = false) {
 // poses met marked, the current pose as a cursor.
 function plot() {
   if (!sweep || sweep.v.length < 2) { $("plot").innerHTML = ""; return; }
-  const k = Number($("quantity").value);
+  // "u:k", "udot:k", "uddot:k" (coordinate k and its rates) or "transmission".
+  const [series, index] = $("quantity").value.split(":");
+  const k = Number(index ?? 0);
   const m = info.uNames.length;
   const xs = sweep.v;
-  const ys = xs.map((_, i) => sweep.u[i * m + k]);
+  const ys = series === "transmission"
+    ? sweep.transmission.map((a) => a * 180 / Math.PI)
+    : xs.map((_, i) => sweep[series][i * m + k]);
+  const label = $("quantity").selectedOptions[0].textContent;
   const [w, h, pad] = [640, 200, 40];
   const [x0, x1] = [Math.min(...xs), Math.max(...xs)];
   let [y0, y1] = [Math.min(...ys), Math.max(...ys)];
@@ -31,8 +36,10 @@ function plot() {
   const X = (x) => pad + (w - 2 * pad) * (x - x0) / (x1 - x0 || 1);
   const Y = (y) => h - pad + (2 * pad - h) * (y - y0) / (y1 - y0);
   const path = xs.map((x, i) => `${i ? "L" : "M"}${X(x).toFixed(2)},${Y(ys[i]).toFixed(2)}`).join("");
-  const marks = sweep.events.map((e) =>
-    `<circle cx="${X(e.v[0]).toFixed(2)}" cy="${Y(e.u[k]).toFixed(2)}" r="4" fill="#a00"><title>${e.kind}</title></circle>`);
+  const marks = sweep.events.map((e) => {
+    const y = series === "u" ? Y(e.u[k]) : h - pad;
+    return `<circle cx="${X(e.v[0]).toFixed(2)}" cy="${y.toFixed(2)}" r="4" fill="#a00"><title>${e.kind}</title></circle>`;
+  });
   const fmt = (x) => Number(x.toPrecision(4));
   $("plot").innerHTML =
     `<svg viewBox="0 0 ${w} ${h}" xmlns="http://www.w3.org/2000/svg" font-size="12" font-family="sans-serif">` +
@@ -41,7 +48,7 @@ function plot() {
     `<line id="cursor" x1="${X(current)}" x2="${X(current)}" y1="${pad / 2}" y2="${h - pad}" stroke="#07c" stroke-dasharray="4 3"/>` +
     `<text x="${pad}" y="${h - pad / 3}">${fmt(x0)}</text><text x="${w - pad}" y="${h - pad / 3}" text-anchor="end">${fmt(x1)} ${info.vNames[0]}</text>` +
     `<text x="4" y="${Y(y1) + 4}">${fmt(y1)}</text><text x="4" y="${Y(y0) + 4}">${fmt(y0)}</text>` +
-    `<text x="${w / 2}" y="14" text-anchor="middle">${info.uNames[k]} against ${info.vNames[0]}</text></svg>`;
+    `<text x="${w / 2}" y="14" text-anchor="middle">${label} against ${info.vNames[0]}</text></svg>`;
   document.body.dataset.plotted = `${xs.length} ${sweep.events.length}`;
   $("events").innerHTML = sweep.events.map((e) =>
     `<li>${e.kind} at ${info.vNames[0]} = ${e.v[0].toPrecision(12)}</li>`).join("") +
@@ -110,7 +117,12 @@ function open(text) {
     $("driver").step = String((high - low) / Math.max(drive.steps, 1) / 10);
     $("driver").value = String(drive.at[0]);
     $("driver-label").textContent = info.vNames[0];
-    $("quantity").innerHTML = info.uNames.map((n, k) => `<option value="${k}">${n}</option>`).join("");
+    $("quantity").innerHTML = [
+      ...info.uNames.map((n, k) => `<option value="u:${k}">${n}</option>`),
+      ...info.uNames.map((n, k) => `<option value="udot:${k}">${n}' (velocity)</option>`),
+      ...info.uNames.map((n, k) => `<option value="uddot:${k}">${n}'' (acceleration)</option>`),
+      `<option value="transmission">transmission angle (deg)</option>`,
+    ].join("");
     try {
       sweep = JSON.parse(mechanism.sweep(0));
     } catch (e) {
@@ -226,6 +238,11 @@ if (params.has("selftest")) {
   open(start.text);
   // What the exports write, and a link that opens the same text.
   document.body.dataset.csvRows = String(sweepCsv().trim().split("\n").length);
+  $("quantity").value = "transmission";
+  plot();
+  document.body.dataset.transmission = String(Math.min(...sweep.transmission) * 180 / Math.PI);
+  $("quantity").value = "u:0";
+  plot();
   document.body.dataset.link = link();
 }
 if (params.has("timing")) {

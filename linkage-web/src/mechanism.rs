@@ -110,9 +110,17 @@ impl Job for Poses<'_> {
             self.steps
         };
         let (mut v, mut u, mut points) = (Vec::<f64>::new(), Vec::<f64>::new(), Vec::<f64>::new());
+        let (mut udot, mut uddot, mut transmission) =
+            (Vec::<f64>::new(), Vec::<f64>::new(), Vec::<f64>::new());
         let summary = self.loaded.sweep_each(&model, steps, &mut |_, pose| {
             v.extend(pose.v.iter());
             u.extend(pose.u.iter());
+            udot.extend(pose.udot.iter());
+            uddot.extend(pose.uddot.iter());
+            // The equivalent transmission angle (a four-bar's own).
+            transmission.push(linkage::transmission::equivalent_angle(
+                &model.psi_u(&pose.u, &pose.v),
+            ));
             let p = model.point_positions(&pose.u, &pose.v);
             points.extend(p.as_ref().iter().flat_map(|q| [q.x, q.y]));
         })?;
@@ -126,9 +134,10 @@ impl Job for Poses<'_> {
                 json!({ "kind": kind, "v": e.v.as_slice(), "u": e.u.as_slice(), "points": xy(at.as_ref()) })
             })
             .collect();
-        Ok(
-            json!({ "v": v, "u": u, "points": points, "events": events, "complete": summary.complete }),
-        )
+        Ok(json!({
+            "v": v, "u": u, "udot": udot, "uddot": uddot, "transmission": transmission,
+            "points": points, "events": events, "complete": summary.complete,
+        }))
     }
 }
 

@@ -64,6 +64,10 @@ def main():
     assert data["imported-pyslvs"].startswith("theta_"), data["imported-pyslvs"]  # joints and links, analysed
     assert data["import-refused"], "a malformed pyslvs expression shows why"
     assert data["csv-rows"] == "362", data["csv-rows"]  # a header and 361 poses
+    # The worksheet's four-bar's smallest transmission angle over the turn,
+    # at θ2 = 0: acos((l3² + l4² − (l1 − l2)²)/(2 l3 l4)), sampled each degree.
+    smallest = math.degrees(math.acos((50**2 + 70**2 - 60**2) / (2 * 50 * 70)))
+    assert abs(float(data["transmission"]) - smallest) < 1e-9, data["transmission"]
     # The page's link opens the text it carries: here, the slider-crank.
     link = data["link"]
     crank = (ROOT / "mechanisms/slider_crank.toml").read_text()
