@@ -26,7 +26,7 @@ impl From<LoadError> for Failure {
     /// located in the file are written to standard error here.
     fn from(error: LoadError) -> Failure {
         match error {
-            LoadError::Read { why } => Failure::Io(why),
+            LoadError::Read { why, .. } => Failure::Io(why),
             LoadError::NotThisKind { why } => Failure::Malformed(why),
             LoadError::Mistakes(located) => {
                 report_located(&located);

@@ -138,6 +138,7 @@ impl Failure {
     /// The name of its class in `linkage.errors`.
     fn class(&self) -> &'static str {
         match self {
+            Failure::Load(LoadError::Read { missing: true, .. }) => "FileMissingError",
             Failure::Load(LoadError::Read { .. } | LoadError::NotThisKind { .. }) => "FileError",
             Failure::Load(LoadError::Mistakes(_)) => "MistakesError",
             Failure::Load(LoadError::Mechanism(e)) | Failure::Mechanism(e) => of_mechanism(e),

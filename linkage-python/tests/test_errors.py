@@ -85,9 +85,12 @@ def test_what_fails_in_the_analysis_says_so(bar):
         linkage.Mechanism.from_pyslvs("M[J[nonsense", [(0, 1)])
     with pytest.raises(errors.FormatError):
         linkage.Mechanism.from_pylinkage("{not json")
-    with pytest.raises(errors.FileError) as missing:
+    with pytest.raises(FileNotFoundError) as missing:
         linkage.Mechanism.from_file(ROOT / "no such file.toml")
-    assert isinstance(missing.value, OSError)
+    assert isinstance(missing.value, errors.FileMissingError) and isinstance(missing.value, errors.FileError)
+    with pytest.raises(errors.FileError) as directory:
+        linkage.Mechanism.from_file(ROOT / "mechanisms")
+    assert not isinstance(directory.value, FileNotFoundError)
 
 
 BAD_FILE = """name = "Bad"

@@ -51,6 +51,10 @@ class FileError(LinkageError, OSError):
     """A file could not be read, or is not the kind asked for."""
 
 
+class FileMissingError(FileError, FileNotFoundError):
+    """The file named is not there."""
+
+
 class FormatError(LinkageError, ValueError):
     """Another tool's mechanism (pyslvs's expression, pylinkage's JSON)
     could not be read or represented."""

@@ -28,8 +28,9 @@ impl Located {
 #[derive(Debug)]
 #[non_exhaustive]
 pub enum LoadError {
-    /// The file could not be read (or is not UTF-8 text).
-    Read { why: String },
+    /// The file could not be read (or is not UTF-8 text); `missing` says
+    /// it is not there.
+    Read { why: String, missing: bool },
     /// The text is not the file asked for (a topology where joints and
     /// links are needed, say).
     NotThisKind { why: String },
@@ -75,7 +76,7 @@ impl LoadError {
 impl fmt::Display for LoadError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            LoadError::Read { why } | LoadError::NotThisKind { why } => f.write_str(why),
+            LoadError::Read { why, .. } | LoadError::NotThisKind { why } => f.write_str(why),
             LoadError::Mistakes(located) => f.write_str(located.render(false).trim_end()),
             LoadError::Mechanism(error) => write!(f, "{error}"),
             LoadError::Analysis { why, .. } => f.write_str(why),

@@ -163,6 +163,7 @@ impl Loaded {
 pub fn read_text(path: &Path) -> Result<String, LoadError> {
     let bytes = std::fs::read(path).map_err(|e| LoadError::Read {
         why: format!("cannot read {}: {e}", path.display()),
+        missing: e.kind() == std::io::ErrorKind::NotFound,
     })?;
     String::from_utf8(bytes).map_err(|e| LoadError::Read {
         why: format!(
@@ -170,5 +171,6 @@ pub fn read_text(path: &Path) -> Result<String, LoadError> {
             path.display(),
             e.utf8_error().valid_up_to()
         ),
+        missing: false,
     })
 }
