@@ -33,26 +33,36 @@ pub fn values(argument: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Vec<f64>>>
     {
         return Ok(Some(vec![argument.extract::<f64>()?]));
     }
+    let (shape, values) = numbers(argument).ok_or_else(refused)?;
+    if shape.len() > 1 {
+        return Err(refused());
+    }
+    Ok(Some(values))
+}
+
+/// The numbers of an argument NumPy reads as an array of integers or
+/// reals (not complex numbers, not booleans, not text), with its shape;
+/// `None` for anything else.
+fn numbers(argument: &Bound<'_, PyAny>) -> Option<(Vec<usize>, Vec<f64>)> {
     if argument.is_instance_of::<PyString>() || argument.is_instance_of::<PyBytes>() {
-        return Err(refused());
+        return None;
     }
-    // Numbers only: integers and reals (not complex numbers, not
-    // booleans, not text), in one dimension or none.
-    let array = argument
-        .py()
-        .import("numpy")?
-        .call_method1("asarray", (argument,))
-        .map_err(|_| refused())?;
-    let kind: String = array.getattr("dtype")?.getattr("kind")?.extract()?;
-    let dimensions: usize = array.getattr("ndim")?.extract()?;
-    if !matches!(kind.as_str(), "i" | "u" | "f") || dimensions > 1 {
-        return Err(refused());
-    }
-    let array: PyArrayLike1<'_, f64, AllowTypeChange> = array
-        .call_method1("reshape", (-1,))?
+    let numpy = argument.py().import("numpy").ok()?;
+    let array = numpy.call_method1("asarray", (argument,)).ok()?;
+    let kind: String = array
+        .getattr("dtype")
+        .ok()?
+        .getattr("kind")
+        .ok()?
         .extract()
-        .map_err(|_| refused())?;
-    Ok(Some(array.as_array().to_vec()))
+        .ok()?;
+    if !matches!(kind.as_str(), "i" | "u" | "f") {
+        return None;
+    }
+    let shape: Vec<usize> = array.getattr("shape").ok()?.extract().ok()?;
+    let flat: PyArrayLike1<'_, f64, AllowTypeChange> =
+        array.call_method1("reshape", (-1,)).ok()?.extract().ok()?;
+    Some((shape, flat.as_array().to_vec()))
 }
 
 /// `values` as a vector of `N`: one value for each of `names` (what the
@@ -113,24 +123,10 @@ pub fn rows(argument: &Bound<'_, PyAny>, width: usize, what: &str) -> PyResult<V
             "expected rows of {width} numbers ({what}), as a sequence of sequences or an array of shape (n, {width})"
         ))
     };
-    if argument.is_instance_of::<PyString>() || argument.is_instance_of::<PyBytes>() {
+    let (shape, flat) = numbers(argument).ok_or_else(refused)?;
+    if shape.len() != 2 || shape[1] != width {
         return Err(refused());
     }
-    let array = argument
-        .py()
-        .import("numpy")?
-        .call_method1("asarray", (argument,))
-        .map_err(|_| refused())?;
-    let kind: String = array.getattr("dtype")?.getattr("kind")?.extract()?;
-    let shape: Vec<usize> = array.getattr("shape")?.extract()?;
-    if !matches!(kind.as_str(), "i" | "u" | "f") || shape.len() != 2 || shape[1] != width {
-        return Err(refused());
-    }
-    let flat: PyArrayLike1<'_, f64, AllowTypeChange> = array
-        .call_method1("reshape", (-1,))?
-        .extract()
-        .map_err(|_| refused())?;
-    let flat = flat.as_array().to_vec();
     Ok(flat.chunks(width).map(<[f64]>::to_vec).collect())
 }
 

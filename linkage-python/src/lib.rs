@@ -12,6 +12,7 @@ mod errors;
 mod extremes;
 mod interrupt;
 mod mechanism;
+mod names;
 mod pool;
 mod pose;
 mod sensitivity;

@@ -8,7 +8,6 @@ use linkage::mechanism::Fixed;
 use linkage::mechanism::sizes::Job;
 use linkage::prelude::*;
 use numpy::{PyArray1, PyArray2};
-use pyo3::exceptions::PyKeyError;
 use pyo3::prelude::*;
 
 /// A pose with its velocities and accelerations: the coordinates u, u̇, ü
@@ -222,22 +221,18 @@ impl Pose {
             let xy = a.points[2 * k..2 * k + 2].to_vec();
             return Ok(array1(py, xy).into_bound(py).into_any());
         }
-        Err(PyKeyError::new_err(format!(
-            "`{name}` is no coordinate or point of the mechanism (u: [{}], v: [{}], points: [{}])",
-            a.u_names.join(", "),
-            a.v_names.join(", "),
-            a.point_names.join(", ")
-        )))
+        Err(crate::names::unknown(
+            name,
+            &a.u_names,
+            &a.v_names,
+            &a.point_names,
+        ))
     }
 
     /// The names `pose[name]` takes: the coordinates u and v, the points.
     fn keys(&self) -> Vec<String> {
         let a = &self.values;
-        (a.u_names.iter())
-            .chain(&a.v_names)
-            .chain(&a.point_names)
-            .cloned()
-            .collect()
+        crate::names::keys(&a.u_names, &a.v_names, &a.point_names)
     }
 
     fn __contains__(&self, name: &str) -> bool {
@@ -245,12 +240,7 @@ impl Pose {
     }
 
     fn __iter__(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-        Ok(self
-            .keys()
-            .into_pyobject(py)?
-            .try_iter()?
-            .into_any()
-            .unbind())
+        crate::names::iterate(py, self.keys())
     }
 
     fn __repr__(&self) -> String {

@@ -11,7 +11,6 @@ use linkage::mechanism::sizes::Job;
 use linkage::prelude::*;
 use numpy::ndarray::Axis;
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyArray3, PyArrayMethods};
-use pyo3::exceptions::PyKeyError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -282,11 +281,7 @@ impl Sweep {
 impl Sweep {
     /// The names `sweep[name]` takes: the coordinates u and v, the points.
     fn keys(&self) -> Vec<String> {
-        (self.u_names.iter())
-            .chain(&self.v_names)
-            .chain(&self.point_names)
-            .cloned()
-            .collect()
+        crate::names::keys(&self.u_names, &self.v_names, &self.point_names)
     }
 
     fn __contains__(&self, name: &str) -> bool {
@@ -295,12 +290,7 @@ impl Sweep {
 
     /// Its names, as a mapping's keys (not its poses: `len` counts those).
     fn __iter__(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-        Ok(self
-            .keys()
-            .into_pyobject(py)?
-            .try_iter()?
-            .into_any()
-            .unbind())
+        crate::names::iterate(py, self.keys())
     }
 
     /// The number of poses.
@@ -327,12 +317,12 @@ impl Sweep {
             let path = points.as_array().index_axis(Axis(1), k).to_owned();
             return Ok(path.into_pyarray(py).into_any());
         }
-        Err(PyKeyError::new_err(format!(
-            "`{name}` is no coordinate or point of the mechanism (u: [{}], v: [{}], points: [{}])",
-            self.u_names.join(", "),
-            self.v_names.join(", "),
-            self.point_names.join(", ")
-        )))
+        Err(crate::names::unknown(
+            name,
+            &self.u_names,
+            &self.v_names,
+            &self.point_names,
+        ))
     }
 
     fn __repr__(&self) -> String {

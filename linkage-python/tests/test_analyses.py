@@ -118,7 +118,11 @@ def test_pylinkage_hoeken_step_by_step():
         for k, step in enumerate(steps["steps"])
         for j in moving
     )
-    assert worst < 1e-9
+    # pylinkage solves each step in closed form, its crank angle re-read
+    # from the positions (a drift of ~1e-14 a turn): held, as the Rust
+    # tests hold it, to 1e-11 of the drawing's size (about 5 here).
+    size = np.ptp(np.array(steps["initial"]), axis=0).max()
+    assert worst < 1e-11 * size
 
 
 def test_a_file_draws_itself():
