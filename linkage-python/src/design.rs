@@ -98,7 +98,10 @@ pub struct Synthesize {
 impl DesignJob for Synthesize {
     type Output = Designed;
     type Error = Failure;
-    fn run<const M: usize>(self, model: DesignView<M>) -> Result<Designed, Failure> {
+    fn run<const M: usize, const P: usize>(
+        self,
+        model: DesignView<M, P>,
+    ) -> Result<Designed, Failure> {
         let drives = self.source.drives(&model)?;
         let at = self.at.map(|x| [x].into()).or(drives.map(|d| d.at));
         let guess = match at {

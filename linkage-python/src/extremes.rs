@@ -32,9 +32,9 @@ pub struct Find {
 impl Job for Find {
     type Output = Vec<Extreme>;
     type Error = Failure;
-    fn run<const M: usize, const F: usize>(
+    fn run<const M: usize, const F: usize, const P: usize>(
         self,
-        model: Fixed<M, F>,
+        model: Fixed<M, F, P>,
     ) -> Result<Vec<Extreme>, Failure> {
         let quantities: Vec<String> = if self.quantities.is_empty() {
             model.u_names().iter().map(|n| n.to_string()).collect()

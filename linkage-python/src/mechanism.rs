@@ -76,7 +76,10 @@ struct Picture<'a> {
 impl Job for Picture<'_> {
     type Output = String;
     type Error = Failure;
-    fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<String, Failure> {
+    fn run<const M: usize, const F: usize, const P: usize>(
+        self,
+        model: Fixed<M, F, P>,
+    ) -> Result<String, Failure> {
         let Some(loaded) = &self.source.loaded else {
             return Err(Failure::BadInput(
                 "a mechanism from its equations has no drive or drawing: draw one from a file"
@@ -106,9 +109,9 @@ struct Modes<'a> {
 impl Job for Modes<'_> {
     type Output = (usize, Vec<f64>);
     type Error = Failure;
-    fn run<const M: usize, const F: usize>(
+    fn run<const M: usize, const F: usize, const P: usize>(
         self,
-        model: Fixed<M, F>,
+        model: Fixed<M, F, P>,
     ) -> Result<(usize, Vec<f64>), Failure> {
         let drives = self.source.drives(&model)?;
         let v = Source::or_file(

@@ -153,7 +153,10 @@ pub struct PoseOf<const M: usize, const F: usize, const N: usize, const K: usize
 impl Job for Analyze<'_> {
     type Output = Analysed;
     type Error = Failure;
-    fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<Analysed, Failure> {
+    fn run<const M: usize, const F: usize, const P: usize>(
+        self,
+        model: Fixed<M, F, P>,
+    ) -> Result<Analysed, Failure> {
         let PoseOf {
             pose,
             v,

@@ -58,9 +58,9 @@ pub struct Differentiate<'a> {
 impl SensitivityJob for Differentiate<'_> {
     type Output = Differentiated;
     type Error = Failure;
-    fn run<const M: usize, const F: usize>(
+    fn run<const M: usize, const F: usize, const P: usize>(
         self,
-        model: Fixed<M, F, 32, PARAMETERS>,
+        model: Fixed<M, F, P, PARAMETERS>,
     ) -> Result<Differentiated, Failure> {
         let PoseOf { pose, .. } = self.analyze.pose(&model)?;
         let s = model.sensitivities_of(&pose, &Options::default())?;
@@ -75,7 +75,7 @@ impl SensitivityJob for Differentiate<'_> {
                 .flat_map(|i| (0..k).map(move |j| matrix[(i, j)]))
                 .collect()
         };
-        let by_point = |columns: &[<Fixed<M, F, 32, PARAMETERS> as Kernels<M, F>>::Points;
+        let by_point = |columns: &[<Fixed<M, F, P, PARAMETERS> as Kernels<M, F>>::Points;
                              PARAMETERS]|
          -> Vec<f64> {
             let mut out = Vec::with_capacity(point_count * 2 * k);

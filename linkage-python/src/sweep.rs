@@ -192,7 +192,10 @@ const STEPS: usize = 360;
 impl Job for Poses {
     type Output = Swept;
     type Error = Failure;
-    fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<Swept, Failure> {
+    fn run<const M: usize, const F: usize, const P: usize>(
+        self,
+        model: Fixed<M, F, P>,
+    ) -> Result<Swept, Failure> {
         let v_names = model.v_names();
         let (u0, drive, options) = self.drive.resolve(&self.source, &model)?;
         let mut out = Swept::default();

@@ -63,9 +63,9 @@ fn output<const M: usize, const F: usize, const K: usize>(
 impl SensitivityJob for Spread {
     type Output = Spreads;
     type Error = Failure;
-    fn run<const M: usize, const F: usize>(
+    fn run<const M: usize, const F: usize, const P: usize>(
         self,
-        model: Fixed<M, F, 32, PARAMETERS>,
+        model: Fixed<M, F, P, PARAMETERS>,
     ) -> Result<Spreads, Failure> {
         let quantities: Vec<String> = if self.quantities.is_empty() {
             model.u_names().iter().map(|n| n.to_string()).collect()

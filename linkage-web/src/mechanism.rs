@@ -63,7 +63,10 @@ struct Pose<'a> {
 impl Job for Pose<'_> {
     type Output = Value;
     type Error = Failure;
-    fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<Value, Failure> {
+    fn run<const M: usize, const F: usize, const P: usize>(
+        self,
+        model: Fixed<M, F, P>,
+    ) -> Result<Value, Failure> {
         let drives = self.loaded.drives(&model)?;
         let v = if self.v.is_empty() {
             drives.at
@@ -103,7 +106,10 @@ struct Poses<'a> {
 impl Job for Poses<'_> {
     type Output = Value;
     type Error = Failure;
-    fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<Value, Failure> {
+    fn run<const M: usize, const F: usize, const P: usize>(
+        self,
+        model: Fixed<M, F, P>,
+    ) -> Result<Value, Failure> {
         let steps = if self.steps == 0 {
             self.loaded.drives(&model)?.steps
         } else {
@@ -152,7 +158,10 @@ struct Picture<'a> {
 impl Job for Picture<'_> {
     type Output = String;
     type Error = Failure;
-    fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<String, Failure> {
+    fn run<const M: usize, const F: usize, const P: usize>(
+        self,
+        model: Fixed<M, F, P>,
+    ) -> Result<String, Failure> {
         let drives = self.loaded.drives(&model)?;
         let v = if self.v.len() == F {
             SVector::from_fn(|k, _| self.v[k])

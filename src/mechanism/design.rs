@@ -44,23 +44,23 @@ pub struct DesignTask {
     pub min_transmission: Option<f64>,
 }
 
-/// The fixed view a synthesis runs on: one driver, the sensitivities by
-/// the free parameters.
-pub type DesignView<const M: usize> = Fixed<M, 1, 32, PARAMETERS>;
+/// The fixed view a synthesis runs on: one driver, room for `P` named
+/// points, the sensitivities by the free parameters.
+pub type DesignView<const M: usize, const P: usize> = Fixed<M, 1, P, PARAMETERS>;
 
 /// Solves `task` on `model` from the assembly `guess` (without one, each
 /// start's design is assembled by the search for its modes), by `search`,
 /// calling `on_start` as each start ends and stopping once `cancelled`
 /// says so; every design returned is certified. No design found is not an error here (a shard may find
 /// none): see [`NoDesign::of`].
-pub fn design<const M: usize>(
-    model: &DesignView<M>,
+pub fn design<const M: usize, const P: usize>(
+    model: &DesignView<M, P>,
     guess: Option<SVector<f64, M>>,
     task: &DesignTask,
     search: &Search,
     on_start: &(dyn Fn() + Sync),
     cancelled: &(dyn Fn() -> bool + Sync),
-) -> Result<Synthesis<DesignView<M>, M>, SynthesisError> {
+) -> Result<Synthesis<DesignView<M, P>, M>, SynthesisError> {
     let (problem, over) = match &task.targets {
         Targets::Path {
             point,

@@ -61,14 +61,15 @@ impl fmt::Display for SizeError {
 
 impl std::error::Error for SizeError {}
 
-/// Work to do on a mechanism at its sizes.
+/// Work to do on a mechanism at its sizes, with room for `P` named
+/// points (one of [`ROOMS`]).
 pub trait Job {
     type Output;
     /// Its errors, which a size the list lacks is one of.
     type Error: From<SizeError>;
-    fn run<const M: usize, const F: usize>(
+    fn run<const M: usize, const F: usize, const P: usize>(
         self,
-        mechanism: Fixed<M, F>,
+        mechanism: Fixed<M, F, P>,
     ) -> Result<Self::Output, Self::Error>;
 }
 
@@ -78,9 +79,9 @@ pub trait Job {
 pub trait SensitivityJob {
     type Output;
     type Error: From<SizeError>;
-    fn run<const M: usize, const F: usize>(
+    fn run<const M: usize, const F: usize, const P: usize>(
         self,
-        mechanism: Fixed<M, F, 32, PARAMETERS>,
+        mechanism: Fixed<M, F, P, PARAMETERS>,
     ) -> Result<Self::Output, Self::Error>;
 }
 
@@ -89,9 +90,9 @@ pub trait SensitivityJob {
 pub trait DesignJob {
     type Output;
     type Error: From<SizeError>;
-    fn run<const M: usize>(
+    fn run<const M: usize, const P: usize>(
         self,
-        mechanism: Fixed<M, 1, 32, PARAMETERS>,
+        mechanism: Fixed<M, 1, P, PARAMETERS>,
     ) -> Result<Self::Output, Self::Error>;
 }
 
@@ -100,6 +101,16 @@ pub trait DesignJob {
 /// analyses and the synthesis once more), the columns of the parameters
 /// not chosen zero.
 pub const PARAMETERS: usize = 16;
+
+/// The room for named points a job's view has: the first that holds the
+/// mechanism's points. A view copies its point sets whole at every pose
+/// and sensitivity (`K` columns of them), so room for 32 where a
+/// mechanism has 3 costs the synthesis of a four-bar 1.8× its time; each
+/// room instantiates every job once more.
+pub const ROOMS: [usize; 2] = [8, 32];
+
+/// The most named points a mechanism may have here.
+pub const POINTS: usize = ROOMS[ROOMS.len() - 1];
 
 /// The sizes (m, f) this tool is built for.
 pub const SIZES: &[(usize, usize)] = &[
@@ -143,10 +154,11 @@ macro_rules! with_one_driver {
 /// mechanism's m.
 macro_rules! at_m {
     ($mechanism:expr, $job:expr, $view:ident $arguments:tt; $($m:literal),*) => {
-        match ($mechanism.m(), $mechanism.f()) {
-            $(($m, 1) => $job.run($view::<$m, 1> $arguments ?),)*
-            (_, f) if f != 1 => Err(SizeError::NotOneDriver { f }.into()),
-            (m, f) => Err(SizeError::NotListed { m, f }.into()),
+        match ($mechanism.m(), $mechanism.f(), room($mechanism)) {
+            $(($m, 1, 8) => $job.run($view::<$m, 1, 8> $arguments ?),
+              ($m, 1, _) => $job.run($view::<$m, 1, 32> $arguments ?),)*
+            (_, f, _) if f != 1 => Err(SizeError::NotOneDriver { f }.into()),
+            (m, f, _) => Err(SizeError::NotListed { m, f }.into()),
         }
     };
 }
@@ -155,25 +167,38 @@ macro_rules! at_m {
 /// mechanism's sizes.
 macro_rules! at_sizes {
     ($mechanism:expr, $job:expr, $view:ident $arguments:tt; $(($m:literal, $f:literal)),*) => {
-        match ($mechanism.m(), $mechanism.f()) {
-            $(($m, $f) => $job.run($view::<$m, $f> $arguments ?),)*
-            (m, f) => Err(SizeError::NotListed { m, f }.into()),
+        match ($mechanism.m(), $mechanism.f(), room($mechanism)) {
+            $(($m, $f, 8) => $job.run($view::<$m, $f, 8> $arguments ?),
+              ($m, $f, _) => $job.run($view::<$m, $f, 32> $arguments ?),)*
+            (m, f, _) => Err(SizeError::NotListed { m, f }.into()),
         }
     };
 }
 
-/// The mechanism at m = `M`, f = `F`.
-fn fixed<const M: usize, const F: usize>(mechanism: &Mechanism) -> Result<Fixed<M, F>, SizeError> {
-    mechanism.fixed::<M, F>().map_err(SizeError::View)
+/// The room of [`ROOMS`] for the mechanism's named points (the largest
+/// if none holds them: the view then says how many it has).
+fn room(mechanism: &Mechanism) -> usize {
+    let points = mechanism.point_names().len();
+    (ROOMS.into_iter())
+        .find(|&room| points <= room)
+        .unwrap_or(POINTS)
 }
 
-/// The mechanism at m = `M`, f = `F`, differentiated by `names`.
-fn sensitive<const M: usize, const F: usize>(
+/// The mechanism at m = `M`, f = `F`, with room for `P` points.
+fn fixed<const M: usize, const F: usize, const P: usize>(
+    mechanism: &Mechanism,
+) -> Result<Fixed<M, F, P>, SizeError> {
+    mechanism.fixed_with::<M, F, P>().map_err(SizeError::View)
+}
+
+/// The mechanism at m = `M`, f = `F`, with room for `P` points,
+/// differentiated by `names`.
+fn sensitive<const M: usize, const F: usize, const P: usize>(
     mechanism: &Mechanism,
     names: &[&str],
-) -> Result<Fixed<M, F, 32, PARAMETERS>, SizeError> {
+) -> Result<Fixed<M, F, P, PARAMETERS>, SizeError> {
     mechanism
-        .differentiated_by::<M, F, 32, PARAMETERS>(names)
+        .differentiated_by::<M, F, P, PARAMETERS>(names)
         .map_err(SizeError::View)
 }
 
@@ -231,12 +256,49 @@ mod tests {
     impl Job for Sizes {
         type Output = (usize, usize);
         type Error = SizeError;
-        fn run<const M: usize, const F: usize>(
+        fn run<const M: usize, const F: usize, const P: usize>(
             self,
-            _: Fixed<M, F>,
+            _: Fixed<M, F, P>,
         ) -> Result<(usize, usize), SizeError> {
             Ok((M, F))
         }
+    }
+
+    struct Room;
+    impl Job for Room {
+        type Output = usize;
+        type Error = SizeError;
+        fn run<const M: usize, const F: usize, const P: usize>(
+            self,
+            _: Fixed<M, F, P>,
+        ) -> Result<usize, SizeError> {
+            Ok(P)
+        }
+    }
+
+    /// A four-bar with `n` named points.
+    fn with_points(n: usize) -> Mechanism {
+        let points: Vec<String> = (0..n).map(|k| format!("P{k} = ({k} * l, 0)")).collect();
+        let text = format!(
+            "u = [x], v = [t], points = [{}], closure = [x - l * t]",
+            points.join(", ")
+        );
+        Mechanism::from_text("Points", &text, &[("l", 1.0)]).unwrap()
+    }
+
+    /// The match's rooms are those of [`ROOMS`]: each mechanism runs in
+    /// the first that holds its points, and one with more than the
+    /// largest holds is refused by its view, saying how many it has.
+    #[test]
+    fn each_mechanism_runs_in_the_first_room_that_holds_its_points() {
+        for n in [0, 1, 7, 8, 9, 31, 32] {
+            let room = ROOMS.into_iter().find(|&r| n <= r).unwrap();
+            assert_eq!(run(&with_points(n), Room).unwrap(), room, "{n} points");
+        }
+        let Err(SizeError::View(error)) = run(&with_points(POINTS + 1), Room) else {
+            panic!("{} points have no room", POINTS + 1);
+        };
+        assert!(error.to_string().contains("33"), "{error}");
     }
 
     /// The list says what the match does: every listed size dispatches to
@@ -268,7 +330,10 @@ mod tests {
     impl DesignJob for Design {
         type Output = usize;
         type Error = SizeError;
-        fn run<const M: usize>(self, _: Fixed<M, 1, 32, PARAMETERS>) -> Result<usize, SizeError> {
+        fn run<const M: usize, const P: usize>(
+            self,
+            _: Fixed<M, 1, P, PARAMETERS>,
+        ) -> Result<usize, SizeError> {
             Ok(M)
         }
     }

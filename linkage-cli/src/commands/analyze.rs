@@ -17,7 +17,10 @@ struct Analyze<'a> {
 impl Job for Analyze<'_> {
     type Output = Table;
     type Error = Failure;
-    fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<Table, Failure> {
+    fn run<const M: usize, const F: usize, const P: usize>(
+        self,
+        model: Fixed<M, F, P>,
+    ) -> Result<Table, Failure> {
         let (drives, pose) = self.loaded.analysed(&model)?;
         let unit = &self.loaded.file().length_unit;
         let mut table = Table::new(

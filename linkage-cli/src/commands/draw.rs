@@ -18,7 +18,10 @@ struct Picture<'a> {
 impl Job for Picture<'_> {
     type Output = String;
     type Error = Failure;
-    fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<String, Failure> {
+    fn run<const M: usize, const F: usize, const P: usize>(
+        self,
+        model: Fixed<M, F, P>,
+    ) -> Result<String, Failure> {
         let (drives, pose) = self.loaded.analysed(&model)?;
         let frame = Frame::from_analysis(&model, &pose);
         let mut cycle = Vec::new();

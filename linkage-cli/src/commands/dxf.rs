@@ -21,9 +21,9 @@ type Positions = Vec<(String, [f64; 2])>;
 impl Job for Pose<'_> {
     type Output = (Positions, Vec<Positions>);
     type Error = Failure;
-    fn run<const M: usize, const F: usize>(
+    fn run<const M: usize, const F: usize, const P: usize>(
         self,
-        model: Fixed<M, F>,
+        model: Fixed<M, F, P>,
     ) -> Result<Self::Output, Failure> {
         let (drives, pose) = self.loaded.analysed(&model)?;
         let names = model.point_names();

@@ -32,7 +32,10 @@ struct Find<'a> {
 impl Job for Find<'_> {
     type Output = Table;
     type Error = Failure;
-    fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<Table, Failure> {
+    fn run<const M: usize, const F: usize, const P: usize>(
+        self,
+        model: Fixed<M, F, P>,
+    ) -> Result<Table, Failure> {
         let written: Vec<String> = if self.watches.is_empty() {
             model.u_names().iter().map(|n| n.to_string()).collect()
         } else {

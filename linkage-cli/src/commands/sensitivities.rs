@@ -18,9 +18,9 @@ struct Differentiate<'a> {
 impl SensitivityJob for Differentiate<'_> {
     type Output = Table;
     type Error = Failure;
-    fn run<const M: usize, const F: usize>(
+    fn run<const M: usize, const F: usize, const P: usize>(
         self,
-        model: Fixed<M, F, 32, PARAMETERS>,
+        model: Fixed<M, F, P, PARAMETERS>,
     ) -> Result<Table, Failure> {
         let (drives, pose) = self.loaded.analysed(&model)?;
         let s = model

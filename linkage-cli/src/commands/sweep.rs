@@ -20,7 +20,10 @@ struct Poses<'a> {
 impl Job for Poses<'_> {
     type Output = Table;
     type Error = Failure;
-    fn run<const M: usize, const F: usize>(self, model: Fixed<M, F>) -> Result<Table, Failure> {
+    fn run<const M: usize, const F: usize, const P: usize>(
+        self,
+        model: Fixed<M, F, P>,
+    ) -> Result<Table, Failure> {
         let unit = self.loaded.file().length_unit.clone();
         let mut columns: Vec<(String, String)> = Vec::new();
         for name in model.v_names() {

@@ -66,7 +66,10 @@ struct Design<'a> {
 impl DesignJob for Design<'_> {
     type Output = Table;
     type Error = Failure;
-    fn run<const M: usize>(self, model: Fixed<M, 1, 32, PARAMETERS>) -> Result<Table, Failure> {
+    fn run<const M: usize, const P: usize>(
+        self,
+        model: Fixed<M, 1, P, PARAMETERS>,
+    ) -> Result<Table, Failure> {
         let args = self.args;
         let drives = self.loaded.drives(&model)?;
         let guess = self.loaded.assembled(&model, &drives.at)?;

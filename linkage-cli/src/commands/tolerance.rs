@@ -34,9 +34,9 @@ fn output<const M: usize, const F: usize, const K: usize>(
 impl SensitivityJob for Spread<'_> {
     type Output = Table;
     type Error = Failure;
-    fn run<const M: usize, const F: usize>(
+    fn run<const M: usize, const F: usize, const P: usize>(
         self,
-        model: Fixed<M, F, 32, PARAMETERS>,
+        model: Fixed<M, F, P, PARAMETERS>,
     ) -> Result<Table, Failure> {
         let args = self.args;
         let written: Vec<String> = if args.quantities.is_empty() {
