@@ -201,6 +201,30 @@ pub struct Synthesis<L, const M: usize> {
     pub starts: usize,
 }
 
+impl<L, const M: usize> Synthesis<L, M> {
+    /// Puts a later piece of the same search after this one (the starts
+    /// that follow, as [`Search::first`] splits a search): its designs
+    /// after these, a design found again dropped by the rule of
+    /// [`Search::distinct`], its refused candidates, failed starts and
+    /// starts added. Pieces absorbed in the order of their starts give
+    /// the designs of the whole search run at once, row for row.
+    pub fn absorb<const K: usize>(&mut self, problem: &Problem<L, M, K>, later: Synthesis<L, M>)
+    where
+        L: Sensitivities<M, 1, K>,
+    {
+        for candidate in later.designs {
+            if !(self.designs.iter()).any(|d| same_design(problem, d, &candidate)) {
+                self.designs.push(candidate);
+            }
+        }
+        self.designs
+            .sort_by(|a, b| a.rms_error.total_cmp(&b.rms_error));
+        self.refused.extend(later.refused);
+        self.failed_starts += later.failed_starts;
+        self.starts += later.starts;
+    }
+}
+
 /// Solves `problem` from `search.starts` random starts in parallel and
 /// certifies every result against `requirements` (or from as many rounds
 /// of them as it takes to certify [`Search::enough`] designs).

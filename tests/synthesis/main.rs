@@ -453,6 +453,41 @@ fn shards_of_a_search_put_together_are_the_whole_search() {
     assert!(distinct.designs.iter().all(|d| all.designs.contains(d)));
 }
 
+/// Pieces of a distinct search absorbed one after the other
+/// (`Synthesis::absorb`) are the whole distinct search, row for row: a
+/// design found again in a later piece dropped as the whole search drops
+/// it.
+#[test]
+fn pieces_absorbed_in_order_are_the_whole_distinct_search() {
+    let (targets, _) = worksheet_targets();
+    let problem = g3_path(AWAY, &targets, WIDE);
+    let whole = Search {
+        starts: 24,
+        random_state: 7,
+        ..Search::default()
+    };
+    let all = synthesize(&problem, &transmission(30.0), &whole).unwrap();
+    let mut pieces = None::<linkage::synthesis::Synthesis<_, 2>>;
+    let mut found_in_pieces = 0;
+    for (first, starts) in [(0, 5), (5, 11), (16, 8)] {
+        let piece = Search {
+            first,
+            starts,
+            ..whole
+        };
+        let part = synthesize(&problem, &transmission(30.0), &piece).unwrap();
+        found_in_pieces += part.designs.len();
+        match pieces.as_mut() {
+            None => pieces = Some(part),
+            Some(found) => found.absorb(&problem, part),
+        }
+    }
+    let pieces = pieces.unwrap();
+    // A design found in more than one piece, kept once.
+    assert!(found_in_pieces > all.designs.len(), "{found_in_pieces}");
+    assert_eq!(pieces, all);
+}
+
 /// A search told to stop ends with `Cancelled` once the starts under way
 /// are done, and starts no more.
 #[test]
