@@ -148,7 +148,8 @@ pub use drives::Drives;
 pub use equations::Equations;
 pub use error::{FileError, FileErrors, ReadError};
 pub use loaded::{
-    Cause, FixedAnalysis, FixedDrives, LoadError, Loaded, Located, Swept, at_text, read_text,
+    Cause, DxfChoice, DxfError, FixedAnalysis, FixedDrives, LoadError, Loaded, Located, Positions,
+    Swept, at_text, read_text,
 };
 pub use names::Name;
 pub(crate) use names::not_an_identifier;

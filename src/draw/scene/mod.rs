@@ -118,12 +118,14 @@ mod markers;
 mod motion;
 mod notes;
 mod overlay;
+mod placement;
 mod sheet;
 mod style;
 mod symbols;
 
 pub use curves::Curve;
 pub use markers::{MarkerShape, Markers};
+pub use placement::Placement;
 pub use sheet::Sheet;
 
 use crate::error::{NameKind, UnknownName};

@@ -20,9 +20,11 @@
 //! ```
 
 mod drive;
+mod dxf;
 mod error;
 
 pub use drive::{FixedAnalysis, FixedDrives, Swept, at_text};
+pub use dxf::{DxfChoice, DxfError, Positions};
 pub use error::{Cause, LoadError, Located};
 
 use super::{MechanismFile, TopologyFile, is_topology};
