@@ -37,6 +37,10 @@ pub enum Command {
     /// paths), or with `--cut-sheet` every moving link laid flat and
     /// labelled.
     Dxf(DxfArgs),
+    /// Serves the page (a mechanism in the browser: `web/`, its engine
+    /// built by `web/build.sh`) to this machine's browser, on the loopback
+    /// interface only.
+    Serve(ServeArgs),
     /// Reads a mechanism of another tool (a pyslvs expression, pylinkage's
     /// JSON) and writes it as a topology file.
     Import(ImportArgs),
@@ -85,6 +89,17 @@ pub struct DxfArgs {
     /// The pins' holes' diameter (default: two fifths of the width).
     #[arg(long)]
     pub hole: Option<f64>,
+}
+
+/// `serve`'s arguments.
+#[derive(Debug, Args)]
+pub struct ServeArgs {
+    /// The page's folder.
+    #[arg(default_value = "web")]
+    pub dir: PathBuf,
+    /// The port on 127.0.0.1 (0: any free one, printed).
+    #[arg(long, default_value_t = 8000)]
+    pub port: u16,
 }
 
 /// The formats of other tools.

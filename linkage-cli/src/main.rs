@@ -22,6 +22,7 @@ fn main() -> ExitCode {
         Command::Check(input) => commands::check::run(input),
         Command::Equations(input) => commands::equations::run(input),
         Command::Dxf(args) => commands::dxf::run(args),
+        Command::Serve(args) => commands::serve::run(args),
         Command::Import(args) => commands::import::run(args),
         Command::Export(args) => commands::export::run(args),
         Command::Analyze(args) => commands::analyze::run(args),

@@ -779,3 +779,60 @@ fn with_input(args: &[&str], input: &str) -> Output {
         .unwrap();
     child.wait_with_output().unwrap()
 }
+
+/// `linkage serve` answers a browser's requests for the page's files on
+/// the loopback interface, with their content types, and nothing outside
+/// its folder; a folder without the built engine is refused with the
+/// command that builds it.
+#[test]
+fn serve_gives_the_pages_files_and_nothing_else() {
+    use std::io::{BufRead, BufReader, Read};
+    let dir = std::env::temp_dir().join(format!("linkage-serve-test-{}", std::process::id()));
+    std::fs::create_dir_all(dir.join("pkg")).unwrap();
+    std::fs::write(dir.join("index.html"), "<!doctype html><title>page</title>").unwrap();
+    let refused = run(&["serve", dir.to_str().unwrap(), "--port", "0"]);
+    assert_eq!(refused.status.code(), Some(1));
+    assert!(
+        text(&refused.stderr).contains("web/build.sh"),
+        "{}",
+        text(&refused.stderr)
+    );
+    std::fs::write(dir.join("pkg/linkage_web_bg.wasm"), b"\0asm\x01\0\0\0").unwrap();
+    let mut server = tool()
+        .args(["serve", dir.to_str().unwrap(), "--port", "0"])
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut first = String::new();
+    BufReader::new(server.stderr.take().unwrap())
+        .read_line(&mut first)
+        .unwrap();
+    let address = first
+        .split("http://")
+        .nth(1)
+        .and_then(|rest| rest.split('/').next())
+        .unwrap_or_else(|| panic!("no address in {first:?}"))
+        .to_owned();
+    let get = |path: &str| -> String {
+        let mut stream = std::net::TcpStream::connect(&address).unwrap();
+        write!(stream, "GET {path} HTTP/1.1\r\nHost: {address}\r\n\r\n").unwrap();
+        let mut answer = Vec::new();
+        stream.read_to_end(&mut answer).unwrap();
+        String::from_utf8_lossy(&answer).into_owned()
+    };
+    let page = get("/?selftest");
+    let wasm = get("/pkg/linkage_web_bg.wasm");
+    let outside = get("/../Cargo.toml");
+    let missing = get("/nothing.js");
+    server.kill().unwrap();
+    server.wait().unwrap();
+    std::fs::remove_dir_all(&dir).unwrap();
+    assert!(page.starts_with("HTTP/1.1 200 OK\r\n"), "{page}");
+    assert!(page.contains("Content-Type: text/html") && page.ends_with("<title>page</title>"));
+    assert!(
+        wasm.contains("Content-Type: application/wasm\r\n")
+            && wasm.contains("Content-Length: 8\r\n")
+    );
+    assert!(outside.starts_with("HTTP/1.1 404"), "{outside}");
+    assert!(missing.starts_with("HTTP/1.1 404"), "{missing}");
+}

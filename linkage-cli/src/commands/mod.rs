@@ -10,6 +10,7 @@ pub mod export;
 pub mod extremes;
 pub mod import;
 pub mod sensitivities;
+pub mod serve;
 pub mod sweep;
 pub mod synthesize;
 pub mod tolerance;
