@@ -10,6 +10,8 @@ let drive = null;
 let info = null;
 let sweep = null;
 let current = 0;
+// Where the picture puts the model (for a click read as a point).
+let placement = null;
 
 function status(text, error = false) {
   $("status").textContent = text;
@@ -58,18 +60,22 @@ function plot() {
 function draw(value) {
   if (!mechanism) return;
   current = value;
-  const v = [value];
+  // The slider moves the first driver; any other stays at its `at`.
+  const v = [value, ...drive.at.slice(1)];
   $("driver-value").textContent = `${info.vNames[0]} = ${v[0].toFixed(6)}`;
   try {
     const started = performance.now();
     const pose = JSON.parse(mechanism.analyze(v));
-    $("picture").innerHTML = mechanism.svg(640, v);
+    const picture = JSON.parse(mechanism.picture(640, v, JSON.stringify(targets())));
+    $("picture").innerHTML = picture.svg;
+    placement = picture.placement;
     const took = performance.now() - started;
     const rows = info.uNames.map((n, k) =>
       `<tr><th scope="row">${n}</th><td>${pose.u[k].toPrecision(10)}</td>` +
       `<td>${pose.udot[k].toPrecision(8)}</td><td>${pose.uddot[k].toPrecision(8)}</td></tr>`);
     $("pose").innerHTML = "<tr><th></th><th>value</th><th>velocity</th><th>acceleration</th></tr>" + rows.join("");
     status(took > 0 ? `pose and picture in ${took.toFixed(1)} ms` : "pose and picture drawn");
+    showSensitivities(v);
     const cursor = document.getElementById("cursor");
     if (cursor) plot();
     document.body.dataset.pose = JSON.stringify(pose);
@@ -77,6 +83,16 @@ function draw(value) {
     status(e.message, true);
     document.body.dataset.error = e.message;
   }
+}
+
+function resweep() {
+  try {
+    sweep = JSON.parse(mechanism.sweep(0));
+  } catch (e) {
+    sweep = null;
+    $("events").innerHTML = `<li>${e.message}</li>`;
+  }
+  plot();
 }
 
 function showMistakes(text) {
@@ -123,12 +139,9 @@ function open(text) {
       ...info.uNames.map((n, k) => `<option value="uddot:${k}">${n}'' (acceleration)</option>`),
       `<option value="transmission">transmission angle (deg)</option>`,
     ].join("");
-    try {
-      sweep = JSON.parse(mechanism.sweep(0));
-    } catch (e) {
-      sweep = null;
-      $("events").innerHTML = `<li>${e.message}</li>`;
-    }
+    resweep();
+    dimensionsPanel();
+    designPanel();
     draw(drive.at[0]);
     plot();
   } catch (e) {
@@ -159,6 +172,249 @@ $("editor").addEventListener("input", () => {
 $("driver").addEventListener("input", () => draw(Number($("driver").value)));
 $("quantity").addEventListener("change", plot);
 
+// The dimensions: each parameter's value, edited in place; and the exact
+// sensitivities of the pose at the driver's value.
+function dimensionsPanel() {
+  $("dimensions").innerHTML = info.parameterNames.map((n, k) =>
+    `<tr><td><label for="dim-${k}">${n}</label></td>` +
+    `<td><input type="number" step="any" id="dim-${k}" value="${info.parameters[k]}"></td></tr>`).join("");
+  info.parameterNames.forEach((n, k) => {
+    $(`dim-${k}`).addEventListener("change", () => setDimension(n, Number($(`dim-${k}`).value)));
+  });
+}
+function setDimension(name, value) {
+  try {
+    mechanism.setParameter(name, value);
+  } catch (e) {
+    status(`${name}: ${e.message}`, true);
+    document.body.dataset.dimensionRefused = e.message;
+    return false;
+  }
+  info = JSON.parse(mechanism.info());
+  const k = info.parameterNames.indexOf(name);
+  if (k >= 0 && $(`dim-${k}`) && document.activeElement !== $(`dim-${k}`)) $(`dim-${k}`).value = String(value);
+  resweep();
+  draw(current);
+  return true;
+}
+function showSensitivities(v) {
+  let s;
+  try {
+    s = JSON.parse(mechanism.sensitivities(v));
+  } catch (e) {
+    $("sensitivities").innerHTML = `<tr><td>${e.message}</td></tr>`;
+    return;
+  }
+  const head = `<tr><th></th>${s.parameters.map((p) => `<th scope="col">∂/∂${p}</th>`).join("")}</tr>`;
+  const rows = info.uNames.map((n, i) =>
+    `<tr><th scope="row">${n}</th>${s.u[i].map((x) => `<td>${x.toPrecision(6)}</td>`).join("")}</tr>`);
+  $("sensitivities").innerHTML = head + rows.join("");
+  document.body.dataset.sensitivities = JSON.stringify(s.u);
+}
+// A ground pivot J of a mechanism given by joints and links is the
+// parameters x_J and y_J: dragged on the picture, it moves them.
+let dragging = null;
+function pivotNear(event) {
+  const svg = $("picture").querySelector("svg");
+  if (!svg || !placement) return null;
+  const p = new DOMPoint(event.clientX, event.clientY).matrixTransform(svg.getScreenCTM().inverse());
+  const px = (k) => info.parameters[info.parameterNames.indexOf(k)];
+  for (const name of info.parameterNames) {
+    if (!name.startsWith("x_") || !info.parameterNames.includes(`y_${name.slice(2)}`)) continue;
+    const [x, y] = [px(name), px(`y_${name.slice(2)}`)];
+    const sx = (x - placement.origin[0]) * placement.scale;
+    const sy = placement.top + (placement.origin[1] - y) * placement.scale;
+    if (Math.hypot(sx - p.x, sy - p.y) < 12) return name.slice(2);
+  }
+  return null;
+}
+// The model point under the pointer, by the picture's map to the screen
+// and to the model taken when the drag began (the picture redrawn under
+// the pointer may be scaled anew: the pivot follows the pointer).
+function modelAt(event, map) {
+  const p = new DOMPoint(event.clientX, event.clientY).matrixTransform(map.screen);
+  const placed = map.placement;
+  return [placed.origin[0] + p.x / placed.scale, placed.origin[1] - (p.y - placed.top) / placed.scale];
+}
+$("picture").addEventListener("pointerdown", (event) => {
+  const joint = mechanism && pivotNear(event);
+  if (!joint) return;
+  const svg = $("picture").querySelector("svg");
+  dragging = { joint, map: { placement: { ...placement }, screen: svg.getScreenCTM().inverse() } };
+  $("picture").classList.add("dragging");
+  $("picture").setPointerCapture(event.pointerId);
+  event.preventDefault();
+});
+$("picture").addEventListener("pointermove", (event) => {
+  if (!dragging) return;
+  const [x, y] = modelAt(event, dragging.map);
+  mechanism.setParameter(`x_${dragging.joint}`, x);
+  if (!setDimension(`y_${dragging.joint}`, y)) return;
+  document.body.dataset.dragged = `${dragging.joint} ${x} ${y}`;
+});
+// A drag ends in a click, which places no target.
+let dragged = false;
+const endDrag = () => {
+  dragged = dragging !== null;
+  dragging = null;
+  $("picture").classList.remove("dragging");
+};
+$("picture").addEventListener("pointerup", endDrag);
+$("picture").addEventListener("pointercancel", endDrag);
+
+// The design panel: targets typed or clicked, the free parameters with
+// their bounds, a search in a worker with its progress, the certified
+// designs to browse and use.
+function targets() {
+  const lines = $("design-targets").value.split("\n").map((l) => l.trim()).filter((l) => l);
+  const points = [];
+  for (const line of lines) {
+    const xy = line.split(/[,\s]+/).map(Number);
+    if (xy.length !== 2 || !xy.every(Number.isFinite)) return points;
+    points.push(xy);
+  }
+  return points;
+}
+function targetsError() {
+  const lines = $("design-targets").value.split("\n").map((l) => l.trim()).filter((l) => l);
+  const bad = lines.findIndex((line) => {
+    const xy = line.split(/[,\s]+/).map(Number);
+    return xy.length !== 2 || !xy.every(Number.isFinite);
+  });
+  return bad < 0 ? null : `target line ${bad + 1} is not two finite numbers x, y: "${lines[bad]}"`;
+}
+function designPanel() {
+  $("design-point").innerHTML = info.pointNames.map((n) => `<option>${n}</option>`).join("");
+  const last = info.pointNames[info.pointNames.length - 1];
+  if (last) $("design-point").value = last;
+  freeBounds();
+  $("designs").innerHTML = "";
+  $("design-status").textContent = "";
+}
+// Each parameter free by default, within its value ± the larger of its
+// size and the targets' extent.
+function freeBounds() {
+  const t = targets();
+  const xs = t.map((p) => p[0]), ys = t.map((p) => p[1]);
+  const extent = t.length > 1 ? Math.hypot(Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys)) : 1;
+  $("design-free-table").innerHTML = info.parameterNames.map((n, k) => {
+    const value = info.parameters[k];
+    const reach = Math.max(Math.abs(value), extent);
+    const fmt = (x) => Number(x.toPrecision(6));
+    return `<tr><td><input type="checkbox" id="free-${k}" checked aria-label="${n} free"></td>` +
+      `<td><label for="free-${k}">${n}</label></td>` +
+      `<td><input type="number" id="lower-${k}" value="${fmt(value - reach)}" aria-label="${n}'s lower bound"></td>` +
+      `<td><input type="number" id="upper-${k}" value="${fmt(value + reach)}" aria-label="${n}'s upper bound"></td></tr>`;
+  }).join("");
+}
+function task() {
+  const free = info.parameterNames.flatMap((n, k) => $(`free-${k}`).checked
+    ? [[n, Number($(`lower-${k}`).value), Number($(`upper-${k}`).value)]] : []);
+  const angle = $("design-transmission").value;
+  return { point: $("design-point").value, targets: targets(), free, seed: 1,
+    minTransmission: angle === "" ? null : Number(angle) };
+}
+let worker = null;
+let watchdog = null;
+let found = null;
+let chosen = -1;
+function designStatus(text, error = false) {
+  $("design-status").textContent = text;
+  $("design-status").className = error ? "error" : "";
+}
+function showDesigns() {
+  const ds = found ? found.designs : [];
+  const rows = ds.map((d, k) => {
+    const c = d.certificate;
+    return `<tr${k === chosen ? ' class="chosen"' : ""}><td>${k + 1}</td><td>${d.largestError.toExponential(1)}</td>` +
+      `<td>${c ? c.transmission.toFixed(1) + "°" : ""}</td><td>${d.start}</td>` +
+      `<td><button type="button" data-design="${k}">Use</button></td></tr>`;
+  });
+  $("designs").innerHTML = ds.length
+    ? `<tr><th>#</th><th>largest miss</th><th>smallest transmission</th><th>start</th><th></th></tr>${rows.join("")}` : "";
+  for (const b of $("designs").querySelectorAll("button[data-design]")) {
+    b.addEventListener("click", () => useDesign(Number(b.dataset.design)));
+  }
+  document.body.dataset.designs = String(ds.length);
+}
+// A design's parameters given to the page's mechanism, and everything
+// redrawn: the pose, the paths, the plot.
+function useDesign(k) {
+  const d = found.designs[k];
+  for (const [name, value] of Object.entries(d.parameters)) mechanism.setParameter(name, value);
+  info = JSON.parse(mechanism.info());
+  dimensionsPanel();
+  chosen = k;
+  resweep();
+  draw(current);
+  showDesigns();
+  designStatus(`design ${k + 1} in use: it misses its targets by at most ${d.largestError.toExponential(1)}, ` +
+    `its transmission angle at least ${d.certificate.transmission.toFixed(1)}° over the turn`);
+  document.body.dataset.used = JSON.stringify(d.parameters);
+}
+function finished(text, error = false) {
+  clearTimeout(watchdog);
+  $("design-run").disabled = false;
+  $("design-stop").disabled = true;
+  designStatus(text, error);
+  document.body.dataset.designDone = text;
+}
+function startWorker() {
+  worker = new Worker("worker.js", { type: "module" });
+  worker.onmessage = (event) => {
+    const m = event.data;
+    if (m.type === "error") { finished(m.message, true); return; }
+    found = m.found;
+    $("design-progress").value = m.done / m.of;
+    showDesigns();
+    const none = found.designs.length === 0 && found.why ? ` (${found.why})` : "";
+    const summary = `${m.done} of ${m.of} starts, ${found.designs.length} certified designs, ${(m.ms / 1000).toFixed(1)} s${none}`;
+    if (m.type === "progress") designStatus(summary);
+    else finished(m.type === "stopped" ? `stopped after ${summary}` : `done: ${summary}`);
+  };
+  worker.onerror = (e) => finished(`the search failed: ${e.message}`, true);
+}
+$("design-run").addEventListener("click", () => {
+  if (!mechanism) return;
+  const bad = targetsError();
+  if (bad) { designStatus(bad, true); return; }
+  if (!worker) startWorker();
+  found = null;
+  chosen = -1;
+  showDesigns();
+  const starts = Number($("design-starts").value);
+  $("design-run").disabled = true;
+  $("design-stop").disabled = false;
+  designStatus("searching…");
+  worker.postMessage({ type: "start", text: $("editor").value, task: task(), starts });
+});
+$("design-stop").addEventListener("click", () => {
+  worker.postMessage({ type: "stop" });
+  // A piece that outlasts a second: the worker ended, what it found kept.
+  watchdog = setTimeout(() => {
+    worker.terminate();
+    worker = null;
+    finished(`stopped: ${found ? found.designs.length : 0} certified designs kept`);
+  }, 1000);
+});
+$("design-clear").addEventListener("click", () => {
+  $("design-targets").value = "";
+  draw(current);
+});
+$("design-targets").addEventListener("change", () => draw(current));
+$("picture").addEventListener("click", (event) => {
+  if (dragged) { dragged = false; return; }
+  const svg = $("picture").querySelector("svg");
+  if (!svg || !placement) return;
+  const p = new DOMPoint(event.clientX, event.clientY).matrixTransform(svg.getScreenCTM().inverse());
+  const x = placement.origin[0] + p.x / placement.scale;
+  const y = placement.origin[1] - (p.y - placement.top) / placement.scale;
+  const text = $("design-targets").value.trim();
+  $("design-targets").value = `${text ? text + "\n" : ""}${Number(x.toPrecision(6))}, ${Number(y.toPrecision(6))}`;
+  draw(current);
+});
+$("picture").classList.add("placing");
+
 // Exports: what is shown, as files; the editor's text in the page's link.
 function save(name, type, text) {
   const url = URL.createObjectURL(new Blob([text], { type }));
@@ -183,7 +439,15 @@ function link() {
   return `${location.href.split("#")[0]}#file=${encodeURIComponent(encode($("editor").value))}`;
 }
 $("save-svg").addEventListener("click", () => mechanism &&
-  save(`${info.name}.svg`, "image/svg+xml", mechanism.svg(640, [current])));
+  save(`${info.name}.svg`, "image/svg+xml", mechanism.svg(640, [current, ...drive.at.slice(1)])));
+$("save-dxf").addEventListener("click", () => {
+  if (!mechanism) return;
+  try {
+    save(`${info.name}.dxf`, "application/dxf", mechanism.dxf(false));
+  } catch (e) {
+    status(e.message, true);
+  }
+});
 $("save-csv").addEventListener("click", () => sweep && save(`${info.name}.csv`, "text/csv", sweepCsv()));
 $("save-file").addEventListener("click", () =>
   save(`${info ? info.name : "mechanism"}.toml`, "text/plain", $("editor").value));
@@ -212,7 +476,16 @@ $("import-pylinkage").addEventListener("click", () =>
   imported(() => importPylinkage($("import-text").value)));
 
 const start = files.find((x) => x.path === "four_bar.toml");
-const shared = location.hash.startsWith("#file=") ? decode(decodeURIComponent(location.hash.slice(6))) : null;
+const sharedText = () => location.hash.startsWith("#file=") ? decode(decodeURIComponent(location.hash.slice(6))) : null;
+const shared = sharedText();
+// A link pasted into the address bar of an open page opens its mechanism.
+addEventListener("hashchange", () => {
+  const text = sharedText();
+  if (text !== null && text !== $("editor").value) {
+    $("editor").value = text;
+    open(text);
+  }
+});
 $("library").value = start.path;
 $("editor").value = shared ?? start.text;
 open(shared ?? start.text);
@@ -232,10 +505,13 @@ if (params.has("selftest")) {
     "J[R, color[Green], P[80.0, 0.0], L[ground, L3]]]";
   const ok = imported(() => importPyslvs($("import-text").value, "[[0, 1]]", "Imported"));
   document.body.dataset.importedPyslvs = ok ? JSON.parse(mechanism.info()).uNames.join(",") : $("import-status").textContent;
+  // Joints and links draw for CAD; equations say why they do not.
+  document.body.dataset.dxfLayers = ok ? String((mechanism.dxf(false).match(/\nLAYER\n/g) || []).length) : "";
   const refused = imported(() => importPyslvs("M[J[nonsense", "[[0, 1]]", "Imported"));
   document.body.dataset.importRefused = refused ? "" : $("import-status").textContent;
   $("editor").value = start.text;
   open(start.text);
+  try { mechanism.dxf(false); } catch (e) { document.body.dataset.dxfRefused = e.message; }
   // What the exports write, and a link that opens the same text.
   document.body.dataset.csvRows = String(sweepCsv().trim().split("\n").length);
   $("quantity").value = "transmission";
@@ -261,4 +537,15 @@ if (params.has("timing")) {
   document.body.dataset.sixBarMs = String(times[12]);
   console.log(`six-bar: sweep of 720 poses and redraw, median of 25: ${times[12]} ms (${times[0]}–${times[24]})`);
 }
+// For the browser tests: the page's state, read, and its actions.
+window.linkagePage = {
+  get info() { return info; },
+  get sweep() { return sweep; },
+  get found() { return found; },
+  get placement() { return placement; },
+  get current() { return current; },
+  setDimension,
+  freeBounds,
+  draw,
+};
 document.body.dataset.ready = "yes";

@@ -5,9 +5,11 @@
 //! the text (for the editor to underline) and the message the command-line
 //! tool writes.
 
+mod design;
 mod library;
 mod mechanism;
 
+pub use design::WebDesign;
 pub use mechanism::WebMechanism;
 
 use linkage::file::{LoadError, Loaded};

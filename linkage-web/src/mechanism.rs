@@ -2,10 +2,10 @@
 //! asks of it — a pose with its vectors, a sweep of the drive range with
 //! the points' paths and the singular poses met, the picture.
 
-use linkage::draw::scene::Frame;
-use linkage::file::{FixedDrives, Loaded};
+use linkage::draw::scene::{Frame, MarkerShape, Markers, Placement, SceneError};
+use linkage::file::{DxfChoice, FixedDrives, Loaded};
 use linkage::mechanism::Fixed;
-use linkage::mechanism::sizes::{Job, SizeError, run};
+use linkage::mechanism::sizes::{Job, PARAMETERS, SensitivityJob, SizeError, run, run_sensitive};
 use linkage::prelude::*;
 use serde_json::{Value, json};
 use wasm_bindgen::prelude::*;
@@ -22,7 +22,14 @@ fn failed(error: impl std::fmt::Display) -> JsError {
 }
 
 /// Failures of the jobs, with their message.
-struct Failure(String);
+pub(crate) struct Failure(pub(crate) String);
+
+impl Failure {
+    /// A failure with `error`'s message.
+    pub(crate) fn of(error: impl std::fmt::Display) -> Failure {
+        Failure(error.to_string())
+    }
+}
 
 impl From<SizeError> for Failure {
     fn from(e: SizeError) -> Failure {
@@ -68,16 +75,7 @@ impl Job for Pose<'_> {
         model: Fixed<M, F, P>,
     ) -> Result<Value, Failure> {
         let drives = self.loaded.drives(&model)?;
-        let v = if self.v.is_empty() {
-            drives.at
-        } else if self.v.len() == F {
-            SVector::from_fn(|k, _| self.v[k])
-        } else {
-            return Err(Failure(format!(
-                "{} driver values for {F} drivers",
-                self.v.len()
-            )));
-        };
+        let v = drivers_or_at(&self.v, &drives)?;
         let u = self.loaded.assembled(&model, &v)?;
         let pose = model.analyze(
             &u,
@@ -148,26 +146,26 @@ impl Job for Poses<'_> {
 }
 
 /// The file's picture at the drivers' values `v` (its `at` if empty),
-/// with the points' paths over the drive range.
+/// with the points' paths over the drive range, the poses where the sweep
+/// meets a singular pose (a dead centre, a limit position) drawn faint
+/// behind it, and `targets` marked and numbered; with where it puts the
+/// model (for reading a click on it as a point).
 struct Picture<'a> {
     loaded: &'a Loaded,
     width: f64,
     v: Vec<f64>,
+    targets: &'a [[f64; 2]],
 }
 
 impl Job for Picture<'_> {
-    type Output = String;
+    type Output = (String, Placement);
     type Error = Failure;
     fn run<const M: usize, const F: usize, const P: usize>(
         self,
         model: Fixed<M, F, P>,
-    ) -> Result<String, Failure> {
+    ) -> Result<(String, Placement), Failure> {
         let drives = self.loaded.drives(&model)?;
-        let v = if self.v.len() == F {
-            SVector::from_fn(|k, _| self.v[k])
-        } else {
-            drives.at
-        };
+        let v = drivers_or_at(&self.v, &drives)?;
         let u = self.loaded.assembled(&model, &v)?;
         let pose = model.analyze(
             &u,
@@ -178,14 +176,112 @@ impl Job for Picture<'_> {
         )?;
         let frame = Frame::from_analysis(&model, &pose);
         let mut cycle = Vec::new();
-        self.loaded.sweep_each(&model, drives.steps, &mut |_, p| {
+        let summary = self.loaded.sweep_each(&model, drives.steps, &mut |_, p| {
             cycle.push(Frame::from_sweep_pose(&model, p))
         })?;
-        (self.loaded.file())
+        let singular: Vec<Frame> = (summary.events.iter())
+            .map(|e| Frame::positions(&model, &e.u, &e.v))
+            .collect();
+        let mut scene = (self.loaded.file())
             .scene_of(model.point_names())
             .width(self.width)
-            .render(&frame, &cycle)
-            .map_err(|e| Failure(format!("the drawing: {e}")))
+            .ghosts(&singular);
+        if !self.targets.is_empty() {
+            scene = scene.markers(
+                Markers::new("targets", self.targets.iter().copied())
+                    .shape(MarkerShape::Circle)
+                    .colour("#c0392b")
+                    .numbered(),
+            );
+        }
+        let drawn = |e: SceneError| Failure(format!("the drawing: {e}"));
+        let placement = scene.placement(&frame, &cycle).map_err(drawn)?;
+        let svg = scene.render(&frame, &cycle).map_err(drawn)?;
+        Ok((svg, placement))
+    }
+}
+
+/// The sensitivities of the pose at the drivers' values `v` (the file's
+/// `at` if empty): each coordinate's and each point's derivative by each
+/// parameter the mechanism is differentiated by (at most
+/// [`PARAMETERS`]), the drivers held.
+struct Differentiate<'a> {
+    loaded: &'a Loaded,
+    v: Vec<f64>,
+}
+
+impl SensitivityJob for Differentiate<'_> {
+    type Output = Value;
+    type Error = Failure;
+    fn run<const M: usize, const F: usize, const P: usize>(
+        self,
+        model: Fixed<M, F, P, PARAMETERS>,
+    ) -> Result<Value, Failure> {
+        let drives = self.loaded.drives(&model)?;
+        let v = drivers_or_at(&self.v, &drives)?;
+        let u = self.loaded.assembled(&model, &v)?;
+        let pose = model.analyze(
+            &u,
+            &v,
+            &drives.rate,
+            &drives.acceleration,
+            &Options::default(),
+        )?;
+        let s = model.sensitivities_of(&pose, &Options::default())?;
+        let names: Vec<&str> = (model.param_names().into_iter())
+            .filter(|n| !n.is_empty())
+            .collect();
+        let k = names.len();
+        // u_p row by row; each point's (x, y) by each parameter.
+        let u_p: Vec<Vec<f64>> = (0..M)
+            .map(|i| (0..k).map(|j| s.u[(i, j)]).collect())
+            .collect();
+        let points = model.point_names().len();
+        let points_p: Vec<Vec<[f64; 2]>> = (0..points)
+            .map(|c| {
+                (0..k)
+                    .map(|j| {
+                        let d = s.points[j].as_ref()[c];
+                        [d.x, d.y]
+                    })
+                    .collect()
+            })
+            .collect();
+        Ok(json!({ "parameters": names, "u": u_p, "points": points_p, "rcond": s.rcond }))
+    }
+}
+
+/// The drivers `v` given (one per driver), or the drive's `at` if none.
+fn drivers_or_at<const F: usize>(
+    v: &[f64],
+    drives: &FixedDrives<F>,
+) -> Result<SVector<f64, F>, Failure> {
+    if v.is_empty() {
+        Ok(drives.at)
+    } else if v.len() == F && v.iter().all(|x| x.is_finite()) {
+        Ok(SVector::from_fn(|k, _| v[k]))
+    } else {
+        Err(Failure(format!(
+            "{} driver values for {F} drivers, each finite",
+            v.len()
+        )))
+    }
+}
+
+/// The file's mechanism as DXF.
+struct Dxf<'a> {
+    loaded: &'a Loaded,
+    choice: DxfChoice,
+}
+
+impl Job for Dxf<'_> {
+    type Output = String;
+    type Error = Failure;
+    fn run<const M: usize, const F: usize, const P: usize>(
+        self,
+        model: Fixed<M, F, P>,
+    ) -> Result<String, Failure> {
+        self.loaded.dxf(&model, &self.choice).map_err(Failure::of)
     }
 }
 
@@ -249,8 +345,72 @@ impl WebMechanism {
     }
 
     /// The mechanism drawn with its drivers at `v` (the file's `at` if
-    /// empty), `width` pixels wide, with its points' paths: SVG.
+    /// empty), `width` pixels wide, with its points' paths and its
+    /// singular poses: SVG.
     pub fn svg(&self, width: f64, v: Vec<f64>) -> Result<String, JsError> {
+        self.picture_of(width, v, &[]).map(|(svg, _)| svg)
+    }
+
+    /// [`WebMechanism::svg`] with the points `targets` (JSON `[[x, y],
+    /// …]`) marked and numbered, and where the picture puts the model:
+    /// JSON `{svg, placement: {scale, origin: [x, y], top, width,
+    /// height}}` (a pixel (px, py) is the model point (origin.x + px /
+    /// scale, origin.y − (py − top) / scale)).
+    pub fn picture(&self, width: f64, v: Vec<f64>, targets: &str) -> Result<String, JsError> {
+        let targets: Vec<[f64; 2]> = serde_json::from_str(targets).map_err(|_| {
+            JsError::new("the targets are a list of points [x, y] of finite numbers")
+        })?;
+        if targets.iter().flatten().any(|x| !x.is_finite()) {
+            return Err(JsError::new("a target is not finite"));
+        }
+        let (svg, placed) = self.picture_of(width, v, &targets)?;
+        Ok(json!({
+            "svg": svg,
+            "placement": {
+                "scale": placed.scale, "origin": [placed.origin.x, placed.origin.y],
+                "top": placed.top, "width": placed.width, "height": placed.height,
+            },
+        })
+        .to_string())
+    }
+
+    /// The mechanism for CAD, as DXF: its pose at the drive's `at` (each
+    /// link an outline with pin holes, a layer each, the traced paths), or
+    /// with `cut_sheet` its moving links laid flat; a mechanism given by
+    /// joints and links only.
+    pub fn dxf(&self, cut_sheet: bool) -> Result<String, JsError> {
+        let job = Dxf {
+            loaded: &self.loaded,
+            choice: DxfChoice {
+                cut_sheet,
+                ..DxfChoice::default()
+            },
+        };
+        run(self.loaded.mechanism(), job).map_err(|Failure(why)| JsError::new(&why))
+    }
+
+    /// The sensitivities of the pose at the drivers' values `v` (the
+    /// file's `at` if empty), as JSON `{parameters, u: [[∂uᵢ/∂pⱼ]], points:
+    /// [[[∂x/∂pⱼ, ∂y/∂pⱼ]]], rcond}`: exact, from the equations'
+    /// derivatives.
+    pub fn sensitivities(&self, v: Vec<f64>) -> Result<String, JsError> {
+        let job = Differentiate {
+            loaded: &self.loaded,
+            v,
+        };
+        // By every parameter it is differentiated by (more than
+        // PARAMETERS of them is an error that says so).
+        let found = run_sensitive(self.loaded.mechanism(), &[], job)
+            .map_err(|Failure(why)| JsError::new(&why))?;
+        Ok(found.to_string())
+    }
+
+    fn picture_of(
+        &self,
+        width: f64,
+        v: Vec<f64>,
+        targets: &[[f64; 2]],
+    ) -> Result<(String, Placement), JsError> {
         if !(width.is_finite() && width > 0.0 && width <= 100_000.0) {
             return Err(JsError::new(
                 "the width is a number of pixels from 0 to 100000",
@@ -260,6 +420,7 @@ impl WebMechanism {
             loaded: &self.loaded,
             width,
             v,
+            targets,
         };
         run(self.loaded.mechanism(), job).map_err(|Failure(why)| JsError::new(&why))
     }

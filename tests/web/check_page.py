@@ -1,23 +1,38 @@
-"""The page in a real browser: headless Chromium (Debian's) opens
-web/index.html from its folder (no server, no network), the engine
-compiled to WebAssembly analyses the Maple worksheet's four-bar at its
-drive, and the page's numbers are held to the worksheet's recomputed at
-50 digits (tests/data/sensitivities.csv); a malformed file shows its
-mistake and the page lives on. Prints the engine's size.
+"""The page in a real browser, driven as a person drives it: headless
+Chromium (Debian's) through its DevTools protocol, the page served by
+`linkage serve`. It opens the library's four-bar and holds its pose to
+the Maple worksheet's numbers recomputed at 50 digits
+(tests/data/sensitivities.csv); drags the driver with the mouse and steps
+it with the keyboard, and holds each pose and its sensitivities to the
+same engine's in Python (the package of linkage-python, in this
+environment); edits a dimension, gives one that cannot be (NaN, a crank
+too long to turn) and sees a message with the page alive; drags a ground
+pivot; clicks target points onto the picture and runs a synthesis in the
+page's worker (progress, designs used, a search stopped, targets
+mistyped); opens a malformed file, imports, exports and links; compares
+screenshots (the four-bar's picture, the page on a narrow screen) with
+committed ones; and reports the engine's size.
 
-    bash web/build.sh && python3 tests/web/check_page.py
+    bash web/build.sh && python tests/web/check_page.py   # --update rewrites the screenshots
 """
 
-import html
+import base64
 import json
 import math
-import re
-import shutil
-import subprocess
 import sys
+import tempfile
+import time
+import urllib.parse
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[2]
+from browser import ROOT, Server, Tab, differing_share
+
+import linkage
+
+EXPECTED = ROOT / "tests/web/expected"
+#: The share of a screenshot's pixels that may differ from the committed
+#: one (text drawn by another machine's fonts, anti-aliasing).
+SCREENSHOT_TOLERANCE = 0.03
 
 
 def reference():
@@ -29,60 +44,240 @@ def reference():
     sys.exit("no reference for the four-bar's theta3")
 
 
-def browser():
-    for name in ("chromium", "chromium-headless-shell", "google-chrome"):
-        if shutil.which(name):
-            return name
-    sys.exit("no Chromium: apt-get install chromium")
+def data(tab):
+    return tab.evaluate("Object.assign({}, document.body.dataset)")
 
 
-def body(url):
-    dom = subprocess.run(
-        [browser(), "--headless", "--no-sandbox", "--disable-gpu", "--allow-file-access-from-files",
-         "--virtual-time-budget=20000", "--dump-dom", url],
-        capture_output=True, text=True, timeout=120, check=True).stdout
-    tag = re.search(r"<body([^>]*)>", dom)
-    assert tag, "the page has no body"
-    return {k: html.unescape(v) for k, v in re.findall(r'data-([a-z-]+)="([^"]*)"', tag.group(1))}
+def close(ours, theirs, rel):
+    return abs(ours - theirs) <= rel * max(abs(theirs), 1.0)
+
+
+def selftest(tab, url):
+    """The page's own checks, recorded in its body's data."""
+    tab.open(url + "?selftest")
+    d = data(tab)
+    assert "error" not in d, d["error"]
+    pose = json.loads(d["pose"])
+    theta3, omega3, alpha3 = reference()
+    assert pose["v"] == [math.radians(20)], pose["v"]
+    for name, ours, exact, rel in [("theta3", pose["u"][0], theta3, 1e-15),
+                                   ("omega3", pose["udot"][0], omega3, 1e-13),
+                                   ("alpha3", pose["uddot"][0], alpha3, 1e-13)]:
+        error = abs(ours - exact) / abs(exact)
+        assert error <= rel, f"{name}: {ours} against {exact} ({error:.1e})"
+    assert d["plotted"] == "361 0", d.get("plotted")  # the turn in 360 steps, no singular pose
+    assert d["importedPyslvs"].startswith("theta_"), d["importedPyslvs"]
+    assert d["importRefused"], "a malformed pyslvs expression shows why"
+    assert int(d["dxfLayers"]) >= 4, d["dxfLayers"]  # joints and links drawn for CAD
+    assert "joints and links" in d["dxfRefused"], d["dxfRefused"]
+    assert d["csvRows"] == "362", d["csvRows"]  # a header and 361 poses
+    # The smallest transmission angle over the turn, at θ2 = 0:
+    # acos((l3² + l4² − (l1 − l2)²)/(2 l3 l4)), sampled each degree.
+    smallest = math.degrees(math.acos((50**2 + 70**2 - 60**2) / (2 * 50 * 70)))
+    assert abs(float(d["transmission"]) - smallest) < 1e-9, d["transmission"]
+    assert d["mistakes"] == "0"
+    assert int(d["brokenMistakes"]) >= 1 and "`l9`" in d["brokenMessage"], d
+    # The page's link opens the text it carries: here, the slider-crank.
+    crank = (ROOT / "mechanisms/slider_crank.toml").read_text()
+    link = d["link"].split("#")[0] + "#file=" + urllib.parse.quote(base64.b64encode(crank.encode()).decode())
+    tab.open(link)
+    assert data(tab).get("opened") == "SliderCrank", data(tab).get("opened")
+
+
+def same_as_python(tab, engine):
+    """The page's pose and sensitivities at its driver, against the same
+    engine's from Python (WebAssembly's sines are not glibc's: 1e-12)."""
+    d = data(tab)
+    pose = json.loads(d["pose"])
+    v = pose["v"][0]
+    ours = engine.analyze(v=[v])
+    for k, (a, b) in enumerate(zip(pose["u"], ours.u)):
+        assert close(a, b, 1e-12), f"u[{k}] at {v}: page {a}, Python {b}"
+    for k, (a, b) in enumerate(zip(pose["udot"], ours.udot)):
+        assert close(a, b, 1e-11), f"u'[{k}] at {v}: page {a}, Python {b}"
+    page = json.loads(d["sensitivities"])
+    exact = engine.sensitivities(v=[v]).u
+    for i, row in enumerate(page):
+        for j, x in enumerate(row):
+            assert close(x, exact[i][j], 1e-10), f"du{i}/dp{j} at {v}: page {x}, Python {exact[i][j]}"
+    return v
+
+
+def drive_by_mouse_and_keyboard(tab, url):
+    tab.open(url)
+    engine = linkage.Mechanism.from_file(ROOT / "mechanisms/four_bar.toml")
+    start = tab.centre("#driver", 0.1)
+    end = tab.centre("#driver", 0.75)
+    tab.drag(start, end)
+    v = same_as_python(tab, engine)
+    assert 3.5 < v < 5.2, f"the drag moved the driver to {v}"
+    cursor = tab.evaluate("document.getElementById('cursor').getAttribute('x1')")
+    tab.evaluate("document.getElementById('driver').focus()")
+    tab.key("ArrowRight", "ArrowRight", 39)
+    stepped = same_as_python(tab, engine)
+    assert stepped > v, f"ArrowRight moved the driver from {v} to {stepped}"
+    assert tab.evaluate("document.getElementById('cursor').getAttribute('x1')") != cursor
+    return engine
+
+
+def dimensions(tab):
+    """A dimension edited redraws; NaN and a crank that cannot turn say why
+    and the page lives on."""
+    before = json.loads(data(tab)["pose"])["u"]
+    tab.evaluate("(() => { const e = document.getElementById('dim-1'); e.value = '21';"
+                 " e.dispatchEvent(new Event('change')); })()")
+    after = json.loads(data(tab)["pose"])["u"]
+    assert after != before, "l2 = 21 moved nothing"
+    python = linkage.Mechanism.from_file(ROOT / "mechanisms/four_bar.toml")
+    python.set_parameter("l2", 21.0)
+    same_as_python(tab, python)
+    refused = tab.evaluate("(() => { linkagePage.setDimension('l2', NaN); return document.body.dataset.dimensionRefused; })()")
+    assert refused and "finite" in refused, refused
+    tab.evaluate("(() => { const e = document.getElementById('dim-1'); e.value = '300';"
+                 " e.dispatchEvent(new Event('change')); })()")
+    message = tab.evaluate("document.getElementById('status').textContent")
+    assert "assemble" in message, message
+    tab.evaluate("(() => { const e = document.getElementById('dim-1'); e.value = '20';"
+                 " e.dispatchEvent(new Event('change')); })()")
+    assert tab.evaluate("document.getElementById('status').className") == "", "l2 = 20 draws again"
+
+
+def drag_a_pivot(tab, url):
+    """The ground pivot D of the four-bar given by joints and links,
+    dragged by the mouse 30 px right: x_D grows by 30 px of the drawing."""
+    text = (ROOT / "mechanisms/joints/four_bar.toml").read_text()
+    tab.open(url + "#file=" + urllib.parse.quote(base64.b64encode(text.encode()).decode()))
+    info = tab.evaluate("(() => { const p = linkagePage;"
+                        " return { names: p.info.parameterNames, values: p.info.parameters, placement: p.placement }; })()")
+    names, values, placed = info["names"], info["values"], info["placement"]
+    pivots = [n[2:] for n in names if n.startswith("x_") and f"y_{n[2:]}" in names]
+    assert pivots, names
+    joint = pivots[-1]
+    x, y = values[names.index(f"x_{joint}")], values[names.index(f"y_{joint}")]
+    # Where the page draws the pivot, in the viewport (the picture is
+    # scaled to fit the page: the SVG's own map to the screen).
+    sx, sy, ratio = tab.evaluate(
+        f"(() => {{ const svg = document.querySelector('#picture svg'), m = svg.getScreenCTM();"
+        f" const p = new DOMPoint({(x - placed['origin'][0]) * placed['scale']},"
+        f" {placed['top'] + (placed['origin'][1] - y) * placed['scale']}).matrixTransform(m);"
+        f" return [p.x, p.y, m.a]; }})()")
+    tab.drag((sx, sy), (sx + 30, sy), steps=5)
+    dragged = data(tab).get("dragged", "")
+    assert dragged.startswith(joint), f"no pivot dragged: {dragged!r}"
+    moved = float(dragged.split()[1]) - x
+    expected = 30 / (placed["scale"] * ratio)
+    assert abs(moved - expected) < 0.02 * expected, f"{joint} moved {moved}, the pointer {expected}"
+    assert "error" not in data(tab), data(tab)["error"]
+
+
+def design(tab, url):
+    """Targets clicked and typed, a synthesis in the worker, a design used;
+    a long search stopped; mistyped targets refused."""
+    tab.open(url)
+    targets = tab.evaluate(
+        "(() => { const { info, sweep } = linkagePage;"
+        " const g = info.pointNames.indexOf('G3'), p = info.pointNames.length;"
+        " return [0, 72, 144, 216, 288].map((k) => [sweep.points[k * 2 * p + 2 * g],"
+        " sweep.points[k * 2 * p + 2 * g + 1]]); })()")
+    # A click on the picture places a target where the picture shows it.
+    tab.mouse("mousePressed", *tab.centre("#picture svg", 0.5))
+    tab.mouse("mouseReleased", *tab.centre("#picture svg", 0.5))
+    clicked = tab.evaluate("document.getElementById('design-targets').value")
+    assert len(clicked.strip().split("\n")) == 1 and "," in clicked, clicked
+    assert tab.evaluate("document.querySelectorAll('#picture svg text').length") > 0
+    tab.evaluate("(() => { document.getElementById('design-targets').value = "
+                 + json.dumps("\n".join(f"{x!r}, {y!r}" for x, y in targets))
+                 + "; document.getElementById('design-point').value = 'G3'; linkagePage.freeBounds();"
+                 " document.getElementById('design-starts').value = '12';"
+                 " linkagePage.draw(linkagePage.current); })()")
+    tab.evaluate("(() => { window.progressSeen = [];"
+                 " new MutationObserver(() => progressSeen.push(document.getElementById('design-status').textContent))"
+                 ".observe(document.getElementById('design-status'), { childList: true, characterData: true, subtree: true }); })()")
+    tab.mouse("mousePressed", *tab.centre("#design-run"))
+    tab.mouse("mouseReleased", *tab.centre("#design-run"))
+    tab.wait("document.body.dataset.designDone", 120)
+    done = data(tab)["designDone"]
+    assert done.startswith("done: 12 of 12 starts"), done
+    progress = tab.evaluate("progressSeen")
+    assert len([p for p in progress if " of 12 starts" in p]) >= 2, progress
+    found = tab.evaluate("linkagePage.found")
+    assert found["designs"], done
+    for d in found["designs"]:
+        assert d["largestError"] < 1e-6 and d["certificate"]["transmission"] >= 40, d
+    tab.evaluate("document.querySelector('#designs button[data-design]').click()")
+    used = json.loads(data(tab)["used"])
+    assert used == found["designs"][0]["parameters"], used
+    assert "error" not in data(tab)
+    # A long search stopped: the page answers at once, what was found kept.
+    tab.evaluate("(() => { delete document.body.dataset.designDone;"
+                 " document.getElementById('design-starts').value = '1024';"
+                 " document.getElementById('design-run').click(); })()")
+    time.sleep(0.5)
+    began = time.time()
+    tab.evaluate("document.getElementById('design-stop').click()")
+    tab.wait("document.body.dataset.designDone", 5)
+    assert time.time() - began < 2, "the stop took more than 2 s"
+    stopped = data(tab)["designDone"]
+    assert stopped.startswith("stopped"), stopped
+    # Mistyped targets: said, no search.
+    tab.evaluate("(() => { document.getElementById('design-targets').value = '1, 2\\nthree, 4';"
+                 " document.getElementById('design-run').click(); })()")
+    said = tab.evaluate("document.getElementById('design-status').textContent")
+    assert "target line 2" in said, said
+
+
+def screenshots(url, update):
+    """The four-bar's picture, and the page on a narrow screen, against the
+    committed screenshots; no sideways scrolling on the narrow one."""
+    EXPECTED.mkdir(parents=True, exist_ok=True)
+    shares = {}
+    for name, width, height, selector in [("four_bar_picture", 1280, 900, "#picture"),
+                                          ("narrow_page", 400, 900, None)]:
+        tab = Tab(width, height)
+        try:
+            tab.open(url)
+            if selector is None:
+                wide = tab.evaluate("document.documentElement.scrollWidth")
+                assert wide <= width, f"the page is {wide} px wide on a {width} px screen"
+            with tempfile.TemporaryDirectory() as folder:
+                shot = Path(folder) / f"{name}.png"
+                tab.screenshot(shot, selector)
+                committed = EXPECTED / f"{name}.png"
+                if update or not committed.exists():
+                    committed.write_bytes(shot.read_bytes())
+                shares[name] = differing_share(shot, committed)
+                assert shares[name] <= SCREENSHOT_TOLERANCE, \
+                    f"{name}: {shares[name]:.1%} of the pixels differ from {committed}"
+        finally:
+            tab.close()
+    return shares
 
 
 def main():
-    page = ROOT / "web" / "index.html"
-    data = body(f"file://{page}?selftest")
-    assert data.get("ready") == "yes", f"the page did not finish loading: {data}"
-    assert "error" not in data, data["error"]
-    pose = json.loads(data["pose"])
-    theta3, omega3, alpha3 = reference()
-    assert pose["v"] == [math.radians(20)], pose["v"]
-    checks = [("theta3", pose["u"][0], theta3, 1e-15),
-              ("omega3", pose["udot"][0], omega3, 1e-13),
-              ("alpha3", pose["uddot"][0], alpha3, 1e-13)]
-    for name, ours, exact, rel in checks:
-        error = abs(ours - exact) / abs(exact)
-        assert error <= rel, f"{name}: {ours} against {exact} ({error:.1e})"
-    assert data["plotted"] == "361 0", data.get("plotted")  # the turn in 360 steps, no singular pose
-    assert data["imported-pyslvs"].startswith("theta_"), data["imported-pyslvs"]  # joints and links, analysed
-    assert data["import-refused"], "a malformed pyslvs expression shows why"
-    assert data["csv-rows"] == "362", data["csv-rows"]  # a header and 361 poses
-    # The worksheet's four-bar's smallest transmission angle over the turn,
-    # at θ2 = 0: acos((l3² + l4² − (l1 − l2)²)/(2 l3 l4)), sampled each degree.
-    smallest = math.degrees(math.acos((50**2 + 70**2 - 60**2) / (2 * 50 * 70)))
-    assert abs(float(data["transmission"]) - smallest) < 1e-9, data["transmission"]
-    # The page's link opens the text it carries: here, the slider-crank.
-    link = data["link"]
-    crank = (ROOT / "mechanisms/slider_crank.toml").read_text()
-    import base64
-    import urllib.parse
-    shared = link.split("#")[0] + "#file=" + urllib.parse.quote(base64.b64encode(crank.encode()).decode())
-    opened = body(shared)
-    assert opened.get("opened") == "SliderCrank" and "error" not in opened, opened.get("opened")
-    assert data["mistakes"] == "0"
-    assert int(data["broken-mistakes"]) >= 1 and "`l9`" in data["broken-message"], data
+    update = "--update" in sys.argv
+    server = Server()
+    tab = Tab()
+    try:
+        selftest(tab, server.url)
+        drive_by_mouse_and_keyboard(tab, server.url)
+        dimensions(tab)
+        drag_a_pivot(tab, server.url)
+        design(tab, server.url)
+        tab.close()
+        shares = screenshots(server.url, update)
+    except BaseException:
+        print("the page said:", *tab.messages[-10:], sep="\n  ", file=sys.stderr)
+        raise
+    finally:
+        tab.close()
+        server.close()
     wasm = ROOT / "web/pkg/linkage_web_bg.wasm"
     js = ROOT / "web/pkg/linkage_web.js"
-    print(f"check_page: the worksheet's four-bar in {browser()} to the 50-digit references; "
-          f"a malformed file shows its mistake; engine {wasm.stat().st_size / 1e6:.1f} MB "
-          f"(+ {js.stat().st_size / 1e3:.0f} kB of bindings)")
+    print(f"check_page: in Chromium through `linkage serve`: the worksheet's four-bar to the 50-digit "
+          f"references; dragged and stepped poses and sensitivities equal to Python's; dimensions, a pivot "
+          f"dragged, a synthesis in the worker; screenshots within "
+          f"{', '.join(f'{k} {v:.2%}' for k, v in shares.items())} of the committed; "
+          f"engine {wasm.stat().st_size / 1e6:.1f} MB (+ {js.stat().st_size / 1e3:.0f} kB of bindings)")
 
 
 if __name__ == "__main__":
