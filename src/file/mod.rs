@@ -134,6 +134,7 @@ mod names;
 mod parameters;
 mod quantity;
 mod reader;
+mod rewrite;
 #[cfg(feature = "draw")]
 mod scene;
 mod suggest;
@@ -155,6 +156,7 @@ pub use names::Name;
 pub(crate) use names::not_an_identifier;
 pub use parameters::Parameter;
 pub use quantity::Quantity;
+pub use rewrite::{RewriteError, with_parameters};
 pub use topology::{TopologyFile, is_topology};
 pub use units::{Kind, Unit};
 
