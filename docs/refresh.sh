@@ -25,12 +25,12 @@ run expansion_cost docs/figures -p linkage-macros
 cargo run --quiet --release -p linkage-cli -- draw mechanisms/joints/jansen_double.toml \
   -o docs/figures/topology/jansen_double.svg
 echo "refreshed docs/figures/topology (linkage draw)"
-# The page, as a reader sees it (headless Chromium, the engine built).
+# The page, as a reader sees it (headless Chromium through `linkage serve`,
+# the engine built; a Python with websocket-client, as CI's target/ci-venv).
 bash web/build.sh > /dev/null
+cargo build -q -p linkage-cli
 mkdir -p docs/figures/web
-chromium --headless --no-sandbox --disable-gpu --allow-file-access-from-files \
-  --virtual-time-budget=10000 --window-size=1280,1100 --hide-scrollbars \
-  --screenshot=docs/figures/web/page.png "file://$PWD/web/index.html" 2> /dev/null
+"${PYTHON:-target/ci-venv/bin/python}" tests/web/page_figure.py docs/figures/web/page.png
 echo "refreshed docs/figures/web/page.png"
 if [[ ${1:-} == --speed ]]; then
   benches/speed_tables.sh

@@ -2,7 +2,7 @@
 // linkage compiled to WebAssembly; its pose at the driver's value drawn by
 // the library's own pictures, its numbers in a table, the file's mistakes
 // listed where they are. `?selftest` records what a test reads in the DOM.
-import init, { Mechanism, importPylinkage, importPyslvs, library, mistakes } from "./pkg/linkage_web.js";
+import init, { Mechanism, importPylinkage, importPyslvs, library, mistakes, withParameters } from "./pkg/linkage_web.js";
 
 const $ = (id) => document.getElementById(id);
 let mechanism = null;
@@ -12,6 +12,8 @@ let sweep = null;
 let current = 0;
 // Where the picture puts the model (for a click read as a point).
 let placement = null;
+// The parameters as the editor's text gives them.
+let written = [];
 
 function status(text, error = false) {
   $("status").textContent = text;
@@ -126,6 +128,7 @@ function open(text) {
   try {
     mechanism = Mechanism.fromText(text, "the editor");
     info = JSON.parse(mechanism.info());
+    written = [...info.parameters];
     drive = JSON.parse(mechanism.analyze([])).drive;
     const [low, high] = [Math.min(drive.from[0], drive.to[0]), Math.max(drive.from[0], drive.to[0])];
     $("driver").min = String(low);
@@ -182,6 +185,22 @@ function dimensionsPanel() {
     $(`dim-${k}`).addEventListener("change", () => setDimension(n, Number($(`dim-${k}`).value)));
   });
 }
+// The editor's text given the parameters the page now uses (a design's,
+// edited dimensions), each written where it stood; a topology file keeps
+// its text (its parameters come from its joints), and says so.
+function writeParameters() {
+  const changed = info.parameterNames.flatMap((n, k) =>
+    info.parameters[k] !== written[k] ? [[n, info.parameters[k]]] : []);
+  if (changed.length === 0) return true;
+  try {
+    $("editor").value = withParameters($("editor").value, JSON.stringify(changed));
+    written = [...info.parameters];
+    return true;
+  } catch (e) {
+    status(`the page uses new values, which the text does not hold: ${e.message}`, true);
+    return false;
+  }
+}
 function setDimension(name, value) {
   try {
     mechanism.setParameter(name, value);
@@ -195,6 +214,7 @@ function setDimension(name, value) {
   if (k >= 0 && $(`dim-${k}`) && document.activeElement !== $(`dim-${k}`)) $(`dim-${k}`).value = String(value);
   resweep();
   draw(current);
+  if (!dragging) writeParameters();
   return true;
 }
 function showSensitivities(v) {
@@ -256,6 +276,7 @@ $("picture").addEventListener("pointermove", (event) => {
 let dragged = false;
 const endDrag = () => {
   dragged = dragging !== null;
+  if (dragged) writeParameters();
   dragging = null;
   $("picture").classList.remove("dragging");
 };
@@ -347,6 +368,7 @@ function useDesign(k) {
   chosen = k;
   resweep();
   draw(current);
+  writeParameters();
   showDesigns();
   designStatus(`design ${k + 1} in use: it misses its targets by at most ${d.largestError.toExponential(1)}, ` +
     `its transmission angle at least ${d.certificate.transmission.toFixed(1)}° over the turn`);

@@ -169,7 +169,7 @@ fn task_of(json: &str) -> Result<(DesignTask, u64), String> {
 impl WebDesign {
     /// A path synthesis on the mechanism of the file's `text` (its
     /// assembly at the drive's `at` the starting design's): the task's
-    /// JSON as [`task_of`] reads it. Certified designs only, through the
+    /// JSON: `{point, targets: [[x, y], …], free: [[name, lower, upper], …], seed, minTransmission}` (the angle in degrees; optional). Certified designs only, through the
     /// targets (precision points), over a revolution of the driver.
     #[wasm_bindgen(constructor)]
     pub fn new(text: &str, task: &str) -> Result<WebDesign, JsError> {
@@ -177,7 +177,7 @@ impl WebDesign {
     }
 
     /// Runs the next `count` starts (1 to 1024) and returns every design
-    /// found so far (see [`report`]).
+    /// found so far, best first: each with its parameters, drivers, misses and certificate.
     pub fn next(&mut self, count: usize) -> Result<String, JsError> {
         (self.piece(count))
             .map(|found| found.to_string())

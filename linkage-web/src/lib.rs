@@ -56,6 +56,18 @@ pub fn import_pylinkage(json: &str) -> Result<String, JsError> {
     Ok(topology.topology_text())
 }
 
+/// A mechanism file's `text` with new values of its parameters (JSON
+/// `[[name, value], …]`), each written where the old one stood and read
+/// back to the bit; an error for a name its `[parameters]` lacks (a
+/// topology file's come from its joints).
+#[wasm_bindgen(js_name = withParameters)]
+pub fn with_parameters(text: &str, values: &str) -> Result<String, JsError> {
+    let values: Vec<(String, f64)> = serde_json::from_str(values)
+        .map_err(|_| JsError::new("the values are a list of [name, number]"))?;
+    let values: Vec<(&str, f64)> = values.iter().map(|(n, v)| (n.as_str(), *v)).collect();
+    linkage::file::with_parameters(text, &values).map_err(|e| JsError::new(&e.to_string()))
+}
+
 /// The mistakes of a mechanism file's (or topology's) text, as JSON: `[]`
 /// when it makes a mechanism, or `[{message, from, to, rendered}, …]`
 /// with `from` and `to` the UTF-16 offsets of its place in `text` (for a

@@ -207,6 +207,9 @@ def design(tab, url):
     tab.evaluate("document.querySelector('#designs button[data-design]').click()")
     used = json.loads(data(tab)["used"])
     assert used == found["designs"][0]["parameters"], used
+    # The editor's text now holds the design, to the bit (read by Python).
+    text = tab.evaluate("document.getElementById('editor').value")
+    assert linkage.Mechanism.from_toml(text).parameters == used, text
     assert "error" not in data(tab)
     # A long search stopped: the page answers at once, what was found kept.
     tab.evaluate("(() => { delete document.body.dataset.designDone;"
