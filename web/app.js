@@ -24,14 +24,18 @@ function status(text, error = false) {
 // poses met marked, the current pose as a cursor.
 function plot() {
   if (!sweep || sweep.v.length < 2) { $("plot").innerHTML = ""; return; }
-  // "u:k", "udot:k", "uddot:k" (coordinate k and its rates) or "transmission".
+  // "u:k", "udot:k", "uddot:k" (coordinate k and its rates), "point:j"
+  // (coordinate j of the points' x, y in turn) or "transmission".
   const [series, index] = $("quantity").value.split(":");
   const k = Number(index ?? 0);
   const m = info.uNames.length;
   const xs = sweep.v;
+  const p = info.pointNames.length;
   const ys = series === "transmission"
     ? sweep.transmission.map((a) => a * 180 / Math.PI)
-    : xs.map((_, i) => sweep[series][i * m + k]);
+    : series === "point"
+      ? xs.map((_, i) => sweep.points[i * 2 * p + k])
+      : xs.map((_, i) => sweep[series][i * m + k]);
   const label = $("quantity").selectedOptions[0].textContent;
   const [w, h, pad] = [640, 200, 40];
   const [x0, x1] = [Math.min(...xs), Math.max(...xs)];
@@ -41,7 +45,8 @@ function plot() {
   const Y = (y) => h - pad + (2 * pad - h) * (y - y0) / (y1 - y0);
   const path = xs.map((x, i) => `${i ? "L" : "M"}${X(x).toFixed(2)},${Y(ys[i]).toFixed(2)}`).join("");
   const marks = sweep.events.map((e) => {
-    const y = series === "u" ? Y(e.u[k]) : h - pad;
+    const y = series === "u" ? Y(e.u[k])
+      : series === "point" ? Y(e.points[Math.floor(k / 2)][k % 2]) : h - pad;
     return `<circle cx="${X(e.v[0]).toFixed(2)}" cy="${y.toFixed(2)}" r="4" fill="#a00"><title>${e.kind}</title></circle>`;
   });
   const fmt = (x) => Number(x.toPrecision(4));
@@ -140,6 +145,8 @@ function open(text) {
       ...info.uNames.map((n, k) => `<option value="u:${k}">${n}</option>`),
       ...info.uNames.map((n, k) => `<option value="udot:${k}">${n}' (velocity)</option>`),
       ...info.uNames.map((n, k) => `<option value="uddot:${k}">${n}'' (acceleration)</option>`),
+      ...info.pointNames.flatMap((n, c) => [`<option value="point:${2 * c}">${n}.x</option>`,
+        `<option value="point:${2 * c + 1}">${n}.y</option>`]),
       `<option value="transmission">transmission angle (deg)</option>`,
     ].join("");
     resweep();

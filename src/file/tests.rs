@@ -648,6 +648,7 @@ fn the_module_opens_no_path_but_the_one_it_is_given() {
         ("parameters.rs", include_str!("parameters.rs")),
         ("quantity.rs", include_str!("quantity.rs")),
         ("reader.rs", include_str!("reader.rs")),
+        ("rewrite.rs", include_str!("rewrite.rs")),
         ("scene.rs", include_str!("scene.rs")),
         ("suggest.rs", include_str!("suggest.rs")),
         ("syntax.rs", include_str!("syntax.rs")),

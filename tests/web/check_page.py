@@ -117,6 +117,15 @@ def drive_by_mouse_and_keyboard(tab, url):
     stepped = same_as_python(tab, engine)
     assert stepped > v, f"ArrowRight moved the driver from {v} to {stepped}"
     assert tab.evaluate("document.getElementById('cursor').getAttribute('x1')") != cursor
+    # A point's coordinate plotted: G3.y over the turn, its extremes those
+    # of the engine's sweep in Python.
+    tab.evaluate("(() => { const q = document.getElementById('quantity'); q.value = 'point:'"
+                 " + (2 * linkagePage.info.pointNames.indexOf('G3') + 1); q.dispatchEvent(new Event('change')); })()")
+    labels = tab.evaluate("[...document.querySelectorAll('#plot text')].map((t) => t.textContent)")
+    assert "G3.y against theta2" in labels, labels
+    swept = engine.sweep()["G3"][:, 1]
+    shown = [float(t) for t in labels[2:4]]
+    assert close(shown[0], max(swept), 1e-3) and close(shown[1], min(swept), 1e-3), (shown, max(swept), min(swept))
     return engine
 
 
