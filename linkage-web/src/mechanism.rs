@@ -74,16 +74,9 @@ impl Job for Pose<'_> {
         self,
         model: Fixed<M, F, P>,
     ) -> Result<Value, Failure> {
-        let drives = self.loaded.drives(&model)?;
-        let v = drivers_or_at(&self.v, &drives)?;
-        let u = self.loaded.assembled(&model, &v)?;
-        let pose = model.analyze(
-            &u,
-            &v,
-            &drives.rate,
-            &drives.acceleration,
-            &Options::default(),
-        )?;
+        let v = given(&self.v)?;
+        let (drives, pose) = (self.loaded).analysed_at(&model, v)?;
+        let v = v.unwrap_or(drives.at);
         Ok(json!({
             "v": v.as_slice(), "u": pose.u.as_slice(), "udot": pose.udot.as_slice(),
             "uddot": pose.uddot.as_slice(), "points": xy(pose.points.as_ref()),
@@ -164,16 +157,7 @@ impl Job for Picture<'_> {
         self,
         model: Fixed<M, F, P>,
     ) -> Result<(String, Placement), Failure> {
-        let drives = self.loaded.drives(&model)?;
-        let v = drivers_or_at(&self.v, &drives)?;
-        let u = self.loaded.assembled(&model, &v)?;
-        let pose = model.analyze(
-            &u,
-            &v,
-            &drives.rate,
-            &drives.acceleration,
-            &Options::default(),
-        )?;
+        let (drives, pose) = (self.loaded).analysed_at(&model, given(&self.v)?)?;
         let frame = Frame::from_analysis(&model, &pose);
         let mut cycle = Vec::new();
         let summary = self.loaded.sweep_each(&model, drives.steps, &mut |_, p| {
@@ -217,16 +201,7 @@ impl SensitivityJob for Differentiate<'_> {
         self,
         model: Fixed<M, F, P, PARAMETERS>,
     ) -> Result<Value, Failure> {
-        let drives = self.loaded.drives(&model)?;
-        let v = drivers_or_at(&self.v, &drives)?;
-        let u = self.loaded.assembled(&model, &v)?;
-        let pose = model.analyze(
-            &u,
-            &v,
-            &drives.rate,
-            &drives.acceleration,
-            &Options::default(),
-        )?;
+        let (_, pose) = (self.loaded).analysed_at(&model, given(&self.v)?)?;
         let s = model.sensitivities_of(&pose, &Options::default())?;
         let names: Vec<&str> = (model.param_names().into_iter())
             .filter(|n| !n.is_empty())
@@ -251,15 +226,13 @@ impl SensitivityJob for Differentiate<'_> {
     }
 }
 
-/// The drivers `v` given (one per driver), or the drive's `at` if none.
-fn drivers_or_at<const F: usize>(
-    v: &[f64],
-    drives: &FixedDrives<F>,
-) -> Result<SVector<f64, F>, Failure> {
+/// The drivers `v` given (one per driver, finite), or none (the drive's
+/// `at`) if `v` is empty.
+fn given<const F: usize>(v: &[f64]) -> Result<Option<SVector<f64, F>>, Failure> {
     if v.is_empty() {
-        Ok(drives.at)
+        Ok(None)
     } else if v.len() == F && v.iter().all(|x| x.is_finite()) {
-        Ok(SVector::from_fn(|k, _| v[k]))
+        Ok(Some(SVector::from_fn(|k, _| v[k])))
     } else {
         Err(Failure(format!(
             "{} driver values for {F} drivers, each finite",

@@ -95,12 +95,24 @@ impl Loaded {
         &self,
         model: &Fixed<M, F, N, K>,
     ) -> Result<(FixedDrives<F>, FixedAnalysis<M, F, N, K>), LoadError> {
+        self.analysed_at(model, None)
+    }
+
+    /// [`Loaded::analysed`] with the drivers at `v` (`None`: at `at`):
+    /// the file's assembly there, at the drivers' rates and accelerations
+    /// (what the page shows as its driver moves).
+    pub fn analysed_at<const M: usize, const F: usize, const N: usize, const K: usize>(
+        &self,
+        model: &Fixed<M, F, N, K>,
+        v: Option<SVector<f64, F>>,
+    ) -> Result<(FixedDrives<F>, FixedAnalysis<M, F, N, K>), LoadError> {
         let drives = self.drives(model)?;
-        let u = self.assembled(model, &drives.at)?;
+        let v = v.unwrap_or(drives.at);
+        let u = self.assembled(model, &v)?;
         let pose = model
             .analyze(
                 &u,
-                &drives.at,
+                &v,
                 &drives.rate,
                 &drives.acceleration,
                 &Options::default(),
