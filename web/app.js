@@ -293,24 +293,21 @@ $("picture").addEventListener("pointercancel", endDrag);
 // The design panel: targets typed or clicked, the free parameters with
 // their bounds, a search in a worker with its progress, the certified
 // designs to browse and use.
-function targets() {
+// The targets typed (a line "x, y" each): the points read, and the first
+// line that is not two finite numbers, if any.
+function readTargets() {
   const lines = $("design-targets").value.split("\n").map((l) => l.trim()).filter((l) => l);
   const points = [];
-  for (const line of lines) {
+  for (const [k, line] of lines.entries()) {
     const xy = line.split(/[,\s]+/).map(Number);
-    if (xy.length !== 2 || !xy.every(Number.isFinite)) return points;
+    if (xy.length !== 2 || !xy.every(Number.isFinite)) {
+      return { points, error: `target line ${k + 1} is not two finite numbers x, y: "${line}"` };
+    }
     points.push(xy);
   }
-  return points;
+  return { points, error: null };
 }
-function targetsError() {
-  const lines = $("design-targets").value.split("\n").map((l) => l.trim()).filter((l) => l);
-  const bad = lines.findIndex((line) => {
-    const xy = line.split(/[,\s]+/).map(Number);
-    return xy.length !== 2 || !xy.every(Number.isFinite);
-  });
-  return bad < 0 ? null : `target line ${bad + 1} is not two finite numbers x, y: "${lines[bad]}"`;
-}
+const targets = () => readTargets().points;
 function designPanel() {
   $("design-point").innerHTML = info.pointNames.map((n) => `<option>${n}</option>`).join("");
   const last = info.pointNames[info.pointNames.length - 1];
@@ -405,7 +402,7 @@ function startWorker() {
 }
 $("design-run").addEventListener("click", () => {
   if (!mechanism) return;
-  const bad = targetsError();
+  const bad = readTargets().error;
   if (bad) { designStatus(bad, true); return; }
   if (!worker) startWorker();
   found = null;
