@@ -300,10 +300,44 @@ impl<const L: usize> Registers<L> {
         if lane >= L {
             return Err(TapeError::Lane { lane, lanes: L });
         }
-        for (register, &value) in self.values[range].iter_mut().zip(values) {
-            register[lane] = value;
-        }
+        copy_to_lane(&mut self.values[range], lane, values);
         Ok(())
+    }
+}
+
+/// Writes `values` to lane `lane` of `registers` (as many). Up to eight
+/// values are copied in line: a call to copy a few values costs more than
+/// the copy, and a loop of unknown length over one lane is such a call.
+#[inline(always)]
+fn copy_to_lane<const L: usize>(registers: &mut [[f64; L]], lane: usize, values: &[f64]) {
+    #[inline(always)]
+    fn exactly<const N: usize, const L: usize>(
+        registers: &mut [[f64; L]],
+        lane: usize,
+        values: &[f64],
+    ) {
+        let registers: Option<&mut [[f64; L]; N]> = registers.try_into().ok();
+        let values: Option<&[f64; N]> = values.try_into().ok();
+        if let (Some(registers), Some(values)) = (registers, values) {
+            for (register, &value) in registers.iter_mut().zip(values) {
+                register[lane] = value;
+            }
+        }
+    }
+    match values.len() {
+        1 => exactly::<1, L>(registers, lane, values),
+        2 => exactly::<2, L>(registers, lane, values),
+        3 => exactly::<3, L>(registers, lane, values),
+        4 => exactly::<4, L>(registers, lane, values),
+        5 => exactly::<5, L>(registers, lane, values),
+        6 => exactly::<6, L>(registers, lane, values),
+        7 => exactly::<7, L>(registers, lane, values),
+        8 => exactly::<8, L>(registers, lane, values),
+        _ => {
+            for (register, &value) in registers.iter_mut().zip(values) {
+                register[lane] = value;
+            }
+        }
     }
 }
 
@@ -370,6 +404,37 @@ mod tests {
             },
         ];
         Tape::new(slots, vec![2.0], ops, phases, 10, Vec::new()).expect("a consistent tape")
+    }
+
+    /// Inputs of every length up to beyond those copied in line land in
+    /// their registers, on their lane only.
+    #[test]
+    fn an_input_of_any_length_is_written_to_its_lane() {
+        for fields in 1..=12 {
+            let slots = Slots { m: 1, f: 0, fields };
+            let tape = Tape::new(
+                slots,
+                Vec::new(),
+                Vec::new(),
+                Vec::new(),
+                slots.total(),
+                Vec::new(),
+            )
+            .expect("a tape of no operation");
+            let values: Vec<f64> = (0..fields).map(|k| k as f64 + 0.5).collect();
+            let mut lanes = tape.registers::<3>();
+            lanes.set_lane(Input::Fields, 1, &values).unwrap();
+            let range = slots.range(Input::Fields);
+            for (k, register) in range.clone().enumerate() {
+                assert_eq!(lanes.get(register as u32), Some(&[0.0, values[k], 0.0]));
+            }
+            let mut one = tape.registers::<1>();
+            one.set(Input::Fields, &values).unwrap();
+            for (k, register) in range.enumerate() {
+                assert_eq!(one.get(register as u32), Some(&[values[k]]));
+            }
+            assert!(one.set(Input::Fields, &values[1..]).is_err());
+        }
     }
 
     #[test]
