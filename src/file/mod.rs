@@ -149,8 +149,8 @@ pub use drives::Drives;
 pub use equations::Equations;
 pub use error::{FileError, FileErrors, ReadError};
 pub use loaded::{
-    Cause, DxfChoice, DxfError, FixedAnalysis, FixedDrives, LoadError, Loaded, Located, Positions,
-    Swept, at_text, read_text,
+    Cause, DeadCentre, DeadCentreError, DxfChoice, DxfError, FixedAnalysis, FixedDrives, LoadError,
+    Loaded, Located, Positions, Swept, at_text, read_text,
 };
 pub use names::Name;
 pub(crate) use names::not_an_identifier;

@@ -12,6 +12,8 @@ mod twins;
 
 /// The code `linkage expand --expanded` prints, compiled.
 mod expanded;
+/// Where links pinned to the frame come to rest.
+mod dead_centres;
 mod library;
 /// No string of a file is a path.
 mod paths;

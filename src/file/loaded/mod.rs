@@ -19,10 +19,12 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod dead_centres;
 mod drive;
 mod dxf;
 mod error;
 
+pub use dead_centres::{DeadCentre, DeadCentreError};
 pub use drive::{FixedAnalysis, FixedDrives, Swept, at_text};
 pub use dxf::{DxfChoice, DxfError, Positions};
 pub use error::{Cause, LoadError, Located};
