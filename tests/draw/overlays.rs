@@ -391,6 +391,45 @@ fn ghost_poses_are_drawn_faint_under_the_pose_without_labels_or_arrows() {
     assert!(ghost.descendants().all(|n| !n.has_tag_name("animate")));
 }
 
+/// Named, the ghosts have a legend entry in their colour, and the legend
+/// grows by a line for it; unnamed or absent, none.
+#[test]
+fn named_ghosts_have_a_legend_entry() {
+    let cycle = turn(&DESIGN, 360);
+    let entry = |scene: &Scene| {
+        let svg = scene.render(&cycle[0], &cycle).unwrap();
+        let doc = parse(&svg);
+        let height: f64 = doc
+            .root_element()
+            .attribute("height")
+            .unwrap()
+            .parse()
+            .unwrap();
+        let text = (doc.descendants())
+            .find(|n| n.attribute("data-for") == Some("ghosts"))
+            .map(|n| {
+                let swatch = n.children().find(|c| c.has_tag_name("line")).unwrap();
+                let bar = (doc.descendants())
+                    .find(|g| g.attribute("class") == Some("ghost-link"))
+                    .unwrap();
+                assert_eq!(swatch.attribute("stroke"), bar.attribute("stroke"));
+                let text = n.descendants().find(|t| t.has_tag_name("text")).unwrap();
+                text.text().unwrap_or_default().trim().to_owned()
+            });
+        (text, height)
+    };
+    let unnamed = entry(&design_scene(&cycle));
+    assert_eq!(unnamed.0, None);
+    let named = entry(&design_scene(&cycle).ghost_name("three other poses"));
+    assert_eq!(named.0.as_deref(), Some("three other poses"));
+    assert!(named.1 > unnamed.1, "{named:?} against {unnamed:?}");
+    let no_ghosts = Scene::new()
+        .ground("A", [0.0, 0.0])
+        .link(["A", "B"])
+        .ghost_name("none drawn");
+    assert_eq!(entry(&no_ghosts).0, None);
+}
+
 /// The strokes of the curves and the markers (a disc round each marker).
 fn overlay_strokes(doc: &roxmltree::Document) -> Vec<Stroke> {
     let mut strokes = Vec::new();

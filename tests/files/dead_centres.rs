@@ -32,7 +32,10 @@ fn the_slider_crank_stops_where_its_crank_and_rod_are_in_line() {
     assert_eq!(found.len(), 2, "{found:?}");
     for (dead, (theta2, s)) in found.iter().zip(expected) {
         assert_eq!(dead.what, "P");
-        assert!((dead.v[0] - theta2).abs() < 1e-12, "{dead:?} against {theta2}");
+        assert!(
+            (dead.v[0] - theta2).abs() < 1e-12,
+            "{dead:?} against {theta2}"
+        );
         assert!((dead.u[1] - s).abs() < 1e-15, "{dead:?} against {s}");
     }
 }
@@ -55,7 +58,13 @@ impl Job for AtRest<'_> {
         let names = model.point_names();
         let speed = |name: &str, u: &SVector<f64, M>, v: &SVector<f64, F>| {
             let pose = model
-                .analyze(u, v, &drives.rate, &drives.acceleration, &Options::default())
+                .analyze(
+                    u,
+                    v,
+                    &drives.rate,
+                    &drives.acceleration,
+                    &Options::default(),
+                )
                 .unwrap();
             let k = names.iter().position(|n| *n == name).unwrap();
             pose.point_velocities.as_ref()[k].norm()

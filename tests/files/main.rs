@@ -10,10 +10,10 @@ mod models;
 #[path = "../common/twins.rs"]
 mod twins;
 
-/// The code `linkage expand --expanded` prints, compiled.
-mod expanded;
 /// Where links pinned to the frame come to rest.
 mod dead_centres;
+/// The code `linkage expand --expanded` prints, compiled.
+mod expanded;
 mod library;
 /// No string of a file is a path.
 mod paths;

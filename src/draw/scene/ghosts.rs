@@ -18,6 +18,18 @@ impl Scene {
         self
     }
 
+    /// What the ghost poses are, said in the legend beside a faint bar
+    /// (no entry if empty, or if there is no ghost).
+    pub fn ghost_name(mut self, name: &str) -> Scene {
+        self.ghost_name = name.to_owned();
+        self
+    }
+
+    /// Whether the legend has an entry for the ghosts.
+    pub(super) fn ghosts_in_legend(&self) -> bool {
+        !(self.ghosts.is_empty() || self.ghost_name.is_empty())
+    }
+
     /// The ghost poses' points on the screen.
     pub(super) fn place_ghosts(&self, layout: &Layout) -> Result<Vec<Placed>, SceneError> {
         self.ghosts

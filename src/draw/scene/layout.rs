@@ -127,6 +127,7 @@ impl Scene {
             }
             + self.curves.iter().filter(|c| !c.name().is_empty()).count()
             + self.markers.iter().filter(|m| !m.name().is_empty()).count()
+            + usize::from(self.ghosts_in_legend())
             + 1;
         Ok(Layout::fit(
             &bounds,

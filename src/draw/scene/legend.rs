@@ -154,6 +154,26 @@ impl Scene {
             w.close("g");
             y += style::LEGEND_LINE;
         }
+        if self.ghosts_in_legend() {
+            // A faint bar, as the ghosts' bars are drawn.
+            w.open("g", &[("class", "legend-entry"), ("data-for", "ghosts")]);
+            w.element(
+                "line",
+                &[
+                    ("class", "swatch"),
+                    ("x1", &fmt(x)),
+                    ("y1", &fmt(y - 4.0)),
+                    ("x2", &fmt(x + SWATCH)),
+                    ("y2", &fmt(y - 4.0)),
+                    ("stroke", style::GHOST),
+                    ("stroke-width", &fmt(style::GHOST_BAR_WIDTH)),
+                    ("stroke-linecap", "round"),
+                ],
+            );
+            legend_text(w, x + SWATCH + 10.0, y, &self.ghost_name);
+            w.close("g");
+            y += style::LEGEND_LINE;
+        }
         // A bar of a round length.
         let length = nice_below(120.0 / layout.scale);
         let pixels = length * layout.scale;

@@ -367,6 +367,8 @@ pub struct Scene {
     markers: Vec<Markers>,
     curves: Vec<Curve>,
     ghosts: Vec<Frame>,
+    /// The ghosts' legend entry (none if empty).
+    ghost_name: String,
     notes: Vec<notes::Note>,
     labels: bool,
     title: Option<String>,
@@ -398,6 +400,7 @@ impl Scene {
             markers: Vec::new(),
             curves: Vec::new(),
             ghosts: Vec::new(),
+            ghost_name: String::new(),
             notes: Vec::new(),
             labels: true,
             title: None,
