@@ -9,6 +9,12 @@ let mechanism = null;
 let drive = null;
 let info = null;
 let sweep = null;
+// Where a link pinned to the frame or a block on a fixed guide comes to
+// rest over the drive range: found when the dimensions change, drawn
+// faint at every redraw.
+let deadCentres = [];
+// The pivot being dragged, if one is.
+let dragging = null;
 let current = 0;
 // Where the picture puts the model (for a click read as a point).
 let placement = null;
@@ -21,7 +27,7 @@ function status(text, error = false) {
 }
 
 // The plotted coordinate against the driver over the sweep, the singular
-// poses met marked, the current pose as a cursor.
+// poses met and the dead centres marked, the current pose as a cursor.
 function plot() {
   if (!sweep || sweep.v.length < 2) { $("plot").innerHTML = ""; return; }
   // "u:k", "udot:k", "uddot:k" (coordinate k and its rates), "point:j"
@@ -44,23 +50,32 @@ function plot() {
   const X = (x) => pad + (w - 2 * pad) * (x - x0) / (x1 - x0 || 1);
   const Y = (y) => h - pad + (2 * pad - h) * (y - y0) / (y1 - y0);
   const path = xs.map((x, i) => `${i ? "L" : "M"}${X(x).toFixed(2)},${Y(ys[i]).toFixed(2)}`).join("");
-  const marks = sweep.events.map((e) => {
-    const y = series === "u" ? Y(e.u[k])
-      : series === "point" ? Y(e.points[Math.floor(k / 2)][k % 2]) : h - pad;
-    return `<circle cx="${X(e.v[0]).toFixed(2)}" cy="${y.toFixed(2)}" r="4" fill="#a00"><title>${e.kind}</title></circle>`;
+  // On the curve where it plots the pose's own value, else on the axis.
+  const at = (e) => series === "u" ? Y(e.u[k])
+    : series === "point" ? Y(e.points[Math.floor(k / 2)][k % 2]) : h - pad;
+  const marks = sweep.events.map((e) =>
+    `<circle class="singular" cx="${X(e.v[0]).toFixed(2)}" cy="${at(e).toFixed(2)}" r="4" fill="#a00"><title>${e.kind}</title></circle>`);
+  const rests = deadCentres.map((d) => {
+    const [x, y] = [X(d.v[0]), at(d)];
+    return `<path class="dead-centre" d="M${x.toFixed(2)},${(y - 5).toFixed(2)}l5,5l-5,5l-5,-5z" fill="#d35400">` +
+      `<title>dead centre: ${d.what} at rest</title></path>`;
   });
   const fmt = (x) => Number(x.toPrecision(4));
   $("plot").innerHTML =
     `<svg viewBox="0 0 ${w} ${h}" xmlns="http://www.w3.org/2000/svg" font-size="12" font-family="sans-serif">` +
     `<rect x="${pad}" y="${pad / 2}" width="${w - 2 * pad}" height="${h - 1.5 * pad}" fill="none" stroke="#ccc"/>` +
-    `<path d="${path}" fill="none" stroke="#345" stroke-width="1.5"/>${marks.join("")}` +
+    `<path d="${path}" fill="none" stroke="#345" stroke-width="1.5"/>${marks.join("")}${rests.join("")}` +
     `<line id="cursor" x1="${X(current)}" x2="${X(current)}" y1="${pad / 2}" y2="${h - pad}" stroke="#07c" stroke-dasharray="4 3"/>` +
     `<text x="${pad}" y="${h - pad / 3}">${fmt(x0)}</text><text x="${w - pad}" y="${h - pad / 3}" text-anchor="end">${fmt(x1)} ${info.vNames[0]}</text>` +
     `<text x="4" y="${Y(y1) + 4}">${fmt(y1)}</text><text x="4" y="${Y(y0) + 4}">${fmt(y0)}</text>` +
     `<text x="${w / 2}" y="14" text-anchor="middle">${label} against ${info.vNames[0]}</text></svg>`;
   document.body.dataset.plotted = `${xs.length} ${sweep.events.length}`;
-  $("events").innerHTML = sweep.events.map((e) =>
-    `<li>${e.kind} at ${info.vNames[0]} = ${e.v[0].toPrecision(12)}</li>`).join("") +
+  const listed = [
+    ...sweep.events.map((e) => ({ v: e.v[0], text: e.kind })),
+    ...deadCentres.map((d) => ({ v: d.v[0], text: `dead centre: ${d.what} at rest` })),
+  ].sort((a, b) => a.v - b.v);
+  $("events").innerHTML = listed.map((e) =>
+    `<li>${e.text} at ${info.vNames[0]} = ${e.v.toPrecision(12)}</li>`).join("") +
     (sweep.complete ? "" : "<li>the sweep stops before the end of the drive range</li>");
 }
 
@@ -73,7 +88,7 @@ function draw(value) {
   try {
     const started = performance.now();
     const pose = JSON.parse(mechanism.analyze(v));
-    const picture = JSON.parse(mechanism.picture(640, v, JSON.stringify(targets())));
+    const picture = JSON.parse(mechanism.picture(640, v, JSON.stringify(targets()), JSON.stringify(deadCentres)));
     $("picture").innerHTML = picture.svg;
     placement = picture.placement;
     const took = performance.now() - started;
@@ -99,11 +114,47 @@ function resweep() {
     sweep = null;
     $("events").innerHTML = `<li>${e.message}</li>`;
   }
+  // While a pivot is dragged, none (found again when it is let go).
+  try {
+    deadCentres = sweep && !dragging ? JSON.parse(mechanism.deadCentres()) : [];
+  } catch (e) {
+    deadCentres = [];
+  }
   plot();
+}
+
+const escaped = (text) => text.replace(/&/g, "&amp;").replace(/</g, "&lt;").replace(/>/g, "&gt;");
+// The mistakes underlined in the editor itself: the layer behind it holds
+// the same text (the editor's own is drawn over it), each mistake's range
+// in a mark; a mistake at a line's end marks a space there.
+function underline(text, found) {
+  const ranges = found.filter((m) => m.from !== null).map((m) => [m.from, m.to]).sort((a, b) => a[0] - b[0]);
+  let html = "";
+  let at = 0;
+  for (const [from, to] of ranges) {
+    if (from < at) continue;
+    html += escaped(text.slice(at, from));
+    const marked = text.slice(from, Math.max(to, from)).replace(/\n[^]*$/, "");
+    if (marked === "") {
+      html += "<mark> </mark>";
+      at = from;
+    } else {
+      html += `<mark>${escaped(marked)}</mark>`;
+      at = from + marked.length;
+    }
+  }
+  // A last line, so that the layer scrolls as far as the editor.
+  $("editor-marks").innerHTML = html + escaped(text.slice(at)) + "\n ";
+  followScroll();
+}
+function followScroll() {
+  $("editor-marks").scrollTop = $("editor").scrollTop;
+  $("editor-marks").scrollLeft = $("editor").scrollLeft;
 }
 
 function showMistakes(text) {
   const found = JSON.parse(mistakes(text, "the editor"));
+  underline(text, found);
   const list = $("mistakes");
   list.innerHTML = "";
   for (const m of found) {
@@ -179,6 +230,7 @@ $("editor").addEventListener("input", () => {
   clearTimeout(typing);
   typing = setTimeout(() => open($("editor").value), 300);
 });
+$("editor").addEventListener("scroll", followScroll);
 $("driver").addEventListener("input", () => draw(Number($("driver").value)));
 $("quantity").addEventListener("change", plot);
 
@@ -239,8 +291,8 @@ function showSensitivities(v) {
   document.body.dataset.sensitivities = JSON.stringify(s.u);
 }
 // A ground pivot J of a mechanism given by joints and links is the
-// parameters x_J and y_J: dragged on the picture, it moves them.
-let dragging = null;
+// parameters x_J and y_J: dragged on the picture, it moves them (the
+// drag in `dragging`, declared above).
 function pivotNear(event) {
   const svg = $("picture").querySelector("svg");
   if (!svg || !placement) return null;
@@ -285,6 +337,7 @@ const endDrag = () => {
   dragged = dragging !== null;
   if (dragged) writeParameters();
   dragging = null;
+  if (dragged) { resweep(); draw(current); }
   $("picture").classList.remove("dragging");
 };
 $("picture").addEventListener("pointerup", endDrag);
@@ -524,7 +577,9 @@ if (params.has("selftest")) {
   const shown = showMistakes(broken) ? 0 : Number(document.body.dataset.mistakes);
   document.body.dataset.brokenMistakes = String(shown);
   document.body.dataset.brokenMessage = JSON.parse(mistakes(broken, "the editor"))[0]?.message ?? "";
+  document.body.dataset.brokenMarks = JSON.stringify([...document.querySelectorAll("#editor-marks mark")].map((m) => m.textContent));
   showMistakes(start.text);
+  document.body.dataset.marksAfter = String(document.querySelectorAll("#editor-marks mark").length);
   // A pyslvs four-bar imported as joints and links, and analysed.
   $("import-text").value = "M[J[R, color[Green], P[0.0, 0.0], L[ground, L1]], " +
     "J[R, color[Green], P[20.0, 0.0], L[L1, L2]], J[R, color[Green], P[70.0, 40.0], L[L2, L3]], " +
@@ -567,6 +622,7 @@ if (params.has("timing")) {
 window.linkagePage = {
   get info() { return info; },
   get sweep() { return sweep; },
+  get deadCentres() { return deadCentres; },
   get found() { return found; },
   get placement() { return placement; },
   get current() { return current; },

@@ -92,8 +92,8 @@ impl Job for Picture<'_> {
         loaded.sweep_each(&model, drives.steps, &mut |_, p| {
             cycle.push(Frame::from_sweep_pose(&model, p))
         })?;
-        (loaded.file())
-            .scene_of(model.point_names())
+        loaded
+            .scene_of(&model)
             .width(self.width)
             .render(&frame, &cycle)
             .map_err(|e| Failure::BadInput(format!("the drawing: {e}")))

@@ -148,6 +148,44 @@ struct Picture<'a> {
     width: f64,
     v: Vec<f64>,
     targets: &'a [[f64; 2]],
+    /// Other poses to draw faint (the dead centres, found once for the
+    /// mechanism's dimensions rather than at every redraw).
+    dead_centres: &'a [GivenPose],
+}
+
+/// A pose given by the page: its coordinates and drivers.
+#[derive(serde::Deserialize)]
+struct GivenPose {
+    u: Vec<f64>,
+    v: Vec<f64>,
+}
+
+impl GivenPose {
+    /// The pose's frame, if it has the mechanism's sizes and is finite.
+    fn frame<const M: usize, const F: usize, const P: usize>(
+        &self,
+        model: &Fixed<M, F, P>,
+    ) -> Result<Frame, Failure> {
+        let finite = self.u.iter().chain(&self.v).all(|x| x.is_finite());
+        if self.u.len() != M || self.v.len() != F || !finite {
+            return Err(Failure(format!(
+                "a pose drawn faint has {M} coordinates and {F} driver values, each finite"
+            )));
+        }
+        let u = SVector::<f64, M>::from_fn(|k, _| self.u[k]);
+        let v = SVector::<f64, F>::from_fn(|k, _| self.v[k]);
+        Ok(Frame::positions(model, &u, &v))
+    }
+}
+
+/// What the faint poses are, for the legend.
+fn faint(dead_centres: bool, singular: bool) -> &'static str {
+    match (dead_centres, singular) {
+        (true, true) => "dead centres and singular poses, faint",
+        (true, false) => "dead centres, faint",
+        (false, true) => "singular poses, faint",
+        (false, false) => "",
+    }
 }
 
 impl Job for Picture<'_> {
@@ -166,10 +204,15 @@ impl Job for Picture<'_> {
         let singular: Vec<Frame> = (summary.events.iter())
             .map(|e| Frame::positions(&model, &e.u, &e.v))
             .collect();
-        let mut scene = (self.loaded.file())
-            .scene_of(model.point_names())
+        let dead_centres = (self.dead_centres.iter())
+            .map(|pose| pose.frame(&model))
+            .collect::<Result<Vec<Frame>, Failure>>()?;
+        let mut scene = (self.loaded)
+            .scene_of(&model)
             .width(self.width)
-            .ghosts(&singular);
+            .ghosts(&dead_centres)
+            .ghosts(&singular)
+            .ghost_name(faint(!dead_centres.is_empty(), !singular.is_empty()));
         if !self.targets.is_empty() {
             scene = scene.markers(
                 Markers::new("targets", self.targets.iter().copied())
@@ -238,6 +281,30 @@ fn given<const F: usize>(v: &[f64]) -> Result<Option<SVector<f64, F>>, Failure> 
             "{} driver values for {F} drivers, each finite",
             v.len()
         )))
+    }
+}
+
+/// The dead centres over the file's drive range: what comes to rest, and
+/// the pose there with its points.
+struct DeadCentres<'a> {
+    loaded: &'a Loaded,
+}
+
+impl Job for DeadCentres<'_> {
+    type Output = Value;
+    type Error = Failure;
+    fn run<const M: usize, const F: usize, const P: usize>(
+        self,
+        model: Fixed<M, F, P>,
+    ) -> Result<Value, Failure> {
+        let found = self.loaded.dead_centres(&model).map_err(Failure::of)?;
+        Ok(found
+            .iter()
+            .map(|d| {
+                let at = model.point_positions(&d.u, &d.v);
+                json!({ "what": d.what, "v": d.v.as_slice(), "u": d.u.as_slice(), "points": xy(at.as_ref()) })
+            })
+            .collect())
     }
 }
 
@@ -321,22 +388,44 @@ impl WebMechanism {
     /// empty), `width` pixels wide, with its points' paths and its
     /// singular poses: SVG.
     pub fn svg(&self, width: f64, v: Vec<f64>) -> Result<String, JsError> {
-        self.picture_of(width, v, &[]).map(|(svg, _)| svg)
+        self.picture_of(width, v, &[], &[]).map(|(svg, _)| svg)
+    }
+
+    /// Where a link pinned to the frame or a block on a fixed guide comes
+    /// to rest over the drive range (from the file's drawing), as JSON
+    /// `[{what, v, u, points}]`, in the order of the sweep.
+    #[wasm_bindgen(js_name = deadCentres)]
+    pub fn dead_centres(&self) -> Result<String, JsError> {
+        let job = DeadCentres {
+            loaded: &self.loaded,
+        };
+        let found = run(self.loaded.mechanism(), job).map_err(|Failure(why)| JsError::new(&why))?;
+        Ok(found.to_string())
     }
 
     /// [`WebMechanism::svg`] with the points `targets` (JSON `[[x, y],
-    /// …]`) marked and numbered, and where the picture puts the model:
+    /// …]`) marked and numbered, the poses `dead_centres` (JSON `[{u, v},
+    /// …]`, as [`WebMechanism::dead_centres`] gives them) drawn faint,
+    /// and where the picture puts the model:
     /// JSON `{svg, placement: {scale, origin: [x, y], top, width,
     /// height}}` (a pixel (px, py) is the model point (origin.x + px /
     /// scale, origin.y − (py − top) / scale)).
-    pub fn picture(&self, width: f64, v: Vec<f64>, targets: &str) -> Result<String, JsError> {
+    pub fn picture(
+        &self,
+        width: f64,
+        v: Vec<f64>,
+        targets: &str,
+        dead_centres: &str,
+    ) -> Result<String, JsError> {
         let targets: Vec<[f64; 2]> = serde_json::from_str(targets).map_err(|_| {
             JsError::new("the targets are a list of points [x, y] of finite numbers")
         })?;
         if targets.iter().flatten().any(|x| !x.is_finite()) {
             return Err(JsError::new("a target is not finite"));
         }
-        let (svg, placed) = self.picture_of(width, v, &targets)?;
+        let dead_centres: Vec<GivenPose> = serde_json::from_str(dead_centres)
+            .map_err(|_| JsError::new("the poses drawn faint are a list of {u, v}"))?;
+        let (svg, placed) = self.picture_of(width, v, &targets, &dead_centres)?;
         Ok(json!({
             "svg": svg,
             "placement": {
@@ -383,6 +472,7 @@ impl WebMechanism {
         width: f64,
         v: Vec<f64>,
         targets: &[[f64; 2]],
+        dead_centres: &[GivenPose],
     ) -> Result<(String, Placement), JsError> {
         if !(width.is_finite() && width > 0.0 && width <= 100_000.0) {
             return Err(JsError::new(
@@ -394,7 +484,57 @@ impl WebMechanism {
             width,
             v,
             targets,
+            dead_centres,
         };
         run(self.loaded.mechanism(), job).map_err(|Failure(why)| JsError::new(&why))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const FOUR_BAR: &str = include_str!("../../mechanisms/four_bar.toml");
+
+    /// The four-bar's two dead centres, found once, are drawn faint and
+    /// named in the legend; a pose of the wrong size is refused, saying
+    /// why.
+    #[test]
+    fn dead_centres_are_drawn_faint_and_named() {
+        let loaded = Loaded::from_text("four_bar.toml", FOUR_BAR).ok().unwrap();
+        let found = run(loaded.mechanism(), DeadCentres { loaded: &loaded })
+            .ok()
+            .unwrap();
+        let found = found.as_array().unwrap();
+        let at: Vec<f64> = found.iter().map(|d| d["v"][0].as_f64().unwrap()).collect();
+        assert_eq!(found[0]["what"], "C–D");
+        assert!((at[0] - (4.0f64 / 7.0).acos()).abs() < 1e-12, "{at:?}");
+        assert!((at[1] - 240f64.to_radians()).abs() < 1e-12, "{at:?}");
+        let poses: Vec<GivenPose> = serde_json::from_value(Value::from(found.clone())).unwrap();
+        let picture = |dead_centres: &[GivenPose]| {
+            let job = Picture {
+                loaded: &loaded,
+                width: 640.0,
+                v: Vec::new(),
+                targets: &[],
+                dead_centres,
+            };
+            run(loaded.mechanism(), job)
+        };
+        let (svg, _) = picture(&poses).ok().unwrap();
+        assert_eq!(svg.matches(r#"class="ghost""#).count(), 2);
+        assert!(svg.contains("dead centres, faint"));
+        let (plain, _) = picture(&[]).ok().unwrap();
+        assert!(!plain.contains(r#"class="ghost""#) && !plain.contains("faint"));
+        let wrong = [GivenPose {
+            u: vec![0.0],
+            v: vec![0.0],
+        }];
+        match picture(&wrong) {
+            Err(Failure(why)) => {
+                assert!(why.contains("2 coordinates and 1 driver values"), "{why}")
+            }
+            Ok(_) => panic!("a pose of one coordinate drawn for a four-bar"),
+        }
     }
 }

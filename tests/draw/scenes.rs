@@ -1202,3 +1202,16 @@ fn the_animation_has_the_stills_scales_and_names_no_pose() {
             .any(|t| t == "A revolution of the crank")
     );
 }
+
+/// A pivot named again is moved, not drawn twice.
+#[test]
+fn a_ground_pivot_named_again_is_moved() {
+    let moved = Scene::new()
+        .ground("A", [0.0, 0.0])
+        .ground("D", [80.0, 0.0])
+        .ground("A", [5.0, -2.0]);
+    let written = Scene::new()
+        .ground("A", [5.0, -2.0])
+        .ground("D", [80.0, 0.0]);
+    assert_eq!(moved, written);
+}

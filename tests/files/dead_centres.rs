@@ -131,3 +131,35 @@ fn a_file_without_a_drawing_has_no_dead_centre() {
     let model = file.mechanism().fixed::<1, 1>().unwrap();
     assert_eq!(file.dead_centres(&model).unwrap(), Vec::new());
 }
+
+/// A topology's pivot is its parameters: moved after the file was read
+/// (as the page's drag moves it), its links turn about it where it now is
+/// — the picture draws it there, and the rocker rests there.
+#[test]
+fn a_moved_pivot_is_where_the_rocker_turns() {
+    let mut file = loaded("mechanisms/joints/four_bar.toml");
+    let before = {
+        let bar = file.mechanism().fixed::<2, 1>().unwrap();
+        file.dead_centres(&bar).unwrap()
+    };
+    let mechanism = file.mechanism_mut();
+    mechanism.set_parameter("x_D", 85.0).unwrap();
+    mechanism.set_parameter("y_D", 4.0).unwrap();
+    let bar = file.mechanism().fixed::<2, 1>().unwrap();
+    let pivots = file.pivots(&bar);
+    assert!(
+        pivots.contains(&("D".to_owned(), [85.0, 4.0])),
+        "{pivots:?}"
+    );
+    assert!(pivots.contains(&("A".to_owned(), [0.0, 0.0])), "{pivots:?}");
+    let after = file.dead_centres(&bar).unwrap();
+    assert_eq!((before.len(), after.len()), (2, 2));
+    assert!((after[0].v[0] - before[0].v[0]).abs() > 1e-3);
+    let job = AtRest { loaded: &file };
+    for (what, speed, peak) in run(file.mechanism(), job).unwrap() {
+        assert!(speed <= 1e-9 * peak, "{what} at {speed} against {peak}");
+    }
+    // Drawn where it now is.
+    let written = file.file().scene_of(bar.point_names());
+    assert_eq!(file.scene_of(&bar), written.ground("D", [85.0, 4.0]));
+}

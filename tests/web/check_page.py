@@ -77,6 +77,9 @@ def selftest(tab, url):
     assert abs(float(d["transmission"]) - smallest) < 1e-9, d["transmission"]
     assert d["mistakes"] == "0"
     assert int(d["brokenMistakes"]) >= 1 and "`l9`" in d["brokenMessage"], d
+    # Underlined in the editor where it stands, and no longer once mended.
+    assert "l9" in json.loads(d["brokenMarks"]), d["brokenMarks"]
+    assert d["marksAfter"] == "0", d["marksAfter"]
     # The page's link opens the text it carries: here, the slider-crank.
     crank = (ROOT / "mechanisms/slider_crank.toml").read_text()
     link = d["link"].split("#")[0] + "#file=" + urllib.parse.quote(base64.b64encode(crank.encode()).decode())
@@ -111,6 +114,7 @@ def drive_by_mouse_and_keyboard(tab, url):
     tab.drag(start, end)
     v = same_as_python(tab, engine)
     assert 3.5 < v < 5.2, f"the drag moved the driver to {v}"
+    dead_centres(tab)
     cursor = tab.evaluate("document.getElementById('cursor').getAttribute('x1')")
     tab.evaluate("document.getElementById('driver').focus()")
     tab.key("ArrowRight", "ArrowRight", 39)
@@ -127,6 +131,33 @@ def drive_by_mouse_and_keyboard(tab, url):
     shown = [float(t) for t in labels[2:4]]
     assert close(shown[0], max(swept), 1e-3) and close(shown[1], min(swept), 1e-3), (shown, max(swept), min(swept))
     return engine
+
+
+def in_line(centres, a, l2, l3):
+    """At each dead centre of a four-bar's rocker, the crank and the coupler
+    are in line: the coupler's far end C is l3 + l2 or l3 - l2 from the
+    crank's pivot A (B and C the first two points)."""
+    reaches = sorted(math.dist(a, d["points"][1]) for d in centres)
+    assert len(reaches) == 2, centres
+    for reach, exact in zip(reaches, [l3 - l2, l3 + l2]):
+        assert abs(reach - exact) < 1e-9 * exact, f"A to C at a dead centre: {reach}, in line {exact}"
+
+
+def dead_centres(tab):
+    """The four-bar's two dead centres, where the rocker comes to rest with
+    the crank and the coupler in line: at θ2 = acos(4/7) and 240° (the
+    worksheet's lengths), marked on the plot and the picture and listed."""
+    found = tab.evaluate("linkagePage.deadCentres")
+    at = [d["v"][0] for d in found]
+    assert [d["what"] for d in found] == ["C–D", "C–D"], found
+    assert abs(at[0] - math.acos(4 / 7)) < 1e-12 and abs(at[1] - math.radians(240)) < 1e-12, at
+    in_line(found, (0, 0), 20.0, 50.0)  # the page speaks mm, as the file
+    assert tab.evaluate("document.querySelectorAll('#plot .dead-centre').length") == 2
+    assert tab.evaluate("document.querySelectorAll('#picture .ghost').length") == 2
+    legend = tab.evaluate("document.querySelector('#picture [data-for=ghosts]').textContent")
+    assert "dead centres, faint" in legend, legend
+    listed = tab.evaluate("[...document.querySelectorAll('#events li')].map((l) => l.textContent)")
+    assert sum("dead centre: C–D at rest" in item for item in listed) == 2, listed
 
 
 def dimensions(tab):
@@ -177,6 +208,11 @@ def drag_a_pivot(tab, url):
     expected = 30 / (placed["scale"] * ratio)
     assert abs(moved - expected) < 0.02 * expected, f"{joint} moved {moved}, the pointer {expected}"
     assert "error" not in data(tab), data(tab)["error"]
+    # Let go, the rocker's dead centres are found where it now turns.
+    info = tab.evaluate("(() => { const p = linkagePage.info; return { names: p.parameterNames, values: p.parameters }; })()")
+    value = dict(zip(info["names"], info["values"]))
+    found = tab.evaluate("linkagePage.deadCentres")
+    in_line(found, (value["x_A"], value["y_A"]), value["l_A_B"], value["l_B_C"])
 
 
 def design(tab, url):

@@ -29,8 +29,7 @@ impl Job for Picture<'_> {
             cycle.push(Frame::from_sweep_pose(&model, p))
         })?;
         self.loaded
-            .file()
-            .scene_of(model.point_names())
+            .scene_of(&model)
             .width(self.width)
             .render(&frame, &cycle)
             .map_err(|e| Failure::Analysis(format!("the drawing: {e}")))

@@ -413,9 +413,14 @@ impl Scene {
     }
 
     /// A ground pivot named `name` at a fixed position (drawn hatched); a
-    /// name the frame also defines is drawn where the frame puts it.
+    /// name the frame also defines is drawn where the frame puts it, and
+    /// a pivot named again is moved.
     pub fn ground(mut self, name: &str, at: [f64; 2]) -> Scene {
-        self.ground.push((name.into(), Vector2::new(at[0], at[1])));
+        let at = Vector2::new(at[0], at[1]);
+        match self.ground.iter_mut().find(|(n, _)| n == name) {
+            Some((_, was)) => *was = at,
+            None => self.ground.push((name.into(), at)),
+        }
         self
     }
 
@@ -423,7 +428,7 @@ impl Scene {
     /// each): the same description a force analysis takes.
     pub fn with_ground(mut self, ground: &Ground) -> Scene {
         for (name, at) in ground.points() {
-            self.ground.push((name.into(), at));
+            self = self.ground(name, [at.x, at.y]);
         }
         self
     }

@@ -4,7 +4,8 @@
 //! mechanism would lock were that link its driver (a four-bar's rocker
 //! with the crank and the coupler in line, a slider-crank's slider at top
 //! and bottom dead centre). Read from the file's `[drawing]`: its ground
-//! pivots, the links and plates on them, its sliders on fixed guides; each
+//! pivots (where [`Loaded::pivots`] puts them), the links and plates on
+//! them, its sliders on fixed guides; each
 //! located in the driver to rounding ([`crate::watch::locate`]).
 
 use super::{LoadError, Loaded};
@@ -57,13 +58,13 @@ enum Rests {
 /// Each link or plate pinned to the frame at one pivot, with a named
 /// point on it (its first), and each slider on a fixed guide: what the
 /// drawing shows that may come to rest, named.
-fn resting(drawing: &DrawingSpec, points: &[&str]) -> Vec<(String, Rests)> {
+fn resting(
+    drawing: &DrawingSpec,
+    pivots: &[(String, [f64; 2])],
+    points: &[&str],
+) -> Vec<(String, Rests)> {
     let point = |name: &str| points.iter().position(|p| *p == name);
-    let pivot = |name: &str| {
-        (drawing.ground.iter())
-            .find(|(n, _)| n.text == name)
-            .map(|(_, [x, y])| [x.value, y.value])
-    };
+    let pivot = |name: &str| (pivots.iter()).find(|(n, _)| n == name).map(|(_, at)| *at);
     let mut found = Vec::new();
     let bodies =
         (drawing.links.iter().map(|l| &l[..])).chain(drawing.plates.iter().map(|p| &p[..]));
@@ -122,7 +123,7 @@ impl Loaded {
         let Some(drawing) = &self.file().drawing else {
             return Ok(Vec::new());
         };
-        let rests = resting(drawing, model.point_names());
+        let rests = resting(drawing, &self.pivots(model), model.point_names());
         if rests.is_empty() {
             return Ok(Vec::new());
         }

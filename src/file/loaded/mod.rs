@@ -23,6 +23,7 @@ mod dead_centres;
 mod drive;
 mod dxf;
 mod error;
+mod picture;
 
 pub use dead_centres::{DeadCentre, DeadCentreError};
 pub use drive::{FixedAnalysis, FixedDrives, Swept, at_text};
