@@ -88,7 +88,8 @@ function draw(value) {
   try {
     const started = performance.now();
     const pose = JSON.parse(mechanism.analyze(v));
-    const picture = JSON.parse(mechanism.picture(640, v, JSON.stringify(targets()), JSON.stringify(deadCentres)));
+    const picture = JSON.parse(mechanism.picture(640, v, JSON.stringify(targets()), JSON.stringify(deadCentres),
+      $("vectors").value));
     $("picture").innerHTML = picture.svg;
     placement = picture.placement;
     const took = performance.now() - started;
@@ -192,6 +193,9 @@ function open(text) {
     $("driver").step = String((high - low) / Math.max(drive.steps, 1) / 10);
     $("driver").value = String(drive.at[0]);
     $("driver-label").textContent = info.vNames[0];
+    // A file that draws no arrow (a mechanism given by joints and links)
+    // is shown with its points' velocities.
+    $("vectors").value = info.fileArrows > 0 ? "file" : "velocities";
     $("quantity").innerHTML = [
       ...info.uNames.map((n, k) => `<option value="u:${k}">${n}</option>`),
       ...info.uNames.map((n, k) => `<option value="udot:${k}">${n}' (velocity)</option>`),
@@ -233,6 +237,7 @@ $("editor").addEventListener("input", () => {
 $("editor").addEventListener("scroll", followScroll);
 $("driver").addEventListener("input", () => draw(Number($("driver").value)));
 $("quantity").addEventListener("change", plot);
+$("vectors").addEventListener("change", () => draw(current));
 
 // The dimensions: each parameter's value, edited in place; and the exact
 // sensitivities of the pose at the driver's value.
@@ -396,6 +401,44 @@ let worker = null;
 let watchdog = null;
 let found = null;
 let chosen = -1;
+// What the search was asked (the text, the point, the targets), and the
+// designs' small pictures made so far, by their parameters.
+let searched = null;
+const thumbnails = new Map();
+// The first designs are drawn small; the others are listed.
+const DRAWN_DESIGNS = 12;
+// A design's path of the searched point over the turn, through the
+// targets (dots): a small picture, scaled to fit both.
+function thumbnail(d) {
+  const key = JSON.stringify(d.parameters);
+  if (thumbnails.has(key)) return thumbnails.get(key);
+  let svg = "";
+  try {
+    const m = Mechanism.fromText(searched.text, "the design");
+    for (const [name, value] of Object.entries(d.parameters)) m.setParameter(name, value);
+    const s = JSON.parse(m.sweep(0));
+    const names = JSON.parse(m.info()).pointNames;
+    m.free();
+    const [j, p] = [names.indexOf(searched.point), names.length];
+    const path = s.v.map((_, i) => [s.points[i * 2 * p + 2 * j], s.points[i * 2 * p + 2 * j + 1]]);
+    const all = [...path, ...searched.targets];
+    const [x0, x1] = [Math.min(...all.map((q) => q[0])), Math.max(...all.map((q) => q[0]))];
+    const [y0, y1] = [Math.min(...all.map((q) => q[1])), Math.max(...all.map((q) => q[1]))];
+    const [w, h, pad] = [120, 80, 6];
+    const scale = Math.min((w - 2 * pad) / (x1 - x0 || 1), (h - 2 * pad) / (y1 - y0 || 1));
+    const X = (x) => (pad + (x - x0) * scale).toFixed(1);
+    const Y = (y) => (h - pad - (y - y0) * scale).toFixed(1);
+    const line = path.map((q, i) => `${i ? "L" : "M"}${X(q[0])},${Y(q[1])}`).join("");
+    const dots = searched.targets.map((q) => `<circle cx="${X(q[0])}" cy="${Y(q[1])}" r="2.5" fill="#c0392b"/>`);
+    svg = `<svg class="design-path" viewBox="0 0 ${w} ${h}" width="${w}" height="${h}" role="img" ` +
+      `aria-label="the design's path of ${searched.point} through the targets" xmlns="http://www.w3.org/2000/svg">` +
+      `<path d="${line}" fill="none" stroke="#345" stroke-width="1.2"/>${dots.join("")}</svg>`;
+  } catch (e) {
+    svg = "";
+  }
+  thumbnails.set(key, svg);
+  return svg;
+}
 function designStatus(text, error = false) {
   $("design-status").textContent = text;
   $("design-status").className = error ? "error" : "";
@@ -404,12 +447,13 @@ function showDesigns() {
   const ds = found ? found.designs : [];
   const rows = ds.map((d, k) => {
     const c = d.certificate;
-    return `<tr${k === chosen ? ' class="chosen"' : ""}><td>${k + 1}</td><td>${d.largestError.toExponential(1)}</td>` +
+    return `<tr${k === chosen ? ' class="chosen"' : ""}><td>${k + 1}</td>` +
+      `<td>${k < DRAWN_DESIGNS ? thumbnail(d) : ""}</td><td>${d.largestError.toExponential(1)}</td>` +
       `<td>${c ? c.transmission.toFixed(1) + "°" : ""}</td><td>${d.start}</td>` +
       `<td><button type="button" data-design="${k}">Use</button></td></tr>`;
   });
   $("designs").innerHTML = ds.length
-    ? `<tr><th>#</th><th>largest miss</th><th>smallest transmission</th><th>start</th><th></th></tr>${rows.join("")}` : "";
+    ? `<tr><th>#</th><th>path</th><th>largest miss</th><th>smallest transmission</th><th>start</th><th></th></tr>${rows.join("")}` : "";
   for (const b of $("designs").querySelectorAll("button[data-design]")) {
     b.addEventListener("click", () => useDesign(Number(b.dataset.design)));
   }
@@ -460,12 +504,15 @@ $("design-run").addEventListener("click", () => {
   if (!worker) startWorker();
   found = null;
   chosen = -1;
+  const asked = task();
+  searched = { text: $("editor").value, point: asked.point, targets: asked.targets };
+  thumbnails.clear();
   showDesigns();
   const starts = Number($("design-starts").value);
   $("design-run").disabled = true;
   $("design-stop").disabled = false;
   designStatus("searching…");
-  worker.postMessage({ type: "start", text: $("editor").value, task: task(), starts });
+  worker.postMessage({ type: "start", text: searched.text, task: asked, starts });
 });
 $("design-stop").addEventListener("click", () => {
   worker.postMessage({ type: "stop" });

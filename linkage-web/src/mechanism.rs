@@ -151,6 +151,29 @@ struct Picture<'a> {
     /// Other poses to draw faint (the dead centres, found once for the
     /// mechanism's dimensions rather than at every redraw).
     dead_centres: &'a [GivenPose],
+    arrows: Arrows,
+}
+
+/// Which points the picture draws arrows at.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Arrows {
+    /// Those the file's drawing names.
+    File,
+    /// Those, and every point's velocity.
+    Velocities,
+    /// Those, and every point's velocity and acceleration.
+    Both,
+}
+
+impl Arrows {
+    fn named(name: &str) -> Option<Arrows> {
+        match name {
+            "file" => Some(Arrows::File),
+            "velocities" => Some(Arrows::Velocities),
+            "both" => Some(Arrows::Both),
+            _ => None,
+        }
+    }
 }
 
 /// A pose given by the page: its coordinates and drivers.
@@ -213,6 +236,13 @@ impl Job for Picture<'_> {
             .ghosts(&dead_centres)
             .ghosts(&singular)
             .ghost_name(faint(!dead_centres.is_empty(), !singular.is_empty()));
+        let points = model.point_names();
+        if self.arrows != Arrows::File {
+            scene = scene.velocities(points);
+        }
+        if self.arrows == Arrows::Both {
+            scene = scene.accelerations(points);
+        }
         if !self.targets.is_empty() {
             scene = scene.markers(
                 Markers::new("targets", self.targets.iter().copied())
@@ -344,6 +374,8 @@ impl WebMechanism {
             "name": m.name(), "uNames": m.u_names(), "vNames": m.v_names(),
             "pointNames": m.point_names(), "parameterNames": m.parameter_names(),
             "parameters": m.parameters(), "lengthUnit": self.loaded.file().length_unit,
+            "fileArrows": self.loaded.file().drawing.as_ref()
+                .map_or(0, |d| d.velocities.len() + d.accelerations.len()),
         })
         .to_string()
     }
@@ -388,7 +420,8 @@ impl WebMechanism {
     /// empty), `width` pixels wide, with its points' paths and its
     /// singular poses: SVG.
     pub fn svg(&self, width: f64, v: Vec<f64>) -> Result<String, JsError> {
-        self.picture_of(width, v, &[], &[]).map(|(svg, _)| svg)
+        self.picture_of(width, v, &[], &[], Arrows::File)
+            .map(|(svg, _)| svg)
     }
 
     /// Where a link pinned to the frame or a block on a fixed guide comes
@@ -406,7 +439,9 @@ impl WebMechanism {
     /// [`WebMechanism::svg`] with the points `targets` (JSON `[[x, y],
     /// …]`) marked and numbered, the poses `dead_centres` (JSON `[{u, v},
     /// …]`, as [`WebMechanism::dead_centres`] gives them) drawn faint,
-    /// and where the picture puts the model:
+    /// arrows at the points the file names (`arrows` "file"), or at every
+    /// point too ("velocities", "both": velocities and accelerations), and
+    /// where the picture puts the model:
     /// JSON `{svg, placement: {scale, origin: [x, y], top, width,
     /// height}}` (a pixel (px, py) is the model point (origin.x + px /
     /// scale, origin.y − (py − top) / scale)).
@@ -416,7 +451,10 @@ impl WebMechanism {
         v: Vec<f64>,
         targets: &str,
         dead_centres: &str,
+        arrows: &str,
     ) -> Result<String, JsError> {
+        let arrows = Arrows::named(arrows)
+            .ok_or_else(|| JsError::new("the arrows are \"file\", \"velocities\" or \"both\""))?;
         let targets: Vec<[f64; 2]> = serde_json::from_str(targets).map_err(|_| {
             JsError::new("the targets are a list of points [x, y] of finite numbers")
         })?;
@@ -425,7 +463,7 @@ impl WebMechanism {
         }
         let dead_centres: Vec<GivenPose> = serde_json::from_str(dead_centres)
             .map_err(|_| JsError::new("the poses drawn faint are a list of {u, v}"))?;
-        let (svg, placed) = self.picture_of(width, v, &targets, &dead_centres)?;
+        let (svg, placed) = self.picture_of(width, v, &targets, &dead_centres, arrows)?;
         Ok(json!({
             "svg": svg,
             "placement": {
@@ -473,6 +511,7 @@ impl WebMechanism {
         v: Vec<f64>,
         targets: &[[f64; 2]],
         dead_centres: &[GivenPose],
+        arrows: Arrows,
     ) -> Result<(String, Placement), JsError> {
         if !(width.is_finite() && width > 0.0 && width <= 100_000.0) {
             return Err(JsError::new(
@@ -485,6 +524,7 @@ impl WebMechanism {
             v,
             targets,
             dead_centres,
+            arrows,
         };
         run(self.loaded.mechanism(), job).map_err(|Failure(why)| JsError::new(&why))
     }
@@ -518,6 +558,7 @@ mod tests {
                 v: Vec::new(),
                 targets: &[],
                 dead_centres,
+                arrows: Arrows::File,
             };
             run(loaded.mechanism(), job)
         };
@@ -536,5 +577,31 @@ mod tests {
             }
             Ok(_) => panic!("a pose of one coordinate drawn for a four-bar"),
         }
+    }
+
+    /// A mechanism given by joints and links names no arrow: asked for,
+    /// every point's velocity (and acceleration) is drawn.
+    #[test]
+    fn every_points_arrows_on_request() {
+        let text = include_str!("../../mechanisms/joints/four_bar.toml");
+        let loaded = Loaded::from_topology("four_bar.toml", text).ok().unwrap().1;
+        let arrows = |arrows: Arrows| {
+            let job = Picture {
+                loaded: &loaded,
+                width: 640.0,
+                v: Vec::new(),
+                targets: &[],
+                dead_centres: &[],
+                arrows,
+            };
+            let (svg, _) = run(loaded.mechanism(), job).ok().unwrap();
+            let count = |kind: &str| svg.matches(&format!(r#"class="arrow {kind}""#)).count();
+            (count("velocity"), count("acceleration"))
+        };
+        let points = loaded.mechanism().point_names().len();
+        assert_eq!(arrows(Arrows::File), (0, 0));
+        assert_eq!(arrows(Arrows::Velocities), (points, 0));
+        assert_eq!(arrows(Arrows::Both), (points, points));
+        assert_eq!(Arrows::named("sideways"), None);
     }
 }

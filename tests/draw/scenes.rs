@@ -1215,3 +1215,17 @@ fn a_ground_pivot_named_again_is_moved() {
         .ground("D", [80.0, 0.0]);
     assert_eq!(moved, written);
 }
+
+/// A point's arrow asked for twice is drawn once.
+#[test]
+fn an_arrow_asked_for_twice_is_drawn_once() {
+    let twice = Scene::new()
+        .velocities(["B", "C"])
+        .velocities(["C", "D"])
+        .accelerations(["B"])
+        .accelerations(["B"]);
+    let once = Scene::new()
+        .velocities(["B", "C", "D"])
+        .accelerations(["B"]);
+    assert_eq!(twice, once);
+}

@@ -9,7 +9,8 @@ environment); edits a dimension, gives one that cannot be (NaN, a crank
 too long to turn) and sees a message with the page alive; drags a ground
 pivot; clicks target points onto the picture and runs a synthesis in the
 page's worker (progress, designs used, a search stopped, targets
-mistyped); opens a malformed file, imports, exports and links; compares
+mistyped); reaches every control by the keyboard, a mistake's place
+among them; opens a malformed file, imports, exports and links; compares
 screenshots (the four-bar's picture, the page on a narrow screen) with
 committed ones; and reports the engine's size.
 
@@ -215,6 +216,52 @@ def drag_a_pivot(tab, url):
     in_line(found, (value["x_A"], value["y_A"]), value["l_A_B"], value["l_B_C"])
 
 
+def keyboard(tab, url):
+    """Every control named for a screen reader and reached by Tab in the
+    page's order; a mistake, reached by Tab, selects its place in the editor
+    with Enter; the vectors chosen with the arrow keys."""
+    tab.open(url)
+    unnamed = tab.evaluate(
+        "[...document.querySelectorAll('input, select, textarea, button')]"
+        ".filter((e) => !(e.labels?.length || e.getAttribute('aria-label') || e.textContent.trim()))"
+        ".map((e) => e.id || e.outerHTML)")
+    assert unnamed == [], f"controls without a name: {unnamed}"
+    tab.evaluate("document.activeElement.blur()")
+    reached = []
+    for _ in range(80):
+        tab.key("Tab", "Tab", 9)
+        reached.append(tab.evaluate("document.activeElement.id"))
+    order = ["library", "driver", "vectors", "quantity", "save-svg", "share", "editor", "design-run"]
+    places = [reached.index(name) if name in reached else None for name in order]
+    assert None not in places and places == sorted(places), f"Tab reached {reached}"
+    # A mistake: Tab from the editor to the list, Enter selects it there.
+    tab.evaluate("(() => { const e = document.getElementById('editor');"
+                 " e.value = e.value.replace('closure = [', 'closure = [ l9 +');"
+                 " e.dispatchEvent(new Event('input')); })()")
+    tab.wait("document.querySelectorAll('#mistakes li').length > 0", 5)
+    tab.evaluate("document.getElementById('editor').focus()")
+    tab.key("Tab", "Tab", 9)
+    assert tab.evaluate("document.activeElement.parentElement.id") == "mistakes"
+    tab.key("Enter", "Enter", 13)
+    selected = tab.evaluate("(() => { const e = document.activeElement;"
+                            " return [e.id, e.value.slice(e.selectionStart, e.selectionEnd)]; })()")
+    assert selected == ["editor", "l9"], selected
+    # The vectors, by the arrow keys: a mechanism given by joints and links
+    # shows its points' velocities, then their accelerations too.
+    text = (ROOT / "mechanisms/joints/four_bar.toml").read_text()
+    tab.open(url + "#file=" + urllib.parse.quote(base64.b64encode(text.encode()).decode()))
+    count = ("[...document.querySelectorAll('#picture .arrow')]"
+             ".map((a) => a.getAttribute('class')).join(' ')")
+    points = len(tab.evaluate("linkagePage.info.pointNames"))
+    shown = tab.evaluate(count)
+    assert tab.evaluate("document.getElementById('vectors').value") == "velocities"
+    assert shown.count("velocity") == points and "acceleration" not in shown, shown
+    tab.evaluate("document.getElementById('vectors').focus()")
+    tab.key("ArrowDown", "ArrowDown", 40)
+    shown = tab.evaluate(count)
+    assert shown.count("acceleration") == points, shown
+
+
 def design(tab, url):
     """Targets clicked and typed, a synthesis in the worker, a design used;
     a long search stopped; mistyped targets refused."""
@@ -249,6 +296,15 @@ def design(tab, url):
     assert found["designs"], done
     for d in found["designs"]:
         assert d["largestError"] < 1e-6 and d["certificate"]["transmission"] >= 40, d
+    # Each design drawn small: its path of G3 passes through the five
+    # targets (within a pixel and a half of a vertex of the drawn path).
+    misses = tab.evaluate(
+        "[...document.querySelectorAll('#designs svg.design-path')].map((svg) => {"
+        " const xy = svg.querySelector('path').getAttribute('d').slice(1).split(/[ML]/).map((q) => q.split(',').map(Number));"
+        " return [...svg.querySelectorAll('circle')].map((c) => Math.min(...xy.map(([x, y]) =>"
+        " Math.hypot(x - c.cx.baseVal.value, y - c.cy.baseVal.value)))); })")
+    assert len(misses) == min(len(found["designs"]), 12), misses
+    assert all(len(m) == 5 and max(m) < 1.5 for m in misses), misses
     tab.evaluate("document.querySelector('#designs button[data-design]').click()")
     used = json.loads(data(tab)["used"])
     assert used == found["designs"][0]["parameters"], used
@@ -310,6 +366,7 @@ def main():
         drive_by_mouse_and_keyboard(tab, server.url)
         dimensions(tab)
         drag_a_pivot(tab, server.url)
+        keyboard(tab, server.url)
         design(tab, server.url)
         tab.close()
         shares = screenshots(server.url, update)

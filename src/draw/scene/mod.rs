@@ -483,23 +483,23 @@ impl Scene {
         self
     }
 
-    /// Velocity arrows at these points.
+    /// Velocity arrows at these points (each drawn once, however often named).
     pub fn velocities<I>(mut self, points: I) -> Scene
     where
         I: IntoIterator,
         I::Item: AsRef<str>,
     {
-        self.velocity_arrows.extend(owned(points));
+        add_new(&mut self.velocity_arrows, points);
         self
     }
 
-    /// Acceleration arrows at these points.
+    /// Acceleration arrows at these points (each drawn once, however often named).
     pub fn accelerations<I>(mut self, points: I) -> Scene
     where
         I: IntoIterator,
         I::Item: AsRef<str>,
     {
-        self.acceleration_arrows.extend(owned(points));
+        add_new(&mut self.acceleration_arrows, points);
         self
     }
 
@@ -635,6 +635,20 @@ impl Scene {
 }
 
 /// Names given as any list of strings, owned.
+/// The names not yet in `list`, added to it in order (a point's arrow
+/// asked for twice is drawn once).
+fn add_new<I>(list: &mut Vec<String>, names: I)
+where
+    I: IntoIterator,
+    I::Item: AsRef<str>,
+{
+    for name in names {
+        if !list.iter().any(|n| n == name.as_ref()) {
+            list.push(name.as_ref().to_owned());
+        }
+    }
+}
+
 fn owned<I>(names: I) -> Vec<String>
 where
     I: IntoIterator,
