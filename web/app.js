@@ -404,6 +404,8 @@ let chosen = -1;
 // What the search was asked (the text, the point, the targets), and the
 // designs' small pictures made so far, by their parameters.
 let searched = null;
+// When each report of the search arrived (the page's clock, ms).
+let progressTimes = [];
 const thumbnails = new Map();
 // The first designs are drawn small; the others are listed.
 const DRAWN_DESIGNS = 12;
@@ -487,6 +489,7 @@ function startWorker() {
   worker.onmessage = (event) => {
     const m = event.data;
     if (m.type === "error") { finished(m.message, true); return; }
+    progressTimes.push(performance.now());
     found = m.found;
     $("design-progress").value = m.done / m.of;
     showDesigns();
@@ -505,6 +508,7 @@ $("design-run").addEventListener("click", () => {
   found = null;
   chosen = -1;
   const asked = task();
+  progressTimes = [];
   searched = { text: $("editor").value, point: asked.point, targets: asked.targets };
   thumbnails.clear();
   showDesigns();
@@ -670,6 +674,7 @@ window.linkagePage = {
   get info() { return info; },
   get sweep() { return sweep; },
   get deadCentres() { return deadCentres; },
+  get progressTimes() { return progressTimes; },
   get found() { return found; },
   get placement() { return placement; },
   get current() { return current; },

@@ -292,6 +292,10 @@ def design(tab, url):
     assert done.startswith("done: 12 of 12 starts"), done
     progress = tab.evaluate("progressSeen")
     assert len([p for p in progress if " of 12 starts" in p]) >= 2, progress
+    times = tab.evaluate("linkagePage.progressTimes")
+    gaps = [b - a for a, b in zip(times, times[1:])]
+    # Progress at least every 100 ms (pieces of starts of about 40 ms).
+    assert gaps and max(gaps) <= 100, f"the search's reports came {gaps} ms apart"
     found = tab.evaluate("linkagePage.found")
     assert found["designs"], done
     for d in found["designs"]:
@@ -328,6 +332,15 @@ def design(tab, url):
                  " document.getElementById('design-run').click(); })()")
     said = tab.evaluate("document.getElementById('design-status').textContent")
     assert "target line 2" in said, said
+    # Targets no design within the bounds reaches: none found, and why.
+    tab.evaluate("(() => { delete document.body.dataset.designDone;"
+                 " document.getElementById('design-targets').value = '0, 0\\n900, 0\\n0, 900\\n900, 900\\n450, 2000';"
+                 " document.getElementById('design-starts').value = '8';"
+                 " document.getElementById('design-run').click(); })()")
+    tab.wait("document.body.dataset.designDone", 60)
+    none = data(tab)["designDone"]
+    assert none.startswith("done: 8 of 8 starts, 0 certified designs") and "(" in none, none
+    assert "error" not in data(tab), data(tab)["error"]
 
 
 def screenshots(url, update):
