@@ -65,7 +65,9 @@ function plot() {
     `<svg viewBox="0 0 ${w} ${h}" xmlns="http://www.w3.org/2000/svg" font-size="12" font-family="sans-serif">` +
     `<rect x="${pad}" y="${pad / 2}" width="${w - 2 * pad}" height="${h - 1.5 * pad}" fill="none" stroke="#ccc"/>` +
     (y0 < 0 && y1 > 0 ? `<line class="zero" x1="${pad}" x2="${w - pad}" y1="${Y(0).toFixed(2)}" y2="${Y(0).toFixed(2)}" stroke="#bbb"/>` +
-      `<text x="${pad - 4}" y="${(Y(0) + 4).toFixed(2)}" text-anchor="end" fill="#888">0</text>` : "") +
+      // Its label only clear of the range's own.
+      (Math.min(Y(y0) - Y(0), Y(0) - Y(y1)) > 14
+        ? `<text x="${pad - 4}" y="${(Y(0) + 4).toFixed(2)}" text-anchor="end" fill="#888">0</text>` : "") : "") +
     `<path d="${path}" fill="none" stroke="#345" stroke-width="1.5"/>${marks.join("")}${rests.join("")}` +
     `<line id="cursor" x1="${X(current)}" x2="${X(current)}" y1="${pad / 2}" y2="${h - pad}" stroke="#07c" stroke-dasharray="4 3"/>` +
     `<text x="${pad}" y="${h - pad / 3}">${fmt(x0)}</text><text x="${w - pad}" y="${h - pad / 3}" text-anchor="end">${fmt(x1)} ${info.vNames[0]}</text>` +
