@@ -1,12 +1,12 @@
 //! The legend under the drawing: an entry per kind of arrow (with its
-//! scale), per traced path, per named curve and per named set of markers,
-//! each with a swatch drawn exactly as what it describes, then a scale
-//! bar.
+//! scale), per traced path, per named curve, per named set of markers and
+//! for named ghost poses, each with a swatch drawn exactly as what it
+//! describes, then a scale bar.
 //!
 //! Each entry is a group `class="legend-entry"` whose `data-for` names what
 //! it describes: the class of the arrows (`velocity`, `acceleration`) or
-//! the id of the traced path (`trace-A`), the curve (`curve-0`) or the set
-//! of markers (`markers-0`).
+//! the id of the traced path (`trace-A`), the curve (`curve-0`), the set
+//! of markers (`markers-0`) or `ghosts`.
 
 use super::Scene;
 use super::arrow_kind::Kind;
@@ -85,16 +85,14 @@ impl Scene {
                     ("data-for", &format!("trace-{name}")),
                 ],
             );
-            w.element(
-                "line",
+            let width = fmt(style::TRACE_WIDTH);
+            line_swatch(
+                w,
+                x,
+                y,
                 &[
-                    ("class", "swatch"),
-                    ("x1", &fmt(x)),
-                    ("y1", &fmt(y - 4.0)),
-                    ("x2", &fmt(x + SWATCH)),
-                    ("y2", &fmt(y - 4.0)),
                     ("stroke", look.colour),
-                    ("stroke-width", &fmt(style::TRACE_WIDTH)),
+                    ("stroke-width", &width),
                     ("stroke-dasharray", look.dashes),
                 ],
             );
@@ -119,21 +117,15 @@ impl Scene {
                     ("data-for", &format!("curve-{k}")),
                 ],
             );
-            let (x1, x2, level) = (fmt(x), fmt(x + SWATCH), fmt(y - 4.0));
             let width = fmt(style::CURVE_WIDTH);
-            let mut swatch = vec![
-                ("class", "swatch"),
-                ("x1", x1.as_str()),
-                ("y1", level.as_str()),
-                ("x2", x2.as_str()),
-                ("y2", level.as_str()),
+            let mut stroke = vec![
                 ("stroke", look.colour.as_str()),
                 ("stroke-width", width.as_str()),
             ];
             if !look.dashes.is_empty() {
-                swatch.push(("stroke-dasharray", look.dashes.as_str()));
+                stroke.push(("stroke-dasharray", look.dashes.as_str()));
             }
-            w.element("line", &swatch);
+            line_swatch(w, x, y, &stroke);
             legend_text(w, x + SWATCH + 10.0, y, curve.name());
             w.close("g");
             y += style::LEGEND_LINE;
@@ -157,16 +149,14 @@ impl Scene {
         if self.ghosts_in_legend() {
             // A faint bar, as the ghosts' bars are drawn.
             w.open("g", &[("class", "legend-entry"), ("data-for", "ghosts")]);
-            w.element(
-                "line",
+            let width = fmt(style::GHOST_BAR_WIDTH);
+            line_swatch(
+                w,
+                x,
+                y,
                 &[
-                    ("class", "swatch"),
-                    ("x1", &fmt(x)),
-                    ("y1", &fmt(y - 4.0)),
-                    ("x2", &fmt(x + SWATCH)),
-                    ("y2", &fmt(y - 4.0)),
                     ("stroke", style::GHOST),
-                    ("stroke-width", &fmt(style::GHOST_BAR_WIDTH)),
+                    ("stroke-width", &width),
                     ("stroke-linecap", "round"),
                 ],
             );
@@ -181,6 +171,22 @@ impl Scene {
         legend_text(w, x + pixels + 10.0, y, &format!("{} {l}", number(length)));
         w.close("g");
     }
+}
+
+/// An entry's swatch that is a line, from `x` for the swatch's length at
+/// the height of the entry's text at `y`, drawn with `stroke` (colour,
+/// width, dashes).
+fn line_swatch(w: &mut Writer, x: f64, y: f64, stroke: &[(&str, &str)]) {
+    let (x1, x2, level) = (fmt(x), fmt(x + SWATCH), fmt(y - 4.0));
+    let mut attributes = vec![
+        ("class", "swatch"),
+        ("x1", x1.as_str()),
+        ("y1", level.as_str()),
+        ("x2", x2.as_str()),
+        ("y2", level.as_str()),
+    ];
+    attributes.extend_from_slice(stroke);
+    w.element("line", &attributes);
 }
 
 fn legend_text(w: &mut Writer, x: f64, y: f64, text: &str) {
