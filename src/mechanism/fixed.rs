@@ -225,6 +225,10 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
         let Ok(kernel) = self.program.kernel(kernel) else {
             return unevaluated();
         };
+        // Written from within the thread's registers, not returned from
+        // them: a result returned through the thread-local is copied out
+        // whole.
+        let mut out = None;
         scratch::with_registers(self.program.id, kernel, |registers, _| {
             set(registers, Input::Fields, &self.fields);
             set(registers, Input::U, u.as_slice());
@@ -235,7 +239,7 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
                 set(registers, Input::TrigV, flat(trig_v).as_flattened());
             }
             if kernel.run(0, registers).is_err() {
-                return unevaluated();
+                return;
             }
             // The parts in the order the program checked: Ψ, Ψ_u, Ψ_v; γ.
             let psi: SVector<f64, M> = kernel.block(registers, 0, kernel.start(0, 0), 0);
@@ -250,7 +254,7 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
                 Err(_) => SVector::repeat(f64::NAN),
             };
             let uddot = -factors.solve(&(psi_v * vddot + gamma));
-            Kinematics {
+            out = Some(Kinematics {
                 psi,
                 psi_u,
                 psi_v,
@@ -259,8 +263,9 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
                 det,
                 udot,
                 uddot,
-            }
-        })
+            });
+        });
+        out.unwrap_or_else(unevaluated)
     }
 }
 
