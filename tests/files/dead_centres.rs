@@ -1,7 +1,8 @@
 //! The dead centres of the library's files, checked from the outside: the
 //! slider-crank's against its closed form, and at every dead centre of
 //! every file the point that comes to rest at rest (its velocity zero to
-//! rounding beside its fastest over the cycle).
+//! rounding beside its fastest over the cycle: 1e-13 of it; the worst
+//! of these files is 1.5e-15).
 
 use linkage::file::{DeadCentre, Loaded};
 use linkage::mechanism::Fixed;
@@ -16,6 +17,7 @@ fn loaded(path: &str) -> Loaded {
 /// The slider-crank's slider at rest where the crank and the rod are in
 /// line: stretched out, P at √((l + r)² − e²) with the crank at
 /// atan2(e, that); folded, P at √((l − r)² − e²), the crank opposite.
+/// Found to the bit; held to 1e-15.
 #[test]
 fn the_slider_crank_stops_where_its_crank_and_rod_are_in_line() {
     let file = loaded("mechanisms/slider_crank.toml");
@@ -33,7 +35,7 @@ fn the_slider_crank_stops_where_its_crank_and_rod_are_in_line() {
     for (dead, (theta2, s)) in found.iter().zip(expected) {
         assert_eq!(dead.what, "P");
         assert!(
-            (dead.v[0] - theta2).abs() < 1e-12,
+            (dead.v[0] - theta2).abs() < 1e-15,
             "{dead:?} against {theta2}"
         );
         assert!((dead.u[1] - s).abs() < 1e-15, "{dead:?} against {s}");
@@ -69,17 +71,17 @@ impl Job for AtRest<'_> {
             let k = names.iter().position(|n| *n == name).unwrap();
             pose.point_velocities.as_ref()[k].norm()
         };
-        let mut fastest = Vec::new();
+        let mut poses = Vec::new();
         self.loaded
             .sweep_each(&model, drives.steps, &mut |_, pose| {
-                fastest.push((pose.u, pose.v));
+                poses.push((pose.u, pose.v));
             })
             .unwrap();
         Ok(found
             .iter()
             .map(|dead| {
                 let point = dead.what.split('–').next().unwrap();
-                let peak = (fastest.iter())
+                let peak = (poses.iter())
                     .map(|(u, v)| speed(point, u, v))
                     .fold(0.0, f64::max);
                 (dead.what.clone(), speed(point, &dead.u, &dead.v), peak)
@@ -106,7 +108,7 @@ fn at_every_dead_centre_its_point_is_at_rest() {
         for (what, speed, peak) in run(file.mechanism(), job).unwrap() {
             assert!(peak > 0.0, "{path}: {what} never moves");
             assert!(
-                speed <= 1e-9 * peak,
+                speed <= 1e-13 * peak,
                 "{path}: {what} at {speed} against {peak} at most"
             );
             seen.push(format!("{path}: {what}"));
@@ -157,7 +159,7 @@ fn a_moved_pivot_is_where_the_rocker_turns() {
     assert!((after[0].v[0] - before[0].v[0]).abs() > 1e-3);
     let job = AtRest { loaded: &file };
     for (what, speed, peak) in run(file.mechanism(), job).unwrap() {
-        assert!(speed <= 1e-9 * peak, "{what} at {speed} against {peak}");
+        assert!(speed <= 1e-13 * peak, "{what} at {speed} against {peak}");
     }
     // Drawn where it now is.
     let written = file.file().scene_of(bar.point_names());

@@ -137,11 +137,11 @@ def drive_by_mouse_and_keyboard(tab, url):
 def in_line(centres, a, l2, l3):
     """At each dead centre of a four-bar's rocker, the crank and the coupler
     are in line: the coupler's far end C is l3 + l2 or l3 - l2 from the
-    crank's pivot A (B and C the first two points)."""
+    crank's pivot A (B and C the first two points), to rounding."""
     reaches = sorted(math.dist(a, d["points"][1]) for d in centres)
     assert len(reaches) == 2, centres
     for reach, exact in zip(reaches, [l3 - l2, l3 + l2]):
-        assert abs(reach - exact) < 1e-9 * exact, f"A to C at a dead centre: {reach}, in line {exact}"
+        assert abs(reach - exact) < 1e-14 * exact, f"A to C at a dead centre: {reach}, in line {exact}"
 
 
 def dead_centres(tab):
@@ -151,7 +151,8 @@ def dead_centres(tab):
     found = tab.evaluate("linkagePage.deadCentres")
     at = [d["v"][0] for d in found]
     assert [d["what"] for d in found] == ["C–D", "C–D"], found
-    assert abs(at[0] - math.acos(4 / 7)) < 1e-12 and abs(at[1] - math.radians(240)) < 1e-12, at
+    # Within a few units in the last place (WebAssembly's sines are not glibc's).
+    assert abs(at[0] - math.acos(4 / 7)) < 4e-15 and abs(at[1] - math.radians(240)) < 4e-15, at
     in_line(found, (0, 0), 20.0, 50.0)  # the page speaks mm, as the file
     assert tab.evaluate("document.querySelectorAll('#plot .dead-centre').length") == 2
     assert tab.evaluate("document.querySelectorAll('#picture .ghost').length") == 2

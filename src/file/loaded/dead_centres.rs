@@ -109,11 +109,12 @@ impl Loaded {
     /// let bar = loaded.mechanism().fixed::<2, 1>()?;
     /// let found = loaded.dead_centres(&bar)?;
     /// // The rocker C–D at rest, the crank and the coupler in line:
-    /// // stretched out at θ2 = acos(4/7), folded at θ2 = 240°.
+    /// // stretched out at θ2 = acos(4/7), folded at θ2 = 240°, each within
+    /// // two units in the last place.
     /// assert_eq!(found.len(), 2);
     /// assert_eq!(found[0].what, "C–D");
-    /// assert!((found[0].v[0] - (4.0f64 / 7.0).acos()).abs() < 1e-12);
-    /// assert!((found[1].v[0] - 240f64.to_radians()).abs() < 1e-12);
+    /// assert!((found[0].v[0] - (4.0f64 / 7.0).acos()).abs() < 2e-15);
+    /// assert!((found[1].v[0] - 240f64.to_radians()).abs() < 2e-15);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn dead_centres<const M: usize, const F: usize, const N: usize, const K: usize>(

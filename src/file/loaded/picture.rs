@@ -5,6 +5,7 @@
 //! those values put it, not where the text wrote it.
 
 use super::Loaded;
+use crate::Kernels;
 use crate::draw::scene::Scene;
 use crate::mechanism::Fixed;
 
@@ -45,7 +46,6 @@ impl Loaded {
         &self,
         model: &Fixed<M, F, N, K>,
     ) -> Scene {
-        use crate::Kernels;
         let scene = self.file().scene_of(model.point_names());
         (self.pivots(model).iter()).fold(scene, |scene, (name, at)| scene.ground(name, *at))
     }
