@@ -15,7 +15,7 @@ pub enum Failure {
     /// The analysis failed at a place in the file (already written to
     /// standard error, located there).
     AnalysisAt,
-    /// A file could not be read or written.
+    /// A file could not be read or written (or the page served: its port).
     Io(String),
 }
 

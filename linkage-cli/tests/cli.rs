@@ -820,6 +820,11 @@ fn serve_gives_the_pages_files_and_nothing_else() {
         stream.read_to_end(&mut answer).unwrap();
         String::from_utf8_lossy(&answer).into_owned()
     };
+    // A second server on the port taken: a file-and-system failure (4).
+    let port = address.rsplit(':').next().unwrap();
+    let taken = run(&["serve", dir.to_str().unwrap(), "--port", port]);
+    assert_eq!(taken.status.code(), Some(4), "{}", text(&taken.stderr));
+    assert!(text(&taken.stderr).contains("cannot listen"));
     let page = get("/?selftest");
     let wasm = get("/pkg/linkage_web_bg.wasm");
     let outside = get("/../Cargo.toml");

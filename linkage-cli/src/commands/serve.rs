@@ -24,12 +24,11 @@ pub fn run(args: &ServeArgs) -> Result<(), Failure> {
             root.display()
         )));
     }
-    let listener = TcpListener::bind((Ipv4Addr::LOCALHOST, args.port)).map_err(|e| {
-        Failure::Malformed(format!("cannot listen on 127.0.0.1:{}: {e}", args.port))
-    })?;
+    let listener = TcpListener::bind((Ipv4Addr::LOCALHOST, args.port))
+        .map_err(|e| Failure::Io(format!("cannot listen on 127.0.0.1:{}: {e}", args.port)))?;
     let port = listener
         .local_addr()
-        .map_err(|e| Failure::Malformed(format!("the listening port: {e}")))?
+        .map_err(|e| Failure::Io(format!("the listening port: {e}")))?
         .port();
     eprintln!(
         "serving {} at http://127.0.0.1:{port}/ (Ctrl-C stops)",
