@@ -433,7 +433,7 @@ fn from_text(c: &mut Criterion) {
     for (what, text, parameters) in &cases {
         let built = text::build("M", Equations::new(text), parameters)
             .unwrap_or_else(|_| panic!("{what} builds"));
-        for kernel in Kernel::ALL {
+        for kernel in Kernel::every() {
             let ops = tape::compile(&built.derivatives, kernel)
                 .map(|t| t.len())
                 .unwrap_or(0);

@@ -10,6 +10,7 @@
 // code, which clippy takes for an approximate `LN_2`.
 #![allow(clippy::approx_constant)]
 
+use linkage::SensitivityKernel;
 use linkage::nalgebra::{SMatrix, SVector, Vector2};
 use linkage_symbolic::ast::Input as Attribute;
 use linkage_symbolic::errors::Errors;
@@ -336,6 +337,17 @@ macro_rules! mechanism {
                             point_columns(&t.point_accelerations_p),
                         ]
                     }
+                    // A run-time mechanism's own: the compiled mechanism's
+                    // position terms, read from its whole terms.
+                    Kernel::PositionSensitivityTerms => {
+                        let t = mech.position_terms_with_trig(&u, &v, &trig_u, &trig_v);
+                        vec![
+                            matrix(&t.psi_u),
+                            matrix(&t.psi_p),
+                            point_columns(&t.points_u),
+                            point_columns(&t.points_p),
+                        ]
+                    }
                     Kernel::Kinematics { .. } | Kernel::Formula(_) => Vec::new(),
                 }
             }
@@ -414,7 +426,7 @@ macro_rules! mechanism {
                         let mech = $name {
                             $($field: fields.next().unwrap_or(1.0)),*
                         };
-                        for kernel in Kernel::ALL {
+                        for kernel in Kernel::every() {
                             let tape = tapes.get(kernel);
                             if let Kernel::Kinematics { with_trig } = kernel {
                                 kinematics(&mech, tape, with_trig, s)?;
@@ -428,7 +440,7 @@ macro_rules! mechanism {
                             compare(kernel.name(), tape.parts(0), &out, &compiled)?;
                         }
                     }
-                    for kernel in Kernel::ALL {
+                    for kernel in Kernel::every() {
                         run_lanes_against_single::<4>(tapes.get(kernel), samples)?;
                     }
                     Ok(())

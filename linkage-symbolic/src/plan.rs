@@ -96,6 +96,15 @@ pub enum Kernel {
     /// Every derivative by u and by p the sensitivities need, in one
     /// evaluation; the sines and cosines computed or given.
     SensitivityTerms { with_trig: bool },
+    /// Those of the positions alone — Ψ_u, Ψ_p and the points' derivatives
+    /// by u and by p — the sines and cosines given: what the sensitivities
+    /// of the positions need (a synthesis reads no more). Its plan is the
+    /// whole terms' (given the sines and cosines), of which it outputs
+    /// these parts ([`Kernel::kept_parts`]): the same operations, as far as
+    /// these need them, so the same numbers to the bit. A run-time
+    /// mechanism's alone: the attribute does not generate it (a compiled
+    /// mechanism reads them from [`Kernel::SensitivityTerms`]).
+    PositionSensitivityTerms,
 }
 
 /// The sensitivities' matrices, in the order of their outputs.
@@ -107,6 +116,9 @@ const SENSITIVITY_MATRICES: [Formula; 6] = [
     Formula::PsiUDdot,
     Formula::PsiPDdot,
 ];
+
+/// The position sensitivities' parts, of those of the sensitivities.
+const POSITION_SENSITIVITY_PARTS: [&str; 4] = ["psi_u", "psi_p", "points_u", "points_p"];
 
 /// The sensitivities' point derivatives after the matrices: their names,
 /// level (position, velocity, acceleration) and whether by p (else by u).
@@ -144,7 +156,25 @@ impl Kernel {
         Kernel::SensitivityTerms { with_trig: true },
     ];
 
-    /// Its place in [`Kernel::ALL`], without a search (`None` for a formula
+    /// The kernels of run-time mechanisms alone, placed after
+    /// [`Kernel::ALL`]'s.
+    pub const RUN_TIME: [Kernel; 1] = [Kernel::PositionSensitivityTerms];
+
+    /// The parts of its plan it outputs, if not every part.
+    pub fn kept_parts(self) -> Option<&'static [&'static str]> {
+        match self {
+            Kernel::PositionSensitivityTerms => Some(&POSITION_SENSITIVITY_PARTS),
+            _ => None,
+        }
+    }
+
+    /// Every kernel, in the order of their indices ([`Kernel::index`]):
+    /// [`Kernel::ALL`], then [`Kernel::RUN_TIME`].
+    pub fn every() -> impl Iterator<Item = Kernel> {
+        Kernel::ALL.into_iter().chain(Kernel::RUN_TIME)
+    }
+
+    /// Its place in [`Kernel::ALL`] followed by [`Kernel::RUN_TIME`], without a search (`None` for a formula
     /// only the sensitivities' kernel computes, which has no function of
     /// its own).
     pub fn index(self) -> Option<usize> {
@@ -169,6 +199,7 @@ impl Kernel {
             Kernel::Formula(Formula::PsiP) => 17,
             Kernel::SensitivityTerms { with_trig: false } => 18,
             Kernel::SensitivityTerms { with_trig: true } => 19,
+            Kernel::PositionSensitivityTerms => 20,
             Kernel::Formula(Formula::PsiPDot | Formula::PsiUDdot | Formula::PsiPDdot) => {
                 return None;
             }
@@ -188,6 +219,7 @@ impl Kernel {
             Kernel::Kinematics { with_trig: true } => "kinematics_with_trig",
             Kernel::SensitivityTerms { with_trig: false } => "sensitivity_terms",
             Kernel::SensitivityTerms { with_trig: true } => "sensitivity_terms_with_trig",
+            Kernel::PositionSensitivityTerms => "position_sensitivity_terms",
         }
     }
 
@@ -226,6 +258,9 @@ impl Kernel {
                     late: Vec::new(),
                     trig: with_trig,
                 }
+            }
+            Kernel::PositionSensitivityTerms => {
+                Kernel::SensitivityTerms { with_trig: true }.plan(model)
             }
         }
     }
@@ -417,11 +452,40 @@ mod tests {
 
     #[test]
     fn every_kernel_knows_its_place() {
-        for (k, kernel) in Kernel::ALL.into_iter().enumerate() {
+        for (k, kernel) in Kernel::every().enumerate() {
             assert_eq!(kernel.index(), Some(k), "{}", kernel.name());
         }
         for inside in [Formula::PsiPDot, Formula::PsiUDdot, Formula::PsiPDdot] {
             assert_eq!(Kernel::Formula(inside).index(), None);
         }
+    }
+
+    /// The position sensitivities' kernel is the whole terms' (given the
+    /// sines and cosines), of which it keeps four parts, all of them parts
+    /// of the whole.
+    #[cfg(feature = "text")]
+    #[test]
+    fn the_position_terms_are_parts_of_the_whole_terms() {
+        use crate::text::{Equations, Parameter, build};
+        let equations = "u = [t3, t4], v = [t2], \
+            points = [B = (l2 * t2.cos(), l2 * t2.sin()), P = (B.x + a * t3.cos(), B.y + a * t3.sin())], \
+            closure = [l2 * t2.cos() + l3 * t3.cos() + l4 * t4.cos() - l1, \
+            l2 * t2.sin() + l3 * t3.sin() + l4 * t4.sin()]";
+        let parameters = ["l1", "l2", "l3", "l4", "a"].map(Parameter::new);
+        let model = build("FourBar", Equations::new(equations), &parameters)
+            .expect("reads")
+            .derivatives;
+        let whole = Kernel::SensitivityTerms { with_trig: true }.plan(&model);
+        let position = Kernel::PositionSensitivityTerms.plan(&model);
+        assert!(position.trig);
+        assert_eq!(position.roots(), whole.roots());
+        let names: Vec<&str> = whole.phases[0].iter().map(|p| p.part.name).collect();
+        let kept = Kernel::PositionSensitivityTerms.kept_parts().expect("some");
+        assert_eq!(kept, ["psi_u", "psi_p", "points_u", "points_p"]);
+        assert!(kept.iter().all(|k| names.contains(k)));
+        assert_eq!(
+            Kernel::SensitivityTerms { with_trig: true }.kept_parts(),
+            None
+        );
     }
 }

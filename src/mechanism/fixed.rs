@@ -44,7 +44,7 @@ pub(super) struct Output<'a> {
     buffer: &'a mut Vec<f64>,
 }
 
-impl Output<'_> {
+impl<'a> Output<'a> {
     /// The R × C matrix that starts at `start` (NaN if the tape did not
     /// run).
     #[inline(always)]
@@ -53,6 +53,11 @@ impl Output<'_> {
             Some((kernel, registers)) => kernel.block(registers, 0, start, 0),
             None => SMatrix::repeat(f64::NAN),
         }
+    }
+
+    /// The kernel, if its tape ran.
+    pub(super) fn kernel(&self) -> Option<&'a KernelTape> {
+        self.ran.map(|(kernel, _)| kernel)
     }
 
     /// The whole result, laid out by [`KernelTape`] (empty if the tape did

@@ -13,7 +13,7 @@ use nalgebra::SMatrix;
 /// A kernel's tape and the layout of its results.
 #[derive(Debug)]
 pub(crate) struct KernelTape {
-    /// Its place in [`Kernel::ALL`](linkage_symbolic::plan::Kernel::ALL).
+    /// Its index ([`Kernel::index`](linkage_symbolic::plan::Kernel::index)).
     pub(crate) index: usize,
     pub(crate) tape: Tape,
     phases: Vec<Layout>,

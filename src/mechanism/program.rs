@@ -25,11 +25,12 @@ use std::sync::atomic::{AtomicU64, Ordering};
 static NEXT_ID: AtomicU64 = AtomicU64::new(0);
 
 /// The kernels compiled on first use: no view runs them.
-const ON_FIRST_USE: [Kernel; 4] = [
+const ON_FIRST_USE: [Kernel; 5] = [
     Kernel::Formula(Formula::PsiQ),
     Kernel::Formula(Formula::PsiP),
     Kernel::SensitivityTerms { with_trig: false },
     Kernel::SensitivityTerms { with_trig: true },
+    Kernel::PositionSensitivityTerms,
 ];
 
 /// The kernels whose results the views read part by part in order, and
@@ -67,7 +68,7 @@ pub(crate) struct Program {
     pub(crate) field_names: Vec<&'static str>,
     /// The parameters p differentiated by: indices into `field_names`.
     pub(crate) params: Vec<usize>,
-    /// Every kernel, by its place in [`Kernel::ALL`]: compiled with the
+    /// Every kernel, by its index ([`Kernel::every`]): compiled with the
     /// program, or on first use ([`ON_FIRST_USE`]).
     kernels: Vec<OnceLock<Result<KernelTape, CompileError>>>,
     source: Source,
@@ -118,10 +119,10 @@ impl Program {
             ),
         };
         let kernels: Vec<OnceLock<Result<KernelTape, CompileError>>> =
-            Kernel::ALL.iter().map(|_| OnceLock::new()).collect();
-        for (kernel, slot) in Kernel::ALL.iter().zip(&kernels) {
-            if !ON_FIRST_USE.contains(kernel) {
-                let _ = slot.set(Ok(compiled(derivatives, *kernel).map_err(internal)?));
+            Kernel::every().map(|_| OnceLock::new()).collect();
+        for (kernel, slot) in Kernel::every().zip(&kernels) {
+            if !ON_FIRST_USE.contains(&kernel) {
+                let _ = slot.set(Ok(compiled(derivatives, kernel).map_err(internal)?));
             }
         }
         let lowered = &derivatives.lowered;

@@ -8,7 +8,7 @@
 
 use crate::mechanism::fixed::Fixed;
 use crate::mechanism::point_set::PointSet;
-use crate::runtime::{Sensitivities, SensitivityKernel, SensitivityTerms};
+use crate::runtime::{PositionTerms, Sensitivities, SensitivityKernel, SensitivityTerms};
 use linkage_symbolic::plan::{Formula, Kernel};
 use linkage_symbolic::tape::Input;
 use nalgebra::{SMatrix, SVector, Vector2};
@@ -88,14 +88,15 @@ fn by_u<const M: usize>(result: &[f64], start: usize) -> SMatrix<f64, M, M> {
 }
 
 /// A part of point columns (the 2n coordinates of the points, column by
-/// column from `start`), each column `column(j)` of the result, or none.
+/// column from `start`) into `out`, each column `column(j)` of it, or
+/// none.
 fn point_columns<const N: usize, const P: usize>(
+    out: &mut [PointSet<P>; N],
     result: &[f64],
     start: usize,
     (points, cols): (usize, usize),
     column: impl Fn(usize) -> Option<usize>,
-) -> [PointSet<P>; N] {
-    let mut out = [PointSet::<P>::clamped(points); N];
+) {
     let rows = 2 * points;
     for j in 0..cols {
         let (Some(c), Some(values)) = (
@@ -108,7 +109,6 @@ fn point_columns<const N: usize, const P: usize>(
             *point = Vector2::new(xy[0], xy[1]);
         }
     }
-    out
 }
 
 impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F, P, K> {
@@ -123,71 +123,126 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
         let columns = self.columns();
         let points = self.point_count();
         let kernel = Kernel::SensitivityTerms { with_trig };
-        // Each part's name, start in the result and size.
-        let parts: Vec<(&str, usize, (usize, usize))> = match self.program().kernel(kernel) {
-            Ok(tape) => (tape.tape.parts(0).iter().enumerate())
-                .map(|(k, part)| (part.name, tape.start(0, k), (part.rows, part.cols)))
-                .collect(),
-            Err(_) => Vec::new(),
+        let mut terms = SensitivityTerms {
+            psi_u: SMatrix::repeat(f64::NAN),
+            psi_p: SMatrix::zeros(),
+            psi_u_dot: SMatrix::zeros(),
+            psi_p_dot: SMatrix::zeros(),
+            psi_u_ddot: SMatrix::zeros(),
+            psi_p_ddot: SMatrix::zeros(),
+            points_u: [PointSet::clamped(points); M],
+            points_p: [PointSet::clamped(points); K],
+            point_velocities_u: [PointSet::clamped(points); M],
+            point_velocities_p: [PointSet::clamped(points); K],
+            point_accelerations_u: [PointSet::clamped(points); M],
+            point_accelerations_p: [PointSet::clamped(points); K],
         };
+        // Filled in place (the terms are large: returned from the
+        // thread's register file, they were copied out whole). If the
+        // tape could not run, Ψ_u stays NaN: not numbers, which the solve
+        // turns into a typed error.
         self.run(kernel, inputs, |mut output| {
-            let result = output.entries();
-            let mut terms = SensitivityTerms {
-                psi_u: SMatrix::zeros(),
-                psi_p: SMatrix::zeros(),
-                psi_u_dot: SMatrix::zeros(),
-                psi_p_dot: SMatrix::zeros(),
-                psi_u_ddot: SMatrix::zeros(),
-                psi_p_ddot: SMatrix::zeros(),
-                points_u: [PointSet::clamped(points); M],
-                points_p: [PointSet::clamped(points); K],
-                point_velocities_u: [PointSet::clamped(points); M],
-                point_velocities_p: [PointSet::clamped(points); K],
-                point_accelerations_u: [PointSet::clamped(points); M],
-                point_accelerations_p: [PointSet::clamped(points); K],
+            let Some(tape) = output.kernel() else {
+                return;
             };
-            if result.is_empty() {
-                // The tape could not run: not numbers, which the solve
-                // turns into a typed error.
-                terms.psi_u = SMatrix::repeat(f64::NAN);
-                return terms;
-            }
+            let result = output.entries();
             let view = |j: usize| columns.view_of(j);
             let same = |j: usize| Some(j);
-            for &(name, start, (rows, cols)) in &parts {
-                let size = (points, cols);
-                match name {
+            for (k, part) in tape.tape.parts(0).iter().enumerate() {
+                let (start, rows, size) = (tape.start(0, k), part.rows, (points, part.cols));
+                match part.name {
                     "psi_u" => terms.psi_u = by_u(result, start),
                     "psi_u_dot" => terms.psi_u_dot = by_u(result, start),
                     "psi_u_ddot" => terms.psi_u_ddot = by_u(result, start),
                     "psi_p" => terms.psi_p = by_params(columns, result, start, rows),
                     "psi_p_dot" => terms.psi_p_dot = by_params(columns, result, start, rows),
                     "psi_p_ddot" => terms.psi_p_ddot = by_params(columns, result, start, rows),
-                    "points_u" => terms.points_u = point_columns(result, start, size, same),
-                    "points_p" => terms.points_p = point_columns(result, start, size, view),
+                    "points_u" => point_columns(&mut terms.points_u, result, start, size, same),
+                    "points_p" => point_columns(&mut terms.points_p, result, start, size, view),
                     "point_velocities_u" => {
-                        terms.point_velocities_u = point_columns(result, start, size, same)
+                        point_columns(&mut terms.point_velocities_u, result, start, size, same)
                     }
                     "point_velocities_p" => {
-                        terms.point_velocities_p = point_columns(result, start, size, view)
+                        point_columns(&mut terms.point_velocities_p, result, start, size, view)
                     }
                     "point_accelerations_u" => {
-                        terms.point_accelerations_u = point_columns(result, start, size, same)
+                        point_columns(&mut terms.point_accelerations_u, result, start, size, same)
                     }
                     "point_accelerations_p" => {
-                        terms.point_accelerations_p = point_columns(result, start, size, view)
+                        point_columns(&mut terms.point_accelerations_p, result, start, size, view)
                     }
                     _ => {}
                 }
             }
-            terms
-        })
+        });
+        terms
+    }
+}
+
+impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F, P, K> {
+    /// The terms of the positions' sensitivities alone, from their own
+    /// kernel (the sines and cosines given), read as [`Fixed::terms`]
+    /// reads the whole terms.
+    fn position_terms(&self, inputs: &[(Input, &[f64])]) -> PositionTerms<M, K, PointSet<P>> {
+        let columns = self.columns();
+        let points = self.point_count();
+        let mut terms = PositionTerms {
+            psi_u: SMatrix::repeat(f64::NAN),
+            psi_p: SMatrix::zeros(),
+            points_u: [PointSet::clamped(points); M],
+            points_p: [PointSet::clamped(points); K],
+        };
+        self.run(Kernel::PositionSensitivityTerms, inputs, |mut output| {
+            let Some(tape) = output.kernel() else {
+                return;
+            };
+            let result = output.entries();
+            for (k, part) in tape.tape.parts(0).iter().enumerate() {
+                let (start, rows, size) = (tape.start(0, k), part.rows, (points, part.cols));
+                match part.name {
+                    "psi_u" => terms.psi_u = by_u(result, start),
+                    "psi_p" => terms.psi_p = by_params(columns, result, start, rows),
+                    "points_u" => point_columns(&mut terms.points_u, result, start, size, Some),
+                    "points_p" => point_columns(&mut terms.points_p, result, start, size, |j| {
+                        columns.view_of(j)
+                    }),
+                    _ => {}
+                }
+            }
+        });
+        terms
     }
 }
 
 impl<const M: usize, const F: usize, const P: usize, const K: usize> SensitivityKernel<M, F, K>
     for Fixed<M, F, P, K>
 {
+    fn position_trig_u(&self) -> [bool; M] {
+        let (u, _) = self.program().trig_flags(Kernel::PositionSensitivityTerms);
+        std::array::from_fn(|k| u.get(k).copied().unwrap_or(false))
+    }
+
+    fn position_trig_v(&self) -> [bool; F] {
+        let (_, v) = self.program().trig_flags(Kernel::PositionSensitivityTerms);
+        std::array::from_fn(|k| v.get(k).copied().unwrap_or(false))
+    }
+
+    fn position_terms_with_trig(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        trig_u: &[(f64, f64); M],
+        trig_v: &[(f64, f64); F],
+    ) -> PositionTerms<M, K, PointSet<P>> {
+        let (trig_u, trig_v) = (flat(trig_u), flat(trig_v));
+        self.position_terms(&[
+            (Input::U, u.as_slice()),
+            (Input::V, v.as_slice()),
+            (Input::TrigU, trig_u.as_flattened()),
+            (Input::TrigV, trig_v.as_flattened()),
+        ])
+    }
+
     fn sensitivity_trig_u(&self) -> [bool; M] {
         self.sensitivity_trig().0
     }

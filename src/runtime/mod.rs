@@ -60,7 +60,9 @@ pub use options::{AccelerationMethod, JacobianSource, Options};
 pub use results::{Analysis, AnalysisJob, Iterate, Kinematics, Position, Velocity};
 #[doc(hidden)]
 pub use sensitivities::SensitivityKernel;
-pub use sensitivities::{Motion, Sensitivities, Sensitivity, SensitivityTerms};
+pub use sensitivities::{
+    Motion, PositionSensitivity, PositionTerms, Sensitivities, Sensitivity, SensitivityTerms,
+};
 pub(crate) use solve::analyze_together;
 pub use sweep::{Drive, Event, EventKind, Sweep, SweepOptions, SweepPose, SweepSummary};
 pub use symbolic::{SymbolicMatrix, SymbolicTable};

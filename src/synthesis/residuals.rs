@@ -52,14 +52,25 @@ where
     let (vdot, vddot) = (SVector::from([1.0]), SVector::from([0.0]));
     for (i, target) in problem.targets.iter().enumerate() {
         let v = SVector::from([problem.driver(x.as_slice(), i)]);
-        let analysis = model.analyze(&from.u[i], &v, &vdot, &vddot, options).ok()?;
+        // Matched on references: the results are large (a run-time
+        // mechanism's point sets have room for more points than it has),
+        // and taken out of their `Result`s by value they were copied.
+        let analysis = model.analyze(&from.u[i], &v, &vdot, &vddot, options);
+        let Ok(analysis) = &analysis else {
+            return None;
+        };
         let branch = branch(&model, &analysis.u, v[0]);
         if branch != from.branch[i] {
             return None;
         }
-        let sensitivity = model.sensitivities_of(&analysis, options).ok()?;
-        // The matched values (and their rates along the driver), row by row.
-        let (value, rate, by_p): (Vec<f64>, Vec<f64>, Vec<SVector<f64, K>>) = match problem.task {
+        let sensitivity = model.position_sensitivities_of(analysis, options);
+        let Ok(sensitivity) = &sensitivity else {
+            return None;
+        };
+        // The matched values (and their rates along the driver), row by
+        // row: at most three rows, the first `rows` of each array.
+        let zero = SVector::<f64, K>::zeros();
+        let (value, rate, by_p): ([f64; 3], [f64; 3], [SVector<f64, K>; 3]) = match problem.task {
             Task::Path { point } => {
                 let (p, pv, pp) = (
                     analysis.points.as_ref()[point],
@@ -67,15 +78,15 @@ where
                     sensitivity.point(point),
                 );
                 (
-                    vec![p.x, p.y],
-                    vec![pv.x, pv.y],
-                    vec![pp.row(0).transpose(), pp.row(1).transpose()],
+                    [p.x, p.y, 0.0],
+                    [pv.x, pv.y, 0.0],
+                    [pp.row(0).transpose(), pp.row(1).transpose(), zero],
                 )
             }
             Task::Function { coordinate } => (
-                vec![analysis.u[coordinate]],
-                vec![analysis.udot[coordinate]],
-                vec![sensitivity.u.row(coordinate).transpose()],
+                [analysis.u[coordinate], 0.0, 0.0],
+                [analysis.udot[coordinate], 0.0, 0.0],
+                [sensitivity.u.row(coordinate).transpose(), zero, zero],
             ),
             Task::Motion {
                 point,
@@ -88,9 +99,9 @@ where
                     sensitivity.point(point),
                 );
                 (
-                    vec![p.x, p.y, length * analysis.u[angle]],
-                    vec![pv.x, pv.y, length * analysis.udot[angle]],
-                    vec![
+                    [p.x, p.y, length * analysis.u[angle]],
+                    [pv.x, pv.y, length * analysis.udot[angle]],
+                    [
                         pp.row(0).transpose(),
                         pp.row(1).transpose(),
                         sensitivity.u.row(angle).transpose() * length,

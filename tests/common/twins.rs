@@ -5,7 +5,7 @@
 
 use linkage::mechanism::Fixed;
 use linkage::prelude::*;
-use linkage::{SensitivityKernel, SensitivityTerms};
+use linkage::{PositionSensitivity, PositionTerms, SensitivityKernel, SensitivityTerms};
 
 /// The inside of the attribute `#[linkage::linkage(...)]` (or
 /// `#[crate::linkage(...)]`) on `struct name` in `source`.
@@ -244,6 +244,47 @@ fn same_terms<const M: usize, const K: usize, A, B>(
     );
 }
 
+/// The terms of the positions' sensitivities, to the bit.
+fn same_position_terms<const M: usize, const K: usize, A, B>(
+    a: &PositionTerms<M, K, A>,
+    b: &PositionTerms<M, K, B>,
+) where
+    A: AsRef<[Vector2<f64>]>,
+    B: AsRef<[Vector2<f64>]>,
+{
+    same("position terms.psi_u", &a.psi_u, &b.psi_u);
+    same("position terms.psi_p", &a.psi_p, &b.psi_p);
+    same_columns("position terms.points_u", &a.points_u, &b.points_u);
+    same_columns("position terms.points_p", &a.points_p, &b.points_p);
+}
+
+/// The sensitivities of the positions alone are the whole sensitivities'
+/// (or the same error): u_p and rcond to the bit, dP/dp to the number
+/// (the whole sum adds a coordinate's zero term, and 0 + −0 is +0).
+pub fn same_positions<const M: usize, const K: usize, A, B>(
+    whole: &Result<Sensitivity<M, K, A>, Error>,
+    positions: &Result<PositionSensitivity<M, K, B>, Error>,
+) where
+    A: AsRef<[Vector2<f64>]>,
+    B: AsRef<[Vector2<f64>]>,
+{
+    match (whole, positions) {
+        (Ok(a), Ok(b)) => {
+            same("positions.u", &a.u, &b.u);
+            assert_eq!(a.rcond.to_bits(), b.rcond.to_bits(), "positions.rcond");
+            for (p, q) in a.points.iter().zip(&b.points) {
+                assert_eq!(p.as_ref(), q.as_ref(), "positions.points");
+            }
+        }
+        (Err(a), Err(b)) => assert_eq!(format!("{a:?}"), format!("{b:?}")),
+        (a, b) => panic!(
+            "one failed: {:?} and {:?}",
+            a.as_ref().err(),
+            b.as_ref().err()
+        ),
+    }
+}
+
 /// The same sensitivities (or the same error), to the bit.
 pub fn same_sensitivity<const M: usize, const K: usize, A, B>(
     a: &Result<Sensitivity<M, K, A>, Error>,
@@ -312,6 +353,17 @@ pub fn every_sensitivity_kernel<L, const M: usize, const F: usize, const K: usiz
         &compiled.sensitivity_terms_with_trig(u, v, &trig_u, &trig_v, udot, vdot, uddot, vddot),
         &twin.sensitivity_terms_with_trig(u, v, &trig_u, &trig_v, udot, vdot, uddot, vddot),
     );
+    // The positions' terms: the compiled mechanism's read from its whole
+    // terms, the run-time mechanism's from a kernel of their own, which
+    // reads the sines and cosines of no coordinate the whole terms do not.
+    let (a, b) = (
+        compiled.position_terms_with_trig(u, v, &trig_u, &trig_v),
+        twin.position_terms_with_trig(u, v, &trig_u, &trig_v),
+    );
+    same_position_terms(&a, &b);
+    let within = |part: &[bool], whole: &[bool]| part.iter().zip(whole).all(|(p, w)| !p | w);
+    assert!(within(&twin.position_trig_u(), &twin.sensitivity_trig_u()));
+    assert!(within(&twin.position_trig_v(), &twin.sensitivity_trig_v()));
     same("psi_p", &compiled.psi_p(u, v), &twin.psi_p(u, v));
     let options = Options::default();
     same_sensitivity(

@@ -321,6 +321,33 @@ fn same_at_run_time<L, const M: usize, const F: usize, const K: usize>(
             expected.len(),
             "{name}: the poses with sensitivities"
         );
+        // At analyses of every tenth pose: the positions' sensitivities
+        // alone are the whole ones', the twins' the same to the bit.
+        let accuracy = options.options;
+        for pose in compiled.poses.iter().step_by(10) {
+            let (vdot, vddot) = (SVector::repeat(1.0), SVector::repeat(0.5));
+            let a = model.analyze(&pose.u, &pose.v, &vdot, &vddot, &accuracy);
+            let b = sensitive.analyze(&pose.u, &pose.v, &vdot, &vddot, &accuracy);
+            let (Ok(a), Ok(b)) = (a, b) else {
+                continue;
+            };
+            let positions = model.position_sensitivities_of(&a, &accuracy);
+            twins::same_positions(&model.sensitivities_of(&a, &accuracy), &positions);
+            let read = sensitive.position_sensitivities_of(&b, &accuracy);
+            twins::same_positions(&sensitive.sensitivities_of(&b, &accuracy), &read);
+            match (&positions, &read) {
+                (Ok(p), Ok(q)) => {
+                    twins::same("positions.u", &p.u, &q.u);
+                    for (x, y) in p.points.iter().zip(&q.points) {
+                        twins::same_points("positions.points", x.as_ref(), y.as_ref());
+                    }
+                }
+                (p, q) => assert_eq!(
+                    format!("{:?}", p.as_ref().err()),
+                    format!("{:?}", q.as_ref().err())
+                ),
+            }
+        }
     }
     runs(name, file, &run_time);
 }

@@ -5,6 +5,7 @@
 
 use crate::common::OMEGA2;
 use crate::common::sensitivity::{Column, by_differences, by_dual};
+use crate::common::twins::same_positions;
 use crate::models::{BOOM, FIVE_BAR, SIX_BAR, SLIDER_CRANK};
 use linkage::mechanisms::FourBar;
 use linkage::prelude::*;
@@ -225,6 +226,15 @@ fn at_an_analysis_the_sensitivities_are_those_of_its_motion() {
             model.sensitivities(&Motion::of_analysis(&moved), &options)
         );
         assert_ne!(at_moved, Ok(given));
+        // The positions' alone are theirs, at both.
+        same_positions(
+            &Ok(given),
+            &model.position_sensitivities_of(&analysis, &options),
+        );
+        same_positions(
+            &at_moved,
+            &model.position_sensitivities_of(&moved, &options),
+        );
     }
     same(
         &FourBar::WORKSHEET,

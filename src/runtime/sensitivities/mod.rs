@@ -8,7 +8,7 @@
 mod results;
 mod solve;
 
-pub use results::{Motion, Sensitivity, SensitivityTerms};
+pub use results::{Motion, PositionSensitivity, PositionTerms, Sensitivity, SensitivityTerms};
 
 use crate::runtime::error::Error;
 use crate::runtime::linkage::Linkage;
@@ -64,6 +64,35 @@ pub trait SensitivityKernel<const M: usize, const F: usize, const K: usize>: Lin
         uddot: &SVector<f64, M>,
         vddot: &SVector<f64, F>,
     ) -> SensitivityTerms<M, K, Self::Points>;
+
+    /// Which coordinates of u [`SensitivityKernel::position_terms_with_trig`]
+    /// reads the sine and cosine of (by default those of the whole terms).
+    fn position_trig_u(&self) -> [bool; M] {
+        self.sensitivity_trig_u()
+    }
+    /// Which coordinates of v it reads them of.
+    fn position_trig_v(&self) -> [bool; F] {
+        self.sensitivity_trig_v()
+    }
+
+    /// The terms of the positions' sensitivities alone, the sines and
+    /// cosines of the coordinates given: by default read from the whole
+    /// terms (which they do not depend on the rates of); a run-time
+    /// mechanism has a kernel of its own for them.
+    fn position_terms_with_trig(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        trig_u: &[(f64, f64); M],
+        trig_v: &[(f64, f64); F],
+    ) -> PositionTerms<M, K, Self::Points> {
+        let (zero_u, zero_v) = (SVector::zeros(), SVector::zeros());
+        PositionTerms::of(
+            &self.sensitivity_terms_with_trig(
+                u, v, trig_u, trig_v, &zero_u, &zero_v, &zero_u, &zero_v,
+            ),
+        )
+    }
 }
 
 /// A mechanism whose closure equations are also differentiated by its
@@ -141,11 +170,33 @@ pub trait Sensitivities<const M: usize, const F: usize, const K: usize>:
         let motion = Motion::of_analysis(analysis);
         match &analysis.trig {
             Some(trig) if trig.u == motion.u => {
-                let (trig_u, trig_v) = completed::<Self, M, F, K>(self, trig, &motion.u, &motion.v);
+                let flags = (self.sensitivity_trig_u(), self.sensitivity_trig_v());
+                let (trig_u, trig_v) = completed(self, trig, &motion.u, &motion.v, flags);
                 with_trig(self, &motion, &trig_u, &trig_v, options)
             }
             _ => self.sensitivities(&motion, options),
         }
+    }
+
+    /// The sensitivities of the positions alone at the pose of `analysis`
+    /// — u_p and the points' dP/dp, what a synthesis reads — the very
+    /// numbers of [`Sensitivities::sensitivities_of`]'s `u` and `points`,
+    /// without the velocities' and accelerations' (`Singular` and
+    /// `NonFiniteValue` as there, of these alone).
+    fn position_sensitivities_of(
+        &self,
+        analysis: &Analysis<M, F, Self::Points>,
+        options: &Options,
+    ) -> Result<PositionSensitivity<M, K, Self::Points>, Error> {
+        let (u, v) = (&analysis.u, &analysis.v);
+        let flags = (self.position_trig_u(), self.position_trig_v());
+        let (trig_u, trig_v) = match &analysis.trig {
+            Some(trig) if trig.u == *u => completed(self, trig, u, v, flags),
+            _ => computed(u, v, flags),
+        };
+        solve::position_sensitivities(u, v, self.psi_u_blocks(), options, || {
+            self.position_terms_with_trig(u, v, &trig_u, &trig_v)
+        })
     }
 
     /// [`Linkage::sweep_each`] with the sensitivities of every pose: the
@@ -205,32 +256,46 @@ where
 }
 
 /// The sines and cosines of an analysis at its pose, completed with those
-/// of the coordinates the sensitivities read and the analysis's kernel did
-/// not (a point's angle, say).
+/// of the coordinates a kernel reads (`flags`) and the analysis's kernel
+/// did not (a point's angle, say).
 #[inline(always)]
 fn completed<L, const M: usize, const F: usize, const K: usize>(
     model: &L,
     trig: &PoseTrig<M, F>,
     u: &SVector<f64, M>,
     v: &SVector<f64, F>,
+    (flags_u, flags_v): ([bool; M], [bool; F]),
 ) -> (SinCos<M>, SinCos<F>)
 where
     L: SensitivityKernel<M, F, K> + ?Sized,
 {
     let (mut trig_u, mut trig_v) = (trig.sin_cos_u, trig.sin_cos_v);
-    let (sensitivity_u, kinematics_u) = (model.sensitivity_trig_u(), model.trig_u());
-    let (sensitivity_v, kinematics_v) = (model.sensitivity_trig_v(), model.trig_v());
+    let (kinematics_u, kinematics_v) = (model.trig_u(), model.trig_v());
     for k in 0..M {
-        if sensitivity_u[k] && !kinematics_u[k] {
+        if flags_u[k] && !kinematics_u[k] {
             trig_u[k] = u[k].sin_cos();
         }
     }
     for k in 0..F {
-        if sensitivity_v[k] && !kinematics_v[k] {
+        if flags_v[k] && !kinematics_v[k] {
             trig_v[k] = v[k].sin_cos();
         }
     }
     (trig_u, trig_v)
+}
+
+/// The sines and cosines of the coordinates a kernel reads (`flags`), the
+/// others left zero.
+fn computed<const M: usize, const F: usize>(
+    u: &SVector<f64, M>,
+    v: &SVector<f64, F>,
+    (flags_u, flags_v): ([bool; M], [bool; F]),
+) -> (SinCos<M>, SinCos<F>) {
+    let at = |x: f64, read: bool| if read { x.sin_cos() } else { (0.0, 0.0) };
+    (
+        std::array::from_fn(|k| at(u[k], flags_u[k])),
+        std::array::from_fn(|k| at(v[k], flags_v[k])),
+    )
 }
 
 #[cfg(test)]

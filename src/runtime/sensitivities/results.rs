@@ -75,6 +75,51 @@ pub struct SensitivityTerms<const M: usize, const K: usize, P> {
     pub point_accelerations_p: [P; K],
 }
 
+/// The terms of the sensitivities of the positions alone (those of
+/// [`SensitivityTerms`] that depend on no rate): Ψ_u, Ψ_p, P_u and P_p.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PositionTerms<const M: usize, const K: usize, P> {
+    pub psi_u: SMatrix<f64, M, M>,
+    pub psi_p: SMatrix<f64, M, K>,
+    /// P_u, column by column.
+    pub points_u: [P; M],
+    /// P_p (explicit), column by column.
+    pub points_p: [P; K],
+}
+
+impl<const M: usize, const K: usize, P: Copy> PositionTerms<M, K, P> {
+    /// The position terms among all the terms.
+    pub fn of(terms: &SensitivityTerms<M, K, P>) -> PositionTerms<M, K, P> {
+        PositionTerms {
+            psi_u: terms.psi_u,
+            psi_p: terms.psi_p,
+            points_u: terms.points_u,
+            points_p: terms.points_p,
+        }
+    }
+}
+
+/// The sensitivities of the positions alone at a pose
+/// ([`Sensitivities::position_sensitivities_of`](super::Sensitivities::position_sensitivities_of)):
+/// the very numbers of [`Sensitivity`]'s `u`, `points` and `rcond`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PositionSensitivity<const M: usize, const K: usize, P> {
+    /// u_p = −Ψ_u⁻¹Ψ_p
+    pub u: SMatrix<f64, M, K>,
+    /// dP/dp = P_u u_p + P_p, one set of points per parameter.
+    pub points: [P; K],
+    /// The reciprocal condition number of Ψ_u at the pose.
+    pub rcond: f64,
+}
+
+impl<const M: usize, const K: usize, P: AsRef<[Vector2<f64>]>> PositionSensitivity<M, K, P> {
+    /// The derivatives of the position of point `index` by the parameters
+    /// (2 × k: rows x and y). Panics if `index` is not a point's index.
+    pub fn point(&self, index: usize) -> SMatrix<f64, 2, K> {
+        gather(&self.points, index)
+    }
+}
+
 /// The sensitivities of a pose in motion to the parameters p: the total
 /// derivative of every result by each parameter, the driver's position,
 /// velocity and acceleration held fixed.

@@ -12,7 +12,7 @@ use crate::dag::Symbol;
 use crate::derivatives::Derivatives;
 use crate::emit::Mode;
 use crate::names::SymbolNames;
-use crate::plan::{Kernel, Plan, free_name};
+use crate::plan::{Kernel, Plan, PlannedPart, free_name};
 use builder::Builder;
 use read::Reader;
 use std::fmt;
@@ -52,7 +52,7 @@ pub fn compile(model: &Derivatives, kernel: Kernel) -> Result<Tape, CompileError
     compile_named(model, &model.lowered.names(), kernel)
 }
 
-/// The tapes of every kernel of a model ([`Kernel::ALL`]).
+/// The tapes of every kernel of a model ([`Kernel::every`]).
 #[derive(Clone, Debug)]
 pub struct Tapes {
     tapes: Vec<Tape>,
@@ -61,9 +61,8 @@ pub struct Tapes {
 impl Tapes {
     pub fn build(model: &Derivatives) -> Result<Tapes, CompileError> {
         let names = model.lowered.names();
-        let tapes = Kernel::ALL
-            .iter()
-            .map(|&kernel| compile_named(model, &names, kernel))
+        let tapes = Kernel::every()
+            .map(|kernel| compile_named(model, &names, kernel))
             .collect::<Result<_, _>>()?;
         Ok(Tapes { tapes })
     }
@@ -118,17 +117,33 @@ fn compile_named(
     for statement in &phased.prologue {
         reader.statement(statement).map_err(named)?;
     }
-    for (statements, values) in &phased.phases {
+    // Each phase's outputs: its parts' roots in order, of the parts the
+    // kernel keeps (the operations the others alone need are dropped).
+    let kept = |part: &PlannedPart| {
+        kernel
+            .kept_parts()
+            .is_none_or(|k| k.contains(&part.part.name))
+    };
+    for ((statements, values), parts) in phased.phases.iter().zip(&plan.phases) {
         for statement in statements {
             reader.statement(statement).map_err(named)?;
         }
-        reader.end_phase(values).map_err(named)?;
+        let mut outputs = Vec::with_capacity(values.len());
+        let mut rest = values.as_slice();
+        for part in parts {
+            let (these, after) = rest.split_at(part.roots.len().min(rest.len()));
+            if kept(part) {
+                outputs.extend_from_slice(these);
+            }
+            rest = after;
+        }
+        reader.end_phase(&outputs).map_err(named)?;
     }
     let allocated = allocate::allocate(builder);
     let parts = plan
         .phases
         .into_iter()
-        .map(|parts| parts.into_iter().map(|p| p.part).collect())
+        .map(|parts| parts.into_iter().filter(kept).map(|p| p.part).collect())
         .collect();
     let phases = allocate::phases(&allocated, parts);
     Tape::new(
@@ -176,7 +191,7 @@ mod tests {
     fn kinematics_runs_in_two_phases_sharing_its_registers() {
         let model = fourbar();
         let tapes = Tapes::build(&model).expect("every kernel compiles");
-        for kernel in Kernel::ALL {
+        for kernel in Kernel::every() {
             let phases = tapes.get(kernel).phases();
             let expected = if matches!(kernel, Kernel::Kinematics { .. }) {
                 2
