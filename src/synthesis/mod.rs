@@ -9,10 +9,10 @@
 //! bounds ([`Problem::free`]), whether the driver at each target is
 //! prescribed or free ([`Timing`]), and the designer's own terms
 //! ([`Problem::term`], written on dual numbers). Its residuals have exact Jacobians:
-//! each target's pose is solved by Newton, and the sensitivities
-//! ([`Sensitivities`](crate::Sensitivities)) give the columns of the free
-//! parameters, the velocity at unit driver speed the column of a free
-//! driver.
+//! each target's pose is solved by Newton, and the sensitivities of the
+//! positions ([`Sensitivities::position_sensitivities_of`](crate::Sensitivities::position_sensitivities_of))
+//! give the columns of the free parameters, the velocity at unit driver
+//! speed the column of a free driver.
 //!
 //! [`synthesize`] solves it from many random starts in parallel (through
 //! [`batch`](crate::batch)) with a bounded Levenberg–Marquardt solver —
