@@ -103,8 +103,8 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
         Fixed {
             u_names: std::array::from_fn(|k| array(&program.u_names, k)),
             v_names: std::array::from_fn(|k| array(&program.v_names, k)),
-            trig_u: std::array::from_fn(|k| trig_u.get(k).copied().unwrap_or(false)),
-            trig_v: std::array::from_fn(|k| trig_v.get(k).copied().unwrap_or(false)),
+            trig_u,
+            trig_v,
             program,
             fields,
             columns,
@@ -151,13 +151,8 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
     /// Which coordinates of u and of v the sensitivities' kernel with the
     /// sines and cosines given reads them of.
     pub(super) fn sensitivity_trig(&self) -> ([bool; M], [bool; F]) {
-        let (u, v) = self
-            .program
-            .trig_flags(Kernel::SensitivityTerms { with_trig: true });
-        (
-            std::array::from_fn(|k| u.get(k).copied().unwrap_or(false)),
-            std::array::from_fn(|k| v.get(k).copied().unwrap_or(false)),
-        )
+        self.program
+            .trig_flags(Kernel::SensitivityTerms { with_trig: true })
     }
 
     /// Runs one phase-0 kernel with the inputs `inputs` written, and hands

@@ -192,17 +192,24 @@ impl Program {
     }
 
     /// The coordinates of u, then of v, whose sine and cosine the kernel
-    /// compiled with them given reads.
-    pub(crate) fn trig_flags(&self, kernel: Kernel) -> (Vec<bool>, Vec<bool>) {
-        let mut u = vec![false; self.m];
-        let mut v = vec![false; self.f];
+    /// compiled with them given reads, at sizes `M` and `F` (the view's,
+    /// which it checked are the program's): no allocation, for the calls
+    /// made at every pose.
+    pub(crate) fn trig_flags<const M: usize, const F: usize>(
+        &self,
+        kernel: Kernel,
+    ) -> ([bool; M], [bool; F]) {
+        let (mut u, mut v) = ([false; M], [false; F]);
         let coords = self
             .kernel(kernel)
             .map_or(&[][..], |k| k.tape.trig_coords());
         for &k in coords {
-            match k.checked_sub(self.m) {
-                None => u[k] = true,
-                Some(j) => v[j] = true,
+            let flag = match k.checked_sub(self.m) {
+                None => u.get_mut(k),
+                Some(j) => v.get_mut(j),
+            };
+            if let Some(flag) = flag {
+                *flag = true;
             }
         }
         (u, v)

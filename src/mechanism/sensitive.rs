@@ -218,13 +218,15 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Sensitivity
     for Fixed<M, F, P, K>
 {
     fn position_trig_u(&self) -> [bool; M] {
-        let (u, _) = self.program().trig_flags(Kernel::PositionSensitivityTerms);
-        std::array::from_fn(|k| u.get(k).copied().unwrap_or(false))
+        self.program()
+            .trig_flags::<M, F>(Kernel::PositionSensitivityTerms)
+            .0
     }
 
     fn position_trig_v(&self) -> [bool; F] {
-        let (_, v) = self.program().trig_flags(Kernel::PositionSensitivityTerms);
-        std::array::from_fn(|k| v.get(k).copied().unwrap_or(false))
+        self.program()
+            .trig_flags::<M, F>(Kernel::PositionSensitivityTerms)
+            .1
     }
 
     fn position_terms_with_trig(

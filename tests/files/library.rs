@@ -324,13 +324,28 @@ fn same_at_run_time<L, const M: usize, const F: usize, const K: usize>(
         // At analyses of every tenth pose: the positions' sensitivities
         // alone are the whole ones', the twins' the same to the bit.
         let accuracy = options.options;
+        let mut analysed = 0;
         for pose in compiled.poses.iter().step_by(10) {
             let (vdot, vddot) = (SVector::repeat(1.0), SVector::repeat(0.5));
             let a = model.analyze(&pose.u, &pose.v, &vdot, &vddot, &accuracy);
             let b = sensitive.analyze(&pose.u, &pose.v, &vdot, &vddot, &accuracy);
-            let (Ok(a), Ok(b)) = (a, b) else {
-                continue;
+            let (a, b) = match (a, b) {
+                (Ok(a), Ok(b)) => (a, b),
+                (Err(a), Err(b)) => {
+                    assert_eq!(
+                        format!("{a:?}"),
+                        format!("{b:?}"),
+                        "{name}: the twins' analyses"
+                    );
+                    continue;
+                }
+                (a, b) => panic!(
+                    "{name}: one twin's analysis failed: {:?} {:?}",
+                    a.err(),
+                    b.err()
+                ),
             };
+            analysed += 1;
             let positions = model.position_sensitivities_of(&a, &accuracy);
             twins::same_positions(&model.sensitivities_of(&a, &accuracy), &positions);
             let read = sensitive.position_sensitivities_of(&b, &accuracy);
@@ -348,6 +363,7 @@ fn same_at_run_time<L, const M: usize, const F: usize, const K: usize>(
                 ),
             }
         }
+        assert!(analysed > 0, "{name}: no pose of the sweep analysed");
     }
     runs(name, file, &run_time);
 }

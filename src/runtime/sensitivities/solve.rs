@@ -102,24 +102,17 @@ where
     // them reaches u_p, u̇_p or ü_p (IEEE: ∞·0 is NaN, and Ψ_u's makes the
     // inverse fail), so only a failure scans them, in order, to name the
     // first — the errors of a scan up front, for one pass less.
-    // Up to m = 16 the inverse is formed (one solve per column in blocks,
-    // its rcond then exact) and multiplied: cheaper there than a solve per
-    // parameter and term (docs/performance.md, "Solving in blocks, without
-    // the inverse").
-    let (factors, formed) = if M <= 16 {
-        Factors::of_with_inverse(&terms.psi_u, blocks)
-    } else {
-        (Factors::of(&terms.psi_u, blocks), None)
-    };
+    let (factors, formed) = factored(&terms.psi_u, blocks);
     if let Err(singular) = options.require_accuracy(stage, factors.rcond()) {
         name_non_finite_term(*terms)?;
         return Err(singular);
     }
-    let (u, udot, uddot) = match (factors.whole_inverse(), formed) {
-        (Some(inverse), _) if M <= 3 => by_products_first(inverse, terms),
-        (Some(inverse), _) => in_sequence(inverse, terms),
-        (None, Some(inverse)) => in_sequence(&inverse, terms),
-        (None, None) => by_solves(&factors, terms),
+    let way = Way::of(&factors, &formed);
+    let u = way.u_p(&terms.psi_p);
+    let (udot, uddot) = match way {
+        Way::ProductsFirst(inverse) => by_products_first(inverse, &u, terms),
+        Way::InSequence(inverse) => in_sequence(inverse, &u, terms),
+        Way::Solves(factors) => by_solves(factors, &u, terms),
     };
     // ü_p alone: a NaN or an infinity in u_p or u̇_p reaches it (column j
     // of ü_p sums B·u_p's and A·u̇_p's column j, or Ψ̈_u·u_p's and
@@ -216,23 +209,12 @@ where
         check_value(stage, "Ψ_u", terms.psi_u.as_slice())?;
         check_value(stage, "Ψ_p", terms.psi_p.as_slice())
     };
-    // As `from_terms`: the inverse formed up to m = 16, and u_p as each of
-    // its three ways computes it.
-    let (factors, formed) = if M <= 16 {
-        Factors::of_with_inverse(&terms.psi_u, blocks)
-    } else {
-        (Factors::of(&terms.psi_u, blocks), None)
-    };
+    let (factors, formed) = factored(&terms.psi_u, blocks);
     if let Err(singular) = options.require_accuracy(stage, factors.rcond()) {
         name_non_finite_term()?;
         return Err(singular);
     }
-    let u_p = match (factors.whole_inverse(), formed) {
-        (Some(inverse), _) if M <= 3 => -product(inverse, &terms.psi_p),
-        (Some(inverse), _) => product(&-inverse, &terms.psi_p),
-        (None, Some(inverse)) => product(&-inverse, &terms.psi_p),
-        (None, None) => -factors.solve_columns(&terms.psi_p),
-    };
+    let u_p = Way::of(&factors, &formed).u_p(&terms.psi_p);
     if !all_finite(u_p.as_slice()) {
         name_non_finite_term()?;
         check_value(stage, "u_p", u_p.as_slice())?;
@@ -265,58 +247,108 @@ where
     })
 }
 
-/// u_p, u̇_p, ü_p with the products by Ψ_u⁻¹ first (see the module's
-/// documentation): the five do not wait for one another, and the chain from
-/// Ψ_u⁻¹ to ü_p is three products long; 2A is exact.
+/// Ψ_u factored for the sensitivities. Up to m = 16 the inverse is formed
+/// (one solve per column in blocks, its rcond then exact) and multiplied:
+/// cheaper there than a solve per parameter and term (docs/performance.md,
+/// "Solving in blocks, without the inverse").
+#[inline(always)]
+fn factored<const M: usize>(
+    psi_u: &SMatrix<f64, M, M>,
+    blocks: PsiUBlocks<'_>,
+) -> (Factors<M>, Option<SMatrix<f64, M, M>>) {
+    if M <= 16 {
+        Factors::of_with_inverse(psi_u, blocks)
+    } else {
+        (Factors::of(psi_u, blocks), None)
+    }
+}
+
+/// How the sensitivities multiply by Ψ_u⁻¹: the one place that chooses,
+/// for u_p and for the rates alike.
+#[derive(Clone, Copy)]
+enum Way<'a, const M: usize> {
+    /// A whole inverse of m ≤ 3: [`by_products_first`].
+    ProductsFirst(&'a SMatrix<f64, M, M>),
+    /// A whole or formed inverse: [`in_sequence`].
+    InSequence(&'a SMatrix<f64, M, M>),
+    /// No inverse: [`by_solves`].
+    Solves(&'a Factors<M>),
+}
+
+impl<'a, const M: usize> Way<'a, M> {
+    #[inline(always)]
+    fn of(factors: &'a Factors<M>, formed: &'a Option<SMatrix<f64, M, M>>) -> Way<'a, M> {
+        match (factors.whole_inverse(), formed) {
+            (Some(inverse), _) if M <= 3 => Way::ProductsFirst(inverse),
+            (Some(inverse), _) | (None, Some(inverse)) => Way::InSequence(inverse),
+            (None, None) => Way::Solves(factors),
+        }
+    }
+
+    /// u_p = −Ψ_u⁻¹Ψ_p, the first product of each way.
+    #[inline(always)]
+    fn u_p<const K: usize>(self, psi_p: &SMatrix<f64, M, K>) -> SMatrix<f64, M, K> {
+        match self {
+            Way::ProductsFirst(inverse) => -product(inverse, psi_p),
+            Way::InSequence(inverse) => product(&-inverse, psi_p),
+            Way::Solves(factors) => -factors.solve_columns(psi_p),
+        }
+    }
+}
+
+/// u̇_p, ü_p with the products by Ψ_u⁻¹ first (see the module's
+/// documentation), u_p given: the products do not wait for one another,
+/// and the chain from Ψ_u⁻¹ to ü_p is three products long; 2A is exact
+/// (and so is −u_p, the product Ψ_u⁻¹Ψ_p it was negated from).
 #[inline(always)]
 fn by_products_first<const M: usize, const K: usize, P>(
     inverse: &SMatrix<f64, M, M>,
+    u: &SMatrix<f64, M, K>,
     terms: &SensitivityTerms<M, K, P>,
-) -> (SMatrix<f64, M, K>, SMatrix<f64, M, K>, SMatrix<f64, M, K>) {
+) -> (SMatrix<f64, M, K>, SMatrix<f64, M, K>) {
     let a = product(inverse, &terms.psi_u_dot);
     let b = product(inverse, &terms.psi_u_ddot);
-    let x0 = product(inverse, &terms.psi_p);
+    let x0 = -u;
     let x1 = product(inverse, &terms.psi_p_dot);
     let x2 = product(inverse, &terms.psi_p_ddot);
     let udot = product(&a, &x0) - x1;
     let uddot = product(&b, &x0) - product(&(a * 2.0), &udot) - x2;
-    (-x0, udot, uddot)
+    (udot, uddot)
 }
 
-/// u_p, u̇_p, ü_p as the formulas read, each solve waiting for the one
-/// before: 2m³ multiplications fewer than [`by_products_first`].
+/// u̇_p, ü_p as the formulas read, u_p given, each solve waiting for the
+/// one before: 2m³ multiplications fewer than [`by_products_first`].
 #[inline(always)]
 fn in_sequence<const M: usize, const K: usize, P>(
     inverse: &SMatrix<f64, M, M>,
+    u: &SMatrix<f64, M, K>,
     terms: &SensitivityTerms<M, K, P>,
-) -> (SMatrix<f64, M, K>, SMatrix<f64, M, K>, SMatrix<f64, M, K>) {
+) -> (SMatrix<f64, M, K>, SMatrix<f64, M, K>) {
     let minus_inverse = -inverse;
-    let u = product(&minus_inverse, &terms.psi_p);
     let udot = product(
         &minus_inverse,
-        &(product(&terms.psi_u_dot, &u) + terms.psi_p_dot),
+        &(product(&terms.psi_u_dot, u) + terms.psi_p_dot),
     );
     let twice = product(&terms.psi_u_dot, &udot) * 2.0;
     let uddot = product(
         &minus_inverse,
-        &(product(&terms.psi_u_ddot, &u) + twice + terms.psi_p_ddot),
+        &(product(&terms.psi_u_ddot, u) + twice + terms.psi_p_ddot),
     );
-    (u, udot, uddot)
+    (udot, uddot)
 }
 
-/// u_p, u̇_p, ü_p as [`in_sequence`], each product by Ψ_u⁻¹ a solve with
-/// Ψ_u factored in blocks (no inverse).
+/// u̇_p, ü_p as [`in_sequence`], u_p given, each product by Ψ_u⁻¹ a solve
+/// with Ψ_u factored in blocks (no inverse).
 #[inline(always)]
 fn by_solves<const M: usize, const K: usize, P>(
     factors: &Factors<M>,
+    u: &SMatrix<f64, M, K>,
     terms: &SensitivityTerms<M, K, P>,
-) -> (SMatrix<f64, M, K>, SMatrix<f64, M, K>, SMatrix<f64, M, K>) {
-    let u = -factors.solve_columns(&terms.psi_p);
-    let udot = -factors.solve_columns(&(product(&terms.psi_u_dot, &u) + terms.psi_p_dot));
+) -> (SMatrix<f64, M, K>, SMatrix<f64, M, K>) {
+    let udot = -factors.solve_columns(&(product(&terms.psi_u_dot, u) + terms.psi_p_dot));
     let twice = product(&terms.psi_u_dot, &udot) * 2.0;
-    let uddot =
-        -factors.solve_columns(&(product(&terms.psi_u_ddot, &u) + twice + terms.psi_p_ddot));
-    (u, udot, uddot)
+    let uddot = -factors.solve_columns(&(product(&terms.psi_u_ddot, u) + twice + terms.psi_p_ddot));
+    (udot, uddot)
 }
 
 /// `NonFiniteValue` naming the first of the matrix terms that is not
@@ -468,11 +500,13 @@ mod tests {
         let u = -(inverse * t.psi_p);
         let udot = -(inverse * (t.psi_u_dot * u + t.psi_p_dot));
         let uddot = -(inverse * (t.psi_u_ddot * u + t.psi_u_dot * udot * 2.0 + t.psi_p_ddot));
-        assert_eq!(in_sequence(&inverse, &t), (u, udot, uddot));
+        assert_eq!(Way::InSequence(&inverse).u_p(&t.psi_p), u);
+        assert_eq!(in_sequence(&inverse, &u, &t), (udot, uddot));
         // Not the numbers of the other order (to rounding only).
-        let first = by_products_first(&inverse, &t);
-        assert_ne!(first, (u, udot, uddot));
-        assert!((first.2 - uddot).amax() <= 1e-14 * uddot.amax());
+        let first_u = Way::ProductsFirst(&inverse).u_p(&t.psi_p);
+        let (first_udot, first_uddot) = by_products_first(&inverse, &first_u, &t);
+        assert_ne!((first_u, first_udot, first_uddot), (u, udot, uddot));
+        assert!((first_uddot - uddot).amax() <= 1e-14 * uddot.amax());
     }
 
     fn error(t: &SensitivityTerms<2, 2, Points>) -> Option<&'static str> {
