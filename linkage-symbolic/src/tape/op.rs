@@ -9,6 +9,10 @@
 //! `x.powf(0.5)` is `|√x|` with `−∞ ↦ +∞` ([`Code::PowfHalf`]) and
 //! `2.0.powf(x)` is `x.exp2()` ([`Code::Exp2`]); `x.powi(n)` is a chain of
 //! multiplications (see `compile`).
+//!
+//! Two arithmetic operations in a row, the first's result read by the
+//! second alone, run as one fused operation ([`Code::fused`]): the same two
+//! roundings in the same order, one dispatch instead of two.
 
 /// What an operation computes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -41,7 +45,51 @@ pub enum Code {
     Atan2,
     Hypot,
     Powf,
+    // Fused: t = a ∘ b, then d = t ∘ c (`…Then…`) or d = c ∘ t
+    // (`…Into…`), each ∘ an addition, a subtraction or a multiplication.
+    AddThenAdd,
+    AddThenSub,
+    AddThenMul,
+    SubThenAdd,
+    SubThenSub,
+    SubThenMul,
+    MulThenAdd,
+    MulThenSub,
+    MulThenMul,
+    AddIntoAdd,
+    AddIntoSub,
+    AddIntoMul,
+    SubIntoAdd,
+    SubIntoSub,
+    SubIntoMul,
+    MulIntoAdd,
+    MulIntoSub,
+    MulIntoMul,
 }
+
+/// The fused codes, by first operation, second operation and whether the
+/// first's result is the second's left operand (each operation's index:
+/// addition 0, subtraction 1, multiplication 2).
+const FUSED: [[[Code; 2]; 3]; 3] = {
+    use Code::*;
+    [
+        [
+            [AddThenAdd, AddIntoAdd],
+            [AddThenSub, AddIntoSub],
+            [AddThenMul, AddIntoMul],
+        ],
+        [
+            [SubThenAdd, SubIntoAdd],
+            [SubThenSub, SubIntoSub],
+            [SubThenMul, SubIntoMul],
+        ],
+        [
+            [MulThenAdd, MulIntoAdd],
+            [MulThenSub, MulIntoSub],
+            [MulThenMul, MulIntoMul],
+        ],
+    ]
+};
 
 impl Code {
     /// Whether it reads a second operand.
@@ -49,19 +97,44 @@ impl Code {
         matches!(
             self,
             Code::Add | Code::Sub | Code::Mul | Code::Div | Code::Atan2 | Code::Hypot | Code::Powf
-        )
+        ) || self.is_fused()
+    }
+
+    /// Whether it is two operations fused, reading a third operand.
+    pub fn is_fused(self) -> bool {
+        FUSED.as_flattened().as_flattened().contains(&self)
+    }
+
+    /// The addition, subtraction and multiplication's index.
+    fn arithmetic(self) -> Option<usize> {
+        match self {
+            Code::Add => Some(0),
+            Code::Sub => Some(1),
+            Code::Mul => Some(2),
+            _ => None,
+        }
+    }
+
+    /// `first` then `then` as one operation: t = a `first` b, then
+    /// d = t `then` c if `left` (t the left operand), else d = c `then` t;
+    /// `None` unless both are additions, subtractions or multiplications.
+    pub fn fused(first: Code, then: Code, left: bool) -> Option<Code> {
+        let (i, j) = (first.arithmetic()?, then.arithmetic()?);
+        Some(FUSED[i][j][usize::from(!left)])
     }
 }
 
 /// One operation: `d = code(a, b)`, registers being indices into the
 /// register file; a unary operation ignores `b`, except [`Code::SinCos`],
-/// which writes the sine to `d` and the cosine to `b`.
+/// which writes the sine to `d` and the cosine to `b`; only a fused
+/// operation reads `c`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Op {
     pub code: Code,
     pub d: u32,
     pub a: u32,
     pub b: u32,
+    pub c: u32,
 }
 
 /// `x.powf(0.5)` in optimised code.
@@ -81,6 +154,21 @@ fn powf_half(x: f64) -> f64 {
 #[inline(never)]
 fn sin_cos(x: f64) -> (f64, f64) {
     x.sin_cos()
+}
+
+/// `d = g(f(a, b), c)` on every lane: two roundings, in this order.
+#[inline(always)]
+fn fused<const L: usize>(
+    r: &mut [[f64; L]],
+    (d, a, b, c): (usize, usize, usize, usize),
+    f: impl Fn(f64, f64) -> f64,
+    g: impl Fn(f64, f64) -> f64,
+) {
+    let (x, y, z) = (r[a], r[b], r[c]);
+    let out = &mut r[d];
+    for l in 0..L {
+        out[l] = g(f(x[l], y[l]), z[l]);
+    }
 }
 
 /// `d = f(a)` on every lane.
@@ -119,7 +207,8 @@ impl Op {
     /// The registers it reads.
     pub fn reads(self) -> impl Iterator<Item = u32> {
         let second = self.code.is_binary().then_some(self.b);
-        std::iter::once(self.a).chain(second)
+        let third = self.code.is_fused().then_some(self.c);
+        std::iter::once(self.a).chain(second).chain(third)
     }
 
     /// Runs the operation on L lanes of registers (the operands read before
@@ -130,11 +219,16 @@ impl Op {
     /// was made).
     #[inline(always)]
     pub(crate) fn execute<const L: usize>(self, r: &mut [[f64; L]], mask: usize) {
-        let (d, a, b) = (
+        let (d, a, b, c) = (
             self.d as usize & mask,
             self.a as usize & mask,
             self.b as usize & mask,
+            self.c as usize & mask,
         );
+        let add = |x: f64, y: f64| x + y;
+        let sub = |x: f64, y: f64| x - y;
+        let mul = |x: f64, y: f64| x * y;
+        let operands = (d, a, b, c);
         match self.code {
             Code::Add => binary(r, d, a, b, |x, y| x + y),
             Code::Sub => binary(r, d, a, b, |x, y| x - y),
@@ -171,6 +265,24 @@ impl Op {
             Code::Atan2 => binary(r, d, a, b, f64::atan2),
             Code::Hypot => binary(r, d, a, b, f64::hypot),
             Code::Powf => binary(r, d, a, b, f64::powf),
+            Code::AddThenAdd => fused(r, operands, add, add),
+            Code::AddThenSub => fused(r, operands, add, sub),
+            Code::AddThenMul => fused(r, operands, add, mul),
+            Code::SubThenAdd => fused(r, operands, sub, add),
+            Code::SubThenSub => fused(r, operands, sub, sub),
+            Code::SubThenMul => fused(r, operands, sub, mul),
+            Code::MulThenAdd => fused(r, operands, mul, add),
+            Code::MulThenSub => fused(r, operands, mul, sub),
+            Code::MulThenMul => fused(r, operands, mul, mul),
+            Code::AddIntoAdd => fused(r, operands, add, |t, z| z + t),
+            Code::AddIntoSub => fused(r, operands, add, |t, z| z - t),
+            Code::AddIntoMul => fused(r, operands, add, |t, z| z * t),
+            Code::SubIntoAdd => fused(r, operands, sub, |t, z| z + t),
+            Code::SubIntoSub => fused(r, operands, sub, |t, z| z - t),
+            Code::SubIntoMul => fused(r, operands, sub, |t, z| z * t),
+            Code::MulIntoAdd => fused(r, operands, mul, |t, z| z + t),
+            Code::MulIntoSub => fused(r, operands, mul, |t, z| z - t),
+            Code::MulIntoMul => fused(r, operands, mul, |t, z| z * t),
         }
     }
 }

@@ -373,7 +373,13 @@ mod tests {
     }
 
     fn op(code: Code, d: u32, a: u32, b: u32) -> Op {
-        Op { code, d, a, b }
+        Op {
+            code,
+            d,
+            a,
+            b,
+            c: 0,
+        }
     }
 
     /// m = 1, f = 0, one field: the inputs u, u̇, ü, (sin u, cos u) and

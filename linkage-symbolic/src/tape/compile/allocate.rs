@@ -132,6 +132,10 @@ pub(super) fn allocate(builder: Builder) -> Allocated {
             true => physical[op.b as usize],
             false => 0,
         };
+        let c = match op.code.is_fused() {
+            true => physical[op.c as usize],
+            false => 0,
+        };
         // The operands read last here free their registers for the result.
         free.extend(deaths[2 * k + 1].iter().map(|&r| physical[r as usize]));
         let d = take(&mut free);
@@ -145,6 +149,7 @@ pub(super) fn allocate(builder: Builder) -> Allocated {
             d,
             a,
             b,
+            c,
         });
         // A result nothing reads (the unused half of a sine and cosine).
         for w in op.writes() {

@@ -87,7 +87,13 @@ impl Builder {
             false => 0,
         };
         let d = self.fresh(Virtual::Temporary);
-        self.ops.push(Op { code, d, a, b });
+        self.ops.push(Op {
+            code,
+            d,
+            a,
+            b,
+            c: 0,
+        });
         Val::Reg(d)
     }
 
@@ -113,6 +119,7 @@ impl Builder {
             d,
             a,
             b,
+            c: 0,
         });
         (Val::Reg(d), Val::Reg(b))
     }
@@ -232,6 +239,7 @@ fn fold(code: Code, x: f64, y: f64) -> f64 {
         d: 2,
         a: 0,
         b: 1,
+        c: 0,
     }
     .execute(&mut scratch, 3);
     scratch[2][0]

@@ -4,6 +4,7 @@
 
 mod allocate;
 mod builder;
+mod fuse;
 mod read;
 
 use super::program::Tape;
@@ -49,7 +50,7 @@ impl std::error::Error for CompileError {}
 
 /// The tape of one kernel of a model.
 pub fn compile(model: &Derivatives, kernel: Kernel) -> Result<Tape, CompileError> {
-    compile_named(model, &model.lowered.names(), kernel)
+    compile_named(model, &model.lowered.names(), kernel, true)
 }
 
 /// The tapes of every kernel of a model ([`Kernel::every`]).
@@ -62,7 +63,7 @@ impl Tapes {
     pub fn build(model: &Derivatives) -> Result<Tapes, CompileError> {
         let names = model.lowered.names();
         let tapes = Kernel::every()
-            .map(|kernel| compile_named(model, &names, kernel))
+            .map(|kernel| compile_named(model, &names, kernel, true))
             .collect::<Result<_, _>>()?;
         Ok(Tapes { tapes })
     }
@@ -77,6 +78,7 @@ fn compile_named(
     model: &Derivatives,
     names: &SymbolNames,
     kernel: Kernel,
+    fusing: bool,
 ) -> Result<Tape, CompileError> {
     let named = |mut e: CompileError| {
         e.kernel = kernel.name();
@@ -138,6 +140,9 @@ fn compile_named(
             rest = after;
         }
         reader.end_phase(&outputs).map_err(named)?;
+    }
+    if fusing {
+        fuse::fuse(&mut builder);
     }
     let allocated = allocate::allocate(builder);
     let parts = plan
@@ -241,6 +246,57 @@ mod tests {
         assert_eq!(calls(&given), 0);
         assert_eq!(given.trig_coords(), [0, 1, 2]);
         assert!(computed.trig_coords().is_empty());
+    }
+
+    /// Fused operations give the bits of the two they replace, on every
+    /// kernel, every phase and every lane, and the kinematics of the
+    /// four-bar runs fewer of them.
+    #[test]
+    fn fusing_changes_the_dispatches_not_the_bits() {
+        let model = fourbar();
+        let names = model.lowered.names();
+        let mut fewer = 0;
+        for kernel in Kernel::every() {
+            let fused = compile_named(&model, &names, kernel, true).unwrap();
+            let plain = compile_named(&model, &names, kernel, false).unwrap();
+            let count = |t: &Tape| t.ops().iter().filter(|op| op.code.is_fused()).count();
+            assert_eq!(count(&plain), 0);
+            assert_eq!(
+                fused.len() + count(&fused),
+                plain.len(),
+                "{}",
+                kernel.name()
+            );
+            fewer += plain.len() - fused.len();
+            let slots = fused.slots();
+            // Inputs of every sign and size, a different set per lane.
+            let value = |k: usize, lane: usize| {
+                let x = ((k * 7 + lane * 13) % 23) as f64 - 11.0;
+                x * 0.37 + 0.01 * lane as f64
+            };
+            let mut a = fused.registers::<4>();
+            let mut b = plain.registers::<4>();
+            for input in Input::ALL {
+                for lane in 0..4 {
+                    let values: Vec<f64> = (0..slots.len(input)).map(|k| value(k, lane)).collect();
+                    a.set_lane(input, lane, &values).unwrap();
+                    b.set_lane(input, lane, &values).unwrap();
+                }
+            }
+            for phase in 0..fused.phases() {
+                let mut x = vec![[0.0; 4]; fused.outputs(phase)];
+                let mut y = vec![[0.0; 4]; plain.outputs(phase)];
+                fused.run_lanes(phase, &mut a, &mut x).unwrap();
+                plain.run_lanes(phase, &mut b, &mut y).unwrap();
+                let bits = |v: &[[f64; 4]]| -> Vec<u64> {
+                    v.iter().flatten().map(|x| x.to_bits()).collect()
+                };
+                assert_eq!(bits(&x), bits(&y), "{} phase {phase}", kernel.name());
+            }
+        }
+        assert!(fewer > 0);
+        let kinematics = compile(&model, Kernel::Kinematics { with_trig: true }).unwrap();
+        assert!(kinematics.ops().iter().any(|op| op.code.is_fused()));
     }
 
     #[test]
