@@ -14,7 +14,7 @@ use crate::mechanism::scratch::{self, LANES};
 use crate::mechanism::sensitive::Columns;
 use crate::runtime::{Factors, FusedRequest, Kernels, Kinematics, Linkage, PsiUBlocks};
 use linkage_symbolic::plan::{Formula, Kernel};
-use linkage_symbolic::tape::{Input, Registers};
+use linkage_symbolic::tape::{Input, Registers, Slots};
 use nalgebra::{SMatrix, SVector, Vector2};
 use num_dual::DualNum;
 use std::sync::Arc;
@@ -72,15 +72,6 @@ impl<'a> Output<'a> {
     }
 }
 
-/// Writes an input; a program's tapes have the sizes the view checked, so
-/// this cannot fail (a failure leaves the input as it was, and the
-/// runtime's checks report what comes of it). In line, so that the
-/// input's length is known where it is copied.
-#[inline(always)]
-fn set(registers: &mut Registers, input: Input, values: &[f64]) {
-    let _ = registers.set(input, values);
-}
-
 /// The sines and cosines of u and of v given to a kernel.
 type Given<'a, const M: usize, const F: usize> = (&'a [(f64, f64); M], &'a [(f64, f64); F]);
 
@@ -90,6 +81,33 @@ fn flat<const N: usize>(pairs: &[(f64, f64); N]) -> [[f64; 2]; N] {
 }
 
 impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F, P, K> {
+    /// Writes an input where the tapes of sizes m = `M` and f = `F` read
+    /// it (the view's sizes, which it checked are its program's): at an
+    /// offset known where the view is compiled, the input's length known
+    /// where it is copied. A program's tapes have these sizes, so this
+    /// cannot fail (a failure leaves the input as it was, and the runtime's
+    /// checks report what comes of it).
+    #[inline(always)]
+    fn set(registers: &mut Registers, input: Input, values: &[f64]) {
+        // Where an input starts, and how long it is (but the fields), does
+        // not depend on how many fields there are.
+        let slots = Slots {
+            m: M,
+            f: F,
+            fields: 0,
+        };
+        if input != Input::Fields && values.len() != slots.len(input) {
+            return;
+        }
+        let start = slots.range(input).start;
+        let inputs = registers.inputs_mut();
+        if let Some(slots) = inputs.get_mut(start..start + values.len()) {
+            for (slot, &value) in slots.iter_mut().zip(values) {
+                slot[0] = value;
+            }
+        }
+    }
+
     /// The view of `program` with these parameter values, differentiated
     /// by the parameters of `columns` (see [`Fixed::columns`]); the caller
     /// has checked the sizes.
@@ -170,9 +188,9 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
             });
         };
         scratch::with_registers(self.program.id, kernel, |registers, buffer| {
-            set(registers, Input::Fields, &self.fields);
+            Self::set(registers, Input::Fields, &self.fields);
             for (input, values) in inputs {
-                set(registers, *input, values);
+                Self::set(registers, *input, values);
             }
             let ran = kernel.run(0, registers).is_ok();
             read(Output {
@@ -209,7 +227,55 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
     /// `kinematics`, the sines and cosines computed or given: phase 0
     /// gives Ψ, Ψ_u and Ψ_v; then, as the generated function does, the
     /// inverse and u̇ = −Ψ_u⁻¹(Ψ_v v̇); phase 1 gives γ at that u̇; and
-    /// ü = −Ψ_u⁻¹(Ψ_v v̈ + γ).
+    /// ü = −Ψ_u⁻¹(Ψ_v v̈ + γ). Written over `out`, from within the thread's
+    /// registers: a result returned through the thread-local would be
+    /// copied out whole.
+    #[inline(always)]
+    fn kinematics_into(
+        &self,
+        trig: Option<Given<'_, M, F>>,
+        (u, v): (&SVector<f64, M>, &SVector<f64, F>),
+        vdot: &SVector<f64, F>,
+        vddot: &SVector<f64, F>,
+        out: &mut Kinematics<M, F>,
+    ) {
+        let kernel = Kernel::Kinematics {
+            with_trig: trig.is_some(),
+        };
+        let Ok(kernel) = self.program.kernel(kernel) else {
+            *out = Kinematics::unevaluated();
+            return;
+        };
+        scratch::with_registers(self.program.id, kernel, |registers, _| {
+            Self::set(registers, Input::Fields, &self.fields);
+            Self::set(registers, Input::U, u.as_slice());
+            Self::set(registers, Input::V, v.as_slice());
+            Self::set(registers, Input::Vdot, vdot.as_slice());
+            if let Some((trig_u, trig_v)) = trig {
+                Self::set(registers, Input::TrigU, flat(trig_u).as_flattened());
+                Self::set(registers, Input::TrigV, flat(trig_v).as_flattened());
+            }
+            if kernel.run(0, registers).is_err() {
+                *out = Kinematics::unevaluated();
+                return;
+            }
+            // The parts in the order the program checked: Ψ, Ψ_u, Ψ_v; γ.
+            out.psi = kernel.block(registers, 0, kernel.start(0, 0), 0);
+            out.psi_u = kernel.block(registers, 0, kernel.start(0, 1), 0);
+            out.psi_v = kernel.block(registers, 0, kernel.start(0, 2), 0);
+            out.factors = Factors::of(&out.psi_u, self.psi_u_blocks());
+            (out.rcond, out.det) = (out.factors.rcond(), out.factors.det());
+            out.udot = -out.factors.solve(&(out.psi_v * vdot));
+            Self::set(registers, Input::Udot, out.udot.as_slice());
+            let gamma: SVector<f64, M> = match kernel.run(1, registers) {
+                Ok(()) => kernel.block(registers, 1, kernel.start(1, 0), 0),
+                Err(_) => SVector::repeat(f64::NAN),
+            };
+            out.uddot = -out.factors.solve(&(out.psi_v * vddot + gamma));
+        });
+    }
+
+    /// [`Fixed::kinematics_into`] returned.
     #[inline(always)]
     fn kinematics_of(
         &self,
@@ -219,53 +285,9 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
         vdot: &SVector<f64, F>,
         vddot: &SVector<f64, F>,
     ) -> Kinematics<M, F> {
-        let kernel = Kernel::Kinematics {
-            with_trig: trig.is_some(),
-        };
-        let Ok(kernel) = self.program.kernel(kernel) else {
-            return unevaluated();
-        };
-        // Written from within the thread's registers, not returned from
-        // them: a result returned through the thread-local is copied out
-        // whole.
-        let mut out = None;
-        scratch::with_registers(self.program.id, kernel, |registers, _| {
-            set(registers, Input::Fields, &self.fields);
-            set(registers, Input::U, u.as_slice());
-            set(registers, Input::V, v.as_slice());
-            set(registers, Input::Vdot, vdot.as_slice());
-            if let Some((trig_u, trig_v)) = trig {
-                set(registers, Input::TrigU, flat(trig_u).as_flattened());
-                set(registers, Input::TrigV, flat(trig_v).as_flattened());
-            }
-            if kernel.run(0, registers).is_err() {
-                return;
-            }
-            // The parts in the order the program checked: Ψ, Ψ_u, Ψ_v; γ.
-            let psi: SVector<f64, M> = kernel.block(registers, 0, kernel.start(0, 0), 0);
-            let psi_u: SMatrix<f64, M, M> = kernel.block(registers, 0, kernel.start(0, 1), 0);
-            let psi_v: SMatrix<f64, M, F> = kernel.block(registers, 0, kernel.start(0, 2), 0);
-            let factors = Factors::of(&psi_u, self.psi_u_blocks());
-            let (rcond, det) = (factors.rcond(), factors.det());
-            let udot = -factors.solve(&(psi_v * vdot));
-            set(registers, Input::Udot, udot.as_slice());
-            let gamma: SVector<f64, M> = match kernel.run(1, registers) {
-                Ok(()) => kernel.block(registers, 1, kernel.start(1, 0), 0),
-                Err(_) => SVector::repeat(f64::NAN),
-            };
-            let uddot = -factors.solve(&(psi_v * vddot + gamma));
-            out = Some(Kinematics {
-                psi,
-                psi_u,
-                psi_v,
-                factors,
-                rcond,
-                det,
-                udot,
-                uddot,
-            });
-        });
-        out.unwrap_or_else(unevaluated)
+        let mut out = Kinematics::unevaluated();
+        self.kinematics_into(trig, (u, v), vdot, vddot, &mut out);
+        out
     }
 }
 
@@ -314,7 +336,7 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
         };
         let program = &first.model.program;
         let Ok(kernel) = program.kernel(Kernel::Kinematics { with_trig: true }) else {
-            (0..run.len()).for_each(|l| take(l, unevaluated()));
+            (0..run.len()).for_each(|l| take(l, Kinematics::unevaluated()));
             return;
         };
         let set_lane = |registers: &mut Registers<LANES>, input, l, values: &[f64]| {
@@ -330,7 +352,7 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
                 set_lane(registers, Input::TrigV, l, flat(r.trig_v).as_flattened());
             }
             if kernel.run(0, registers).is_err() {
-                (0..run.len()).for_each(|l| take(l, unevaluated()));
+                (0..run.len()).for_each(|l| take(l, Kinematics::unevaluated()));
                 return;
             }
             // Each lane as `kinematics_of` goes on: Ψ, Ψ_u, Ψ_v, the
@@ -369,21 +391,6 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
                 take(l, kinematics);
             }
         });
-    }
-}
-
-/// What a kernel gives when its tape could not run: not numbers, which
-/// the runtime's checks turn into a typed error.
-fn unevaluated<const M: usize, const F: usize>() -> Kinematics<M, F> {
-    Kinematics {
-        psi: SVector::repeat(f64::NAN),
-        psi_u: SMatrix::repeat(f64::NAN),
-        psi_v: SMatrix::repeat(f64::NAN),
-        factors: Factors::whole(&SMatrix::repeat(f64::NAN)),
-        rcond: f64::NAN,
-        det: f64::NAN,
-        udot: SVector::repeat(f64::NAN),
-        uddot: SVector::repeat(f64::NAN),
     }
 }
 
@@ -555,6 +562,23 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Kernels<M, 
         vddot: &SVector<f64, F>,
     ) -> Kinematics<M, F> {
         self.kinematics_of(Some((trig_u, trig_v)), u, v, vdot, vddot)
+    }
+
+    fn evaluates_in_place(&self) -> bool {
+        true
+    }
+
+    fn kinematics_with_trig_into(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        trig_u: &[(f64, f64); M],
+        trig_v: &[(f64, f64); F],
+        vdot: &SVector<f64, F>,
+        vddot: &SVector<f64, F>,
+        out: &mut Kinematics<M, F>,
+    ) {
+        self.kinematics_into(Some((trig_u, trig_v)), (u, v), vdot, vddot, out);
     }
 
     fn evaluates_together() -> bool {

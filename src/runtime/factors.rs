@@ -96,6 +96,18 @@ impl<const M: usize> Factors<M> {
         }
     }
 
+    /// What an evaluation that could not run gives: the factors of a
+    /// matrix of NaN, as [`Factors::whole`] makes them (singular: rcond 0,
+    /// the packed factors zero), without the work.
+    pub(crate) fn unfactored() -> Factors<M> {
+        Factors {
+            packed: SMatrix::zeros(),
+            order: Order::WHOLE,
+            rcond: 0.0,
+            det: f64::NAN,
+        }
+    }
+
     /// Ψ_u factored in the order of `blocks`; inverted whole up to m = 4,
     /// for one block, or for blocks of another size.
     ///

@@ -156,6 +156,31 @@ pub trait Kernels<const M: usize, const F: usize> {
         let _ = (trig_u, trig_v);
         self.kinematics(u, v, vdot, vddot)
     }
+    /// Whether [`Kernels::kinematics_with_trig_into`] spares a sweep's
+    /// evaluations a copy (a run-time mechanism's: a result returned
+    /// through its register file would be copied whole on the way).
+    #[doc(hidden)]
+    #[inline(always)]
+    fn evaluates_in_place(&self) -> bool {
+        false
+    }
+    /// [`Kernels::kinematics_with_trig`] written over `out`. The same
+    /// numbers, bit for bit.
+    #[doc(hidden)]
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn kinematics_with_trig_into(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        trig_u: &[(f64, f64); M],
+        trig_v: &[(f64, f64); F],
+        vdot: &SVector<f64, F>,
+        vddot: &SVector<f64, F>,
+        out: &mut Kinematics<M, F>,
+    ) {
+        *out = self.kinematics_with_trig(u, v, trig_u, trig_v, vdot, vddot);
+    }
     /// Whether [`Kernels::kinematics_with_trig_each`] makes its requests
     /// together faster than one after the other: a batch then runs its
     /// analyses side by side (else each alone, as `analyze` does).

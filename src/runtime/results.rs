@@ -64,6 +64,24 @@ pub struct Kinematics<const M: usize, const F: usize> {
     pub uddot: SVector<f64, M>,
 }
 
+impl<const M: usize, const F: usize> Kinematics<M, F> {
+    /// What a kernel gives when it could not run: not numbers, which the
+    /// runtime's checks turn into a typed error (and a value to write
+    /// evaluations over).
+    pub(crate) fn unevaluated() -> Kinematics<M, F> {
+        Kinematics {
+            psi: SVector::repeat(f64::NAN),
+            psi_u: SMatrix::repeat(f64::NAN),
+            psi_v: SMatrix::repeat(f64::NAN),
+            factors: Factors::unfactored(),
+            rcond: f64::NAN,
+            det: f64::NAN,
+            udot: SVector::repeat(f64::NAN),
+            uddot: SVector::repeat(f64::NAN),
+        }
+    }
+}
+
 /// Positions, velocities and accelerations of a pose, of the coordinates
 /// and of the points.
 ///

@@ -48,6 +48,8 @@ pub struct Registers<const L: usize = 1> {
     /// The id of the tape it was made for.
     tape: u64,
     slots: Slots,
+    /// How many of its registers are inputs ([`Slots::total`]).
+    inputs: usize,
     values: Vec<[f64; L]>,
 }
 
@@ -188,6 +190,7 @@ impl Tape {
         Registers {
             tape: self.id,
             slots: self.slots,
+            inputs: first,
             values,
         }
     }
@@ -342,6 +345,16 @@ fn copy_to_lane<const L: usize>(registers: &mut [[f64; L]], lane: usize, values:
 }
 
 impl<const L: usize> Registers<L> {
+    /// The input registers on every lane, laid out by [`Slots::range`],
+    /// for a caller that writes them at offsets it knows ahead (a view of
+    /// fixed m and f): a write that leaves them is no call's input, and
+    /// the constants and temporaries after them are out of its reach.
+    #[inline(always)]
+    pub fn inputs_mut(&mut self) -> &mut [[f64; L]] {
+        let inputs = self.inputs.min(self.values.len());
+        &mut self.values[..inputs]
+    }
+
     /// The value of a register on every lane (`None` outside the file).
     #[inline(always)]
     pub fn get(&self, register: u32) -> Option<&[f64; L]> {
@@ -440,6 +453,17 @@ mod tests {
                 assert_eq!(one.get(register as u32), Some(&[values[k]]));
             }
             assert!(one.set(Input::Fields, &values[1..]).is_err());
+            // Written in place at the offsets the layout gives: the same
+            // registers, and no register beyond the inputs within reach.
+            let mut direct = tape.registers::<1>();
+            let inputs = direct.inputs_mut();
+            assert_eq!(inputs.len(), slots.total());
+            for (slot, &value) in inputs[slots.range(Input::Fields)].iter_mut().zip(&values) {
+                slot[0] = value;
+            }
+            for register in 0..slots.total() as u32 {
+                assert_eq!(direct.get(register), one.get(register));
+            }
         }
     }
 

@@ -385,3 +385,23 @@ fn the_inverse_formed_gives_the_exact_rcond() {
         0.0
     );
 }
+
+/// The factors of an evaluation that could not run are those of a matrix
+/// of NaN.
+#[test]
+fn unfactored_is_a_matrix_of_nan_inverted() {
+    fn check<const M: usize>() {
+        let (a, b) = (
+            Factors::<M>::unfactored(),
+            Factors::<M>::whole(&SMatrix::repeat(f64::NAN)),
+        );
+        assert_eq!(a.rcond().to_bits(), b.rcond().to_bits(), "m = {M}");
+        assert_eq!(a.det().is_nan(), b.det().is_nan(), "m = {M}");
+        assert_eq!(a.packed(), b.packed(), "m = {M}");
+        assert_eq!(a.in_blocks(), b.in_blocks());
+    }
+    check::<1>();
+    check::<2>();
+    check::<3>();
+    check::<5>();
+}

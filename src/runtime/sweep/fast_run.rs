@@ -32,12 +32,17 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         trig: &mut TrigCarrier<M, F>,
     ) -> Kinematics<M, F> {
         let zero = SVector::<f64, F>::zeros();
-        if carries {
-            let (trig_u, trig_v) = trig.at(&self.model.trig_u(), &self.model.trig_v(), x, v);
-            self.model
-                .kinematics_with_trig(x, v, &trig_u, &trig_v, &self.dir, &zero)
+        if !carries {
+            return self.model.kinematics(x, v, &self.dir, &zero);
+        }
+        let (trig_u, trig_v) = trig.at(&self.model.trig_u(), &self.model.trig_v(), x, v);
+        if self.model.evaluates_in_place() {
+            let mut k = Kinematics::unevaluated();
+            (self.model)
+                .kinematics_with_trig_into(x, v, &trig_u, &trig_v, &self.dir, &zero, &mut k);
+            k
         } else {
-            self.model.kinematics(x, v, &self.dir, &zero)
+            (self.model).kinematics_with_trig(x, v, &trig_u, &trig_v, &self.dir, &zero)
         }
     }
 
