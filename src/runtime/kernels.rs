@@ -245,6 +245,29 @@ pub trait Kernels<const M: usize, const F: usize> {
     ) -> impl AsRef<[Vector2<D>]>;
 }
 
+/// `model.kinematics_with_trig(…)`, made in the caller's frame where the
+/// model evaluates in place ([`Kernels::evaluates_in_place`]): the result
+/// is then written where the caller keeps it, not copied out of the
+/// evaluation. The same numbers, bit for bit.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+pub(crate) fn fused_with_trig<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
+    model: &L,
+    u: &SVector<f64, M>,
+    v: &SVector<f64, F>,
+    (trig_u, trig_v): (&[(f64, f64); M], &[(f64, f64); F]),
+    vdot: &SVector<f64, F>,
+    vddot: &SVector<f64, F>,
+) -> Kinematics<M, F> {
+    if model.evaluates_in_place() {
+        let mut k = Kinematics::unevaluated();
+        model.kinematics_with_trig_into(u, v, trig_u, trig_v, vdot, vddot, &mut k);
+        k
+    } else {
+        model.kinematics_with_trig(u, v, trig_u, trig_v, vdot, vddot)
+    }
+}
+
 /// One evaluation of a batch's fused kernels
 /// ([`Kernels::kinematics_with_trig_each`]): the arguments of
 /// [`Kernels::kinematics_with_trig`], and the model to evaluate.

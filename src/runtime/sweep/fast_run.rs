@@ -5,7 +5,7 @@ use super::state::{Progress, REGULAR_RCOND, State, Track};
 use super::substep::tangent_continues;
 use super::tracker::{FAST_ACCEPT, Tracker};
 use crate::runtime::error::Error;
-use crate::runtime::kernels::Kernels;
+use crate::runtime::kernels::{Kernels, fused_with_trig};
 use crate::runtime::results::Kinematics;
 use crate::runtime::trig::TrigCarrier;
 use nalgebra::{SMatrix, SVector};
@@ -36,14 +36,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             return self.model.kinematics(x, v, &self.dir, &zero);
         }
         let (trig_u, trig_v) = trig.at(&self.model.trig_u(), &self.model.trig_v(), x, v);
-        if self.model.evaluates_in_place() {
-            let mut k = Kinematics::unevaluated();
-            (self.model)
-                .kinematics_with_trig_into(x, v, &trig_u, &trig_v, &self.dir, &zero, &mut k);
-            k
-        } else {
-            (self.model).kinematics_with_trig(x, v, &trig_u, &trig_v, &self.dir, &zero)
-        }
+        fused_with_trig(self.model, x, v, (&trig_u, &trig_v), &self.dir, &zero)
     }
 
     /// The common case, as a tight loop: grid steps each taken by fused
