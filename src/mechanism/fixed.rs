@@ -89,6 +89,17 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
     /// checks report what comes of it).
     #[inline(always)]
     fn set(registers: &mut Registers, input: Input, values: &[f64]) {
+        Self::set_lane(registers, input, 0, values);
+    }
+
+    /// [`Fixed::set`] on lane `lane` of a file of L lanes.
+    #[inline(always)]
+    fn set_lane<const L: usize>(
+        registers: &mut Registers<L>,
+        input: Input,
+        lane: usize,
+        values: &[f64],
+    ) {
         // Where an input starts, and how long it is (but the fields), does
         // not depend on how many fields there are.
         let slots = Slots {
@@ -103,7 +114,9 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
         let inputs = registers.inputs_mut();
         if let Some(slots) = inputs.get_mut(start..start + values.len()) {
             for (slot, &value) in slots.iter_mut().zip(values) {
-                slot[0] = value;
+                if let Some(x) = slot.get_mut(lane) {
+                    *x = value;
+                }
             }
         }
     }
@@ -339,9 +352,7 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
             (0..run.len()).for_each(|l| take(l, Kinematics::unevaluated()));
             return;
         };
-        let set_lane = |registers: &mut Registers<LANES>, input, l, values: &[f64]| {
-            let _ = registers.set_lane(input, l, values);
-        };
+        let set_lane = Self::set_lane::<LANES>;
         scratch::with_lanes(program.id, kernel, |registers, _| {
             for (l, r) in run.iter().enumerate().take(LANES) {
                 set_lane(registers, Input::Fields, l, &r.model.fields);

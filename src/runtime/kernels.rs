@@ -6,6 +6,7 @@
 
 use crate::runtime::blocks::PsiUBlocks;
 use crate::runtime::results::Kinematics;
+use crate::runtime::trig::SinCos;
 use nalgebra::{SMatrix, SVector, Vector2};
 use num_dual::DualNum;
 
@@ -255,7 +256,7 @@ pub(crate) fn fused_with_trig<L: Kernels<M, F> + ?Sized, const M: usize, const F
     model: &L,
     u: &SVector<f64, M>,
     v: &SVector<f64, F>,
-    (trig_u, trig_v): (&[(f64, f64); M], &[(f64, f64); F]),
+    (trig_u, trig_v): (&SinCos<M>, &SinCos<F>),
     vdot: &SVector<f64, F>,
     vddot: &SVector<f64, F>,
 ) -> Kinematics<M, F> {
