@@ -110,15 +110,7 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
         if input != Input::Fields && values.len() != slots.len(input) {
             return;
         }
-        let start = slots.range(input).start;
-        let inputs = registers.inputs_mut();
-        if let Some(slots) = inputs.get_mut(start..start + values.len()) {
-            for (slot, &value) in slots.iter_mut().zip(values) {
-                if let Some(x) = slot.get_mut(lane) {
-                    *x = value;
-                }
-            }
-        }
+        registers.set_at(slots.range(input).start, lane, values);
     }
 
     /// The view of `program` with these parameter values, differentiated

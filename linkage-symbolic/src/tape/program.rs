@@ -303,56 +303,29 @@ impl<const L: usize> Registers<L> {
         if lane >= L {
             return Err(TapeError::Lane { lane, lanes: L });
         }
-        copy_to_lane(&mut self.values[range], lane, values);
+        self.set_at(range.start, lane, values);
         Ok(())
     }
 }
 
-/// Writes `values` to lane `lane` of `registers` (as many). Up to eight
-/// values are copied in line: a call to copy a few values costs more than
-/// the copy, and a loop of unknown length over one lane is such a call.
-#[inline(always)]
-fn copy_to_lane<const L: usize>(registers: &mut [[f64; L]], lane: usize, values: &[f64]) {
-    #[inline(always)]
-    fn exactly<const N: usize, const L: usize>(
-        registers: &mut [[f64; L]],
-        lane: usize,
-        values: &[f64],
-    ) {
-        let registers: Option<&mut [[f64; L]; N]> = registers.try_into().ok();
-        let values: Option<&[f64; N]> = values.try_into().ok();
-        if let (Some(registers), Some(values)) = (registers, values) {
-            for (register, &value) in registers.iter_mut().zip(values) {
-                register[lane] = value;
-            }
-        }
-    }
-    match values.len() {
-        1 => exactly::<1, L>(registers, lane, values),
-        2 => exactly::<2, L>(registers, lane, values),
-        3 => exactly::<3, L>(registers, lane, values),
-        4 => exactly::<4, L>(registers, lane, values),
-        5 => exactly::<5, L>(registers, lane, values),
-        6 => exactly::<6, L>(registers, lane, values),
-        7 => exactly::<7, L>(registers, lane, values),
-        8 => exactly::<8, L>(registers, lane, values),
-        _ => {
-            for (register, &value) in registers.iter_mut().zip(values) {
-                register[lane] = value;
-            }
-        }
-    }
-}
-
 impl<const L: usize> Registers<L> {
-    /// The input registers on every lane, laid out by [`Slots::range`],
-    /// for a caller that writes them at offsets it knows ahead (a view of
-    /// fixed m and f): a write that leaves them is no call's input, and
-    /// the constants and temporaries after them are out of its reach.
+    /// Writes `values` to lane `lane` of the input registers from `start`
+    /// on (laid out by [`Slots::range`]), unchecked against the inputs'
+    /// sizes: for a caller that knows the offsets ahead (a view of fixed m
+    /// and f) and the values' lengths. Nothing outside the inputs is
+    /// within its reach: a write that would leave them writes nothing, and
+    /// a lane the file lacks is not written.
     #[inline(always)]
-    pub fn inputs_mut(&mut self) -> &mut [[f64; L]] {
+    pub fn set_at(&mut self, start: usize, lane: usize, values: &[f64]) {
         let inputs = self.inputs.min(self.values.len());
-        &mut self.values[..inputs]
+        let inputs = &mut self.values[..inputs];
+        if let Some(registers) = inputs.get_mut(start..start + values.len()) {
+            for (register, &value) in registers.iter_mut().zip(values) {
+                if let Some(x) = register.get_mut(lane) {
+                    *x = value;
+                }
+            }
+        }
     }
 
     /// The value of a register on every lane (`None` outside the file).
@@ -453,14 +426,13 @@ mod tests {
                 assert_eq!(one.get(register as u32), Some(&[values[k]]));
             }
             assert!(one.set(Input::Fields, &values[1..]).is_err());
-            // Written in place at the offsets the layout gives: the same
-            // registers, and no register beyond the inputs within reach.
+            // Written at the offset the layout gives: the same registers,
+            // and none beyond the inputs within reach.
             let mut direct = tape.registers::<1>();
-            let inputs = direct.inputs_mut();
-            assert_eq!(inputs.len(), slots.total());
-            for (slot, &value) in inputs[slots.range(Input::Fields)].iter_mut().zip(&values) {
-                slot[0] = value;
-            }
+            direct.set_at(slots.range(Input::Fields).start, 0, &values);
+            let mut beyond = tape.registers::<1>();
+            beyond.set_at(slots.total() - 1, 0, &[1.0, 2.0]);
+            assert!((0..slots.total() as u32).all(|r| beyond.get(r) == Some(&[0.0])));
             for register in 0..slots.total() as u32 {
                 assert_eq!(direct.get(register), one.get(register));
             }
