@@ -71,18 +71,51 @@ fn each<T>(jobs: &[T]) -> std::slice::Iter<'_, T> {
 /// How many analyses run side by side on one thread (see [`analyses`]).
 const SIDE_BY_SIDE: usize = 64;
 
-/// `f` of every run of at most [`SIDE_BY_SIDE`] jobs, on rayon's pool,
-/// the results in the jobs' order.
+/// `f` of every run of at most [`SIDE_BY_SIDE`] jobs and its slots of
+/// `out` (one per job), on rayon's pool.
 #[cfg(feature = "parallel")]
-fn side_by_side<T: Sync, R: Send>(jobs: &[T], f: impl Fn(&[T]) -> Vec<R> + Sync + Send) -> Vec<R> {
-    jobs.par_chunks(SIDE_BY_SIDE).flat_map_iter(f).collect()
+fn side_by_side<T: Sync, R: Send>(jobs: &[T], out: &mut [R], f: impl Fn(&[T], &mut [R]) + Sync) {
+    (jobs.par_chunks(SIDE_BY_SIDE))
+        .zip(out.par_chunks_mut(SIDE_BY_SIDE))
+        .for_each(|(jobs, out)| f(jobs, out));
 }
 
-/// `f` of every run of at most [`SIDE_BY_SIDE`] jobs, one after the
-/// other (without the `parallel` feature).
+/// `f` of every run of at most [`SIDE_BY_SIDE`] jobs and its slots of
+/// `out` (one per job), one after the other (without the `parallel`
+/// feature).
 #[cfg(not(feature = "parallel"))]
-fn side_by_side<T, R>(jobs: &[T], f: impl Fn(&[T]) -> Vec<R>) -> Vec<R> {
-    jobs.chunks(SIDE_BY_SIDE).flat_map(f).collect()
+fn side_by_side<T, R>(jobs: &[T], out: &mut [R], f: impl Fn(&[T], &mut [R])) {
+    (jobs.chunks(SIDE_BY_SIDE))
+        .zip(out.chunks_mut(SIDE_BY_SIDE))
+        .for_each(|(jobs, out)| f(jobs, out));
+}
+
+/// Every job's [`Linkage::analyze`], analysed side by side
+/// ([`analyze_together`]) in runs of [`SIDE_BY_SIDE`], each result written
+/// once, in its place.
+#[allow(clippy::type_complexity)]
+fn analyses_side_by_side<L, const M: usize, const F: usize>(
+    jobs: &[AnalysisJob<L, M, F>],
+    options: &Options,
+) -> Vec<Result<Analysis<M, F, L::Points>, Error>>
+where
+    L: Linkage<M, F> + Sync,
+    L::Points: Send,
+{
+    // Each slot is written over by `analyze_together`.
+    let mut results: Vec<_> = (jobs.iter())
+        .map(|_| {
+            Err(Error::NotConverged {
+                iterations: 0,
+                residual: f64::NAN,
+                step: f64::NAN,
+            })
+        })
+        .collect();
+    side_by_side(jobs, &mut results, |jobs, out| {
+        analyze_together(jobs, options, out)
+    });
+    results
 }
 
 /// Runs `f` on every job in parallel, the results in the jobs' order: the
@@ -161,7 +194,7 @@ where
     L::Points: Send,
 {
     if L::evaluates_together() {
-        return side_by_side(jobs, |jobs| analyze_together(jobs, options));
+        return analyses_side_by_side(jobs, options);
     }
     each(jobs).map(|job| analyze(job, options)).collect()
 }
@@ -223,12 +256,10 @@ where
         Ok((analysis, sensitivity))
     };
     if L::evaluates_together() {
-        return side_by_side(jobs, |jobs| {
-            let analyses = analyze_together(jobs, options);
-            (jobs.iter().zip(analyses))
-                .map(|(job, analysis)| with_sensitivities(job, analysis))
-                .collect()
-        });
+        let analyses = analyses_side_by_side(jobs, options);
+        return (each(jobs).zip(analyses))
+            .map(|(job, analysis)| with_sensitivities(job, analysis))
+            .collect();
     }
     each(jobs)
         .map(|job| with_sensitivities(job, analyze(job, options)))

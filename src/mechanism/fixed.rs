@@ -297,56 +297,51 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
 }
 
 impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F, P, K> {
-    /// `kinematics_with_trig` of each request, those of one program in a
-    /// row run together on [`LANES`] lanes (see
+    /// `kinematics_with_trig` of each request into `out`, those of one
+    /// program in a row run together on [`LANES`] lanes (see
     /// [`Kernels::kinematics_with_trig_each`]).
-    fn kinematics_each(
-        requests: &[FusedRequest<'_, Self, M, F>],
-        take: &mut impl FnMut(usize, Kinematics<M, F>),
-    ) {
+    fn kinematics_each(requests: &[FusedRequest<'_, Self, M, F>], out: &mut [Kinematics<M, F>]) {
+        let n = requests.len().min(out.len());
+        let (requests, out) = (&requests[..n], &mut out[..n]);
         let mut start = 0;
         while let Some(first) = requests.get(start) {
             let program = &first.model.program;
             let same = (requests[start..].iter().take(LANES))
                 .take_while(|r| Arc::ptr_eq(&r.model.program, program))
                 .count();
-            let run = &requests[start..start + same];
-            if let [one] = run {
-                let kinematics = (one.model).kinematics_of(
-                    Some((one.trig_u, one.trig_v)),
-                    one.u,
-                    one.v,
-                    one.vdot,
-                    one.vddot,
-                );
-                take(start, kinematics);
+            let (run, outs) = (
+                &requests[start..start + same],
+                &mut out[start..start + same],
+            );
+            if let ([one], [out]) = (run, &mut *outs) {
+                let trig = Some((one.trig_u, one.trig_v));
+                (one.model).kinematics_into(trig, (one.u, one.v), one.vdot, one.vddot, out);
             } else {
-                Self::kinematics_on_lanes(run, &mut |l, k| take(start + l, k));
+                Self::kinematics_on_lanes(run, outs);
             }
             start += same;
         }
     }
 
-    /// `kinematics_of` with given sines and cosines, for up to [`LANES`]
-    /// requests of one program at once: each lane does what one does, the
-    /// operations in the same order, so each result is its own evaluation's,
-    /// bit for bit. The lanes after the requests' run on what they last
-    /// held, and nothing reads them.
-    fn kinematics_on_lanes(
-        run: &[FusedRequest<'_, Self, M, F>],
-        take: &mut impl FnMut(usize, Kinematics<M, F>),
-    ) {
+    /// `kinematics_into` with given sines and cosines, for up to [`LANES`]
+    /// requests of one program at once, each into its `out`: each lane
+    /// does what one does, the operations in the same order, so each
+    /// result is its own evaluation's, bit for bit. The lanes after the
+    /// requests' run on what they last held, and nothing reads them.
+    fn kinematics_on_lanes(run: &[FusedRequest<'_, Self, M, F>], out: &mut [Kinematics<M, F>]) {
+        let n = run.len().min(out.len()).min(LANES);
+        let (run, out) = (&run[..n], &mut out[..n]);
         let Some(first) = run.first() else {
             return;
         };
         let program = &first.model.program;
         let Ok(kernel) = program.kernel(Kernel::Kinematics { with_trig: true }) else {
-            (0..run.len()).for_each(|l| take(l, Kinematics::unevaluated()));
+            out.fill(Kinematics::unevaluated());
             return;
         };
         let set_lane = Self::set_lane::<LANES>;
         scratch::with_lanes(program.id, kernel, |registers, _| {
-            for (l, r) in run.iter().enumerate().take(LANES) {
+            for (l, r) in run.iter().enumerate() {
                 set_lane(registers, Input::Fields, l, &r.model.fields);
                 set_lane(registers, Input::U, l, r.u.as_slice());
                 set_lane(registers, Input::V, l, r.v.as_slice());
@@ -355,43 +350,48 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
                 set_lane(registers, Input::TrigV, l, flat(r.trig_v).as_flattened());
             }
             if kernel.run(0, registers).is_err() {
-                (0..run.len()).for_each(|l| take(l, Kinematics::unevaluated()));
+                out.fill(Kinematics::unevaluated());
                 return;
             }
-            // Each lane as `kinematics_of` goes on: Ψ, Ψ_u, Ψ_v, the
-            // inverse and u̇; then γ on every lane; then ü.
-            let mut solved = [None; LANES];
-            for ((l, slot), r) in solved.iter_mut().enumerate().zip(run) {
-                let psi: SVector<f64, M> = kernel.block(registers, 0, kernel.start(0, 0), l);
-                let psi_u: SMatrix<f64, M, M> = kernel.block(registers, 0, kernel.start(0, 1), l);
-                let psi_v: SMatrix<f64, M, F> = kernel.block(registers, 0, kernel.start(0, 2), l);
-                let factors = Factors::of(&psi_u, r.model.psi_u_blocks());
-                let udot = -factors.solve(&(psi_v * r.vdot));
-                set_lane(registers, Input::Udot, l, udot.as_slice());
-                *slot = Some((psi, psi_u, psi_v, factors, udot));
-            }
-            let gammas = kernel.run(1, registers).is_ok();
-            for (l, slot) in solved.into_iter().enumerate().take(run.len()) {
-                let Some((psi, psi_u, psi_v, factors, udot)) = slot else {
-                    continue;
-                };
-                let gamma: SVector<f64, M> = match gammas {
-                    true => kernel.block(registers, 1, kernel.start(1, 0), l),
+            // The parts in the order the program checked: Ψ, Ψ_u, Ψ_v; γ
+            // (held in ü until ü is solved for), each entry to every lane.
+            let part = |phase, part, len| (phase, kernel.start(phase, part), len);
+            kernel.each_entry(registers, part(0, 0, M), |e, lanes| {
+                out.iter_mut().zip(lanes).for_each(|(o, &x)| o.psi[e] = x);
+            });
+            kernel.each_entry(registers, part(0, 1, M * M), |e, lanes| {
+                out.iter_mut().zip(lanes).for_each(|(o, &x)| o.psi_u[e] = x);
+            });
+            kernel.each_entry(registers, part(0, 2, M * F), |e, lanes| {
+                out.iter_mut().zip(lanes).for_each(|(o, &x)| o.psi_v[e] = x);
+            });
+            // Each lane as `kinematics_into` goes on: the inverse and u̇;
+            // then γ on every lane; then ü. The rates only where asked
+            // for (NaN elsewhere), γ's phase only if any lane asks.
+            for (l, (o, r)) in out.iter_mut().zip(run).enumerate() {
+                o.factors = Factors::of(&o.psi_u, r.model.psi_u_blocks());
+                (o.rcond, o.det) = (o.factors.rcond(), o.factors.det());
+                o.udot = match r.rates {
+                    true => -o.factors.solve(&(o.psi_v * r.vdot)),
                     false => SVector::repeat(f64::NAN),
                 };
-                let (rcond, det) = (factors.rcond(), factors.det());
-                let uddot = -factors.solve(&(psi_v * run[l].vddot + gamma));
-                let kinematics = Kinematics {
-                    psi,
-                    psi_u,
-                    psi_v,
-                    factors,
-                    rcond,
-                    det,
-                    udot,
-                    uddot,
+                set_lane(registers, Input::Udot, l, o.udot.as_slice());
+            }
+            if !run.iter().any(|r| r.rates) {
+                out.iter_mut().for_each(|o| o.uddot.fill(f64::NAN));
+                return;
+            }
+            match kernel.run(1, registers) {
+                Ok(()) => kernel.each_entry(registers, part(1, 0, M), |e, lanes| {
+                    out.iter_mut().zip(lanes).for_each(|(o, &x)| o.uddot[e] = x);
+                }),
+                Err(_) => out.iter_mut().for_each(|o| o.uddot.fill(f64::NAN)),
+            }
+            for (o, r) in out.iter_mut().zip(run) {
+                o.uddot = match r.rates {
+                    true => -o.factors.solve(&(o.psi_v * r.vddot + o.uddot)),
+                    false => SVector::repeat(f64::NAN),
                 };
-                take(l, kinematics);
             }
         });
     }
@@ -590,9 +590,9 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Kernels<M, 
 
     fn kinematics_with_trig_each(
         requests: &[FusedRequest<'_, Self, M, F>],
-        mut take: impl FnMut(usize, Kinematics<M, F>),
+        out: &mut [Kinematics<M, F>],
     ) {
-        Self::kinematics_each(requests, &mut take);
+        Self::kinematics_each(requests, out);
     }
 
     fn point_positions(&self, u: &SVector<f64, M>, v: &SVector<f64, F>) -> PointSet<P> {

@@ -111,10 +111,7 @@ impl KernelTape {
         start: usize,
         lane: usize,
     ) -> SMatrix<f64, R, C> {
-        let sources = (self.phases.get(phase))
-            .and_then(|p| p.sources.get(start..))
-            .and_then(|rest| rest.get(..R * C));
-        match sources {
+        match self.sources(phase, start, R * C) {
             Some(sources) => SMatrix::from_fn(|i, j| {
                 registers
                     .get(sources[j * R + i])
@@ -122,6 +119,35 @@ impl KernelTape {
             }),
             None => SMatrix::repeat(f64::NAN),
         }
+    }
+
+    /// The `len` entries of the phase's result from `start` on every lane
+    /// at once: `each(e, lanes)` for each entry e in order (zero on every
+    /// lane for a structural zero, NaN if the result is shorter), each
+    /// register found once for all the lanes.
+    #[inline(always)]
+    pub(crate) fn each_entry<const L: usize>(
+        &self,
+        registers: &Registers<L>,
+        (phase, start, len): (usize, usize, usize),
+        mut each: impl FnMut(usize, &[f64; L]),
+    ) {
+        let Some(sources) = self.sources(phase, start, len) else {
+            (0..len).for_each(|e| each(e, &[f64::NAN; L]));
+            return;
+        };
+        for (e, &source) in sources.iter().enumerate() {
+            each(e, registers.get(source).unwrap_or(&[0.0; L]));
+        }
+    }
+
+    /// The registers of the `len` entries of the phase's result from
+    /// `start` (`None` if the result is shorter).
+    #[inline(always)]
+    fn sources(&self, phase: usize, start: usize, len: usize) -> Option<&[u32]> {
+        (self.phases.get(phase))
+            .and_then(|p| p.sources.get(start..))
+            .and_then(|rest| rest.get(..len))
     }
 
     /// The phase's whole result on lane `lane`, into `out` (as long as

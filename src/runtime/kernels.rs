@@ -193,22 +193,23 @@ pub trait Kernels<const M: usize, const F: usize> {
         false
     }
     /// [`Kernels::kinematics_with_trig`] at many poses, each of its own
-    /// model: `take(k, kinematics)` for each request k, in order, bit for
-    /// bit what `requests[k].model.kinematics_with_trig(…)` gives. A batch
-    /// of analyses asks for its poses' evaluations together; the default
+    /// model, each into its slot of `out` (as many as the requests; the
+    /// slots beyond them are left alone): in slot k, bit for bit what
+    /// `requests[k].model.kinematics_with_trig(…)` gives, but u̇ and ü,
+    /// which may be NaN where the request does not ask for its rates
+    /// ([`FusedRequest::rates`]). A batch of
+    /// analyses asks for its poses' evaluations together; the default
     /// makes them one after the other, and a run-time mechanism runs the
     /// requests of one program together on its tapes' lanes.
     #[doc(hidden)]
     fn kinematics_with_trig_each(
         requests: &[FusedRequest<'_, Self, M, F>],
-        mut take: impl FnMut(usize, Kinematics<M, F>),
+        out: &mut [Kinematics<M, F>],
     ) where
         Self: Sized,
     {
-        for (k, r) in requests.iter().enumerate() {
-            let kinematics =
-                (r.model).kinematics_with_trig(r.u, r.v, r.trig_u, r.trig_v, r.vdot, r.vddot);
-            take(k, kinematics);
+        for (r, out) in requests.iter().zip(out) {
+            (r.model).kinematics_with_trig_into(r.u, r.v, r.trig_u, r.trig_v, r.vdot, r.vddot, out);
         }
     }
     /// P(q)
@@ -281,4 +282,7 @@ pub struct FusedRequest<'a, L, const M: usize, const F: usize> {
     pub trig_v: &'a [(f64, f64); F],
     pub vdot: &'a SVector<f64, F>,
     pub vddot: &'a SVector<f64, F>,
+    /// Whether u̇ and ü are wanted (a Newton iterate that cannot end its
+    /// iteration needs only Ψ, Ψ_u and its factors).
+    pub rates: bool,
 }

@@ -228,6 +228,16 @@ impl<const M: usize, const F: usize> FusedNewton<M, F> {
         (&self.u, &self.trig_u, &self.trig_v)
     }
 
+    /// Whether the evaluation asked for may end the iteration, and so give
+    /// the analysis its velocities and accelerations: one after a step
+    /// that passes the step test, or on exact sines. (At the first guess
+    /// or after any other step, the iteration goes on, or asks again on
+    /// exact sines.)
+    #[inline]
+    pub(crate) fn may_end(&self) -> bool {
+        matches!(self.asked, Asked::Step { last: true } | Asked::Exactly)
+    }
+
     /// The sines and cosines for an evaluation at `self.u`.
     #[inline(always)]
     fn ask<L: Kernels<M, F> + ?Sized>(&mut self, model: &L, exact: bool) {

@@ -52,36 +52,29 @@ pub(crate) fn analyze<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>
 }
 
 /// [`analyze`] of every job, in order, each result bit for bit the one it
-/// gives alone: the Newton iterations of the jobs on the fused kernel
+/// gives alone, written to its slot of `results` (one per job; every slot
+/// is written): the Newton iterations of the jobs on the fused kernel
 /// (the defaults) run side by side, each round's evaluations asked for
 /// together ([`Kernels::kinematics_with_trig_each`]: on a run-time
 /// mechanism's lanes), each job ending when it would alone.
 pub(crate) fn analyze_together<L: Kernels<M, F>, const M: usize, const F: usize>(
     jobs: &[AnalysisJob<L, M, F>],
     options: &Options,
-) -> Vec<Result<Analysis<M, F, L::Points>, Error>> {
-    // Every slot is written: by a job that runs alone, or by one of the
-    // iterations, each of which ends (within `max_iterations` steps).
-    let mut results: Vec<Result<Analysis<M, F, L::Points>, Error>> = (jobs.iter())
-        .map(|_| {
-            Err(Error::NotConverged {
-                iterations: 0,
-                residual: f64::NAN,
-                step: f64::NAN,
-            })
-        })
-        .collect();
-    let mut running = Vec::with_capacity(jobs.len());
-    for (index, job) in jobs.iter().enumerate() {
+    results: &mut [Result<Analysis<M, F, L::Points>, Error>],
+) {
+    // The iterations stay where they start; those still running are
+    // named by their place there (no iteration moved as others end).
+    let mut newtons = Vec::with_capacity(jobs.len());
+    for (job, result) in jobs.iter().zip(results.iter_mut()) {
         let fused_serves = match fused_serves(&job.vdot, &job.vddot, options) {
             Ok(serves) => serves,
             Err(error) => {
-                results[index] = Err(error);
+                *result = Err(error);
                 continue;
             }
         };
         if !fused_serves || options.damped {
-            results[index] = analyze(
+            *result = analyze(
                 &job.model,
                 &job.u_guess,
                 &job.v,
@@ -92,16 +85,18 @@ pub(crate) fn analyze_together<L: Kernels<M, F>, const M: usize, const F: usize>
             continue;
         }
         match newton::FusedNewton::start(&job.model, &job.u_guess, &job.v, options) {
-            Ok(newton) => running.push((index, newton)),
-            Err(error) => results[index] = Err(error),
+            Ok(newton) => newtons.push((job, result, newton)),
+            Err(error) => *result = Err(error),
         }
     }
-    let mut evaluations = Vec::with_capacity(running.len());
+    let mut running: Vec<usize> = (0..newtons.len()).collect();
+    // Each round's evaluations, written over those of the round before
+    // (the jobs still running are never more).
+    let mut evaluations = Vec::new();
     while !running.is_empty() {
-        evaluations.clear();
         let requests: Vec<FusedRequest<'_, L, M, F>> = (running.iter())
-            .map(|(index, newton)| {
-                let job: &AnalysisJob<L, M, F> = &jobs[*index];
+            .map(|&n| {
+                let (job, _, newton) = &newtons[n];
                 let (u, trig_u, trig_v) = newton.pose();
                 FusedRequest {
                     model: &job.model,
@@ -111,23 +106,25 @@ pub(crate) fn analyze_together<L: Kernels<M, F>, const M: usize, const F: usize>
                     trig_v,
                     vdot: &job.vdot,
                     vddot: &job.vddot,
+                    rates: newton.may_end(),
                 }
             })
             .collect();
-        L::kinematics_with_trig_each(&requests, |_, k| evaluations.push(k));
+        evaluations.resize_with(requests.len(), Kinematics::unevaluated);
+        L::kinematics_with_trig_each(&requests, &mut evaluations);
         drop(requests);
-        let mut evaluated = evaluations.drain(..);
-        running.retain_mut(|(index, newton)| {
-            let job = &jobs[*index];
+        let mut evaluated = evaluations.iter();
+        running.retain(|&n| {
+            let (job, result, newton) = &mut newtons[n];
             let Some(k) = evaluated.next() else {
                 return true;
             };
-            match newton.advance(&job.model, &k, options) {
+            match newton.advance(&job.model, k, options) {
                 Progress::Evaluate => true,
                 Progress::Done(ended) => {
-                    results[*index] = ended.and_then(|converged| {
+                    **result = ended.and_then(|converged| {
                         finish_fused(
-                            &job.model, converged, &k, &job.v, &job.vdot, &job.vddot, options,
+                            &job.model, converged, k, &job.v, &job.vdot, &job.vddot, options,
                         )
                     });
                     false
@@ -135,7 +132,6 @@ pub(crate) fn analyze_together<L: Kernels<M, F>, const M: usize, const F: usize>
             }
         });
     }
-    results
 }
 
 /// Whether the fused kernel serves for these drivers' rates (its numbers
