@@ -99,6 +99,7 @@ impl<const M: usize> Factors<M> {
     /// What an evaluation that could not run gives: the factors of a
     /// matrix of NaN, as [`Factors::whole`] makes them (singular: rcond 0,
     /// the packed factors zero), without the work.
+    #[inline(always)]
     pub(crate) fn unfactored() -> Factors<M> {
         Factors {
             packed: SMatrix::zeros(),

@@ -68,6 +68,7 @@ impl<const M: usize, const F: usize> Kinematics<M, F> {
     /// What a kernel gives when it could not run: not numbers, which the
     /// runtime's checks turn into a typed error (and a value to write
     /// evaluations over).
+    #[inline(always)]
     pub(crate) fn unevaluated() -> Kinematics<M, F> {
         Kinematics {
             psi: SVector::repeat(f64::NAN),

@@ -154,6 +154,7 @@ fn fused_serves<const F: usize>(
 
 /// The analysis of a pose Newton found on the fused kernel: its
 /// velocities and accelerations from the evaluation that confirmed it.
+#[inline(always)]
 fn finish_fused<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
     model: &L,
     (position, trig): newton::Converged<M, F>,
