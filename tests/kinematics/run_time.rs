@@ -219,10 +219,11 @@ fn a_batch_on_lanes_is_each_job_alone() {
         }
         assert!(batch[7].is_err() && batch[29].is_err() && batch[0].is_ok() && batch[13].is_ok());
     }
-    // Another mechanism's jobs between the four-bar's: every third job.
-    let mixed: Vec<_> = (0..30)
-        .map(|k| match k % 3 {
-            2 => AnalysisJob {
+    // Another mechanism's jobs between the four-bar's: every third job,
+    // then ten in a row (on lanes: its Ψ_u has a structural zero).
+    let mixed: Vec<_> = (0..40)
+        .map(|k| match (k, k % 3) {
+            (30.., _) | (_, 2) => AnalysisJob {
                 model: other.clone(),
                 u_guess: vector![0.3, 0.1],
                 v: vector![0.7 * k as f64],
@@ -240,7 +241,7 @@ fn a_batch_on_lanes_is_each_job_alone() {
             .analyze(&job.u_guess, &job.v, &job.vdot, &job.vddot, &options);
         assert_eq!(result, &alone, "job {k}");
     }
-    assert!(batch[2].is_ok() && batch[5].is_ok());
+    assert!(batch[2].is_ok() && batch[5].is_ok() && batch[30..].iter().all(Result::is_ok));
 }
 
 /// A view differentiated by some parameters only, in its own order, with
