@@ -247,10 +247,11 @@ pub trait Kernels<const M: usize, const F: usize> {
     ) -> impl AsRef<[Vector2<D>]>;
 }
 
-/// `model.kinematics_with_trig(…)`, made in the caller's frame where the
-/// model evaluates in place ([`Kernels::evaluates_in_place`]): the result
-/// is then written where the caller keeps it, not copied out of the
-/// evaluation. The same numbers, bit for bit.
+/// `model.kinematics_with_trig(…)` written over `out`: in place where the
+/// model evaluates in place ([`Kernels::evaluates_in_place`]), so that
+/// nothing is copied out of the evaluation (whether a value returned is
+/// copied is the optimiser's to decide, and it has decided both ways), else
+/// as the value it returns. The same numbers, bit for bit.
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
 pub(crate) fn fused_with_trig<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
@@ -260,13 +261,12 @@ pub(crate) fn fused_with_trig<L: Kernels<M, F> + ?Sized, const M: usize, const F
     (trig_u, trig_v): (&SinCos<M>, &SinCos<F>),
     vdot: &SVector<f64, F>,
     vddot: &SVector<f64, F>,
-) -> Kinematics<M, F> {
+    out: &mut Kinematics<M, F>,
+) {
     if model.evaluates_in_place() {
-        let mut k = Kinematics::unevaluated();
-        model.kinematics_with_trig_into(u, v, trig_u, trig_v, vdot, vddot, &mut k);
-        k
+        model.kinematics_with_trig_into(u, v, trig_u, trig_v, vdot, vddot, out);
     } else {
-        model.kinematics_with_trig(u, v, trig_u, trig_v, vdot, vddot)
+        *out = model.kinematics_with_trig(u, v, trig_u, trig_v, vdot, vddot);
     }
 }
 

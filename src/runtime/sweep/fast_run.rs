@@ -21,8 +21,8 @@ fn within<const N: usize>(x: &SVector<f64, N>, bound: f64) -> bool {
 }
 
 impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
-    /// The fused kernel at (x, v), with the sines and cosines carried by
-    /// `trig` when the model reads them.
+    /// The fused kernel at (x, v) written over `k`, with the sines and
+    /// cosines carried by `trig` when the model reads them.
     #[inline(always)]
     pub(super) fn evaluate(
         &self,
@@ -30,13 +30,15 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         v: &SVector<f64, F>,
         carries: bool,
         trig: &mut TrigCarrier<M, F>,
-    ) -> Kinematics<M, F> {
+        k: &mut Kinematics<M, F>,
+    ) {
         let zero = SVector::<f64, F>::zeros();
         if !carries {
-            return self.model.kinematics(x, v, &self.dir, &zero);
+            *k = self.model.kinematics(x, v, &self.dir, &zero);
+            return;
         }
         let (trig_u, trig_v) = trig.at(&self.model.trig_u(), &self.model.trig_v(), x, v);
-        fused_with_trig(self.model, x, v, (&trig_u, &trig_v), &self.dir, &zero)
+        fused_with_trig(self.model, x, v, (&trig_u, &trig_v), &self.dir, &zero, k);
     }
 
     /// The common case, as a tight loop: grid steps each taken by fused
@@ -101,7 +103,8 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             // correction is at rounding level already; a few more where the
             // steps are coarse.
             let mut x = predicted;
-            let mut k = self.evaluate(&x, &v, carries, trig);
+            let mut k = Kinematics::unevaluated();
+            self.evaluate(&x, &v, carries, trig, &mut k);
             // The first correction by the lagging factors (a chord step),
             // later ones by the current pose's.
             let mut factors = lag.unwrap_or_else(|| *k.factors.packed());
@@ -121,7 +124,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
                 if iterations == FAST_ITERATIONS {
                     break false;
                 }
-                k = self.evaluate(&x, &v, carries, trig);
+                self.evaluate(&x, &v, carries, trig, &mut k);
                 factors = *k.factors.packed();
                 iterations += 1;
             };
