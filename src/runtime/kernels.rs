@@ -6,7 +6,6 @@
 
 use crate::runtime::blocks::PsiUBlocks;
 use crate::runtime::results::Kinematics;
-use crate::runtime::trig::SinCos;
 use nalgebra::{SMatrix, SVector, Vector2};
 use num_dual::DualNum;
 
@@ -245,29 +244,6 @@ pub trait Kernels<const M: usize, const F: usize> {
         u: &SVector<D, M>,
         v: &SVector<D, F>,
     ) -> impl AsRef<[Vector2<D>]>;
-}
-
-/// `model.kinematics_with_trig(…)` written over `out`: in place where the
-/// model evaluates in place ([`Kernels::evaluates_in_place`]), so that
-/// nothing is copied out of the evaluation (whether a value returned is
-/// copied is the optimiser's to decide, and it has decided both ways), else
-/// as the value it returns. The same numbers, bit for bit.
-#[allow(clippy::too_many_arguments)]
-#[inline(always)]
-pub(crate) fn fused_with_trig<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
-    model: &L,
-    u: &SVector<f64, M>,
-    v: &SVector<f64, F>,
-    (trig_u, trig_v): (&SinCos<M>, &SinCos<F>),
-    vdot: &SVector<f64, F>,
-    vddot: &SVector<f64, F>,
-    out: &mut Kinematics<M, F>,
-) {
-    if model.evaluates_in_place() {
-        model.kinematics_with_trig_into(u, v, trig_u, trig_v, vdot, vddot, out);
-    } else {
-        *out = model.kinematics_with_trig(u, v, trig_u, trig_v, vdot, vddot);
-    }
 }
 
 /// One evaluation of a batch's fused kernels

@@ -5,7 +5,7 @@ use super::state::{Progress, REGULAR_RCOND, State, Track};
 use super::substep::tangent_continues;
 use super::tracker::{FAST_ACCEPT, Tracker};
 use crate::runtime::error::Error;
-use crate::runtime::kernels::{Kernels, fused_with_trig};
+use crate::runtime::kernels::Kernels;
 use crate::runtime::results::Kinematics;
 use crate::runtime::trig::TrigCarrier;
 use nalgebra::{SMatrix, SVector};
@@ -22,9 +22,14 @@ fn within<const N: usize>(x: &SVector<f64, N>, bound: f64) -> bool {
 
 impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
     /// The fused kernel at (x, v) written over `k`, with the sines and
-    /// cosines carried by `trig` when the model reads them.
+    /// cosines carried by `trig` when the model reads them: in place where
+    /// the model evaluates in place ([`Kernels::evaluates_in_place`]), so
+    /// that nothing is copied out of the evaluation (whether a value
+    /// returned is copied is the optimiser's to decide, and it has decided
+    /// both ways), else as the value [`Tracker::evaluated`] returns. The
+    /// same numbers, bit for bit.
     #[inline(always)]
-    pub(super) fn evaluate(
+    fn evaluate(
         &self,
         x: &SVector<f64, M>,
         v: &SVector<f64, F>,
@@ -32,13 +37,31 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         trig: &mut TrigCarrier<M, F>,
         k: &mut Kinematics<M, F>,
     ) {
-        let zero = SVector::<f64, F>::zeros();
-        if !carries {
-            *k = self.model.kinematics(x, v, &self.dir, &zero);
+        if !(carries && self.model.evaluates_in_place()) {
+            *k = self.evaluated(x, v, carries, trig);
             return;
         }
+        let zero = SVector::<f64, F>::zeros();
         let (trig_u, trig_v) = trig.at(&self.model.trig_u(), &self.model.trig_v(), x, v);
-        fused_with_trig(self.model, x, v, (&trig_u, &trig_v), &self.dir, &zero, k);
+        (self.model).kinematics_with_trig_into(x, v, &trig_u, &trig_v, &self.dir, &zero, k);
+    }
+
+    /// The fused kernel at (x, v), with the sines and cosines carried by
+    /// `trig` when the model reads them, returned.
+    #[inline(always)]
+    fn evaluated(
+        &self,
+        x: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        carries: bool,
+        trig: &mut TrigCarrier<M, F>,
+    ) -> Kinematics<M, F> {
+        let zero = SVector::<f64, F>::zeros();
+        if !carries {
+            return self.model.kinematics(x, v, &self.dir, &zero);
+        }
+        let (trig_u, trig_v) = trig.at(&self.model.trig_u(), &self.model.trig_v(), x, v);
+        (self.model).kinematics_with_trig(x, v, &trig_u, &trig_v, &self.dir, &zero)
     }
 
     /// The common case, as a tight loop: grid steps each taken by fused
@@ -77,6 +100,11 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         let sign = at.track.sign;
         let (h, stride) = (direction, direction as i64);
         let (mut state, mut previous) = (at.track.state, at.previous_grid);
+        // Where the model evaluates in place, each pose's evaluations are
+        // written over one kept for the run; else each pose's first is the
+        // value returned (an evaluation m × m wide made for nothing each
+        // pose costs a large m dearly).
+        let mut kept = (carries && self.model.evaluates_in_place()).then(Kinematics::unevaluated);
         // Ψ_u's factors one step back (the matrix alone: the block order
         // is the mechanism's), once the run has taken a step (`previous`
         // then holds the analogs one step back).
@@ -103,8 +131,17 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             // correction is at rounding level already; a few more where the
             // steps are coarse.
             let mut x = predicted;
-            let mut k = Kinematics::unevaluated();
-            self.evaluate(&x, &v, carries, trig, &mut k);
+            let mut fresh;
+            let k = match kept.as_mut() {
+                Some(kept) => {
+                    self.evaluate(&x, &v, carries, trig, kept);
+                    kept
+                }
+                None => {
+                    fresh = self.evaluated(&x, &v, carries, trig);
+                    &mut fresh
+                }
+            };
             // The first correction by the lagging factors (a chord step),
             // later ones by the current pose's.
             let mut factors = lag.unwrap_or_else(|| *k.factors.packed());
@@ -124,7 +161,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
                 if iterations == FAST_ITERATIONS {
                     break false;
                 }
-                self.evaluate(&x, &v, carries, trig, &mut k);
+                self.evaluate(&x, &v, carries, trig, k);
                 factors = *k.factors.packed();
                 iterations += 1;
             };
