@@ -76,7 +76,7 @@ impl<'a> Output<'a> {
 type Given<'a, const M: usize, const F: usize> = (&'a [(f64, f64); M], &'a [(f64, f64); F]);
 
 /// Pairs (sin, cos) flattened, as the tapes read them.
-fn flat<const N: usize>(pairs: &[(f64, f64); N]) -> [[f64; 2]; N] {
+pub(super) fn flat<const N: usize>(pairs: &[(f64, f64); N]) -> [[f64; 2]; N] {
     pairs.map(|(s, c)| [s, c])
 }
 

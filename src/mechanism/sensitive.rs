@@ -6,7 +6,7 @@
 //! made for ([`Columns`]), in its order, and its columns after them are
 //! zero.
 
-use crate::mechanism::fixed::Fixed;
+use crate::mechanism::fixed::{Fixed, flat};
 use crate::mechanism::point_set::PointSet;
 use crate::runtime::{PositionTerms, Sensitivities, SensitivityKernel, SensitivityTerms};
 use linkage_symbolic::plan::{Formula, Kernel};
@@ -297,11 +297,6 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Sensitivity
         ];
         self.terms(&inputs, true)
     }
-}
-
-/// Pairs (sin, cos) flattened, as the tapes read them.
-fn flat<const N: usize>(pairs: &[(f64, f64); N]) -> [[f64; 2]; N] {
-    pairs.map(|(s, c)| [s, c])
 }
 
 impl<const M: usize, const F: usize, const P: usize, const K: usize> Sensitivities<M, F, K>
