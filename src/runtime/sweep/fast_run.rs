@@ -21,13 +21,21 @@ fn within<const N: usize>(x: &SVector<f64, N>, bound: f64) -> bool {
 }
 
 impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
+    /// Whether the fast run's evaluations are written in place: where the
+    /// sines and cosines are carried and the model evaluates in place
+    /// ([`Kernels::evaluates_in_place`]).
+    #[inline(always)]
+    fn writes_in_place(&self, carries: bool) -> bool {
+        carries && self.model.evaluates_in_place()
+    }
+
     /// The fused kernel at (x, v) written over `k`, with the sines and
     /// cosines carried by `trig` when the model reads them: in place where
-    /// the model evaluates in place ([`Kernels::evaluates_in_place`]), so
-    /// that nothing is copied out of the evaluation (whether a value
-    /// returned is copied is the optimiser's to decide, and it has decided
-    /// both ways), else as the value [`Tracker::evaluated`] returns. The
-    /// same numbers, bit for bit.
+    /// the run writes in place ([`Tracker::writes_in_place`]), so that
+    /// nothing is copied out of the evaluation (whether a value returned
+    /// is copied is the optimiser's to decide, and it has decided both
+    /// ways), else as the value [`Tracker::evaluated`] returns. The same
+    /// numbers, bit for bit.
     #[inline(always)]
     fn evaluate(
         &self,
@@ -37,7 +45,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         trig: &mut TrigCarrier<M, F>,
         k: &mut Kinematics<M, F>,
     ) {
-        if !(carries && self.model.evaluates_in_place()) {
+        if !self.writes_in_place(carries) {
             *k = self.evaluated(x, v, carries, trig);
             return;
         }
@@ -104,7 +112,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         // written over one kept for the run; else each pose's first is the
         // value returned (an evaluation m × m wide made for nothing each
         // pose costs a large m dearly).
-        let mut kept = (carries && self.model.evaluates_in_place()).then(Kinematics::unevaluated);
+        let mut kept = self.writes_in_place(carries).then(Kinematics::unevaluated);
         // Ψ_u's factors one step back (the matrix alone: the block order
         // is the mechanism's), once the run has taken a step (`previous`
         // then holds the analogs one step back).
