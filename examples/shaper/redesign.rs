@@ -119,6 +119,7 @@ pub fn minimise(course: &Data) -> Result<Optimum, Box<dyn std::error::Error>> {
         gradient: 1e-8,
         step: 1e-10,
         evaluations: 100,
+        ..Stopping::default()
     };
     let found = least_squares(start, &lower, &upper, &stopping, |x| {
         let (j, g) = flywheel(course, x).ok()?;

@@ -394,6 +394,13 @@ impl<L: Sensitivities<M, 1, K>, const M: usize, const K: usize> Problem<L, M, K>
         self.task.rows() * self.targets.len()
     }
 
+    /// Whether the targets are reached in a revolution of the driver at
+    /// whatever drivers the design takes (free timing, no task range): a
+    /// design must then turn one.
+    pub(crate) fn over_a_revolution(&self) -> bool {
+        self.timing == Timing::Free && self.range.is_none()
+    }
+
     /// The unknowns: the free parameters and the free drivers.
     pub fn unknowns(&self) -> usize {
         self.free.len() + self.free_drivers()

@@ -491,7 +491,16 @@ fn four_positions_give_dyads_on_the_burmester_curves() {
     });
     // A dyad we return: its circle point on the circle-point cubic, its
     // centre on the centre-point cubic; pylinkage's nearest dyad (its grid
-    // of body points kept at 2 % of the radius) within 0.4 of the size.
+    // of body points kept at 2 % of the radius) within 0.4 of the size of
+    // it, more where pylinkage's own dyads are farther apart than that (a
+    // dyad of the curve can lie up to the spacing of its samples from the
+    // nearest: around its dyad 53 the next is 0.5 of the size away).
+    let spacing = |k: usize| {
+        (theirs.iter().enumerate())
+            .filter(|&(i, _)| i != k)
+            .map(|(_, other)| other.distance(&theirs[k]))
+            .fold(f64::INFINITY, f64::min)
+    };
     let check = |d: &Dyad| {
         let (b, a) = (circle.distance(d.b), centre.distance(d.a));
         assert!(
@@ -502,9 +511,10 @@ fn four_positions_give_dyads_on_the_burmester_curves() {
         );
         let (k, error) = nearest(&theirs, d);
         assert!(
-            error <= 0.4 * size,
-            "{d:?}: pylinkage's nearest, {k}, is {:e} of the size away",
-            error / size
+            error <= 0.4 * size + spacing(k),
+            "{d:?}: pylinkage's nearest, {k}, is {:e} of the size away, its next {:e}",
+            error / size,
+            spacing(k) / size
         );
     };
     let wide = [
