@@ -66,7 +66,9 @@ impl Search {
     /// until one assembles at every target's driver and can be followed
     /// through them (with prescribed timing most random designs cannot:
     /// their driver does not reach every target's angle); a start none of
-    /// whose draws can is a failed start.
+    /// whose draws can is a failed start. With free timing over a
+    /// revolution, the first whose driver turns one is taken, a rocker only
+    /// if none does.
     pub const DRAWS: usize = 32;
 }
 
