@@ -135,6 +135,7 @@ impl<'a> PsiUBlocks<'a> {
 
 /// [`PsiUBlocks`] that owns its lists: a run-time mechanism's, checked and
 /// its sign found once, when its program is built.
+#[cfg(feature = "files")]
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct PsiUBlocksBuf {
     equations: Vec<usize>,
@@ -144,6 +145,7 @@ pub(crate) struct PsiUBlocksBuf {
     sign: f64,
 }
 
+#[cfg(feature = "files")]
 impl PsiUBlocksBuf {
     /// The lists as [`PsiUBlocks::new`] takes them (dense where it would
     /// be).

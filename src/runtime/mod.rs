@@ -50,6 +50,7 @@ mod symbolic;
 mod trig;
 
 pub use blocks::PsiUBlocks;
+#[cfg(feature = "files")]
 pub(crate) use blocks::PsiUBlocksBuf;
 pub use error::{Error, Stage};
 pub use factors::Factors;
