@@ -524,11 +524,11 @@ where
 /// draws of `stream`, the first that can be assembled, followed through
 /// the targets' drivers as drawn and evaluated there; `None` if none can.
 /// Over a revolution ([`Problem::over_a_revolution`]), a draw whose driver
-/// cannot turn one (a rocker) comes only
-/// after every draw that can: such a start is rarely certified (on
-/// pylinkage's README task, 2 % of the starts from rockers against 12 % of
-/// the others), so the rockers are followed over the arc they reach
-/// ([`first_poses`]) only if none of the draws turns.
+/// cannot turn one (a rocker) comes only after every draw that can: such
+/// a start is rarely certified (on pylinkage's README task, 2 % of the
+/// starts from rockers against 12 % of the others), so the rockers are
+/// followed over the arc they reach ([`first_poses`]) only if none of the
+/// draws turns.
 fn first_draw<L, const M: usize, const K: usize>(
     problem: &Problem<L, M, K>,
     search: &Search,
@@ -541,11 +541,11 @@ where
 {
     let options = &search.options;
     // Over a revolution, whether a draw turns is first asked of a follow
-    // that gives up at a fold sooner (its sub-steps halved to a thousandth of a step,
-    // not to 1e-12: where the fold is does not matter here); a draw that
-    // gets through is followed again with the search's own options, whose
-    // poses the start takes. On the path tasks of docs/performance.md the
-    // same draws, 17–30 % faster.
+    // that gives up at a fold sooner (its sub-steps halved to a thousandth
+    // of a step, not to 1e-12: where the fold is does not matter here); a
+    // draw that gets through is followed again with the search's own
+    // options, whose poses the start takes. On the path tasks of
+    // docs/performance.md the same draws, 17–30 % faster.
     let screening = SweepOptions {
         min_substep: options.min_substep.max(1e-3),
         ..*options

@@ -492,14 +492,17 @@ fn four_positions_give_dyads_on_the_burmester_curves() {
     // A dyad we return: its circle point on the circle-point cubic, its
     // centre on the centre-point cubic; pylinkage's nearest dyad (its grid
     // of body points kept at 2 % of the radius) within 0.4 of the size of
-    // it, more where pylinkage's own dyads are farther apart than that (a
-    // dyad of the curve can lie up to the spacing of its samples from the
-    // nearest: around its dyad 53 the next is 0.5 of the size away).
+    // it, plus the gap from that dyad to its own nearest one, up to the
+    // size: a dyad of the curve can lie that far from the nearest of
+    // sparse samples (around pylinkage's dyad 53 the next is 0.5 of the
+    // size away, and one of ours 0.56), while one near an isolated sample
+    // (the near-sliders, thousands of millimetres off) gets no more.
     let spacing = |k: usize| {
         (theirs.iter().enumerate())
             .filter(|&(i, _)| i != k)
             .map(|(_, other)| other.distance(&theirs[k]))
             .fold(f64::INFINITY, f64::min)
+            .min(size)
     };
     let check = |d: &Dyad| {
         let (b, a) = (circle.distance(d.b), centre.distance(d.a));

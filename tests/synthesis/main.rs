@@ -4,6 +4,10 @@
 
 #[path = "../models/mod.rs"]
 mod models;
+/// The path tasks of the side-by-side with pylinkage (their bounds).
+#[allow(dead_code)]
+#[path = "../../examples/synthesis/tasks.rs"]
+mod tasks;
 
 /// Burmester's four- and five-position motion generation against a
 /// 50-digit reference.
@@ -359,8 +363,8 @@ fn path_generation_finds_the_coupler_curve_through_five_points_and_certifies_it(
 }
 
 /// pylinkage's README task (its coupler point through (0, 0), (1, 1), (2,
-/// 1), (3, 0), every dimension of the four-bar free within the box the
-/// side-by-side benchmark gives, timing free, certified over a turn with
+/// 1), (3, 0), every dimension of the four-bar free within the box of the
+/// side-by-side with pylinkage, timing free, certified over a turn with
 /// the default 40° of transmission): a search that starts from designs
 /// whose crank turns certifies its first design within two rounds of
 /// starts for each of five random states. (Starting from the first draw
@@ -373,27 +377,7 @@ fn the_readme_task_of_pylinkage_certifies_a_design_within_two_rounds() {
         Vector2::new(2.0, 1.0),
         Vector2::new(3.0, 0.0),
     ];
-    let (c, d) = (Vector2::new(1.5, 0.5), 10f64.sqrt());
-    let bar = CouplerFourBar::WORKSHEET;
-    let guess = bar
-        .assemble(&vector![0.0], &linkage::assembly::Pick::Index(0))
-        .unwrap()
-        .u;
-    let problem = Problem::path(bar, "P", &targets, Timing::Free)
-        .unwrap()
-        .freed(&[
-            ("xa", c.x - 2.0 * d, c.x + 2.0 * d),
-            ("ya", c.y - 2.0 * d, c.y + 2.0 * d),
-            ("xd", c.x - 2.0 * d, c.x + 2.0 * d),
-            ("yd", c.y - 2.0 * d, c.y + 2.0 * d),
-            ("l2", 0.05 * d, 2.0 * d),
-            ("l3", 0.05 * d, 2.0 * d),
-            ("l4", 0.05 * d, 2.0 * d),
-            ("px", -2.0 * d, 2.0 * d),
-            ("py", -2.0 * d, 2.0 * d),
-        ])
-        .guess(guess)
-        .precision_points();
+    let problem = tasks::path_problem(&targets).unwrap();
     for random_state in 1..=5 {
         let found = synthesize(
             &problem,
