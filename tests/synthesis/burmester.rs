@@ -490,17 +490,20 @@ fn four_positions_give_dyads_on_the_burmester_curves() {
         r["positions"] == "4"
     });
     // A dyad we return: its circle point on the circle-point cubic, its
-    // centre on the centre-point cubic; pylinkage's nearest dyad (its grid
-    // of body points kept at 2 % of the radius) within 0.4 of the size of
-    // it, plus the gap from that dyad to its own nearest one, up to the
-    // size: a dyad of the curve can lie that far from the nearest of
-    // sparse samples (around pylinkage's dyad 53 the next is 0.5 of the
-    // size away, and one of ours 0.56), while one near an isolated sample
-    // (the near-sliders, thousands of millimetres off) gets no more.
+    // centre on the centre-point cubic; its circle point within 0.4 of the
+    // size of pylinkage's nearest (pylinkage samples circle points, on a
+    // grid kept at 2 % of the radius), plus the gap from that one to its
+    // own nearest, up to the size: a point of the curve can lie that far
+    // from the nearest of sparse samples, while one near an isolated
+    // sample gets no more. The circle points alone: the centre and the
+    // radius follow from the circle point, and near a pole of that map
+    // they move fast (a circle point 0.5 mm from one of pylinkage's has
+    // its centre 40 mm from that one's).
+    let circle_gap = |a: &Dyad, b: &Dyad| (a.b - b.b).norm();
     let spacing = |k: usize| {
         (theirs.iter().enumerate())
             .filter(|&(i, _)| i != k)
-            .map(|(_, other)| other.distance(&theirs[k]))
+            .map(|(_, other)| circle_gap(other, &theirs[k]))
             .fold(f64::INFINITY, f64::min)
             .min(size)
     };
@@ -512,10 +515,12 @@ fn four_positions_give_dyads_on_the_burmester_curves() {
             b / size,
             a / size
         );
-        let (k, error) = nearest(&theirs, d);
+        let (k, error) = (theirs.iter().enumerate())
+            .map(|(i, x)| (i, circle_gap(x, d)))
+            .fold((0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
         assert!(
             error <= 0.4 * size + spacing(k),
-            "{d:?}: pylinkage's nearest, {k}, is {:e} of the size away, its next {:e}",
+            "{d:?}: pylinkage's nearest circle point, {k}'s, is {:e} of the size away, its next {:e}",
             error / size,
             spacing(k) / size
         );
