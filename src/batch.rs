@@ -130,6 +130,35 @@ where
     each(jobs).map(f).collect()
 }
 
+/// `f` of the indices 0, 1, 2, … below `count`, taken in turn by the
+/// pool's threads, each result handed to `consume` in index order, until
+/// `consume` says it has had enough (returns `true`): no result after that
+/// one is handed on. What `consume` is given depends only on `f` and on
+/// `consume` itself, not on the threads (an index after the last one
+/// handed on may have run; its result is dropped). A search that stops at
+/// its first success runs this way.
+pub(crate) fn in_order_until<R, G, Consume>(count: usize, f: G, consume: Consume)
+where
+    R: Send,
+    G: Fn(usize) -> R + Send + Sync,
+    Consume: FnMut(R) -> bool + Send,
+{
+    #[cfg(feature = "parallel")]
+    in_order::in_order_until(count, f, consume);
+    #[cfg(not(feature = "parallel"))]
+    {
+        let mut consume = consume;
+        for index in 0..count {
+            if consume(f(index)) {
+                break;
+            }
+        }
+    }
+}
+
+#[cfg(feature = "parallel")]
+mod in_order;
+
 /// One sweep of a batch: a model (a parameter set), the guess of its
 /// starting pose and its drive.
 #[derive(Clone, Debug, PartialEq)]

@@ -37,7 +37,7 @@ mod output;
 
 use linkage::mechanisms::{CouplerFourBar, FourBar};
 use linkage::prelude::*;
-use linkage::synthesis::{Candidate, Range, Requirements, Search};
+use linkage::synthesis::{Candidate, Range, Requirements};
 use results::{Design, Method, Run, median};
 use std::error::Error;
 use tasks::FunctionTask;
@@ -292,8 +292,7 @@ fn path(
             tool: "linkage",
             name: "synthesize, first design".to_owned(),
             setting: format!(
-                "rounds of {} starts until one design is certified ({} starts), one stream each (median of {} timings)",
-                Search::ROUND,
+                "starts in order until one design is certified ({} starts), one stream each (median of {} timings)",
                 first_starts.join(", "),
                 ours::REPEATS
             ),

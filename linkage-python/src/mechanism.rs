@@ -468,8 +468,8 @@ impl Mechanism {
     /// free parameters can meet. Every design returned is certified over
     /// the driver's range (a revolution for a path); `distinct=False`
     /// keeps designs found again from later starts (the rows of a shard);
-    /// `enough=k` stops with the round of starts (8 at a time) that
-    /// certifies k designs; `min_transmission` (radians) is the smallest
+    /// `enough=k` stops at the start (taken in order) that certifies the
+    /// k-th design; `min_transmission` (radians) is the smallest
     /// transmission angle a design may have over its range (default 40°
     /// for a mechanism of two coordinates, 10° for more; 0 asks none).
     /// Raises `NoDesignError` when none is certified, unless

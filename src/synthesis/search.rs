@@ -37,10 +37,12 @@ pub struct Search {
     /// The solves of the poses and the sweeps of the certificate.
     pub options: SweepOptions,
     /// Stop once this many distinct designs are certified (counting only
-    /// those within [`Search::within`]): the starts then run in rounds of
-    /// [`Search::ROUND`] (in parallel within a round), and the search ends
-    /// with the round that reaches them. `None`: every start. Either way
-    /// the result depends only on the random state, not on the machine's cores.
+    /// those within [`Search::within`]): the search returns what the
+    /// starts from the first to the one that certifies the last of them
+    /// found, and no more (the threads take the starts in turn; a later
+    /// start that ran meanwhile is dropped). `None`: every start. Either
+    /// way the result depends only on the random state, not on the
+    /// machine's cores.
     pub enough: Option<usize>,
     /// A design counts towards [`Search::enough`] only if it misses no
     /// target by more than this (in the targets' units): "designs under a
@@ -60,8 +62,6 @@ pub struct Search {
 }
 
 impl Search {
-    /// Starts per round when the search may stop early.
-    pub const ROUND: usize = 8;
     /// Random designs a start draws, one after the other from its stream,
     /// until one assembles at every target's driver and can be followed
     /// through them (with prescribed timing most random designs cannot:
@@ -228,8 +228,8 @@ impl<L, const M: usize> Synthesis<L, M> {
 }
 
 /// Solves `problem` from `search.starts` random starts in parallel and
-/// certifies every result against `requirements` (or from as many rounds
-/// of them as it takes to certify [`Search::enough`] designs).
+/// certifies every result against `requirements` (or from as many of them,
+/// in order, as it takes to certify [`Search::enough`] designs).
 pub fn synthesize<L, const M: usize, const K: usize>(
     problem: &Problem<L, M, K>,
     requirements: &Requirements<'_, L, M>,
@@ -285,65 +285,53 @@ where
     if requirements.range == Range::Task && problem.range.is_none() {
         return Err(SynthesisError::NoRange);
     }
-    let round = match search.enough {
-        Some(_) => Search::ROUND,
-        None => search.starts.max(1),
-    };
     let mut synthesis = Synthesis {
         designs: Vec::new(),
         refused: Vec::new(),
         failed_starts: 0,
         starts: 0,
     };
-    let counted = |designs: &[Candidate<L, M>]| {
-        designs
-            .iter()
-            .filter(|d| {
-                search
-                    .within
-                    .is_none_or(|within| d.largest_error().1 <= within)
-            })
-            .count()
-    };
-    while synthesis.starts < search.starts
-        && search
-            .enough
-            .is_none_or(|enough| counted(&synthesis.designs) < enough)
-    {
-        let starts: Vec<usize> = (synthesis.starts..search.starts.min(synthesis.starts + round))
-            .map(|k| search.first + k)
-            .collect();
-        // Solved and certified in parallel; kept in the starts' order.
-        let outcomes = batch::map(&starts, |&start| {
-            if cancelled() {
-                return None;
-            }
-            let solved = solve(problem, search, requirements.steps_per_radian, start);
-            let outcome = solved.map(|mut candidate| {
-                let verdict = verdict(problem, &candidate, requirements, &search.options);
-                candidate.certificate = verdict.as_ref().ok().copied();
-                (candidate, verdict.map(|_| ()))
-            });
-            on_start();
-            outcome
-        });
+    // Each start solved and certified, on the pool's threads, and taken
+    // in the starts' order until enough designs count.
+    let run = |k: usize| {
         if cancelled() {
-            return Err(SynthesisError::Cancelled);
+            return None;
         }
-        synthesis.starts += starts.len();
-        for outcome in outcomes {
-            match outcome {
-                None => synthesis.failed_starts += 1,
-                Some((candidate, Ok(()))) => {
-                    if !(search.distinct
-                        && (synthesis.designs.iter()).any(|d| same_design(problem, d, &candidate)))
-                    {
-                        synthesis.designs.push(candidate);
-                    }
+        let start = search.first + k;
+        let solved = solve(problem, search, requirements.steps_per_radian, start);
+        let outcome = solved.map(|mut candidate| {
+            let verdict = verdict(problem, &candidate, requirements, &search.options);
+            candidate.certificate = verdict.as_ref().ok().copied();
+            (candidate, verdict.map(|_| ()))
+        });
+        on_start();
+        outcome
+    };
+    let mut counted = 0;
+    let starts = if search.enough == Some(0) {
+        0
+    } else {
+        search.starts
+    };
+    batch::in_order_until(starts, run, |outcome| {
+        synthesis.starts += 1;
+        match outcome {
+            None => synthesis.failed_starts += 1,
+            Some((candidate, Ok(()))) => {
+                if !(search.distinct
+                    && (synthesis.designs.iter()).any(|d| same_design(problem, d, &candidate)))
+                {
+                    let within = (search.within).is_none_or(|w| candidate.largest_error().1 <= w);
+                    counted += usize::from(within);
+                    synthesis.designs.push(candidate);
                 }
-                Some((candidate, Err(defect))) => synthesis.refused.push((candidate, defect)),
             }
+            Some((candidate, Err(defect))) => synthesis.refused.push((candidate, defect)),
         }
+        search.enough.is_some_and(|enough| counted >= enough)
+    });
+    if cancelled() {
+        return Err(SynthesisError::Cancelled);
     }
     synthesis
         .designs
