@@ -65,3 +65,77 @@ where
         work();
     });
 }
+
+#[cfg(test)]
+mod tests {
+    use super::in_order_until;
+    use std::time::Duration;
+
+    /// Indices that take uneven times (a later one often done first): the
+    /// consumer sees 0, 1, 2, … without a gap and nothing after the one
+    /// it stops at, on any number of threads.
+    #[test]
+    fn results_are_handed_on_in_order_up_to_the_stop_whatever_the_threads() {
+        for threads in 1..=4 {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap();
+            for stop in [0, 1, 5, 17, 39] {
+                let mut seen = Vec::new();
+                pool.install(|| {
+                    in_order_until(
+                        40,
+                        |i| {
+                            std::thread::sleep(Duration::from_micros((i as u64 * 7919) % 13 * 50));
+                            i
+                        },
+                        |i| {
+                            seen.push(i);
+                            i == stop
+                        },
+                    )
+                });
+                assert_eq!(seen, (0..=stop).collect::<Vec<_>>(), "{threads} threads");
+            }
+            // Never satisfied: every index, in order.
+            let mut seen = Vec::new();
+            pool.install(|| {
+                in_order_until(
+                    25,
+                    |i| i * i,
+                    |r| {
+                        seen.push(r);
+                        false
+                    },
+                )
+            });
+            assert_eq!(seen, (0..25).map(|i| i * i).collect::<Vec<_>>());
+            // Nothing to run.
+            pool.install(|| in_order_until(0, |i| i, |_| panic!("no index to hand on")));
+        }
+    }
+
+    /// A job that panics passes its panic on to the caller: nothing waits
+    /// for a result that will not come.
+    #[test]
+    fn a_panicking_job_panics_the_caller() {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(2)
+            .build()
+            .unwrap();
+        let caught = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            pool.install(|| {
+                in_order_until(
+                    10,
+                    |i| {
+                        assert!(i != 3, "job 3 fails");
+                        i
+                    },
+                    |_| false,
+                )
+            })
+        }));
+        assert!(caught.is_err());
+    }
+}
