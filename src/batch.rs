@@ -134,13 +134,15 @@ where
 /// pool's threads, each result handed to `consume` in index order, until
 /// `consume` says it has had enough (returns `true`): no result after that
 /// one is handed on. What `consume` is given depends only on `f` and on
-/// `consume` itself, not on the threads (an index after the last one
-/// handed on may have run; its result is dropped). A search that stops at
-/// its first success runs this way.
+/// `consume` itself, not on the threads: an index after the last one
+/// handed on may have started, and its result is dropped. `f` is also
+/// given a probe that turns false once its index is no longer wanted, so
+/// that such a job may end early with anything. A search that stops at its
+/// first success runs this way.
 pub(crate) fn in_order_until<R, G, Consume>(count: usize, f: G, consume: Consume)
 where
     R: Send,
-    G: Fn(usize) -> R + Send + Sync,
+    G: Fn(usize, &dyn Fn() -> bool) -> R + Send + Sync,
     Consume: FnMut(R) -> bool + Send,
 {
     #[cfg(feature = "parallel")]
@@ -149,7 +151,7 @@ where
     {
         let mut consume = consume;
         for index in 0..count {
-            if consume(f(index)) {
+            if consume(f(index, &|| true)) {
                 break;
             }
         }

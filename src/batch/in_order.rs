@@ -1,7 +1,8 @@
 //! [`in_order_until`](super::in_order_until) on rayon's pool: each thread
 //! takes the next index in turn; the results are handed on in index order
 //! as the ones before them arrive, and once the consumer has had enough,
-//! no later index is started.
+//! no later index is started and those running are told they are not
+//! wanted.
 
 use std::collections::BTreeMap;
 use std::sync::Mutex;
@@ -19,7 +20,7 @@ struct Handing<R, Consume> {
 pub(super) fn in_order_until<R, G, Consume>(count: usize, f: G, consume: Consume)
 where
     R: Send,
-    G: Fn(usize) -> R + Send + Sync,
+    G: Fn(usize, &dyn Fn() -> bool) -> R + Send + Sync,
     Consume: FnMut(R) -> bool + Send,
 {
     let next = AtomicUsize::new(0);
@@ -37,7 +38,7 @@ where
             if index >= end.load(Ordering::Acquire) {
                 return;
             }
-            let result = f(index);
+            let result = f(index, &|| index < end.load(Ordering::Acquire));
             // (A thread that panicked poisons the lock; its panic is the
             // one the scope passes on.)
             let mut guard = handing.lock().unwrap_or_else(|e| e.into_inner());
@@ -86,7 +87,7 @@ mod tests {
                 pool.install(|| {
                     in_order_until(
                         40,
-                        |i| {
+                        |i, _| {
                             std::thread::sleep(Duration::from_micros((i as u64 * 7919) % 13 * 50));
                             i
                         },
@@ -103,7 +104,7 @@ mod tests {
             pool.install(|| {
                 in_order_until(
                     25,
-                    |i| i * i,
+                    |i, _| i * i,
                     |r| {
                         seen.push(r);
                         false
@@ -112,8 +113,54 @@ mod tests {
             });
             assert_eq!(seen, (0..25).map(|i| i * i).collect::<Vec<_>>());
             // Nothing to run.
-            pool.install(|| in_order_until(0, |i| i, |_| panic!("no index to hand on")));
+            pool.install(|| in_order_until(0, |i, _| i, |_| panic!("no index to hand on")));
         }
+    }
+
+    /// Once the consumer has had enough, a job still running at a later
+    /// index is told it is not wanted (and may end early); one that is
+    /// handed on never is.
+    #[test]
+    fn a_job_after_the_stop_is_told_it_is_not_wanted() {
+        use std::sync::atomic::{AtomicBool, Ordering};
+        use std::time::Instant;
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(2)
+            .build()
+            .unwrap();
+        let (told, second) = (AtomicBool::new(false), AtomicBool::new(false));
+        let began = Instant::now();
+        let mut seen = Vec::new();
+        pool.install(|| {
+            in_order_until(
+                8,
+                |i, wanted| {
+                    if i == 0 {
+                        // Index 0 ends only once the other thread runs index 1.
+                        while !second.load(Ordering::Relaxed)
+                            && began.elapsed() < Duration::from_secs(5)
+                        {
+                            std::thread::sleep(Duration::from_millis(1));
+                        }
+                        assert!(wanted());
+                        return i;
+                    }
+                    second.store(true, Ordering::Relaxed);
+                    while wanted() && began.elapsed() < Duration::from_secs(5) {
+                        std::thread::sleep(Duration::from_millis(1));
+                    }
+                    told.fetch_or(!wanted(), Ordering::Relaxed);
+                    i
+                },
+                |i| {
+                    seen.push(i);
+                    true
+                },
+            )
+        });
+        assert_eq!(seen, [0]);
+        assert!(told.load(Ordering::Relaxed));
+        assert!(began.elapsed() < Duration::from_secs(5));
     }
 
     /// A job that panics passes its panic on to the caller: nothing waits
@@ -128,7 +175,7 @@ mod tests {
             pool.install(|| {
                 in_order_until(
                     10,
-                    |i| {
+                    |i, _| {
                         assert!(i != 3, "job 3 fails");
                         i
                     },

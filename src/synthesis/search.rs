@@ -293,12 +293,18 @@ where
     };
     // Each start solved and certified, on the pool's threads, and taken
     // in the starts' order until enough designs count.
-    let run = |k: usize| {
-        if cancelled() {
+    let run = |k: usize, wanted: &dyn Fn() -> bool| {
+        // A start no longer wanted (or the search cancelled) ends early:
+        // its outcome is dropped.
+        let stop = || cancelled() || !wanted();
+        if stop() {
             return None;
         }
         let start = search.first + k;
-        let solved = solve(problem, search, requirements.steps_per_radian, start);
+        let solved = solve(problem, search, requirements.steps_per_radian, start, &stop);
+        if stop() {
+            return None;
+        }
         let outcome = solved.map(|mut candidate| {
             let verdict = verdict(problem, &candidate, requirements, &search.options);
             candidate.certificate = verdict.as_ref().ok().copied();
@@ -523,6 +529,7 @@ fn first_draw<L, const M: usize, const K: usize>(
     steps_per_radian: f64,
     start: usize,
     stream: &mut SplitMix64,
+    stop: &dyn Fn() -> bool,
 ) -> Option<(DVector<f64>, Evaluation<Poses<M>>)>
 where
     L: Sensitivities<M, 1, K> + Clone,
@@ -535,7 +542,9 @@ where
         Some((x, first))
     };
     if !problem.over_a_revolution() {
-        return (0..Search::DRAWS).find_map(|_| followed(&start_point(problem, stream), false));
+        return (0..Search::DRAWS)
+            .take_while(|_| !stop())
+            .find_map(|_| followed(&start_point(problem, stream), false));
     }
     // Whether a draw turns is first asked of a few Newton solves around
     // the turn ([`assembles_around`]), then of the follow through the
@@ -543,6 +552,9 @@ where
     // when every draw was followed, 15–35 % faster.
     let mut rockers = Vec::new();
     for _ in 0..Search::DRAWS {
+        if stop() {
+            return None;
+        }
         let x = start_point(problem, stream);
         let turns = assembles_around(problem, &x, start, options);
         if let Some(drawn) = turns.then(|| followed(&x, false)).flatten() {
@@ -603,16 +615,21 @@ fn solve<L, const M: usize, const K: usize>(
     search: &Search,
     steps_per_radian: f64,
     start: usize,
+    stop: &dyn Fn() -> bool,
 ) -> Option<Candidate<L, M>>
 where
     L: Sensitivities<M, 1, K> + Clone,
 {
     let options: &Options = &search.options.options;
     let mut stream = SplitMix64::of_sample(search.random_state, start as u64);
-    let (x0, first) = first_draw(problem, search, steps_per_radian, start, &mut stream)?;
+    let (x0, first) = first_draw(problem, search, steps_per_radian, start, &mut stream, stop)?;
     let (lower, upper) = bounds(problem);
+    // (Stopped, every trial is one that cannot be evaluated: the solver
+    // gives up after `Stopping::unevaluable` of them.)
     let found = minimize(first, x0, &lower, &upper, &search.stopping, |x, from| {
-        evaluate(problem, x, from, options)
+        (!stop())
+            .then(|| evaluate(problem, x, from, options))
+            .flatten()
     });
     let rows = problem.task.rows();
     // Each target's miss (the designer's terms follow the targets' rows).
