@@ -90,8 +90,8 @@ pub struct Synthesize {
     /// `at`; without a file, no guess).
     pub at: Option<f64>,
     pub none_is_error: bool,
-    /// Raised when the caller is interrupted: the search stops between
-    /// starts.
+    /// Raised when the caller is interrupted: the search stops within the
+    /// starts under way and starts no more.
     pub stop: Arc<AtomicBool>,
 }
 

@@ -17,6 +17,18 @@ struct Handing<R, Consume> {
     done: bool,
 }
 
+/// Stops the run (no index started from then on, every running one told
+/// it is not wanted) if dropped while its thread panics.
+struct StopOnPanic<'a>(&'a AtomicUsize);
+
+impl Drop for StopOnPanic<'_> {
+    fn drop(&mut self) {
+        if std::thread::panicking() {
+            self.0.store(0, Ordering::Release);
+        }
+    }
+}
+
 pub(super) fn in_order_until<R, G, Consume>(count: usize, f: G, consume: Consume)
 where
     R: Send,
@@ -38,12 +50,18 @@ where
             if index >= end.load(Ordering::Acquire) {
                 return;
             }
-            let result = f(index, &|| index < end.load(Ordering::Acquire));
-            // (A thread that panicked poisons the lock; its panic is the
-            // one the scope passes on.)
+            let result = {
+                // A job that panics stops the run: its result will never
+                // come, so nothing after it could be handed on.
+                let _stop = StopOnPanic(&end);
+                f(index, &|| index < end.load(Ordering::Acquire))
+            };
+            // (A consumer that panicked poisons the lock; its panic is the
+            // one the scope passes on, and nothing more is handed on.)
             let mut guard = handing.lock().unwrap_or_else(|e| e.into_inner());
+            let _stop = StopOnPanic(&end);
             let h = &mut *guard;
-            if h.done {
+            if h.done || end.load(Ordering::Acquire) == 0 {
                 continue;
             }
             h.early.insert(index, result);
@@ -163,20 +181,22 @@ mod tests {
         assert!(began.elapsed() < Duration::from_secs(5));
     }
 
-    /// A job that panics passes its panic on to the caller: nothing waits
-    /// for a result that will not come.
+    /// A job that panics passes its panic on to the caller, soon: the
+    /// jobs after it are not run to the end first.
     #[test]
     fn a_panicking_job_panics_the_caller() {
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(2)
             .build()
             .unwrap();
+        let began = std::time::Instant::now();
         let caught = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
             pool.install(|| {
                 in_order_until(
-                    10,
+                    10_000,
                     |i, _| {
                         assert!(i != 3, "job 3 fails");
+                        std::thread::sleep(Duration::from_millis(1));
                         i
                     },
                     |_| false,
@@ -184,5 +204,11 @@ mod tests {
             })
         }));
         assert!(caught.is_err());
+        // (Run to the end, the 10 000 jobs of 1 ms would take 5 s.)
+        assert!(
+            began.elapsed() < Duration::from_secs(2),
+            "{:?}",
+            began.elapsed()
+        );
     }
 }

@@ -256,9 +256,11 @@ where
 }
 
 /// [`synthesize_observed`], stopped once `cancelled` says so: each start
-/// asks before it begins, and a search asked to stop ends with
-/// [`SynthesisError::Cancelled`] when the starts under way are done (an
-/// interrupted caller — Ctrl-C in Python — need not wait for the rest).
+/// asks before it begins and between its draws and its solver's trials, and
+/// a search asked to stop ends with [`SynthesisError::Cancelled`] as soon
+/// as the starts under way have noticed (an interrupted caller — Ctrl-C in
+/// Python — need not wait for the rest). Once `cancelled` has said so it
+/// must keep saying so: a start it stopped has no outcome.
 pub fn synthesize_cancellable<L, const M: usize, const K: usize>(
     problem: &Problem<L, M, K>,
     requirements: &Requirements<'_, L, M>,
@@ -334,7 +336,8 @@ where
             }
             Some((candidate, Err(defect))) => synthesis.refused.push((candidate, defect)),
         }
-        search.enough.is_some_and(|enough| counted >= enough)
+        // (Cancelled, the search returns no outcome: nothing later is needed.)
+        search.enough.is_some_and(|enough| counted >= enough) || cancelled()
     });
     if cancelled() {
         return Err(SynthesisError::Cancelled);
@@ -564,7 +567,10 @@ where
     }
     // (A draw screened out by a Newton solve that failed where it
     // assembles is followed whole here, before any arc is tried.)
-    rockers.iter().find_map(|x| followed(x, true))
+    rockers
+        .iter()
+        .take_while(|_| !stop())
+        .find_map(|x| followed(x, true))
 }
 
 /// Driver angles around a turn at which [`assembles_around`] solves.
