@@ -454,7 +454,9 @@ where
 /// the problem's guess, or from the design's assemblies without one
 /// ([`assemblies`]: the first that reaches every target), each next one
 /// followed from it by continuation (so that all lie on one branch);
-/// `None` if the start cannot be assembled or followed. `on_arc`, over a
+/// `None` if the start cannot be assembled or followed. `first` holds the
+/// design's assemblies at the first target's driver
+/// ([`assemblies_at_first`]). `on_arc`, over a
 /// revolution ([`Problem::over_a_revolution`]): a start that cannot be
 /// followed through drivers spread over a whole revolution (its driver
 /// cannot turn one: a rocker) has them spread over the arc it can reach
@@ -465,6 +467,7 @@ fn first_poses<L, const M: usize, const K: usize>(
     start: usize,
     steps_per_radian: f64,
     options: &SweepOptions,
+    first: Vec<SVector<f64, M>>,
     on_arc: bool,
 ) -> Option<Poses<M>>
 where
@@ -473,11 +476,9 @@ where
     let model = problem.model_at(x.as_slice());
     let n = problem.targets.len();
     let mut drivers: Vec<f64> = (0..n).map(|i| problem.driver(x.as_slice(), i)).collect();
-    let mut u = assemblies(problem, &model, drivers[0], start, options)
-        .into_iter()
-        .find_map(|first| {
-            continuation::through(&model, first, &drivers, steps_per_radian, options)
-        });
+    let mut u = first.into_iter().find_map(|first| {
+        continuation::through(&model, first, &drivers, steps_per_radian, options)
+    });
     if on_arc && u.is_none() && problem.over_a_revolution() {
         // The arc the driver reaches from the first target's driver (or,
         // if it does not assemble there, from the first of eight around
@@ -538,29 +539,39 @@ where
     L: Sensitivities<M, 1, K> + Clone,
 {
     let options = &search.options;
-    let followed = |x: &DVector<f64>, on_arc: bool| {
+    let followed = |x: &DVector<f64>, first: Vec<SVector<f64, M>>, on_arc: bool| {
         let mut x = x.clone();
-        let poses = first_poses(problem, &mut x, start, steps_per_radian, options, on_arc)?;
+        let poses = first_poses(
+            problem,
+            &mut x,
+            start,
+            steps_per_radian,
+            options,
+            first,
+            on_arc,
+        )?;
         let first = evaluate(problem, &x, &poses, &options.options)?;
         Some((x, first))
     };
+    let at_first = |x: &DVector<f64>| assemblies_at_first(problem, x, start, options);
     if !problem.over_a_revolution() {
-        return (0..Search::DRAWS)
-            .take_while(|_| !stop())
-            .find_map(|_| followed(&start_point(problem, stream), false));
+        return (0..Search::DRAWS).take_while(|_| !stop()).find_map(|_| {
+            let x = start_point(problem, stream);
+            followed(&x, at_first(&x), false)
+        });
     }
     // Whether a draw turns is first asked of a few Newton solves around
     // the turn ([`assembles_around`]), then of the follow through the
-    // targets. On the path tasks of docs/performance.md the same draws as
-    // when every draw was followed, 15–35 % faster.
+    // targets. On the path tasks of docs/performance.md about as many
+    // designs as when every draw was followed, 15–35 % sooner.
     let mut rockers = Vec::new();
     for _ in 0..Search::DRAWS {
         if stop() {
             return None;
         }
         let x = start_point(problem, stream);
-        let turns = assembles_around(problem, &x, start, options);
-        if let Some(drawn) = turns.then(|| followed(&x, false)).flatten() {
+        let turns = assembles_around(problem, &x, at_first(&x), options);
+        if let Some(drawn) = turns.and_then(|first| followed(&x, first, false)) {
             return Some(drawn);
         }
         rockers.push(x);
@@ -570,25 +581,47 @@ where
     rockers
         .iter()
         .take_while(|_| !stop())
-        .find_map(|x| followed(x, true))
+        .find_map(|x| followed(x, at_first(x), true))
+}
+
+/// The assemblies of the design `x` at its first target's driver
+/// ([`assemblies`]).
+fn assemblies_at_first<L, const M: usize, const K: usize>(
+    problem: &Problem<L, M, K>,
+    x: &DVector<f64>,
+    start: usize,
+    options: &SweepOptions,
+) -> Vec<SVector<f64, M>>
+where
+    L: Sensitivities<M, 1, K> + Clone,
+{
+    let model = problem.model_at(x.as_slice());
+    assemblies(
+        problem,
+        &model,
+        problem.driver(x.as_slice(), 0),
+        start,
+        options,
+    )
 }
 
 /// Driver angles around a turn at which [`assembles_around`] solves.
 const AROUND: usize = 16;
 
-/// Whether the design `x` assembles at [`AROUND`] drivers evenly around a
-/// turn from its first target's, each solved by Newton (at most 16
-/// iterations) from the pose before it: a driver that cannot turn a
-/// revolution (a rocker) usually fails where it does not assemble, at a
-/// small part of the cost of following it there. A screen, not a verdict:
-/// a draw that passes is still followed, and a dead range narrower than
-/// the spacing of the drivers is caught by that follow.
+/// `first`, the design `x`'s assemblies at its first target's driver, if
+/// one of them assembles at [`AROUND`] drivers evenly around a turn from
+/// there, each solved by Newton (at most 16 iterations) from the pose
+/// before it: a driver that cannot turn a revolution (a rocker) usually
+/// fails where it does not assemble, at a small part of the cost of
+/// following it there. A screen, not a verdict: a draw that passes is
+/// still followed, and a dead range narrower than the spacing of the
+/// drivers is caught by that follow.
 fn assembles_around<L, const M: usize, const K: usize>(
     problem: &Problem<L, M, K>,
     x: &DVector<f64>,
-    start: usize,
+    first: Vec<SVector<f64, M>>,
     options: &SweepOptions,
-) -> bool
+) -> Option<Vec<SVector<f64, M>>>
 where
     L: Sensitivities<M, 1, K> + Clone,
 {
@@ -598,20 +631,20 @@ where
         max_iterations: options.options.max_iterations.min(16),
         ..options.options
     };
-    assemblies(problem, &model, v0, start, options)
-        .into_iter()
-        .any(|mut u| {
-            (1..AROUND).all(|j| {
-                let v = SVector::from([v0 + TAU * j as f64 / AROUND as f64]);
-                match model.solve_position(&u, &v, &newton) {
-                    Ok(solved) => {
-                        u = solved.u;
-                        true
-                    }
-                    Err(_) => false,
+    let around = |&u: &SVector<f64, M>| {
+        let mut u = u;
+        (1..AROUND).all(|j| {
+            let v = SVector::from([v0 + TAU * j as f64 / AROUND as f64]);
+            match model.solve_position(&u, &v, &newton) {
+                Ok(solved) => {
+                    u = solved.u;
+                    true
                 }
-            })
+                Err(_) => false,
+            }
         })
+    };
+    first.iter().any(around).then_some(first)
 }
 
 /// One start solved from its draw ([`first_draw`]); `None` if none of its

@@ -498,7 +498,7 @@ fn four_positions_give_dyads_on_the_burmester_curves() {
     // sample gets no more. The circle points alone: the centre and the
     // radius follow from the circle point, and near a pole of that map
     // they move fast (a circle point 0.5 mm from one of pylinkage's has
-    // its centre 40 mm from that one's).
+    // its centre 44 mm from that one's).
     let circle_gap = |a: &Dyad, b: &Dyad| (a.b - b.b).norm();
     let spacing = |k: usize| {
         (theirs.iter().enumerate())

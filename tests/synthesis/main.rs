@@ -368,7 +368,7 @@ fn path_generation_finds_the_coupler_curve_through_five_points_and_certifies_it(
 /// the default 40° of transmission): a search that starts from designs
 /// whose crank turns certifies its first design within 16 starts for each
 /// of five random states. (Starting from the first draw that could be
-/// followed, rockers included, took 16 to 40.)
+/// followed, rockers included, took two to five rounds of 8 starts.)
 #[test]
 fn the_readme_task_of_pylinkage_certifies_a_design_within_sixteen_starts() {
     let targets = [
