@@ -20,6 +20,14 @@ fn within<const N: usize>(x: &SVector<f64, N>, bound: f64) -> bool {
     x.iter().fold(true, |ok, xi| ok & (xi.abs() <= bound))
 }
 
+/// Whether every entry of `a` and `b` is finite, without branches: x·0
+/// is 0 for a finite x and NaN otherwise.
+#[inline(always)]
+fn finite<const N: usize>(a: &SVector<f64, N>, b: &SVector<f64, N>) -> bool {
+    let probe = a.iter().chain(b.iter()).fold(0.0, |sum, x| sum + x * 0.0);
+    probe == 0.0
+}
+
 impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M, F> {
     /// Whether the fast run's evaluations are written in place: where the
     /// sines and cosines are carried and the model evaluates in place
@@ -155,9 +163,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             let mut factors = lag.unwrap_or_else(|| *k.factors.packed());
             let mut iterations = 1;
             let converged = loop {
-                let regular = (k.rcond >= min_rcond)
-                    & (k.det * sign > 0.0)
-                    & ((k.udot.sum() + k.uddot.sum()).abs() <= f64::MAX);
+                let regular = (k.rcond >= min_rcond) & (k.det * sign > 0.0);
                 if !regular {
                     break false;
                 }
@@ -187,17 +193,20 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
                     break;
                 }
             }
-            // The tangent continuous with the last pose's: not a pose on a
-            // branch that crosses this one.
-            if !tangent_continues(
-                &state.du,
-                &state.ddu,
-                state.rcond,
-                &k.udot,
-                &k.uddot,
-                k.rcond,
-                h,
-            ) {
+            // Finite analogs (else the general machinery takes the step),
+            // and the tangent continuous with the last pose's: not a pose
+            // on a branch that crosses this one.
+            if !finite(&k.udot, &k.uddot)
+                || !tangent_continues(
+                    &state.du,
+                    &state.ddu,
+                    state.rcond,
+                    &k.udot,
+                    &k.uddot,
+                    k.rcond,
+                    h,
+                )
+            {
                 break;
             }
             let next = State {
