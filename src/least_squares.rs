@@ -21,7 +21,11 @@
 //! evaluated at (a design that does not assemble) is a failure. After
 //! twenty failures in a row the solver stops: no step, however short,
 //! reduces the cost (a minimum at rounding level, or a fold of the
-//! assembly the start cannot get past). It stops too after
+//! assembly the start cannot get past); after three in a row as soon as
+//! each of them is a step that changes no unknown by more than 1e-10 of
+//! its size, which only rounding keeps from reducing a smooth cost (a
+//! minimum polished to rounding: more trials would only redraw the
+//! rounding errors). It stops too after
 //! [`Stopping::unevaluable`] trials in all that could not be evaluated:
 //! steps that keep running into a fold while creeping along it.
 
@@ -58,6 +62,17 @@ crate::error::error_impls! {
 /// sits at a minimum to rounding (above [`Stopping::cost`]), or against a
 /// fold of the assembly its steps cannot cross.
 pub(crate) const STALLED: usize = 20;
+
+/// Failed trials in a row, each of a step that changes no unknown by more
+/// than [`ROUNDING_STEP`] of its size, after which the solver stops: a
+/// step that short reduces a smooth cost unless rounding decides the
+/// comparison, so x is at a minimum to rounding (a zero of the residuals,
+/// polished) and further trials only redraw the rounding errors.
+const STALLED_AT_ROUNDING: usize = 3;
+
+/// The step, relative to each unknown's size, below which a failed trial
+/// counts towards [`STALLED_AT_ROUNDING`].
+const ROUNDING_STEP: f64 = 1e-10;
 
 /// The residuals and their Jacobian at a point, and whatever the
 /// evaluation carries to the next (the poses, to start the next solves
@@ -208,12 +223,14 @@ pub(crate) fn minimize<S>(
     let mut evaluations = 1;
     let mut iterations = 0;
     let mut failures = 0;
+    let mut failures_at_rounding = 0;
     let mut unevaluable = 0;
     // JᵀJ and g of the current point, kept while trials are rejected.
     let mut normal: Option<(DMatrix<f64>, DVector<f64>)> = None;
     while evaluations < stopping.evaluations
         && cost > stopping.cost
         && failures < STALLED
+        && failures_at_rounding < STALLED_AT_ROUNDING
         && unevaluable < stopping.unevaluable
     {
         let (jtj, g) = normal.get_or_insert_with(|| {
@@ -262,9 +279,10 @@ pub(crate) fn minimize<S>(
         let s = within_bounds(&x, &step, lower, upper, &promise);
         let trial = &x + &s;
         let predicted = promise(&s);
-        let small = |s: &DVector<f64>| {
-            (0..n).all(|i| s[i].abs() <= stopping.step * x[i].abs().max(1e-3 * size))
+        let within = |s: &DVector<f64>, relative: f64| {
+            (0..n).all(|i| s[i].abs() <= relative * x[i].abs().max(1e-3 * size))
         };
+        let small = |s: &DVector<f64>| within(s, stopping.step);
         // A step too small to change x, or one that promises no reduction:
         // converged, once λ is as small as it goes (a step is small because λ
         // is large only until λ drops). The reduction itself is computed
@@ -296,6 +314,7 @@ pub(crate) fn minimize<S>(
         match accepted {
             Some((next, trial_cost, rho)) => {
                 failures = 0;
+                failures_at_rounding = 0;
                 x = trial;
                 at = next;
                 normal = None;
@@ -305,6 +324,11 @@ pub(crate) fn minimize<S>(
             }
             None => {
                 failures += 1;
+                if within(&s, ROUNDING_STEP) {
+                    failures_at_rounding += 1;
+                } else {
+                    failures_at_rounding = 0;
+                }
                 lambda = Some(lam * growth);
                 growth *= 2.0;
             }
@@ -387,6 +411,62 @@ mod tests {
             jacobian: DMatrix::from_row_slice(2, 2, &[-20.0 * x[0], 10.0, -1.0, 0.0]),
             state: (),
         })
+    }
+
+    /// Residuals with errors of their own: the solver polishes the cost
+    /// down to those errors, then stops within a few trials (37 trials
+    /// there when only twenty failures in a row stopped it, each redrawing
+    /// the errors).
+    #[test]
+    fn a_minimum_at_rounding_ends_the_solve_within_a_few_trials() {
+        // Two residuals of three unknowns: a curve of zeros, as a
+        // synthesis with more unknowns than targets; each residual with an
+        // error of up to 5e-13 that changes with x in every bit, as that of
+        // a residual computed by an iterative solve (a synthesis's poses).
+        let costs = std::cell::RefCell::new(Vec::new());
+        let noise = |x: &DVector<f64>, k: u64| {
+            let bits = x.iter().fold(k, |h, v| {
+                (h ^ v.to_bits()).wrapping_mul(0x9E37_79B9_7F4A_7C15)
+            });
+            1e-12 * ((bits >> 11) as f64 / (1u64 << 53) as f64 - 0.5)
+        };
+        let residuals = |x: &DVector<f64>, _: &()| {
+            let r = DVector::from_vec(vec![
+                x[0] * x[0] + x[1] * x[1] - 2.0 + noise(x, 1),
+                x[0] * x[2] - std::f64::consts::PI + noise(x, 2),
+            ]);
+            costs.borrow_mut().push(0.5 * r.norm_squared());
+            Some(Evaluation {
+                residuals: r,
+                jacobian: DMatrix::from_row_slice(
+                    2,
+                    3,
+                    &[2.0 * x[0], 2.0 * x[1], 0.0, x[2], 0.0, x[0]],
+                ),
+                state: (),
+            })
+        };
+        let x0 = DVector::from_vec(vec![3.0, 0.5, -1.0]);
+        let first = residuals(&x0, &()).unwrap();
+        let bounds = DVector::from_element(3, 10.0);
+        let found = minimize(
+            first,
+            x0,
+            &-&bounds,
+            &bounds,
+            &Stopping::default(),
+            residuals,
+        );
+        let costs = costs.into_inner();
+        // Polished to the residuals' errors (a cost of about 1e-25), in
+        // few evaluations there.
+        let at_floor = costs.iter().filter(|&&c| c < 1e-20).count();
+        assert!(found.residuals.amax() < 2e-12, "{:?}", found.residuals);
+        assert_eq!(found.evaluations, costs.len());
+        assert!(
+            (1..=10).contains(&at_floor),
+            "{at_floor} evaluations at the floor: {costs:?}"
+        );
     }
 
     /// The public entry: the same minimum as the inner solver; bounds of
