@@ -59,14 +59,16 @@ where
         let Ok(analysis) = &analysis else {
             return None;
         };
-        let branch = branch(&model, &analysis.u, v[0]);
-        if branch != from.branch[i] {
-            return None;
-        }
         let sensitivity = model.position_sensitivities_of(analysis, options);
         let Ok(sensitivity) = &sensitivity else {
             return None;
         };
+        // The branch from the sensitivities' factors of Ψ_u at the pose
+        // (what [`branch`] computes, without evaluating Ψ_u again).
+        let branch = sensitivity.det > 0.0;
+        if branch != from.branch[i] {
+            return None;
+        }
         // The matched values (and their rates along the driver), row by
         // row: at most three rows, the first `rows` of each array.
         let zero = SVector::<f64, K>::zeros();

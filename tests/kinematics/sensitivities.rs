@@ -227,10 +227,12 @@ fn at_an_analysis_the_sensitivities_are_those_of_its_motion() {
         );
         assert_ne!(at_moved, Ok(given));
         // The positions' alone are theirs, at both.
-        same_positions(
-            &Ok(given),
-            &model.position_sensitivities_of(&analysis, &options),
-        );
+        let positions = model.position_sensitivities_of(&analysis, &options);
+        same_positions(&Ok(given), &positions);
+        // Their det Ψ_u is that of Ψ_u at the pose, factored, to the bit.
+        let psi_u = model.psi_u(&analysis.u, &v);
+        let det = linkage::Factors::of(&psi_u, model.psi_u_blocks()).det();
+        assert_eq!(positions.expect("regular").det.to_bits(), det.to_bits());
         same_positions(
             &at_moved,
             &model.position_sensitivities_of(&moved, &options),

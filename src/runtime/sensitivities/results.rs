@@ -110,6 +110,8 @@ pub struct PositionSensitivity<const M: usize, const K: usize, P> {
     pub points: [P; K],
     /// The reciprocal condition number of Ψ_u at the pose.
     pub rcond: f64,
+    /// det Ψ_u at the pose: its sign tells the assembly branch.
+    pub det: f64,
 }
 
 impl<const M: usize, const K: usize, P: AsRef<[Vector2<f64>]>> PositionSensitivity<M, K, P> {

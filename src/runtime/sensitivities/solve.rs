@@ -244,6 +244,7 @@ where
         u: u_p,
         points,
         rcond: factors.rcond(),
+        det: factors.det(),
     })
 }
 
