@@ -338,6 +338,13 @@ macro_rules! mechanism {
                         ]
                     }
                     // A run-time mechanism's own: the compiled mechanism's
+                    // three levels of the points.
+                    Kernel::PointMotion => vec![
+                        points(&mech.point_positions(&u, &v)),
+                        points(&mech.point_velocities(&u, &v, &udot, &vdot)),
+                        points(&mech.point_accelerations(&u, &v, &udot, &vdot, &uddot, &vddot)),
+                    ],
+                    // A run-time mechanism's own: the compiled mechanism's
                     // position terms, read from its whole terms.
                     Kernel::PositionSensitivityTerms => {
                         let t = mech.position_terms_with_trig(&u, &v, &trig_u, &trig_v);
@@ -434,6 +441,17 @@ macro_rules! mechanism {
                             }
                             let mut registers = tape.registers::<1>();
                             s.write(&mut registers, 0);
+                            if kernel == Kernel::PointMotion {
+                                // The pose's own sines and cosines, as an
+                                // analysis gives them: the compiled points
+                                // compute theirs.
+                                let exact = |q: &[f64]| -> Vec<f64> {
+                                    q.iter().flat_map(|&x| <[f64; 2]>::from(x.sin_cos())).collect()
+                                };
+                                for (input, q) in [(Input::TrigU, &s.u), (Input::TrigV, &s.v)] {
+                                    registers.set_lane(input, 0, &exact(q)).expect("inputs of the tape's sizes");
+                                }
+                            }
                             let mut out = vec![0.0; tape.outputs(0)];
                             tape.run(0, &mut registers, &mut out).expect("a call that fits");
                             let compiled = compiled(&mech, kernel, s);

@@ -105,6 +105,14 @@ pub enum Kernel {
     /// mechanism's alone: the attribute does not generate it (a compiled
     /// mechanism reads them from [`Kernel::SensitivityTerms`]).
     PositionSensitivityTerms,
+    /// The points' positions, velocities and accelerations in one
+    /// evaluation, the sines and cosines given: what an analysis reads at
+    /// its pose, where it has them. Its plan is the three levels' plans in
+    /// one phase: the same operations, each computed once, so the same
+    /// numbers to the bit. A run-time mechanism's alone (a compiled
+    /// mechanism's three functions compute their sines and cosines in
+    /// line).
+    PointMotion,
 }
 
 /// The sensitivities' matrices, in the order of their outputs.
@@ -158,7 +166,7 @@ impl Kernel {
 
     /// The kernels of run-time mechanisms alone, placed after
     /// [`Kernel::ALL`]'s.
-    pub const RUN_TIME: [Kernel; 1] = [Kernel::PositionSensitivityTerms];
+    pub const RUN_TIME: [Kernel; 2] = [Kernel::PositionSensitivityTerms, Kernel::PointMotion];
 
     /// The parts of its plan it outputs, if not every part.
     pub fn kept_parts(self) -> Option<&'static [&'static str]> {
@@ -200,6 +208,7 @@ impl Kernel {
             Kernel::SensitivityTerms { with_trig: false } => 18,
             Kernel::SensitivityTerms { with_trig: true } => 19,
             Kernel::PositionSensitivityTerms => 20,
+            Kernel::PointMotion => 21,
             Kernel::Formula(Formula::PsiPDot | Formula::PsiUDdot | Formula::PsiPDdot) => {
                 return None;
             }
@@ -220,6 +229,7 @@ impl Kernel {
             Kernel::SensitivityTerms { with_trig: false } => "sensitivity_terms",
             Kernel::SensitivityTerms { with_trig: true } => "sensitivity_terms_with_trig",
             Kernel::PositionSensitivityTerms => "position_sensitivity_terms",
+            Kernel::PointMotion => "point_motion_with_trig",
         }
     }
 
@@ -261,6 +271,26 @@ impl Kernel {
             }
             Kernel::PositionSensitivityTerms => {
                 Kernel::SensitivityTerms { with_trig: true }.plan(model)
+            }
+            Kernel::PointMotion => {
+                let (mut parts, mut hints) = (Vec::new(), Vec::<(Id, String)>::new());
+                for level in 0..3 {
+                    let plan = points_plan(model, level);
+                    parts.extend(plan.phases.into_iter().flatten());
+                    // A node named at one level keeps its first name (a
+                    // point at rest: its velocity and acceleration zero).
+                    for (id, name) in plan.hints {
+                        if hints.iter().all(|(named, _)| *named != id) {
+                            hints.push((id, name));
+                        }
+                    }
+                }
+                Plan {
+                    phases: vec![parts],
+                    hints,
+                    late: Vec::new(),
+                    trig: true,
+                }
             }
         }
     }

@@ -34,6 +34,10 @@ pub struct Fixed<const M: usize, const F: usize, const P: usize = 32, const K: u
     v_names: [&'static str; F],
     trig_u: [bool; M],
     trig_v: [bool; F],
+    /// The coordinates whose sines and cosines the points' one-pass
+    /// kernel reads.
+    point_trig_u: [bool; M],
+    point_trig_v: [bool; F],
 }
 
 /// The result of a kernel's phase 0, left in its registers: read as
@@ -123,11 +127,14 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
     ) -> Fixed<M, F, P, K> {
         let array = |names: &[&'static str], k: usize| names.get(k).copied().unwrap_or("");
         let (trig_u, trig_v) = program.trig_flags(Kernel::Kinematics { with_trig: true });
+        let (point_trig_u, point_trig_v) = program.trig_flags(Kernel::PointMotion);
         Fixed {
             u_names: std::array::from_fn(|k| array(&program.u_names, k)),
             v_names: std::array::from_fn(|k| array(&program.v_names, k)),
             trig_u,
             trig_v,
+            point_trig_u,
+            point_trig_v,
             program,
             fields,
             columns,
@@ -227,6 +234,25 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
             }
         });
         points
+    }
+
+    /// The points' positions, velocities and accelerations from their
+    /// one-pass kernel, read part by part as [`Fixed::points`] reads each.
+    fn point_levels(&self, inputs: &[(Input, &[f64])]) -> [PointSet<P>; 3] {
+        let mut levels = [PointSet::<P>::clamped(self.program.point_names.len()); 3];
+        self.run(Kernel::PointMotion, inputs, |result| {
+            let starts = result
+                .kernel()
+                .map(|tape| [0, 1, 2].map(|part| tape.start(0, part)));
+            for (level, points) in levels.iter_mut().enumerate() {
+                // (NaN where the tape did not run, as `points` gives.)
+                let start = starts.map_or(usize::MAX, |s| s[level]);
+                for (k, point) in points.as_mut().iter_mut().enumerate() {
+                    *point = result.block(start.saturating_add(2 * k));
+                }
+            }
+        });
+        levels
     }
 
     /// `kinematics`, the sines and cosines computed or given: phase 0
@@ -593,6 +619,45 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Kernels<M, 
         out: &mut [Kinematics<M, F>],
     ) {
         Self::kinematics_each(requests, out);
+    }
+
+    fn point_trig_u(&self) -> [bool; M] {
+        self.point_trig_u
+    }
+
+    fn point_trig_v(&self) -> [bool; F] {
+        self.point_trig_v
+    }
+
+    fn point_motion_with_trig(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        udot: &SVector<f64, M>,
+        vdot: &SVector<f64, F>,
+        uddot: &SVector<f64, M>,
+        vddot: &SVector<f64, F>,
+        trig_u: &[(f64, f64); M],
+        trig_v: &[(f64, f64); F],
+    ) -> [PointSet<P>; 3] {
+        // (No points to compute: nothing to write.)
+        let none = PointSet::<P>::clamped(self.program.point_names.len());
+        if none.is_empty() {
+            return [none; 3];
+        }
+        let [u, v, udot, vdot] = motion(u, v, udot, vdot);
+        let (trig_u, trig_v) = (flat(trig_u), flat(trig_v));
+        let inputs = [
+            u,
+            v,
+            udot,
+            vdot,
+            (Input::Uddot, uddot.as_slice()),
+            (Input::Vddot, vddot.as_slice()),
+            (Input::TrigU, trig_u.as_flattened()),
+            (Input::TrigV, trig_v.as_flattened()),
+        ];
+        self.point_levels(&inputs)
     }
 
     fn point_positions(&self, u: &SVector<f64, M>, v: &SVector<f64, F>) -> PointSet<P> {

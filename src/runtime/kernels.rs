@@ -211,6 +211,44 @@ pub trait Kernels<const M: usize, const F: usize> {
             (r.model).kinematics_with_trig_into(r.u, r.v, r.trig_u, r.trig_v, r.vdot, r.vddot, out);
         }
     }
+    /// Which coordinates of u have their sine and cosine read from
+    /// `trig_u` by [`Kernels::point_motion_with_trig`] (none by default).
+    #[doc(hidden)]
+    fn point_trig_u(&self) -> [bool; M] {
+        [false; M]
+    }
+    /// Which coordinates of v have their sine and cosine read from `trig_v`.
+    #[doc(hidden)]
+    fn point_trig_v(&self) -> [bool; F] {
+        [false; F]
+    }
+    /// The points' positions, velocities and accelerations at one pose,
+    /// the sines and cosines of the coordinates of
+    /// [`Kernels::point_trig_u`] and [`Kernels::point_trig_v`] supplied
+    /// (`trig_u[k]` = (sin uₖ, cos uₖ), exactly): bit for bit
+    /// [`Kernels::point_positions`], [`Kernels::point_velocities`] and
+    /// [`Kernels::point_accelerations`], which the default calls. A
+    /// run-time mechanism evaluates the three in one pass of its tapes.
+    #[doc(hidden)]
+    #[allow(clippy::too_many_arguments)]
+    fn point_motion_with_trig(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        udot: &SVector<f64, M>,
+        vdot: &SVector<f64, F>,
+        uddot: &SVector<f64, M>,
+        vddot: &SVector<f64, F>,
+        trig_u: &[(f64, f64); M],
+        trig_v: &[(f64, f64); F],
+    ) -> [Self::Points; 3] {
+        let _ = (trig_u, trig_v);
+        [
+            self.point_positions(u, v),
+            self.point_velocities(u, v, udot, vdot),
+            self.point_accelerations(u, v, udot, vdot, uddot, vddot),
+        ]
+    }
     /// P(q)
     fn point_positions(&self, u: &SVector<f64, M>, v: &SVector<f64, F>) -> Self::Points;
     /// Ṗ = P_q q̇

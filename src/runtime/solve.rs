@@ -200,9 +200,21 @@ fn finish<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>(
         )?;
         (velocity, uddot)
     };
-    let points = model.point_positions(&u, v);
-    let point_velocities = model.point_velocities(&u, v, &velocity.udot, vdot);
-    let point_accelerations = model.point_accelerations(&u, v, &velocity.udot, vdot, &uddot, vddot);
+    let udot = &velocity.udot;
+    // The points in one pass on the sines and cosines the analysis
+    // computed at this pose, where it has them; else level by level.
+    let [points, point_velocities, point_accelerations] = match &trig {
+        Some(pose) if pose.u == u => {
+            let flags = (model.point_trig_u(), model.point_trig_v());
+            let (trig_u, trig_v) = pose.completed(&u, v, flags, (model.trig_u(), model.trig_v()));
+            model.point_motion_with_trig(&u, v, udot, vdot, &uddot, vddot, &trig_u, &trig_v)
+        }
+        _ => [
+            model.point_positions(&u, v),
+            model.point_velocities(&u, v, udot, vdot),
+            model.point_accelerations(&u, v, udot, vdot, &uddot, vddot),
+        ],
+    };
     for (quantity, p) in [
         ("P", &points),
         ("Ṗ", &point_velocities),

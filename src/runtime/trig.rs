@@ -43,6 +43,35 @@ pub(crate) struct PoseTrig<const M: usize, const F: usize> {
     pub(crate) sin_cos_v: [(f64, f64); F],
 }
 
+impl<const M: usize, const F: usize> PoseTrig<M, F> {
+    /// The sines and cosines the analysis computed at its pose (those of
+    /// the coordinates `had`, its kernel's masks), completed with those of
+    /// the coordinates another kernel reads (`flags`) and the analysis's
+    /// did not (a point's angle, say), computed here: each exactly
+    /// `sin_cos` of its coordinate at `u` and `v`, the pose's.
+    #[inline(always)]
+    pub(crate) fn completed(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        (flags_u, flags_v): ([bool; M], [bool; F]),
+        (had_u, had_v): ([bool; M], [bool; F]),
+    ) -> (SinCos<M>, SinCos<F>) {
+        let (mut trig_u, mut trig_v) = (self.sin_cos_u, self.sin_cos_v);
+        for k in 0..M {
+            if flags_u[k] && !had_u[k] {
+                trig_u[k] = u[k].sin_cos();
+            }
+        }
+        for k in 0..F {
+            if flags_v[k] && !had_v[k] {
+                trig_v[k] = v[k].sin_cos();
+            }
+        }
+        (trig_u, trig_v)
+    }
+}
+
 /// The ranges of |δ| carried by the short and the long series.
 const SHORT_RANGE: f64 = 1.0 / 512.0;
 const LONG_RANGE: f64 = 1.0 / 16.0;

@@ -128,6 +128,27 @@ pub fn every_kernel<L, const M: usize, const F: usize>(
         twin.point_accelerations(u, v, udot, vdot, uddot, vddot)
             .as_ref(),
     );
+    // The three levels in one pass, on the sines and cosines given.
+    let trig_u: [(f64, f64); M] = u.map(f64::sin_cos).into();
+    let trig_v: [(f64, f64); F] = v.map(f64::sin_cos).into();
+    let [p, pv, pa] = twin.point_motion_with_trig(u, v, udot, vdot, uddot, vddot, &trig_u, &trig_v);
+    same_points(
+        "points in one pass",
+        compiled.point_positions(u, v).as_ref(),
+        p.as_ref(),
+    );
+    same_points(
+        "point velocities in one pass",
+        compiled.point_velocities(u, v, udot, vdot).as_ref(),
+        pv.as_ref(),
+    );
+    same_points(
+        "point accelerations in one pass",
+        compiled
+            .point_accelerations(u, v, udot, vdot, uddot, vddot)
+            .as_ref(),
+        pa.as_ref(),
+    );
     assert_eq!(compiled.trig_u(), twin.trig_u());
     assert_eq!(compiled.trig_v(), twin.trig_v());
     let trig_u: [(f64, f64); M] = std::array::from_fn(|k| u[k].sin_cos());

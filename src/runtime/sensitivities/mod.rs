@@ -15,7 +15,7 @@ use crate::runtime::linkage::Linkage;
 use crate::runtime::options::Options;
 use crate::runtime::results::Analysis;
 use crate::runtime::sweep::{Drive, SweepOptions, SweepPose, SweepSummary};
-use crate::runtime::trig::{PoseTrig, SinCos, TrigCarrier, carry_pays};
+use crate::runtime::trig::{SinCos, TrigCarrier, carry_pays};
 use nalgebra::{SMatrix, SVector, Vector2};
 use num_dual::DualNum;
 
@@ -171,7 +171,8 @@ pub trait Sensitivities<const M: usize, const F: usize, const K: usize>:
         match &analysis.trig {
             Some(trig) if trig.u == motion.u => {
                 let flags = (self.sensitivity_trig_u(), self.sensitivity_trig_v());
-                let (trig_u, trig_v) = completed(self, trig, &motion.u, &motion.v, flags);
+                let (trig_u, trig_v) =
+                    trig.completed(&motion.u, &motion.v, flags, (self.trig_u(), self.trig_v()));
                 with_trig(self, &motion, &trig_u, &trig_v, options)
             }
             _ => self.sensitivities(&motion, options),
@@ -191,7 +192,9 @@ pub trait Sensitivities<const M: usize, const F: usize, const K: usize>:
         let (u, v) = (&analysis.u, &analysis.v);
         let flags = (self.position_trig_u(), self.position_trig_v());
         let (trig_u, trig_v) = match &analysis.trig {
-            Some(trig) if trig.u == *u => completed(self, trig, u, v, flags),
+            Some(trig) if trig.u == *u => {
+                trig.completed(u, v, flags, (self.trig_u(), self.trig_v()))
+            }
             _ => computed(u, v, flags),
         };
         solve::position_sensitivities(u, v, self.psi_u_blocks(), options, || {
@@ -253,35 +256,6 @@ where
             &m.u, &m.v, trig_u, trig_v, &m.udot, &m.vdot, &m.uddot, &m.vddot,
         )
     })
-}
-
-/// The sines and cosines of an analysis at its pose, completed with those
-/// of the coordinates a kernel reads (`flags`) and the analysis's kernel
-/// did not (a point's angle, say).
-#[inline(always)]
-fn completed<L, const M: usize, const F: usize, const K: usize>(
-    model: &L,
-    trig: &PoseTrig<M, F>,
-    u: &SVector<f64, M>,
-    v: &SVector<f64, F>,
-    (flags_u, flags_v): ([bool; M], [bool; F]),
-) -> (SinCos<M>, SinCos<F>)
-where
-    L: SensitivityKernel<M, F, K> + ?Sized,
-{
-    let (mut trig_u, mut trig_v) = (trig.sin_cos_u, trig.sin_cos_v);
-    let (kinematics_u, kinematics_v) = (model.trig_u(), model.trig_v());
-    for k in 0..M {
-        if flags_u[k] && !kinematics_u[k] {
-            trig_u[k] = u[k].sin_cos();
-        }
-    }
-    for k in 0..F {
-        if flags_v[k] && !kinematics_v[k] {
-            trig_v[k] = v[k].sin_cos();
-        }
-    }
-    (trig_u, trig_v)
 }
 
 /// The sines and cosines of the coordinates a kernel reads (`flags`), the

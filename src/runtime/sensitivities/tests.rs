@@ -8,6 +8,7 @@ use super::*;
 use crate::runtime::kernels::Kernels;
 use crate::runtime::options::{AccelerationMethod, JacobianSource};
 use crate::runtime::results::Kinematics;
+use crate::runtime::trig::PoseTrig;
 use core::cell::Cell;
 use nalgebra::{Matrix1, vector};
 
