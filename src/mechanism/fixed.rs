@@ -237,9 +237,10 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Fixed<M, F,
     }
 
     /// The points' positions, velocities and accelerations from their
-    /// one-pass kernel, read part by part as [`Fixed::points`] reads each.
-    fn point_levels(&self, inputs: &[(Input, &[f64])]) -> [PointSet<P>; 3] {
-        let mut levels = [PointSet::<P>::clamped(self.program.point_names.len()); 3];
+    /// one-pass kernel (each level written over `empty`, room for every
+    /// point), read part by part as [`Fixed::points`] reads each.
+    fn point_levels(&self, empty: PointSet<P>, inputs: &[(Input, &[f64])]) -> [PointSet<P>; 3] {
+        let mut levels = [empty; 3];
         self.run(Kernel::PointMotion, inputs, |result| {
             let starts = result
                 .kernel()
@@ -645,19 +646,19 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Kernels<M, 
         if none.is_empty() {
             return [none; 3];
         }
-        let [u, v, udot, vdot] = motion(u, v, udot, vdot);
         let (trig_u, trig_v) = (flat(trig_u), flat(trig_v));
+        let [u, v, udot, vdot, uddot, vddot] = accelerating(u, v, udot, vdot, uddot, vddot);
         let inputs = [
             u,
             v,
             udot,
             vdot,
-            (Input::Uddot, uddot.as_slice()),
-            (Input::Vddot, vddot.as_slice()),
+            uddot,
+            vddot,
             (Input::TrigU, trig_u.as_flattened()),
             (Input::TrigV, trig_v.as_flattened()),
         ];
-        self.point_levels(&inputs)
+        self.point_levels(none, &inputs)
     }
 
     fn point_positions(&self, u: &SVector<f64, M>, v: &SVector<f64, F>) -> PointSet<P> {
@@ -683,16 +684,7 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Kernels<M, 
         uddot: &SVector<f64, M>,
         vddot: &SVector<f64, F>,
     ) -> PointSet<P> {
-        let [u, v, udot, vdot] = motion(u, v, udot, vdot);
-        let inputs = [
-            u,
-            v,
-            udot,
-            vdot,
-            (Input::Uddot, uddot.as_slice()),
-            (Input::Vddot, vddot.as_slice()),
-        ];
-        self.points(2, &inputs)
+        self.points(2, &accelerating(u, v, udot, vdot, uddot, vddot))
     }
 
     fn psi_generic<D: DualNum<Primitive = f64> + Copy>(
@@ -727,6 +719,20 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Linkage<M, 
 }
 
 /// The inputs of a kernel of a pose in motion.
+/// [`motion`] and the accelerations ü, v̈ as inputs.
+fn accelerating<'a, const M: usize, const F: usize>(
+    u: &'a SVector<f64, M>,
+    v: &'a SVector<f64, F>,
+    udot: &'a SVector<f64, M>,
+    vdot: &'a SVector<f64, F>,
+    uddot: &'a SVector<f64, M>,
+    vddot: &'a SVector<f64, F>,
+) -> [(Input, &'a [f64]); 6] {
+    let [u, v, udot, vdot] = motion(u, v, udot, vdot);
+    let uddot = (Input::Uddot, uddot.as_slice());
+    [u, v, udot, vdot, uddot, (Input::Vddot, vddot.as_slice())]
+}
+
 fn motion<'a, const M: usize, const F: usize>(
     u: &'a SVector<f64, M>,
     v: &'a SVector<f64, F>,
