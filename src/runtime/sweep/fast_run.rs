@@ -122,14 +122,17 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         // pose costs a large m dearly).
         let mut kept = self.writes_in_place(carries).then(Kinematics::unevaluated);
         // Ψ_u's factors one step back (the matrix alone: the block order
-        // is the mechanism's), once the run has taken a step (`previous`
-        // then holds the analogs one step back).
-        let mut lag: Option<SMatrix<f64, M, M>> = None;
+        // is the mechanism's), valid once the run has taken a step
+        // (`previous` then holds the analogs one step back): copied into
+        // this one matrix for the run, never moved (at a large m each move
+        // is m² numbers).
+        let mut lag = SMatrix::<f64, M, M>::zeros();
+        let mut lagging = false;
         let mut taken = 0;
         while at.step < steps {
             let index = at.index + stride;
             let t = index as f64;
-            let predicted = if lag.is_some() && options.second_order {
+            let predicted = if lagging && options.second_order {
                 state.u + (previous.du + previous.ddu * (1.5 * h)) * h
             } else {
                 self.predict(&state, t)
@@ -160,14 +163,18 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             };
             // The first correction by the lagging factors (a chord step),
             // later ones by the current pose's.
-            let mut factors = lag.unwrap_or_else(|| *k.factors.packed());
+            let mut chord = lagging;
             let mut iterations = 1;
             let converged = loop {
                 let regular = (k.rcond >= min_rcond) & (k.det * sign > 0.0);
                 if !regular {
                     break false;
                 }
-                let newton = k.factors.solve_by(&factors, &k.psi);
+                let newton = if chord {
+                    k.factors.solve_by(&lag, &k.psi)
+                } else {
+                    k.factors.solve(&k.psi)
+                };
                 x -= newton;
                 if within(&newton, FAST_ACCEPT * scale) {
                     break within(&k.psi, options.options.residual_tol);
@@ -176,7 +183,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
                     break false;
                 }
                 self.evaluate(&x, &v, carries, trig, k);
-                factors = *k.factors.packed();
+                chord = false;
                 iterations += 1;
             };
             if !converged {
@@ -223,7 +230,10 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             // Where one evaluation was not enough (a coarse grid), the next
             // step starts with a fresh inverse and the current analogs: a
             // chord step would only cost another evaluation there.
-            lag = (iterations == 1).then(|| *k.factors.packed());
+            lagging = iterations == 1;
+            if lagging {
+                lag.copy_from(k.factors.packed());
+            }
             previous = state;
             state = next;
             taken += 1;
