@@ -132,6 +132,33 @@ impl<const M: usize> Factors<M> {
         Factors::scaled_by_blocks(a, order, &columns, scale)
     }
 
+    /// [`Factors::of`] written over `self`: where Ψ_u is factored in
+    /// blocks, `a` is copied once into the factors' own matrix and its
+    /// blocks inverted there, so that an evaluation that keeps its
+    /// results in place (a large m, whose m × m matrices are costly to
+    /// move) builds no factors elsewhere to move in. The same numbers, bit
+    /// for bit.
+    #[inline]
+    pub fn of_into(&mut self, a: &SMatrix<f64, M, M>, blocks: PsiUBlocks<'_>) {
+        if inverted_whole::<M>(blocks) {
+            *self = Factors::whole(a);
+            return;
+        }
+        let order = Order::of(blocks);
+        let (scale, columns) = order.scale_and_column_norms(a);
+        if !ordinary(scale) {
+            *self = Factors::scaled_by_blocks(a, order, &columns, scale);
+            return;
+        }
+        self.packed.copy_from(a);
+        self.order = order;
+        self.rcond = 0.0;
+        self.det = order.sign;
+        if self.invert_diagonal_blocks() {
+            self.rcond = condition::estimate(self, &columns);
+        }
+    }
+
     /// [`Factors::of`] and, where it factors in blocks, Ψ_u⁻¹ formed from
     /// the factors (one solve per column), for a caller that needs the
     /// whole inverse: rcond is then read from the inverse, exactly, as
@@ -381,21 +408,30 @@ impl<const M: usize> Factors<M> {
             rcond: 0.0,
             det: order.sign,
         };
-        let mut regular = true;
+        let regular = factors.invert_diagonal_blocks();
+        (factors, regular)
+    }
+
+    /// Each diagonal block of `packed` (Ψ_u, in `order`) inverted in
+    /// place, `det` (the orders' sign) multiplied by the blocks'
+    /// determinants; whether every block is regular (the first singular
+    /// one ends the work).
+    #[inline(always)]
+    fn invert_diagonal_blocks(&mut self) -> bool {
+        let (packed, order, det) = (&mut self.packed, &self.order, &mut self.det);
         for block in 0..order.blocks as usize {
             let (start, end, _) = order.block(block);
             let (ok, block_det) = diagonal::invert_in_place(
-                &mut factors.packed,
+                packed,
                 &order.equations[start..end],
                 &order.coordinates[start..end],
             );
-            factors.det *= block_det;
+            *det *= block_det;
             if !ok {
-                regular = false;
-                break;
+                return false;
             }
         }
-        (factors, regular)
+        true
     }
 
     /// [`Factors::by_blocks`] for a matrix at an extreme scale: factored

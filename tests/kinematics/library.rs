@@ -144,6 +144,40 @@ fn jansens_leg_is_solved_in_blocks_as_the_whole_inverse_solves() {
     }
 }
 
+/// A mechanism of more than four coordinates also evaluates its fused
+/// kernel over a result its caller keeps (what a sweep does): at every
+/// pose of a turn, written over the result of the pose before (and over
+/// a result of NaN), it is bit for bit the result returned by value.
+#[test]
+fn jansens_leg_fused_kernel_in_place_is_the_returned_one_to_the_bit() {
+    use linkage::Kernels;
+    let sweep = jansens_turn();
+    assert!(JANSEN_LEG.evaluates_in_place());
+    let (vdot, vddot) = (vector![1.0], vector![0.5]);
+    let mut kept = JANSEN_LEG.kinematics(&sweep.poses[0].u, &sweep.poses[0].v, &vdot, &vddot);
+    kept.psi_u.fill(f64::NAN);
+    kept.udot.fill(f64::NAN);
+    for pose in &sweep.poses {
+        let trig_u: [(f64, f64); 6] = std::array::from_fn(|k| pose.u[k].sin_cos());
+        let trig_v: [(f64, f64); 1] = [pose.v[0].sin_cos()];
+        let returned =
+            JANSEN_LEG.kinematics_with_trig(&pose.u, &pose.v, &trig_u, &trig_v, &vdot, &vddot);
+        // Through the trait, as the sweep asks for it.
+        Kernels::kinematics_with_trig_into(
+            &JANSEN_LEG,
+            &pose.u,
+            &pose.v,
+            &trig_u,
+            &trig_v,
+            &vdot,
+            &vddot,
+            &mut kept,
+        );
+        assert_eq!(kept, returned, "at {:?}", pose.v);
+        assert!(kept.factors.in_blocks());
+    }
+}
+
 #[test]
 fn jansens_leg_walks_a_whole_turn_and_puts_its_foot_where_the_closed_form_does() {
     let reference = rows(include_str!("../data/jansen_leg.csv"));

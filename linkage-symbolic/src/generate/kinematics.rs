@@ -11,6 +11,13 @@ use crate::plan::{Kernel, Plan, PlannedPart};
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 
+/// Above this many coordinates a mechanism's fused kernel also has a form
+/// that writes over a result kept by its caller
+/// (`kinematics_with_trig_into`, which a sweep then uses): its m × m
+/// matrices cost more to move than to write in place. Up to it the result
+/// returned by value stays in registers, and is faster.
+pub(super) const IN_PLACE_ABOVE: usize = 4;
+
 impl Generator<'_> {
     /// `PSI_U_BLOCKS`, the constant of Ψ_u's diagonal blocks in solve order
     /// that `kinematics` and the `Kernels` impl use, where Ψ_u has more than
@@ -52,7 +59,7 @@ impl Generator<'_> {
         let (ml, fl) = (Literal::usize_unsuffixed(m), Literal::usize_unsuffixed(f));
         let plan = Kernel::Kinematics { with_trig }.plan(model);
         let locals = [
-            "psi", "psi_u", "psi_v", "gamma", "factors", "rcond", "det", "udot", "uddot",
+            "psi", "psi_u", "psi_v", "gamma", "factors", "rcond", "det", "udot", "uddot", "out",
         ];
         let local: Vec<String> = locals.iter().map(|n| self.free_name(n)).collect();
         let trig_names = Plan::trig_names(&self.names);
@@ -60,7 +67,18 @@ impl Generator<'_> {
         let mut reserved = local.clone();
         reserved.extend(trig_names.iter().cloned());
         let phased = plan.emit(self.dag(), &self.names, &reserved, Mode::F64);
-        let [psi, psi_u, psi_v, gamma, factors, rcond, det, udot, uddot] = locals.map(|n| {
+        let [
+            psi,
+            psi_u,
+            psi_v,
+            gamma,
+            factors,
+            rcond,
+            det,
+            udot,
+            uddot,
+            out,
+        ] = locals.map(|n| {
             let k = locals.iter().position(|x| *x == n).unwrap_or(0);
             format_ident!("{}", local[k])
         });
@@ -81,6 +99,9 @@ impl Generator<'_> {
         let mut values = first_values.iter();
         let psi_fill = fill(phase_parts(0), 0, &psi, &mut values);
         let psi_u_fill = fill(phase_parts(0), 1, &psi_u, &mut values);
+        // In place: the same entries written over the result's own Ψ_u,
+        // zeroed first (the statements after `assemble`'s declaration).
+        let psi_u_entries: Vec<TokenStream> = psi_u_fill.iter().skip(1).cloned().collect();
         let psi_v_fill = fill(phase_parts(0), 2, &psi_v, &mut values);
         let mut values = second_values.iter();
         let gamma_fill = fill(phase_parts(1), 0, &gamma, &mut values);
@@ -136,6 +157,12 @@ impl Generator<'_> {
         } else {
             quote!(::linkage::Factors::whole(&#psi_u))
         };
+        let factor_into = if model.blocks.is_triangular() {
+            let blocks = format_ident!("{}", constants::PSI_U_BLOCKS);
+            quote!(#out.factors.of_into(&#out.psi_u, Self::#blocks);)
+        } else {
+            quote!(#out.factors = ::linkage::Factors::whole(&#out.psi_u);)
+        };
         let prologue = &phased.prologue;
         let reads = phased.reads;
         let arg = |used: bool, name: &str| {
@@ -175,7 +202,55 @@ impl Generator<'_> {
                 trig_u_const.declare(&dims, mask(0..m)),
                 trig_v_const.declare(&dims, mask(m..m + f)),
             ];
+            let in_place = if m > IN_PLACE_ABOVE {
+                quote! {
+                    /// [`Self::kinematics_with_trig`] written over `out`, whose
+                    /// m × m matrices are then neither built elsewhere nor
+                    /// moved: Ψ_u's entries are written into `out.psi_u` and
+                    /// factored in `out.factors`. The same numbers, bit for
+                    /// bit.
+                    #[doc(hidden)]
+                    #[inline(always)]
+                    #[allow(unused_variables, clippy::too_many_arguments)]
+                    pub fn kinematics_with_trig_into(
+                        &self,
+                        #u_arg: &SVector<f64, #ml>,
+                        #v_arg: &SVector<f64, #fl>,
+                        #trig_u: &[(f64, f64); #ml],
+                        #trig_v: &[(f64, f64); #fl],
+                        vdot: &SVector<f64, #fl>,
+                        vddot: &SVector<f64, #fl>,
+                        #out: &mut ::linkage::Kinematics<#ml, #fl>,
+                    ) {
+                        #(#prologue)*
+                        #(#first_statements)*
+                        #psi_bind
+                        #psi_v_bind
+                        {
+                            let #psi_u = &mut #out.psi_u;
+                            #psi_u.as_mut_slice().fill(0.0);
+                            #(#psi_u_entries)*
+                        }
+                        #factor_into
+                        let (#rcond, #det) = (#out.factors.rcond(), #out.factors.det());
+                        let #udot = -#out.factors.solve(&(#psi_v * vdot));
+                        #velocity_bind
+                        #(#second_statements)*
+                        #gamma_bind
+                        let #uddot = -#out.factors.solve(&(#psi_v * vddot + #gamma));
+                        #out.psi = #psi;
+                        #out.psi_v = #psi_v;
+                        #out.rcond = #rcond;
+                        #out.det = #det;
+                        #out.udot = #udot;
+                        #out.uddot = #uddot;
+                    }
+                }
+            } else {
+                quote!()
+            };
             return quote! {
+                #in_place
                 #(#masks)*
                 #doc
                 #[doc(hidden)]

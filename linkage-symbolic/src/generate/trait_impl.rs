@@ -7,6 +7,7 @@ use super::Generator;
 use super::constants::{
     PARAM_NAMES, POINT_NAMES, PSI_U_BLOCKS, SENSITIVITY_TRIG, TRIG, U_NAMES, V_NAMES,
 };
+use super::kinematics::IN_PLACE_ABOVE;
 use super::quantities::{QUANTITIES, Source, Trait};
 use super::signature;
 use proc_macro2::{Literal, TokenStream};
@@ -80,6 +81,30 @@ impl Generator<'_> {
         } else {
             quote!()
         };
+        // The fused kernel in place where the generator emits it.
+        let in_place = if self.m > IN_PLACE_ABOVE {
+            quote! {
+                #[inline(always)]
+                fn evaluates_in_place(&self) -> bool {
+                    true
+                }
+                #[inline(always)]
+                fn kinematics_with_trig_into(
+                    &self,
+                    u: &SVector<f64, #m>,
+                    v: &SVector<f64, #f>,
+                    trig_u: &[(f64, f64); #m],
+                    trig_v: &[(f64, f64); #f],
+                    vdot: &SVector<f64, #f>,
+                    vddot: &SVector<f64, #f>,
+                    out: &mut ::linkage::Kinematics<#m, #f>,
+                ) {
+                    self.kinematics_with_trig_into(u, v, trig_u, trig_v, vdot, vddot, out)
+                }
+            }
+        } else {
+            quote!()
+        };
         let param_names = PARAM_NAMES.trait_method(&dims, false);
         let lowered = &self.model.lowered;
         let param_idents: Vec<_> = lowered
@@ -95,6 +120,7 @@ impl Generator<'_> {
                 #(#names)*
                 #psi_u_blocks
                 #(#kinematics)*
+                #in_place
             }
 
             #[automatically_derived]

@@ -405,3 +405,50 @@ fn unfactored_is_a_matrix_of_nan_inverted() {
     check::<3>();
     check::<5>();
 }
+
+/// Whether two factors are the same to the bit (NaN entries too).
+fn same_bits<const M: usize>(a: &Factors<M>, b: &Factors<M>) -> bool {
+    let bits = |f: &Factors<M>| {
+        (f.packed.iter().chain([&f.rcond, &f.det]))
+            .map(|x| x.to_bits())
+            .collect::<Vec<_>>()
+    };
+    bits(a) == bits(b) && a.order == b.order
+}
+
+/// Factored in place, over the factors of another matrix, Ψ_u gives the
+/// very factors [`Factors::of`] returns: in blocks, singular, with a NaN,
+/// at extreme scales, and inverted whole.
+#[test]
+fn factored_in_place_is_factored_to_the_bit() {
+    let mut numbers = Numbers(23);
+    let mut kept = Factors::<7>::unfactored();
+    for round in 0..200 {
+        let case = Case::<7>::random(&mut numbers);
+        let blocks = case.blocks();
+        let mut a = case.a;
+        match round % 5 {
+            1 => a[(case.equations[0], case.coordinates[0])] = f64::NAN,
+            2 => a *= 2f64.powi(700),
+            3 => {
+                let (equations, coordinates) = blocks.blocks().last().unwrap();
+                for &c in coordinates {
+                    a[(equations[0], c)] = 0.0;
+                }
+            }
+            _ => {}
+        }
+        kept.of_into(&a, blocks);
+        assert!(same_bits(&kept, &Factors::of(&a, blocks)), "round {round}");
+        kept.of_into(&a, PsiUBlocks::DENSE);
+        assert!(
+            same_bits(&kept, &Factors::of(&a, PsiUBlocks::DENSE)),
+            "round {round}"
+        );
+    }
+    let small =
+        SMatrix::<f64, 3, 3>::from_fn(|i, j| (i + 2 * j) as f64 + f64::from(u8::from(i == j)));
+    let mut kept = Factors::<3>::unfactored();
+    kept.of_into(&small, PsiUBlocks::DENSE);
+    assert!(same_bits(&kept, &Factors::of(&small, PsiUBlocks::DENSE)));
+}
