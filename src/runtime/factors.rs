@@ -416,7 +416,7 @@ impl<const M: usize> Factors<M> {
     /// place, `det` (the orders' sign) multiplied by the blocks'
     /// determinants; whether every block is regular (the first singular
     /// one ends the work).
-    #[inline(always)]
+    #[inline]
     fn invert_diagonal_blocks(&mut self) -> bool {
         let (packed, order, det) = (&mut self.packed, &self.order, &mut self.det);
         for block in 0..order.blocks as usize {

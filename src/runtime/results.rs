@@ -67,9 +67,11 @@ pub struct Kinematics<const M: usize, const F: usize> {
 impl<const M: usize, const F: usize> Kinematics<M, F> {
     /// What a kernel gives when it could not run: not numbers, which the
     /// runtime's checks turn into a typed error (and a value to write
-    /// evaluations over).
+    /// evaluations over, as the generated fused kernel of a large
+    /// mechanism does).
+    #[doc(hidden)]
     #[inline(always)]
-    pub(crate) fn unevaluated() -> Kinematics<M, F> {
+    pub fn unevaluated() -> Kinematics<M, F> {
         Kinematics {
             psi: SVector::repeat(f64::NAN),
             psi_u: SMatrix::repeat(f64::NAN),

@@ -144,10 +144,12 @@ fn jansens_leg_is_solved_in_blocks_as_the_whole_inverse_solves() {
     }
 }
 
-/// A mechanism of more than four coordinates also evaluates its fused
-/// kernel over a result its caller keeps (what a sweep does): at every
-/// pose of a turn, written over the result of the pose before (and over
-/// a result of NaN), it is bit for bit the result returned by value.
+/// A mechanism of more than four coordinates evaluates its fused kernel
+/// with given sines and cosines over a result its caller keeps (what a
+/// sweep does): at every pose of a turn, written over the result of the
+/// pose before (and over a result of NaN), it is bit for bit the kernel
+/// that computes its own sines and cosines (`kinematics`, a body of its
+/// own) and the one returned by value.
 #[test]
 fn jansens_leg_fused_kernel_in_place_is_the_returned_one_to_the_bit() {
     use linkage::Kernels;
@@ -174,6 +176,7 @@ fn jansens_leg_fused_kernel_in_place_is_the_returned_one_to_the_bit() {
             &mut kept,
         );
         assert_eq!(kept, returned, "at {:?}", pose.v);
+        assert_eq!(kept, JANSEN_LEG.kinematics(&pose.u, &pose.v, &vdot, &vddot));
         assert!(kept.factors.in_blocks());
     }
 }

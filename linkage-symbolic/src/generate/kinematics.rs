@@ -202,6 +202,17 @@ impl Generator<'_> {
                 trig_u_const.declare(&dims, mask(0..m)),
                 trig_v_const.declare(&dims, mask(m..m + f)),
             ];
+            // Above IN_PLACE_ABOVE the body is emitted once, in place, and
+            // the result returned by value is that written over a fresh one.
+            let returned = if m > IN_PLACE_ABOVE {
+                quote! {
+                    let mut #out = ::linkage::Kinematics::unevaluated();
+                    self.kinematics_with_trig_into(#u_arg, #v_arg, #trig_u, #trig_v, vdot, vddot, &mut #out);
+                    #out
+                }
+            } else {
+                body.clone()
+            };
             let in_place = if m > IN_PLACE_ABOVE {
                 quote! {
                     /// [`Self::kinematics_with_trig`] written over `out`, whose
@@ -266,7 +277,7 @@ impl Generator<'_> {
                     vdot: &SVector<f64, #fl>,
                     vddot: &SVector<f64, #fl>,
                 ) -> ::linkage::Kinematics<#ml, #fl> {
-                    #body
+                    #returned
                 }
             };
         }
