@@ -202,6 +202,16 @@ impl Generator<'_> {
                 trig_u_const.declare(&dims, mask(0..m)),
                 trig_v_const.declare(&dims, mask(m..m + f)),
             ];
+            // The inputs of both forms, returned and in place.
+            let inputs = [
+                quote!(&self),
+                quote!(#u_arg: &SVector<f64, #ml>),
+                quote!(#v_arg: &SVector<f64, #fl>),
+                quote!(#trig_u: &[(f64, f64); #ml]),
+                quote!(#trig_v: &[(f64, f64); #fl]),
+                quote!(vdot: &SVector<f64, #fl>),
+                quote!(vddot: &SVector<f64, #fl>),
+            ];
             // Above IN_PLACE_ABOVE the body is emitted once, in place, and
             // the result returned by value is that written over a fresh one.
             let returned = if m > IN_PLACE_ABOVE {
@@ -224,13 +234,7 @@ impl Generator<'_> {
                     #[inline(always)]
                     #[allow(unused_variables, clippy::too_many_arguments)]
                     pub fn kinematics_with_trig_into(
-                        &self,
-                        #u_arg: &SVector<f64, #ml>,
-                        #v_arg: &SVector<f64, #fl>,
-                        #trig_u: &[(f64, f64); #ml],
-                        #trig_v: &[(f64, f64); #fl],
-                        vdot: &SVector<f64, #fl>,
-                        vddot: &SVector<f64, #fl>,
+                        #(#inputs,)*
                         #out: &mut ::linkage::Kinematics<#ml, #fl>,
                     ) {
                         #(#prologue)*
@@ -269,13 +273,7 @@ impl Generator<'_> {
                 #[inline(always)]
                 #[allow(unused_variables, clippy::too_many_arguments)]
                 pub fn kinematics_with_trig(
-                    &self,
-                    #u_arg: &SVector<f64, #ml>,
-                    #v_arg: &SVector<f64, #fl>,
-                    #trig_u: &[(f64, f64); #ml],
-                    #trig_v: &[(f64, f64); #fl],
-                    vdot: &SVector<f64, #fl>,
-                    vddot: &SVector<f64, #fl>,
+                    #(#inputs),*
                 ) -> ::linkage::Kinematics<#ml, #fl> {
                     #returned
                 }
