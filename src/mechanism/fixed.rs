@@ -718,7 +718,6 @@ impl<const M: usize, const F: usize, const P: usize, const K: usize> Linkage<M, 
 {
 }
 
-/// The inputs of a kernel of a pose in motion.
 /// [`motion`] and the accelerations ü, v̈ as inputs.
 fn accelerating<'a, const M: usize, const F: usize>(
     u: &'a SVector<f64, M>,
@@ -733,6 +732,7 @@ fn accelerating<'a, const M: usize, const F: usize>(
     [u, v, udot, vdot, uddot, (Input::Vddot, vddot.as_slice())]
 }
 
+/// The inputs of a kernel of a pose in motion.
 fn motion<'a, const M: usize, const F: usize>(
     u: &'a SVector<f64, M>,
     v: &'a SVector<f64, F>,

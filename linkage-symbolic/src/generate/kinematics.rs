@@ -11,11 +11,13 @@ use crate::plan::{Kernel, Plan, PlannedPart};
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 
-/// Above this many coordinates a mechanism's fused kernel also has a form
-/// that writes over a result kept by its caller
-/// (`kinematics_with_trig_into`, which a sweep then uses): its m × m
-/// matrices cost more to move than to write in place. Up to it the result
-/// returned by value stays in registers, and is faster.
+/// Above this many coordinates a mechanism's fused kernel with given sines
+/// and cosines is emitted once, as `kinematics_with_trig_into`, written
+/// over a result kept by its caller (a sweep's, an analysis's): its m × m
+/// matrices cost more to move than to write in place.
+/// `kinematics_with_trig` then returns it written over a fresh result. Up
+/// to it the body returns its result by value, which stays in registers
+/// and is faster.
 pub(super) const IN_PLACE_ABOVE: usize = 4;
 
 impl Generator<'_> {
