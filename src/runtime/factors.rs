@@ -3,10 +3,12 @@
 //! only each diagonal block is inverted; a solve then runs block by block,
 //! each block's right-hand side reduced by the coordinates already found
 //! through the entries that couple it to them (block forward
-//! substitution). Work and memory traffic grow with the entries inside the
-//! blocks' reach, not with m²: for a chain of loops, linearly in m. The
-//! reciprocal condition number is estimated from a few such solves, as
-//! LAPACK's `xGECON` does ([`condition`]). Up to m = 4, and for a Ψ_u of one
+//! substitution). Each block's equations over its reach are kept side by
+//! side as one small panel (the common small blocks solved unrolled), so
+//! that work and memory traffic grow with the entries inside the blocks'
+//! reach, not with m²: for a chain of loops, linearly in m. The reciprocal
+//! condition number is estimated from a few such solves, as LAPACK's
+//! `xGECON` does ([`condition`]). Up to m = 4, and for a Ψ_u of one
 //! block, the whole matrix is inverted by [`invert`], as before: the same
 //! numbers, to the bit.
 
@@ -28,11 +30,11 @@ const SMALL: usize = 4;
 /// when inverted whole, its diagonal blocks' inverses in its block order
 /// otherwise. `rcond` and `det` mean what [`Inverse`](crate::Inverse)'s do,
 /// but for the estimate (see [`Factors::rcond`]).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug)]
 pub struct Factors<const M: usize> {
-    /// Whole: Ψ_u⁻¹. In blocks: Ψ_u with each diagonal block D replaced by
-    /// D⁻¹, the entry of D⁻¹ for the block's coordinate t and equation s
-    /// kept at (equation s, coordinate t): D's own place, transposed.
+    /// Whole: Ψ_u⁻¹. In blocks: one panel a block, the panels one after
+    /// the other from the start of the storage ([`Order::panel`]); the
+    /// rest of the storage is never read.
     packed: SMatrix<f64, M, M>,
     order: Order<M>,
     rcond: f64,
@@ -49,10 +51,40 @@ struct Order<const M: usize> {
     /// of a coordinate its equations involve).
     ends: [u16; M],
     reach: [u16; M],
+    /// Where block b's panel begins in the storage.
+    panels: [u32; M],
     blocks: u16,
     /// The sign of the two orders as permutations: det Ψ_u is it times
     /// the product of the blocks' determinants.
     sign: f64,
+}
+
+/// Block b's panel: the entries of Ψ_u on the block's equations (rows, in
+/// the block's order) and the coordinates of its reach (columns, in the
+/// solve order), row by row, `width` = end − reach to a row. The last
+/// `end − start` columns, the diagonal block D, hold D⁻¹ transposed once
+/// factored: the entry of D⁻¹ for coordinate t and equation s at equation
+/// s's row and coordinate t's column, D's own place.
+#[derive(Clone, Copy)]
+struct Panel {
+    offset: usize,
+    start: usize,
+    end: usize,
+    reach: usize,
+}
+
+impl Panel {
+    fn width(&self) -> usize {
+        self.end - self.reach
+    }
+
+    fn len(&self) -> usize {
+        (self.end - self.start) * self.width()
+    }
+
+    fn range(&self) -> std::ops::Range<usize> {
+        self.offset..self.offset + self.len()
+    }
 }
 
 impl<const M: usize> Order<M> {
@@ -61,6 +93,7 @@ impl<const M: usize> Order<M> {
         coordinates: [0; M],
         ends: [0; M],
         reach: [0; M],
+        panels: [0; M],
         blocks: 0,
         sign: 1.0,
     };
@@ -72,14 +105,29 @@ impl<const M: usize> Order<M> {
         (start, self.ends[b] as usize, self.reach[b] as usize)
     }
 
+    /// Block b's panel.
     #[inline(always)]
-    fn equation(&self, position: usize) -> usize {
-        self.equations[position] as usize
+    fn panel(&self, b: usize) -> Panel {
+        let (start, end, reach) = self.block(b);
+        Panel {
+            offset: self.panels[b] as usize,
+            start,
+            end,
+            reach,
+        }
+    }
+
+    /// How much of the storage the panels take.
+    fn stored(&self) -> usize {
+        match self.blocks as usize {
+            0 => M * M,
+            blocks => self.panel(blocks - 1).range().end,
+        }
     }
 
     #[inline(always)]
-    fn coordinate(&self, position: usize) -> usize {
-        self.coordinates[position] as usize
+    fn equation(&self, position: usize) -> usize {
+        self.equations[position] as usize
     }
 }
 
@@ -124,38 +172,41 @@ impl<const M: usize> Factors<M> {
         if inverted_whole::<M>(blocks) {
             return Factors::whole(a);
         }
-        let order = Order::of(blocks);
-        let (scale, columns) = order.scale_and_column_norms(a);
-        if ordinary(scale) {
-            return Factors::by_blocks(a, order, &columns);
-        }
-        Factors::scaled_by_blocks(a, order, &columns, scale)
+        let mut factors = Factors::unfactored();
+        factors.of_into(a, blocks);
+        factors
     }
 
     /// [`Factors::of`] written over `self`: where Ψ_u is factored in
-    /// blocks, `a` is copied once into the factors' own matrix and its
-    /// blocks inverted there, so that an evaluation that keeps its
-    /// results in place (a large m, whose m × m matrices are costly to
-    /// move) builds no factors elsewhere to move in. The same numbers, bit
-    /// for bit.
+    /// blocks, the entries inside the blocks' reach are gathered into the
+    /// factors' own panels and the blocks inverted there, so that an
+    /// evaluation that keeps its results in place (a large m, whose m × m
+    /// matrices are costly to move) builds no factors elsewhere to move
+    /// in. The same numbers, bit for bit.
     #[inline]
     pub fn of_into(&mut self, a: &SMatrix<f64, M, M>, blocks: PsiUBlocks<'_>) {
         if inverted_whole::<M>(blocks) {
             *self = Factors::whole(a);
             return;
         }
-        let order = Order::of(blocks);
-        let (scale, columns) = order.scale_and_column_norms(a);
+        self.order = Order::of(blocks);
+        let (scale, columns) = self.gather(a);
         if !ordinary(scale) {
-            *self = Factors::scaled_by_blocks(a, order, &columns, scale);
+            self.factor_scaled(&columns, scale);
             return;
         }
-        self.packed.copy_from(a);
-        self.order = order;
+        self.factor(&columns);
+    }
+
+    /// The panels gathered from `a` factored: the diagonal blocks
+    /// inverted, det their determinants' product, rcond estimated from
+    /// A's column norms `columns` (0 if a block is singular).
+    #[inline(always)]
+    fn factor(&mut self, columns: &[f64; M]) {
         self.rcond = 0.0;
-        self.det = order.sign;
+        self.det = self.order.sign;
         if self.invert_diagonal_blocks() {
-            self.rcond = condition::estimate(self, &columns);
+            self.rcond = condition::estimate(self, columns);
         }
     }
 
@@ -172,13 +223,14 @@ impl<const M: usize> Factors<M> {
         if inverted_whole::<M>(blocks) {
             return (Factors::whole(a), None);
         }
-        let order = Order::of(blocks);
-        if !ordinary(order.scale_and_column_norms(a).0) {
+        let mut factors = Factors::unfactored();
+        factors.order = Order::of(blocks);
+        if !ordinary(factors.gather(a).0) {
             let factors = Factors::of(a, blocks);
             return (factors, Some(factors.inverse()));
         }
-        let (mut factors, regular) = Factors::factored(a, order);
-        if !regular {
+        factors.det = factors.order.sign;
+        if !factors.invert_diagonal_blocks() {
             return (factors, Some(SMatrix::zeros()));
         }
         let inverse = factors.inverse();
@@ -226,11 +278,23 @@ impl<const M: usize> Factors<M> {
         self.forward(b)
     }
 
-    /// The factors themselves ([`Factors::solve_by`]): the inverse, or Ψ_u
-    /// with its blocks inverted in place.
+    /// The factors themselves copied into `kept`, for [`Factors::solve_by`]
+    /// at another pose: the inverse, or the panels (what they take of the
+    /// storage only).
     #[inline(always)]
-    pub(crate) fn packed(&self) -> &SMatrix<f64, M, M> {
-        &self.packed
+    pub(crate) fn keep_in(&self, kept: &mut SMatrix<f64, M, M>) {
+        if self.is_whole() {
+            kept.copy_from(&self.packed);
+            return;
+        }
+        let stored = self.order.stored();
+        kept.as_mut_slice()[..stored].copy_from_slice(&self.packed.as_slice()[..stored]);
+    }
+
+    /// The part of the storage the factors take: the inverse, or the
+    /// panels.
+    fn stored(&self) -> &[f64] {
+        &self.packed.as_slice()[..self.order.stored()]
     }
 
     /// x = Ψ_u⁻¹ b with the factors `packed` of another pose of the same
@@ -269,13 +333,13 @@ impl<const M: usize> Factors<M> {
         if self.is_whole() {
             return self.packed.amax();
         }
-        let order = &self.order;
         let mut size = 0.0_f64;
-        for block in 0..order.blocks as usize {
-            let (start, end, _) = order.block(block);
-            for s in start..end {
-                for t in start..end {
-                    size = size.max(self.packed[(order.equation(s), order.coordinate(t))].abs());
+        for block in 0..self.order.blocks as usize {
+            let panel = self.order.panel(block);
+            let diagonal = panel.start - panel.reach;
+            for row in self.packed.as_slice()[panel.range()].chunks_exact(panel.width()) {
+                for x in &row[diagonal..] {
+                    size = size.max(x.abs());
                 }
             }
         }
@@ -329,27 +393,21 @@ impl<const M: usize> Factors<M> {
         first: usize,
     ) -> SVector<f64, M> {
         let order = &self.order;
-        let mut x = SVector::<f64, M>::zeros();
-        let mut reduced = [0.0; M];
+        // x by position in the solve order, each block's from the block
+        // before it; by coordinate at the end.
+        let mut found = [0.0; M];
         for block in first..order.blocks as usize {
-            let (start, end, reach) = order.block(block);
-            for (s, r) in (start..end).zip(&mut reduced[start..end]) {
-                let e = order.equation(s);
-                let mut sum = b[e];
-                for p in reach..start {
-                    let q = order.coordinate(p);
-                    sum -= a[(e, q)] * x[q];
-                }
-                *r = sum;
-            }
-            for t in start..end {
-                let c = order.coordinate(t);
-                let mut sum = 0.0;
-                for (s, r) in (start..end).zip(&reduced[start..end]) {
-                    sum += a[(order.equation(s), c)] * r;
-                }
-                x[c] = sum;
-            }
+            let panel = order.panel(block);
+            let (start, end, reach) = (panel.start, panel.end, panel.reach);
+            let entries = &a.as_slice()[panel.range()];
+            let equations = &order.equations[start..end];
+            let (before, this) = found.split_at_mut(start);
+            let (known, this) = (&before[reach..], &mut this[..end - start]);
+            forward_block(entries, b.as_slice(), equations, known, this);
+        }
+        let mut x = SVector::<f64, M>::zeros();
+        for (&c, found) in order.coordinates.iter().zip(found) {
+            x[c as usize] = found;
         }
         x
     }
@@ -359,72 +417,69 @@ impl<const M: usize> Factors<M> {
     /// the block's inverse transposed, then its contribution taken from
     /// the coordinates it reaches. Only factored in blocks.
     fn backward(&self, c: &SVector<f64, M>) -> SVector<f64, M> {
-        let (a, order) = (&self.packed, &self.order);
-        let mut c = *c;
+        let order = &self.order;
+        // c by position in the solve order.
+        let mut left = [0.0; M];
+        for (left, &k) in left.iter_mut().zip(&order.coordinates) {
+            *left = c[k as usize];
+        }
         let mut y = SVector::<f64, M>::zeros();
+        let mut found = [0.0; M];
         for block in (0..order.blocks as usize).rev() {
-            let (start, end, reach) = order.block(block);
-            for s in start..end {
-                let e = order.equation(s);
-                let mut sum = 0.0;
-                for t in start..end {
-                    let k = order.coordinate(t);
-                    sum += a[(e, k)] * c[k];
-                }
-                y[e] = sum;
-            }
-            for p in reach..start {
-                let q = order.coordinate(p);
-                let mut sum = 0.0;
-                for s in start..end {
-                    let e = order.equation(s);
-                    sum += a[(e, q)] * y[e];
-                }
-                c[q] -= sum;
+            let panel = order.panel(block);
+            let (start, end, reach) = (panel.start, panel.end, panel.reach);
+            let entries = &self.packed.as_slice()[panel.range()];
+            let (reached, this) = left.split_at_mut(start);
+            let found = &mut found[..end - start];
+            backward_block(entries, &this[..end - start], found, &mut reached[reach..]);
+            for (&e, &y_s) in order.equations[start..end].iter().zip(found.iter()) {
+                y[e as usize] = y_s;
             }
         }
         y
     }
 
-    /// Factors at an ordinary scale: [`Factors::factored`], rcond
-    /// estimated.
+    /// The entries of `a` inside the blocks' reach gathered into the
+    /// panels of `self.order`, with the largest magnitude among them and
+    /// the 1-norm of each of A's columns, in one pass over the entries
+    /// that can be nonzero. (A NaN entry is skipped by the largest and
+    /// makes its column's norm NaN, which the estimate catches.)
     #[inline(always)]
-    fn by_blocks(a: &SMatrix<f64, M, M>, order: Order<M>, columns: &[f64; M]) -> Self {
-        let (mut factors, regular) = Factors::factored(a, order);
-        if regular {
-            factors.rcond = condition::estimate(&factors, columns);
+    fn gather(&mut self, a: &SMatrix<f64, M, M>) -> (f64, [f64; M]) {
+        let (order, packed) = (&self.order, self.packed.as_mut_slice());
+        let mut columns = [0.0; M];
+        let mut scale = 0.0_f64;
+        for block in 0..order.blocks as usize {
+            let panel = order.panel(block);
+            let rows = packed[panel.range()].chunks_exact_mut(panel.width());
+            let coordinates = &order.coordinates[panel.reach..panel.end];
+            for (row, &e) in rows.zip(&order.equations[panel.start..panel.end]) {
+                for (entry, &k) in row.iter_mut().zip(coordinates) {
+                    let x = a[(e as usize, k as usize)];
+                    *entry = x;
+                    let x = x.abs();
+                    columns[k as usize] += x;
+                    if x > scale {
+                        scale = x;
+                    }
+                }
+            }
         }
-        factors
+        (scale, columns)
     }
 
-    /// The diagonal blocks inverted in place and the determinant as their
-    /// product (rcond 0 for now), and whether every block is regular.
-    /// Built where it is returned (a copy of a large Ψ_u less).
-    #[inline(always)]
-    fn factored(a: &SMatrix<f64, M, M>, order: Order<M>) -> (Self, bool) {
-        let mut factors = Factors {
-            packed: *a,
-            order,
-            rcond: 0.0,
-            det: order.sign,
-        };
-        let regular = factors.invert_diagonal_blocks();
-        (factors, regular)
-    }
-
-    /// Each diagonal block of `packed` (Ψ_u, in `order`) inverted in
-    /// place, `det` (the orders' sign) multiplied by the blocks'
-    /// determinants; whether every block is regular (the first singular
-    /// one ends the work).
+    /// Each diagonal block of the panels inverted in place, `det` (the
+    /// orders' sign) multiplied by the blocks' determinants; whether every
+    /// block is regular (the first singular one ends the work).
     #[inline]
     fn invert_diagonal_blocks(&mut self) -> bool {
-        let (packed, order, det) = (&mut self.packed, &self.order, &mut self.det);
+        let (packed, order, det) = (self.packed.as_mut_slice(), &self.order, &mut self.det);
         for block in 0..order.blocks as usize {
-            let (start, end, _) = order.block(block);
-            let (ok, block_det) = diagonal::invert_in_place(
-                packed,
-                &order.equations[start..end],
-                &order.coordinates[start..end],
+            let panel = order.panel(block);
+            let (ok, block_det) = diagonal::invert_in_panel(
+                &mut packed[panel.range()],
+                panel.width(),
+                panel.start - panel.reach,
             );
             *det *= block_det;
             if !ok {
@@ -434,36 +489,44 @@ impl<const M: usize> Factors<M> {
         true
     }
 
-    /// [`Factors::by_blocks`] for a matrix at an extreme scale: factored
-    /// as A·(1/p) (exact), whose rcond is A's, then the blocks' inverses
-    /// scaled back by 1/p and the couplings restored; det = pᴹ·det(A/p).
+    /// [`Factors::factor`] for panels at an extreme scale: factored as
+    /// A·(1/p) (exact), whose rcond is A's, then the blocks' inverses
+    /// scaled back by 1/p, the couplings A's own; det = pᴹ·det(A/p).
     #[cold]
     #[inline(never)]
-    fn scaled_by_blocks(
-        a: &SMatrix<f64, M, M>,
-        order: Order<M>,
-        columns: &[f64; M],
-        scale: f64,
-    ) -> Self {
+    fn factor_scaled(&mut self, columns: &[f64; M], scale: f64) {
         let (p, reciprocal) = power_of_two_and_reciprocal(scale);
         let columns = columns.map(|c| c * reciprocal);
-        let inner = Factors::by_blocks(&(a * reciprocal), order, &columns);
-        let mut packed = *a;
-        for block in 0..order.blocks as usize {
-            let (start, end, _) = order.block(block);
-            for s in start..end {
-                for t in start..end {
-                    let (e, k) = (order.equation(s), order.coordinate(t));
-                    packed[(e, k)] = inner.packed[(e, k)] * reciprocal;
+        let mut inner = *self;
+        let stored = self.order.stored();
+        for x in &mut inner.packed.as_mut_slice()[..stored] {
+            *x *= reciprocal;
+        }
+        inner.factor(&columns);
+        for block in 0..self.order.blocks as usize {
+            let panel = self.order.panel(block);
+            let diagonal = panel.start - panel.reach;
+            let rows = self.packed.as_mut_slice()[panel.range()].chunks_exact_mut(panel.width());
+            let inner_rows = inner.packed.as_slice()[panel.range()].chunks_exact(panel.width());
+            for (row, inner_row) in rows.zip(inner_rows) {
+                for (x, y) in row[diagonal..].iter_mut().zip(&inner_row[diagonal..]) {
+                    *x = y * reciprocal;
                 }
             }
         }
-        Factors {
-            packed,
-            order,
-            rcond: inner.rcond,
-            det: scaled_determinant::<M>(inner.det, p),
-        }
+        self.rcond = inner.rcond;
+        self.det = scaled_determinant::<M>(inner.det, p);
+    }
+}
+
+/// The same factors: the same order, rcond and det, and the same numbers
+/// in the part of the storage they take.
+impl<const M: usize> PartialEq for Factors<M> {
+    fn eq(&self, other: &Self) -> bool {
+        self.order == other.order
+            && self.rcond == other.rcond
+            && self.det == other.det
+            && self.stored() == other.stored()
     }
 }
 
@@ -483,31 +546,188 @@ impl<const M: usize> Order<M> {
             order.reach[b] = first as u16;
         }
         order.blocks = ends.len() as u16;
+        let mut offset = 0;
+        for b in 0..ends.len() {
+            order.panels[b] = offset as u32;
+            offset = order.panel(b).range().end;
+        }
         order
     }
+}
 
-    /// The largest magnitude of an entry inside the blocks' reach, and
-    /// the 1-norm of each of A's columns, in one pass over the entries
-    /// that can be nonzero. (A NaN entry is skipped by the largest and
-    /// makes its column's norm NaN, which the estimate catches.)
-    fn scale_and_column_norms(&self, a: &SMatrix<f64, M, M>) -> (f64, [f64; M]) {
-        let mut columns = [0.0; M];
-        let mut scale = 0.0_f64;
-        for block in 0..self.blocks as usize {
-            let (start, end, reach) = self.block(block);
-            for s in start..end {
-                let e = self.equation(s);
-                for p in reach..end {
-                    let k = self.coordinate(p);
-                    let x = a[(e, k)].abs();
-                    columns[k] += x;
-                    if x > scale {
-                        scale = x;
+/// One block's step of the forward substitution: its equations' right-hand
+/// sides (`b` at `equations`) less its panel's couplings (`entries`, a row
+/// an equation) times the coordinates `known` already found, times its
+/// inverse (the panel's last columns, transposed), into `found`. Blocks
+/// up to 3×3 reaching up to 4 coordinates back, the common ones, run
+/// unrolled; the same operations in the same order as any other.
+#[inline(always)]
+fn forward_block(entries: &[f64], b: &[f64], equations: &[u16], known: &[f64], found: &mut [f64]) {
+    macro_rules! unrolled {
+        ($(($k:literal, $d:literal)),*) => {
+            match (found.len(), known.len()) {
+                $(($k, $d) => {
+                    if let (Ok(known), Ok(found)) = (known.try_into(), found.try_into()) {
+                        return forward_unrolled::<$k, $d>(entries, b, equations, known, found);
                     }
-                }
+                })*
+                _ => {}
             }
+        };
+    }
+    unrolled!(
+        (1, 0),
+        (1, 1),
+        (1, 2),
+        (1, 3),
+        (1, 4),
+        (2, 0),
+        (2, 1),
+        (2, 2),
+        (2, 3),
+        (2, 4),
+        (3, 0),
+        (3, 1),
+        (3, 2),
+        (3, 3),
+        (3, 4)
+    );
+    let (k, diagonal) = (found.len(), known.len());
+    let width = k + diagonal;
+    let mut reduced = [0.0; 64];
+    let mut reduced_heap = Vec::new();
+    let reduced = if k <= 64 {
+        &mut reduced[..k]
+    } else {
+        reduced_heap.resize(k, 0.0);
+        &mut reduced_heap[..]
+    };
+    for ((r, row), &e) in reduced
+        .iter_mut()
+        .zip(entries.chunks_exact(width))
+        .zip(equations)
+    {
+        let mut sum = b[e as usize];
+        for (entry, x) in row.iter().zip(known) {
+            sum -= entry * x;
         }
-        (scale, columns)
+        *r = sum;
+    }
+    for (t, x) in found.iter_mut().enumerate() {
+        let mut sum = 0.0;
+        for (row, r) in entries.chunks_exact(width).zip(reduced.iter()) {
+            sum += row[diagonal + t] * r;
+        }
+        *x = sum;
+    }
+}
+
+/// [`forward_block`] for a K×K block reaching D coordinates back.
+#[inline(always)]
+fn forward_unrolled<const K: usize, const D: usize>(
+    entries: &[f64],
+    b: &[f64],
+    equations: &[u16],
+    known: &[f64; D],
+    found: &mut [f64; K],
+) {
+    let width = K + D;
+    let mut reduced = [0.0; K];
+    for (i, r) in reduced.iter_mut().enumerate() {
+        let row = &entries[i * width..(i + 1) * width];
+        let mut sum = b[equations[i] as usize];
+        for j in 0..D {
+            sum -= row[j] * known[j];
+        }
+        *r = sum;
+    }
+    for (t, x) in found.iter_mut().enumerate() {
+        let mut sum = 0.0;
+        for (i, r) in reduced.iter().enumerate() {
+            sum += entries[i * width + D + t] * r;
+        }
+        *x = sum;
+    }
+}
+
+/// One block's step of the backward substitution (with Ψ_u transposed):
+/// y on its equations, `found`, from its inverse transposed times what is
+/// `left` of c on its coordinates; then its couplings' part taken from
+/// what is left of c on the coordinates it reaches, `reached`.
+#[inline(always)]
+fn backward_block(entries: &[f64], left: &[f64], found: &mut [f64], reached: &mut [f64]) {
+    macro_rules! unrolled {
+        ($(($k:literal, $d:literal)),*) => {
+            match (found.len(), reached.len()) {
+                $(($k, $d) => {
+                    if let (Ok(left), Ok(found), Ok(reached)) =
+                        (left.try_into(), found.try_into(), reached.try_into())
+                    {
+                        return backward_unrolled::<$k, $d>(entries, left, found, reached);
+                    }
+                })*
+                _ => {}
+            }
+        };
+    }
+    unrolled!(
+        (1, 0),
+        (1, 1),
+        (1, 2),
+        (1, 3),
+        (1, 4),
+        (2, 0),
+        (2, 1),
+        (2, 2),
+        (2, 3),
+        (2, 4),
+        (3, 0),
+        (3, 1),
+        (3, 2),
+        (3, 3),
+        (3, 4)
+    );
+    let (k, diagonal) = (found.len(), reached.len());
+    let width = k + diagonal;
+    for (y, row) in found.iter_mut().zip(entries.chunks_exact(width)) {
+        let mut sum = 0.0;
+        for (entry, c) in row[diagonal..].iter().zip(left) {
+            sum += entry * c;
+        }
+        *y = sum;
+    }
+    for (j, c) in reached.iter_mut().enumerate() {
+        let mut sum = 0.0;
+        for (row, y) in entries.chunks_exact(width).zip(found.iter()) {
+            sum += row[j] * y;
+        }
+        *c -= sum;
+    }
+}
+
+/// [`backward_block`] for a K×K block reaching D coordinates back.
+#[inline(always)]
+fn backward_unrolled<const K: usize, const D: usize>(
+    entries: &[f64],
+    left: &[f64; K],
+    found: &mut [f64; K],
+    reached: &mut [f64; D],
+) {
+    let width = K + D;
+    for (i, y) in found.iter_mut().enumerate() {
+        let row = &entries[i * width..(i + 1) * width];
+        let mut sum = 0.0;
+        for t in 0..K {
+            sum += row[D + t] * left[t];
+        }
+        *y = sum;
+    }
+    for (j, c) in reached.iter_mut().enumerate() {
+        let mut sum = 0.0;
+        for (i, y) in found.iter().enumerate() {
+            sum += entries[i * width + j] * y;
+        }
+        *c -= sum;
     }
 }
 

@@ -4,30 +4,23 @@
 use crate::runtime::linalg::adjugate;
 use nalgebra::SMatrix;
 
-/// D = A[equations, coordinates] replaced by its inverse, the entry of D⁻¹
-/// for coordinate t and equation s put at (equation s, coordinate t):
-/// whether D is regular with a finite inverse, and det D.
-pub(super) fn invert_in_place<const M: usize>(
-    a: &mut SMatrix<f64, M, M>,
-    equations: &[u16],
-    coordinates: &[u16],
-) -> (bool, f64) {
-    match equations.len() {
-        1 => small::<1, M>(a, equations, coordinates),
-        2 => small::<2, M>(a, equations, coordinates),
-        3 => small::<3, M>(a, equations, coordinates),
-        _ => large(a, equations, coordinates),
+/// D, the last k columns of a block's panel (`width` columns to a row, k
+/// rows, D from column `diagonal`), replaced by its inverse transposed: the
+/// entry of D⁻¹ for coordinate t and equation s put at row s, column
+/// `diagonal` + t. Whether D is regular with a finite inverse, and det D.
+pub(super) fn invert_in_panel(panel: &mut [f64], width: usize, diagonal: usize) -> (bool, f64) {
+    match width - diagonal {
+        1 => small::<1>(panel, width, diagonal),
+        2 => small::<2>(panel, width, diagonal),
+        3 => small::<3>(panel, width, diagonal),
+        _ => large(panel, width, diagonal),
     }
 }
 
 /// Up to 3×3: the adjugate over the determinant.
-fn small<const K: usize, const M: usize>(
-    a: &mut SMatrix<f64, M, M>,
-    equations: &[u16],
-    coordinates: &[u16],
-) -> (bool, f64) {
-    let at = |s: usize, t: usize| (equations[s] as usize, coordinates[t] as usize);
-    let d = SMatrix::<f64, K, K>::from_fn(|s, t| a[at(s, t)]);
+fn small<const K: usize>(panel: &mut [f64], width: usize, diagonal: usize) -> (bool, f64) {
+    let at = |s: usize, t: usize| s * width + diagonal + t;
+    let d = SMatrix::<f64, K, K>::from_fn(|s, t| panel[at(s, t)]);
     let (adjugate, det) = adjugate(&d);
     let inverse = adjugate * (1.0 / det);
     // A zero or non-finite det, or an overflow, makes the sum non-finite.
@@ -36,7 +29,7 @@ fn small<const K: usize, const M: usize>(
     }
     for s in 0..K {
         for t in 0..K {
-            a[at(s, t)] = inverse[(t, s)];
+            panel[at(s, t)] = inverse[(t, s)];
         }
     }
     (true, det)
@@ -44,13 +37,9 @@ fn small<const K: usize, const M: usize>(
 
 /// Above 3×3: Gauss–Jordan elimination, on the stack up to 8×8 (a larger
 /// block is dense work that a heap allocation does not weigh on).
-fn large<const M: usize>(
-    a: &mut SMatrix<f64, M, M>,
-    equations: &[u16],
-    coordinates: &[u16],
-) -> (bool, f64) {
-    let k = equations.len();
-    let at = |s: usize, t: usize| (equations[s] as usize, coordinates[t] as usize);
+fn large(panel: &mut [f64], width: usize, diagonal: usize) -> (bool, f64) {
+    let k = width - diagonal;
+    let at = |s: usize, t: usize| s * width + diagonal + t;
     let (mut small_work, mut small_inverse) = ([0.0; 64], [0.0; 64]);
     let (mut large_work, mut large_inverse) = (Vec::new(), Vec::new());
     let (work, inverse) = if k * k <= 64 {
@@ -61,7 +50,7 @@ fn large<const M: usize>(
         (&mut large_work[..], &mut large_inverse[..])
     };
     for (i, w) in work.iter_mut().enumerate() {
-        *w = a[at(i / k, i % k)];
+        *w = panel[at(i / k, i % k)];
     }
     let (regular, det) = gauss_jordan_rows(work, inverse, k);
     if !regular || !inverse.iter().all(|v| v.is_finite()) {
@@ -70,7 +59,7 @@ fn large<const M: usize>(
     // inverse[t·k + s] is D⁻¹'s entry for coordinate t and equation s.
     for s in 0..k {
         for t in 0..k {
-            a[at(s, t)] = inverse[t * k + s];
+            panel[at(s, t)] = inverse[t * k + s];
         }
     }
     (true, det)

@@ -232,7 +232,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
             // chord step would only cost another evaluation there.
             lagging = iterations == 1;
             if lagging {
-                lag.copy_from(k.factors.packed());
+                k.factors.keep_in(&mut lag);
             }
             previous = state;
             state = next;
