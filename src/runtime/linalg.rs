@@ -262,14 +262,8 @@ pub fn determinant<const M: usize>(a: &SMatrix<f64, M, M>) -> f64 {
 
 /// Gauss–Jordan elimination with partial pivoting, and the determinant as
 /// the signed product of the pivots; `None` (and det 0) on a zero pivot.
-///
-/// `a` is read an entry at a time. The caller has usually just written
-/// it, often an entry at a time, and a wider load that spans two such
-/// stores must wait for both to reach the cache (the store cannot be
-/// forwarded): `*a`, copied by pairs, cost the six-bar's fused kernel
-/// and its analysis from a cold start about 3 % that way.
 fn gauss_jordan<const M: usize>(a: &SMatrix<f64, M, M>) -> (Option<SMatrix<f64, M, M>>, f64) {
-    let mut work = SMatrix::<f64, M, M>::from_fn(|i, j| std::hint::black_box(a[(i, j)]));
+    let mut work = *a;
     let mut inv = SMatrix::<f64, M, M>::identity();
     let mut det = 1.0;
     for col in 0..M {
