@@ -555,12 +555,37 @@ impl<const M: usize> Order<M> {
     }
 }
 
+/// The blocks solved by unrolled code, as (K, D): K×K blocks reaching D
+/// coordinates back, up to 3×3 and 4 back (the common ones), given to the
+/// macro `$then`.
+macro_rules! unrolled_sizes {
+    ($then:ident) => {
+        $then!(
+            (1, 0),
+            (1, 1),
+            (1, 2),
+            (1, 3),
+            (1, 4),
+            (2, 0),
+            (2, 1),
+            (2, 2),
+            (2, 3),
+            (2, 4),
+            (3, 0),
+            (3, 1),
+            (3, 2),
+            (3, 3),
+            (3, 4)
+        )
+    };
+}
+
 /// One block's step of the forward substitution: its equations' right-hand
 /// sides (`b` at `equations`) less its panel's couplings (`entries`, a row
 /// an equation) times the coordinates `known` already found, times its
-/// inverse (the panel's last columns, transposed), into `found`. Blocks
-/// up to 3×3 reaching up to 4 coordinates back, the common ones, run
-/// unrolled; the same operations in the same order as any other.
+/// inverse (the panel's last columns, transposed), into `found`. The
+/// blocks of `unrolled_sizes` run unrolled; the same operations in the
+/// same order as any other.
 #[inline(always)]
 fn forward_block(entries: &[f64], b: &[f64], equations: &[u16], known: &[f64], found: &mut [f64]) {
     macro_rules! unrolled {
@@ -575,23 +600,7 @@ fn forward_block(entries: &[f64], b: &[f64], equations: &[u16], known: &[f64], f
             }
         };
     }
-    unrolled!(
-        (1, 0),
-        (1, 1),
-        (1, 2),
-        (1, 3),
-        (1, 4),
-        (2, 0),
-        (2, 1),
-        (2, 2),
-        (2, 3),
-        (2, 4),
-        (3, 0),
-        (3, 1),
-        (3, 2),
-        (3, 3),
-        (3, 4)
-    );
+    unrolled_sizes!(unrolled);
     let (k, diagonal) = (found.len(), known.len());
     let width = k + diagonal;
     let mut reduced = [0.0; 64];
@@ -670,23 +679,7 @@ fn backward_block(entries: &[f64], left: &[f64], found: &mut [f64], reached: &mu
             }
         };
     }
-    unrolled!(
-        (1, 0),
-        (1, 1),
-        (1, 2),
-        (1, 3),
-        (1, 4),
-        (2, 0),
-        (2, 1),
-        (2, 2),
-        (2, 3),
-        (2, 4),
-        (3, 0),
-        (3, 1),
-        (3, 2),
-        (3, 3),
-        (3, 4)
-    );
+    unrolled_sizes!(unrolled);
     let (k, diagonal) = (found.len(), reached.len());
     let width = k + diagonal;
     for (y, row) in found.iter_mut().zip(entries.chunks_exact(width)) {
