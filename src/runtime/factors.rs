@@ -403,7 +403,7 @@ impl<const M: usize> Factors<M> {
             let equations = &order.equations[start..end];
             let (before, this) = found.split_at_mut(start);
             let (known, this) = (&before[reach..], &mut this[..end - start]);
-            forward_block(entries, b.as_slice(), equations, known, this);
+            forward_block::<M>(entries, b.as_slice(), equations, known, this);
         }
         let mut x = SVector::<f64, M>::zeros();
         for (&c, found) in order.coordinates.iter().zip(found) {
@@ -587,7 +587,13 @@ macro_rules! unrolled_sizes {
 /// blocks of `unrolled_sizes` run unrolled; the same operations in the
 /// same order as any other.
 #[inline(always)]
-fn forward_block(entries: &[f64], b: &[f64], equations: &[u16], known: &[f64], found: &mut [f64]) {
+fn forward_block<const M: usize>(
+    entries: &[f64],
+    b: &[f64],
+    equations: &[u16],
+    known: &[f64],
+    found: &mut [f64],
+) {
     macro_rules! unrolled {
         ($(($k:literal, $d:literal)),*) => {
             match (found.len(), known.len()) {
@@ -603,14 +609,9 @@ fn forward_block(entries: &[f64], b: &[f64], equations: &[u16], known: &[f64], f
     unrolled_sizes!(unrolled);
     let (k, diagonal) = (found.len(), known.len());
     let width = k + diagonal;
-    let mut reduced = [0.0; 64];
-    let mut reduced_heap = Vec::new();
-    let reduced = if k <= 64 {
-        &mut reduced[..k]
-    } else {
-        reduced_heap.resize(k, 0.0);
-        &mut reduced_heap[..]
-    };
+    // (A block has at most M equations.)
+    let mut reduced = [0.0; M];
+    let reduced = &mut reduced[..k];
     for ((r, row), &e) in reduced
         .iter_mut()
         .zip(entries.chunks_exact(width))
