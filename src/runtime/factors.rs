@@ -607,6 +607,18 @@ fn forward_block<const M: usize>(
         };
     }
     unrolled_sizes!(unrolled);
+    forward_general::<M>(entries, b, equations, known, found);
+}
+
+/// [`forward_block`] for a block of any size, by loops.
+#[inline(always)]
+fn forward_general<const M: usize>(
+    entries: &[f64],
+    b: &[f64],
+    equations: &[u16],
+    known: &[f64],
+    found: &mut [f64],
+) {
     let (k, diagonal) = (found.len(), known.len());
     let width = k + diagonal;
     // (A block has at most M equations.)
@@ -681,6 +693,12 @@ fn backward_block(entries: &[f64], left: &[f64], found: &mut [f64], reached: &mu
         };
     }
     unrolled_sizes!(unrolled);
+    backward_general(entries, left, found, reached);
+}
+
+/// [`backward_block`] for a block of any size, by loops.
+#[inline(always)]
+fn backward_general(entries: &[f64], left: &[f64], found: &mut [f64], reached: &mut [f64]) {
     let (k, diagonal) = (found.len(), reached.len());
     let width = k + diagonal;
     for (y, row) in found.iter_mut().zip(entries.chunks_exact(width)) {

@@ -453,3 +453,48 @@ fn factored_in_place_is_factored_to_the_bit() {
     kept.of_into(&small, PsiUBlocks::DENSE);
     assert!(same_bits(&kept, &Factors::of(&small, PsiUBlocks::DENSE)));
 }
+
+/// The blocks solved by unrolled code give the general loops' numbers to
+/// the bit, forward and backward, at every size unrolled.
+#[test]
+fn unrolled_blocks_solve_as_the_general_loops_to_the_bit() {
+    let mut numbers = Numbers(41);
+    let mut sizes = Vec::new();
+    macro_rules! collect {
+        ($(($k:literal, $d:literal)),*) => { $(sizes.push(($k, $d));)* };
+    }
+    unrolled_sizes!(collect);
+    assert_eq!(sizes.len(), 15);
+    for (k, d) in sizes {
+        let w = k + d;
+        for _ in 0..20 {
+            let entries: Vec<f64> = (0..k * w).map(|_| numbers.next()).collect();
+            let b: Vec<f64> = (0..8).map(|_| numbers.next()).collect();
+            let equations: Vec<u16> = (0..k).map(|_| numbers.below(8) as u16).collect();
+            let known: Vec<f64> = (0..d).map(|_| numbers.next()).collect();
+            let (mut unrolled, mut general) = (vec![0.0; k], vec![0.0; k]);
+            forward_block::<8>(&entries, &b, &equations, &known, &mut unrolled);
+            forward_general::<8>(&entries, &b, &equations, &known, &mut general);
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            assert_eq!(
+                bits(&unrolled),
+                bits(&general),
+                "forward, {k}×{k} reaching {d}"
+            );
+            let left: Vec<f64> = (0..k).map(|_| numbers.next()).collect();
+            let (mut reached_u, mut reached_g) = (known.clone(), known.clone());
+            backward_block(&entries, &left, &mut unrolled, &mut reached_u);
+            backward_general(&entries, &left, &mut general, &mut reached_g);
+            assert_eq!(
+                bits(&unrolled),
+                bits(&general),
+                "backward, {k}×{k} reaching {d}"
+            );
+            assert_eq!(
+                bits(&reached_u),
+                bits(&reached_g),
+                "backward, {k}×{k} reaching {d}"
+            );
+        }
+    }
+}
