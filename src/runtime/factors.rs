@@ -357,18 +357,34 @@ impl<const M: usize> Factors<M> {
         if self.is_whole() {
             return self.packed;
         }
-        // Column e, for equation e of block f, is zero on the blocks before
-        // f: each solve starts at its own block.
         let mut inverse = SMatrix::<f64, M, M>::zeros();
         for block in 0..self.order.blocks as usize {
             let (start, end, _) = self.order.block(block);
             for s in start..end {
                 let e = self.order.equation(s);
-                let unit = SVector::<f64, M>::from_fn(|i, _| f64::from(u8::from(i == e)));
-                inverse.set_column(e, &self.forward_from(&self.packed, &unit, block));
+                inverse.set_column(e, &self.unit_forward_from(e, block));
             }
         }
         inverse
+    }
+
+    /// Ψ_u⁻¹'s column for equation `e`, the solve with the unit vector
+    /// there, in blocks: zero on the blocks before e's, so the solve
+    /// starts at e's block (the same numbers as from the first block,
+    /// where nothing is added to a zero but zeros).
+    fn unit_forward(&self, e: usize) -> SVector<f64, M> {
+        let position = self.order.equations.iter().position(|&q| q as usize == e);
+        let position = position.unwrap_or(0);
+        let block = self.order.ends[..self.order.blocks as usize]
+            .iter()
+            .position(|&end| position < end as usize);
+        self.unit_forward_from(e, block.unwrap_or(0))
+    }
+
+    /// [`Factors::unit_forward`] for equation `e` of block `block`.
+    fn unit_forward_from(&self, e: usize, block: usize) -> SVector<f64, M> {
+        let unit = SVector::<f64, M>::from_fn(|i, _| f64::from(u8::from(i == e)));
+        self.forward_from(&self.packed, &unit, block)
     }
 
     /// Block forward substitution: for each block in order, its equations'

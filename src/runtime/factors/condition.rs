@@ -16,48 +16,52 @@ const STEPS: usize = 5;
 /// 1/est(‖D_c Ψ_u⁻¹‖₁) clamped to [0, 1]; 0 when the estimate is not
 /// finite (a non-finite entry, or a solve that overflows) or not positive.
 pub(super) fn estimate<const M: usize>(factors: &Factors<M>, columns: &[f64; M]) -> f64 {
-    // B x by coordinates, and Bᵀ z by equations.
-    let times = |x: &SVector<f64, M>| {
-        let mut y = factors.forward(x);
-        for (v, c) in y.iter_mut().zip(columns) {
-            *v *= c;
-        }
-        y
-    };
-    let transposed = |z: &SVector<f64, M>| {
-        let scaled = SVector::<f64, M>::from_fn(|k, _| z[k] * columns[k]);
-        factors.backward(&scaled)
-    };
-    let signs = |y: &SVector<f64, M>| y.map(|v| if v < 0.0 { -1.0 } else { 1.0 });
-    let largest = |z: &SVector<f64, M>| {
-        let mut j = 0;
-        for (i, v) in z.iter().enumerate() {
-            if v.abs() > z[j].abs() {
-                j = i;
+    // B x = D_c Ψ_u⁻¹ x from Ψ_u⁻¹ x, as ‖B x‖₁ and the signs of B x, in
+    // one pass (the norm summed in order, as nalgebra's `sum` does).
+    let measured = |y: SVector<f64, M>| {
+        let (mut norm, mut signs) = (0.0, [1.0; M]);
+        for ((v, c), sign) in y.as_slice().iter().zip(columns).zip(&mut signs) {
+            let v = v * c;
+            norm += v.abs();
+            if v < 0.0 {
+                *sign = -1.0;
             }
         }
-        j
+        (norm, signs)
     };
-    let y = times(&SVector::<f64, M>::repeat(1.0 / M as f64));
-    let mut norm = y.abs().sum();
-    let mut sign = signs(&y);
-    let mut j = largest(&transposed(&sign));
+    // The equation where Bᵀ z is largest, Bᵀ z = Ψ_u⁻ᵀ D_c z, and how
+    // large it is there and at equation `at`.
+    let largest = |z: &[f64; M], at: usize| {
+        let scaled = SVector::<f64, M>::from_fn(|k, _| z[k] * columns[k]);
+        let y = factors.backward(&scaled);
+        // The first of the largest (the largest so far kept at hand, not
+        // read again through j).
+        let y = y.as_slice();
+        let (mut j, mut most) = (0, y[0].abs());
+        for (i, v) in y.iter().enumerate().skip(1) {
+            if v.abs() > most {
+                (j, most) = (i, v.abs());
+            }
+        }
+        (j, y[at].abs() == most)
+    };
+    let (mut norm, mut sign) =
+        measured(factors.forward(&SVector::<f64, M>::repeat(1.0 / M as f64)));
+    let (mut j, _) = largest(&sign, 0);
     for step in 2..=STEPS {
-        let y = times(&SVector::<f64, M>::from_fn(|i, _| {
-            f64::from(u8::from(i == j))
-        }));
+        // B e_j, from the solve with e_j, which starts at j's block.
+        let (next, next_sign) = measured(factors.unit_forward(j));
         let previous = norm;
-        norm = y.abs().sum();
-        let next_sign = signs(&y);
+        norm = next;
         if next_sign == sign || norm <= previous {
             norm = norm.max(previous);
             break;
         }
         sign = next_sign;
-        let z = transposed(&sign);
         let last = j;
-        j = largest(&z);
-        if z[last].abs() == z[j].abs() || step == STEPS {
+        let (found, tied) = largest(&sign, last);
+        j = found;
+        if tied || step == STEPS {
             break;
         }
     }
@@ -67,7 +71,7 @@ pub(super) fn estimate<const M: usize>(factors: &Factors<M>, columns: &[f64; M])
         let size = 1.0 + i as f64 / (M - 1) as f64;
         if i % 2 == 0 { size } else { -size }
     });
-    let other = 2.0 * times(&alternating).abs().sum() / (3.0 * M as f64);
+    let other = 2.0 * measured(factors.forward(&alternating)).0 / (3.0 * M as f64);
     if other > norm {
         norm = other;
     }
