@@ -652,11 +652,8 @@ fn forward_general<const M: usize>(
         *r = sum;
     }
     for (t, x) in found.iter_mut().enumerate() {
-        let mut sum = 0.0;
-        for (row, r) in entries.chunks_exact(width).zip(reduced.iter()) {
-            sum += row[diagonal + t] * r;
-        }
-        *x = sum;
+        let rows = entries.chunks_exact(width).zip(reduced.iter());
+        *x = summed(rows.map(|(row, r)| row[diagonal + t] * r));
     }
 }
 
@@ -680,11 +677,8 @@ fn forward_unrolled<const K: usize, const D: usize>(
         *r = sum;
     }
     for (t, x) in found.iter_mut().enumerate() {
-        let mut sum = 0.0;
-        for (i, r) in reduced.iter().enumerate() {
-            sum += entries[i * width + D + t] * r;
-        }
-        *x = sum;
+        let rows = reduced.iter().enumerate();
+        *x = summed(rows.map(|(i, r)| entries[i * width + D + t] * r));
     }
 }
 
@@ -718,18 +712,11 @@ fn backward_general(entries: &[f64], left: &[f64], found: &mut [f64], reached: &
     let (k, diagonal) = (found.len(), reached.len());
     let width = k + diagonal;
     for (y, row) in found.iter_mut().zip(entries.chunks_exact(width)) {
-        let mut sum = 0.0;
-        for (entry, c) in row[diagonal..].iter().zip(left) {
-            sum += entry * c;
-        }
-        *y = sum;
+        *y = summed(row[diagonal..].iter().zip(left).map(|(entry, c)| entry * c));
     }
     for (j, c) in reached.iter_mut().enumerate() {
-        let mut sum = 0.0;
-        for (row, y) in entries.chunks_exact(width).zip(found.iter()) {
-            sum += row[j] * y;
-        }
-        *c -= sum;
+        let rows = entries.chunks_exact(width).zip(found.iter());
+        *c -= summed(rows.map(|(row, y)| row[j] * y));
     }
 }
 
@@ -744,19 +731,21 @@ fn backward_unrolled<const K: usize, const D: usize>(
     let width = K + D;
     for (i, y) in found.iter_mut().enumerate() {
         let row = &entries[i * width..(i + 1) * width];
-        let mut sum = 0.0;
-        for t in 0..K {
-            sum += row[D + t] * left[t];
-        }
-        *y = sum;
+        *y = summed((0..K).map(|t| row[D + t] * left[t]));
     }
     for (j, c) in reached.iter_mut().enumerate() {
-        let mut sum = 0.0;
-        for (i, y) in found.iter().enumerate() {
-            sum += entries[i * width + j] * y;
-        }
-        *c -= sum;
+        let rows = found.iter().enumerate();
+        *c -= summed(rows.map(|(i, y)| entries[i * width + j] * y));
     }
+}
+
+/// The products summed in order from the first, not from 0.0: adding a
+/// zero first would lengthen each block's chain of dependent operations
+/// by an addition, and change nothing but a −0 result into +0.
+#[inline(always)]
+fn summed(mut products: impl Iterator<Item = f64>) -> f64 {
+    let first = products.next().unwrap_or(0.0);
+    products.fold(first, |sum, p| sum + p)
 }
 
 /// Whether [`Factors::of`] inverts Ψ_u whole: up to m = 4, for one block,
