@@ -181,6 +181,27 @@ pub trait Kernels<const M: usize, const F: usize> {
     ) {
         *out = self.kinematics_with_trig(u, v, trig_u, trig_v, vdot, vddot);
     }
+    /// [`Kernels::kinematics_with_trig_into`] over an `out` whose Ψ_u is
+    /// already zero wherever this model's Ψ_u is zero at every pose: one
+    /// that an evaluation of this model wrote, or [`Kinematics::blank`]. A
+    /// model may leave those entries alone; the generated code of more
+    /// than four coordinates does (zeroing them was the one part of its
+    /// evaluation that grows as m²). The same numbers, bit for bit.
+    #[doc(hidden)]
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn kinematics_with_trig_over(
+        &self,
+        u: &SVector<f64, M>,
+        v: &SVector<f64, F>,
+        trig_u: &[(f64, f64); M],
+        trig_v: &[(f64, f64); F],
+        vdot: &SVector<f64, F>,
+        vddot: &SVector<f64, F>,
+        out: &mut Kinematics<M, F>,
+    ) {
+        self.kinematics_with_trig_into(u, v, trig_u, trig_v, vdot, vddot, out);
+    }
     /// Whether [`Kernels::kinematics_with_trig_each`] makes its requests
     /// together faster than one after the other: a batch then runs its
     /// analyses side by side (else each alone, as `analyze` does).

@@ -83,6 +83,18 @@ impl<const M: usize, const F: usize> Kinematics<M, F> {
             uddot: SVector::repeat(f64::NAN),
         }
     }
+
+    /// [`Kinematics::unevaluated`] with Ψ_u zero: a value that
+    /// [`Kernels::kinematics_with_trig_over`](crate::runtime::Kernels::kinematics_with_trig_over)
+    /// may write over from the first evaluation on.
+    #[doc(hidden)]
+    #[inline(always)]
+    pub fn blank() -> Kinematics<M, F> {
+        Kinematics {
+            psi_u: SMatrix::zeros(),
+            ..Kinematics::unevaluated()
+        }
+    }
 }
 
 /// Positions, velocities and accelerations of a pose, of the coordinates

@@ -36,10 +36,10 @@ pub(crate) fn analyze<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize>
         if model.evaluates_in_place() {
             // Each evaluation written over one kept for the analysis (a
             // large m's, or a run-time mechanism's): none is moved.
-            let mut k = Kinematics::unevaluated();
+            let mut k = Kinematics::blank();
             loop {
                 let (u, trig_u, trig_v) = newton.pose();
-                model.kinematics_with_trig_into(u, v, trig_u, trig_v, vdot, vddot, &mut k);
+                model.kinematics_with_trig_over(u, v, trig_u, trig_v, vdot, vddot, &mut k);
                 if let Progress::Done(ended) = newton.advance(model, &k, options) {
                     return finish_fused(model, ended?, &k, v, vdot, vddot, options);
                 }

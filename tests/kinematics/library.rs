@@ -159,6 +159,7 @@ fn jansens_leg_fused_kernel_in_place_is_the_returned_one_to_the_bit() {
     let mut kept = JANSEN_LEG.kinematics(&sweep.poses[0].u, &sweep.poses[0].v, &vdot, &vddot);
     kept.psi_u.fill(f64::NAN);
     kept.udot.fill(f64::NAN);
+    let mut over = linkage::Kinematics::blank();
     for pose in &sweep.poses {
         let trig_u: [(f64, f64); 6] = std::array::from_fn(|k| pose.u[k].sin_cos());
         let trig_v: [(f64, f64); 1] = [pose.v[0].sin_cos()];
@@ -178,6 +179,19 @@ fn jansens_leg_fused_kernel_in_place_is_the_returned_one_to_the_bit() {
         assert_eq!(kept, returned, "at {:?}", pose.v);
         assert_eq!(kept, JANSEN_LEG.kinematics(&pose.u, &pose.v, &vdot, &vddot));
         assert!(kept.factors.in_blocks());
+        // Over a blank result, then over the pose before's, as the sweep
+        // does: Ψ_u's zeros are not written again, and kept.
+        Kernels::kinematics_with_trig_over(
+            &JANSEN_LEG,
+            &pose.u,
+            &pose.v,
+            &trig_u,
+            &trig_v,
+            &vdot,
+            &vddot,
+            &mut over,
+        );
+        assert_eq!(over, returned, "over, at {:?}", pose.v);
     }
 }
 

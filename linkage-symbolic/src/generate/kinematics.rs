@@ -101,8 +101,9 @@ impl Generator<'_> {
         let mut values = first_values.iter();
         let psi_fill = fill(phase_parts(0), 0, &psi, &mut values);
         let psi_u_fill = fill(phase_parts(0), 1, &psi_u, &mut values);
-        // In place: the same entries written over the result's own Ψ_u,
-        // zeroed first (the statements after `assemble`'s declaration).
+        // In place: the same entries written over the result's own Ψ_u
+        // (the statements after `assemble`'s declaration), its other
+        // entries zeroed first by `_into`, or zero already for `_over`.
         let psi_u_entries: Vec<TokenStream> = psi_u_fill.iter().skip(1).cloned().collect();
         let psi_v_fill = fill(phase_parts(0), 2, &psi_v, &mut values);
         let mut values = second_values.iter();
@@ -239,13 +240,26 @@ impl Generator<'_> {
                         #(#inputs,)*
                         #out: &mut ::linkage::Kinematics<#ml, #fl>,
                     ) {
+                        #out.psi_u.as_mut_slice().fill(0.0);
+                        self.kinematics_with_trig_over(#u_arg, #v_arg, #trig_u, #trig_v, vdot, vddot, #out);
+                    }
+                    /// [`Self::kinematics_with_trig_into`] over an `out` whose
+                    /// Ψ_u is zero wherever Ψ_u is zero at every pose (one this
+                    /// kernel wrote, or `Kinematics::blank()`): only the
+                    /// entries that can be nonzero are written.
+                    #[doc(hidden)]
+                    #[inline(always)]
+                    #[allow(unused_variables, clippy::too_many_arguments)]
+                    pub fn kinematics_with_trig_over(
+                        #(#inputs,)*
+                        #out: &mut ::linkage::Kinematics<#ml, #fl>,
+                    ) {
                         #(#prologue)*
                         #(#first_statements)*
                         #psi_bind
                         #psi_v_bind
                         {
                             let #psi_u = &mut #out.psi_u;
-                            #psi_u.as_mut_slice().fill(0.0);
                             #(#psi_u_entries)*
                         }
                         #factor_into

@@ -101,6 +101,19 @@ impl Generator<'_> {
                 ) {
                     self.kinematics_with_trig_into(u, v, trig_u, trig_v, vdot, vddot, out)
                 }
+                #[inline(always)]
+                fn kinematics_with_trig_over(
+                    &self,
+                    u: &SVector<f64, #m>,
+                    v: &SVector<f64, #f>,
+                    trig_u: &[(f64, f64); #m],
+                    trig_v: &[(f64, f64); #f],
+                    vdot: &SVector<f64, #f>,
+                    vddot: &SVector<f64, #f>,
+                    out: &mut ::linkage::Kinematics<#m, #f>,
+                ) {
+                    self.kinematics_with_trig_over(u, v, trig_u, trig_v, vdot, vddot, out)
+                }
             }
         } else {
             quote!()

@@ -37,7 +37,8 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         carries && self.model.evaluates_in_place()
     }
 
-    /// The fused kernel at (x, v) written over `k`, with the sines and
+    /// The fused kernel at (x, v) written over `k` (a blank one, or the
+    /// run's last evaluation: Ψ_u's zeros are kept), with the sines and
     /// cosines carried by `trig` when the model reads them: in place where
     /// the run writes in place ([`Tracker::writes_in_place`]), so that
     /// nothing is copied out of the evaluation (whether a value returned
@@ -59,7 +60,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         }
         let zero = SVector::<f64, F>::zeros();
         let (trig_u, trig_v) = trig.at(&self.model.trig_u(), &self.model.trig_v(), x, v);
-        (self.model).kinematics_with_trig_into(x, v, &trig_u, &trig_v, &self.dir, &zero, k);
+        (self.model).kinematics_with_trig_over(x, v, &trig_u, &trig_v, &self.dir, &zero, k);
     }
 
     /// The fused kernel at (x, v), with the sines and cosines carried by
@@ -120,7 +121,7 @@ impl<L: Kernels<M, F> + ?Sized, const M: usize, const F: usize> Tracker<'_, L, M
         // written over one kept for the run; else each pose's first is the
         // value returned (an evaluation m × m wide made for nothing each
         // pose costs a large m dearly).
-        let mut kept = self.writes_in_place(carries).then(Kinematics::unevaluated);
+        let mut kept = self.writes_in_place(carries).then(Kinematics::blank);
         // Ψ_u's factors one step back (the matrix alone: the block order
         // is the mechanism's), valid once the run has taken a step
         // (`previous` then holds the analogs one step back): copied into
