@@ -14,6 +14,7 @@
 
 mod condition;
 mod diagonal;
+mod structured;
 
 use crate::runtime::blocks::PsiUBlocks;
 use crate::runtime::error::{Error, Stage};

@@ -520,3 +520,32 @@ fn a_unit_solve_from_its_block_is_the_whole_solve_to_the_bit() {
         }
     }
 }
+
+/// A product by a matrix with the blocks' structure, over its reach only,
+/// is the dense product summed in the same order, to the bit.
+#[test]
+fn a_structured_product_is_the_dense_one_to_the_bit() {
+    let mut numbers = Numbers(67);
+    for _ in 0..200 {
+        let case = Case::<9>::random(&mut numbers);
+        let factors = Factors::of(&case.a, case.blocks());
+        // Another matrix of the same structure, as Ψ̇_u is of Ψ_u's.
+        let a = case.a.map(|x| if x == 0.0 { 0.0 } else { numbers.next() });
+        let b = SMatrix::<f64, 9, 3>::from_fn(|_, _| numbers.next());
+        let mut dense = SMatrix::<f64, 9, 3>::zeros();
+        for j in 0..3 {
+            for k in 0..9 {
+                for i in 0..9 {
+                    dense[(i, j)] += a[(i, k)] * b[(k, j)];
+                }
+            }
+        }
+        let bits = |m: SMatrix<f64, 9, 3>| m.map(f64::to_bits);
+        assert_eq!(
+            bits(factors.structured_product(&a, &b)),
+            bits(dense),
+            "blocks ending at {:?}",
+            case.ends
+        );
+    }
+}

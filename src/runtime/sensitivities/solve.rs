@@ -339,16 +339,18 @@ fn in_sequence<const M: usize, const K: usize, P>(
 }
 
 /// u̇_p, ü_p as [`in_sequence`], u_p given, each product by Ψ_u⁻¹ a solve
-/// with Ψ_u factored in blocks (no inverse).
+/// with Ψ_u factored in blocks (no inverse), and the products by Ψ̇_u and
+/// Ψ̈_u over the entries of Ψ_u's structure only.
 #[inline(always)]
 fn by_solves<const M: usize, const K: usize, P>(
     factors: &Factors<M>,
     u: &SMatrix<f64, M, K>,
     terms: &SensitivityTerms<M, K, P>,
 ) -> (SMatrix<f64, M, K>, SMatrix<f64, M, K>) {
-    let udot = -factors.solve_columns(&(product(&terms.psi_u_dot, u) + terms.psi_p_dot));
-    let twice = product(&terms.psi_u_dot, &udot) * 2.0;
-    let uddot = -factors.solve_columns(&(product(&terms.psi_u_ddot, u) + twice + terms.psi_p_ddot));
+    let by = |a: &SMatrix<f64, M, M>, b: &SMatrix<f64, M, K>| factors.structured_product(a, b);
+    let udot = -factors.solve_columns(&(by(&terms.psi_u_dot, u) + terms.psi_p_dot));
+    let twice = by(&terms.psi_u_dot, &udot) * 2.0;
+    let uddot = -factors.solve_columns(&(by(&terms.psi_u_ddot, u) + twice + terms.psi_p_ddot));
     (udot, uddot)
 }
 
