@@ -81,39 +81,33 @@ impl Generator<'_> {
         } else {
             quote!()
         };
-        // The fused kernel in place where the generator emits it.
+        // The fused kernel in place where the generator emits it: the
+        // trait's methods call the inherent ones of the same name.
         let in_place = if self.m > IN_PLACE_ABOVE {
+            let written = ["kinematics_with_trig_into", "kinematics_with_trig_over"].map(|name| {
+                let name = format_ident!("{}", name);
+                quote! {
+                    #[inline(always)]
+                    fn #name(
+                        &self,
+                        u: &SVector<f64, #m>,
+                        v: &SVector<f64, #f>,
+                        trig_u: &[(f64, f64); #m],
+                        trig_v: &[(f64, f64); #f],
+                        vdot: &SVector<f64, #f>,
+                        vddot: &SVector<f64, #f>,
+                        out: &mut ::linkage::Kinematics<#m, #f>,
+                    ) {
+                        self.#name(u, v, trig_u, trig_v, vdot, vddot, out)
+                    }
+                }
+            });
             quote! {
                 #[inline(always)]
                 fn evaluates_in_place(&self) -> bool {
                     true
                 }
-                #[inline(always)]
-                fn kinematics_with_trig_into(
-                    &self,
-                    u: &SVector<f64, #m>,
-                    v: &SVector<f64, #f>,
-                    trig_u: &[(f64, f64); #m],
-                    trig_v: &[(f64, f64); #f],
-                    vdot: &SVector<f64, #f>,
-                    vddot: &SVector<f64, #f>,
-                    out: &mut ::linkage::Kinematics<#m, #f>,
-                ) {
-                    self.kinematics_with_trig_into(u, v, trig_u, trig_v, vdot, vddot, out)
-                }
-                #[inline(always)]
-                fn kinematics_with_trig_over(
-                    &self,
-                    u: &SVector<f64, #m>,
-                    v: &SVector<f64, #f>,
-                    trig_u: &[(f64, f64); #m],
-                    trig_v: &[(f64, f64); #f],
-                    vdot: &SVector<f64, #f>,
-                    vddot: &SVector<f64, #f>,
-                    out: &mut ::linkage::Kinematics<#m, #f>,
-                ) {
-                    self.kinematics_with_trig_over(u, v, trig_u, trig_v, vdot, vddot, out)
-                }
+                #(#written)*
             }
         } else {
             quote!()
