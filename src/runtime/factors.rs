@@ -130,6 +130,16 @@ impl<const M: usize> Order<M> {
     fn equation(&self, position: usize) -> usize {
         self.equations[position] as usize
     }
+
+    /// Values by position in the solve order, by coordinate.
+    #[inline(always)]
+    fn by_coordinates(&self, found: &[f64; M]) -> SVector<f64, M> {
+        let mut x = SVector::<f64, M>::zeros();
+        for (&c, &found) in self.coordinates.iter().zip(found) {
+            x[c as usize] = found;
+        }
+        x
+    }
 }
 
 impl<const M: usize> Factors<M> {
@@ -414,19 +424,29 @@ impl<const M: usize> Factors<M> {
         // before it; by coordinate at the end.
         let mut found = [0.0; M];
         for block in first..order.blocks as usize {
-            let panel = order.panel(block);
-            let (start, end, reach) = (panel.start, panel.end, panel.reach);
-            let entries = &a.as_slice()[panel.range()];
-            let equations = &order.equations[start..end];
-            let (before, this) = found.split_at_mut(start);
-            let (known, this) = (&before[reach..], &mut this[..end - start]);
-            forward_block::<M>(entries, b.as_slice(), equations, known, this);
+            forward_step(order, a, block, b, &mut found);
         }
-        let mut x = SVector::<f64, M>::zeros();
-        for (&c, found) in order.coordinates.iter().zip(found) {
-            x[c as usize] = found;
+        order.by_coordinates(&found)
+    }
+
+    /// [`Factors::forward`] of two right-hand sides, their steps block by
+    /// block in turn: the same numbers, but the two chains of blocks, which
+    /// do not wait for each other, overlap.
+    fn forward_pair(
+        &self,
+        b: &SVector<f64, M>,
+        c: &SVector<f64, M>,
+    ) -> (SVector<f64, M>, SVector<f64, M>) {
+        let order = &self.order;
+        let (mut found_b, mut found_c) = ([0.0; M], [0.0; M]);
+        for block in 0..order.blocks as usize {
+            forward_step(order, &self.packed, block, b, &mut found_b);
+            forward_step(order, &self.packed, block, c, &mut found_c);
         }
-        x
+        (
+            order.by_coordinates(&found_b),
+            order.by_coordinates(&found_c),
+        )
     }
 
     /// y = Ψ_u⁻ᵀ c (y by equations, c by coordinates), by block backward
@@ -595,6 +615,25 @@ macro_rules! unrolled_sizes {
             (3, 4)
         )
     };
+}
+
+/// Block `block`'s step of the forward substitution with the factors
+/// `a` in `order`: its coordinates, by position, into `found`.
+#[inline(always)]
+fn forward_step<const M: usize>(
+    order: &Order<M>,
+    a: &SMatrix<f64, M, M>,
+    block: usize,
+    b: &SVector<f64, M>,
+    found: &mut [f64; M],
+) {
+    let panel = order.panel(block);
+    let (start, end, reach) = (panel.start, panel.end, panel.reach);
+    let entries = &a.as_slice()[panel.range()];
+    let equations = &order.equations[start..end];
+    let (before, this) = found.split_at_mut(start);
+    let (known, this) = (&before[reach..], &mut this[..end - start]);
+    forward_block::<M>(entries, b.as_slice(), equations, known, this);
 }
 
 /// One block's step of the forward substitution: its equations' right-hand
