@@ -131,6 +131,15 @@ impl<const M: usize> Order<M> {
         self.equations[position] as usize
     }
 
+    /// The block that holds `position`.
+    #[inline(always)]
+    fn block_of(&self, position: usize) -> usize {
+        let ends = &self.ends[..self.blocks as usize];
+        ends.iter()
+            .position(|&end| position < end as usize)
+            .unwrap_or(0)
+    }
+
     /// Values by position in the solve order, by coordinate.
     #[inline(always)]
     fn by_coordinates(&self, found: &[f64; M]) -> SVector<f64, M> {
@@ -385,11 +394,7 @@ impl<const M: usize> Factors<M> {
     /// where nothing is added to a zero but zeros).
     fn unit_forward(&self, e: usize) -> SVector<f64, M> {
         let position = self.order.equations.iter().position(|&q| q as usize == e);
-        let position = position.unwrap_or(0);
-        let block = self.order.ends[..self.order.blocks as usize]
-            .iter()
-            .position(|&end| position < end as usize);
-        self.unit_forward_from(e, block.unwrap_or(0))
+        self.unit_forward_from(e, self.order.block_of(position.unwrap_or(0)))
     }
 
     /// [`Factors::unit_forward`] for equation `e` of block `block`.

@@ -548,4 +548,21 @@ fn a_structured_product_is_the_dense_one_to_the_bit() {
             case.ends
         );
     }
+    // Inverted whole (no block order to follow): the dense product.
+    let a = SMatrix::<f64, 3, 3>::from_fn(|_, _| numbers.next()) + SMatrix::identity() * 3.0;
+    let b = SMatrix::<f64, 3, 2>::from_fn(|_, _| numbers.next());
+    let factors = Factors::whole(&a);
+    assert!(!factors.in_blocks());
+    let mut dense = SMatrix::<f64, 3, 2>::zeros();
+    for j in 0..2 {
+        for k in 0..3 {
+            for i in 0..3 {
+                dense[(i, j)] += a[(i, k)] * b[(k, j)];
+            }
+        }
+    }
+    assert_eq!(
+        factors.structured_product(&a, &b).map(f64::to_bits),
+        dense.map(f64::to_bits)
+    );
 }
